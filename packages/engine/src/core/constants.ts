@@ -1,0 +1,17 @@
+// Tuning constants shared by collision and dynamics. Lengths are metres, the engine's unit:
+// these values suit bodies from about 0.05 m to 50 m, the range Box2D documents for the same values.
+
+/** Allowed overlap that the solver does not push apart: it keeps contacts persistent and stacks calm (m). */
+export const LINEAR_SLOP = 0.005;
+
+/**
+ * Contact points are kept while the shapes are closer than this, before they touch, so the solver
+ * can stop a body exactly at the surface instead of after it has passed it (speculative contacts, m).
+ */
+export const SPECULATIVE_DISTANCE = 4 * LINEAR_SLOP;
+
+/** Broad-phase boxes are fattened by this much so that small motions do not update the tree (m). */
+export const AABB_MARGIN = 0.1;
+
+/** Polygons may have at most this many vertices. */
+export const MAX_POLYGON_VERTICES = 8;

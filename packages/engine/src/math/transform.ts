@@ -1,0 +1,27 @@
+/**
+ * A rigid transform: translation (x, y) in metres and rotation stored as cosine c and sine s.
+ * Storing c and s rather than the angle means kernels never call trigonometric functions.
+ * Maps a local point p to world as (c px - s py + x, s px + c py + y).
+ */
+export class Transform {
+  x = 0;
+  y = 0;
+  c = 1;
+  s = 0;
+
+  set(x: number, y: number, angle: number): this {
+    this.x = x;
+    this.y = y;
+    this.c = Math.cos(angle);
+    this.s = Math.sin(angle);
+    return this;
+  }
+
+  copy(other: Transform): this {
+    this.x = other.x;
+    this.y = other.y;
+    this.c = other.c;
+    this.s = other.s;
+    return this;
+  }
+}

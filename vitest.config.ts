@@ -1,0 +1,15 @@
+import { fileURLToPath } from 'node:url';
+import { defineConfig } from 'vitest/config';
+
+// Tests import packages by their public names; these aliases point them at the sources,
+// so the specs exercise exactly the surface users get without a build step.
+export default defineConfig({
+  resolve: {
+    alias: {
+      '@physical/engine': fileURLToPath(new URL('./packages/engine/src/index.ts', import.meta.url)),
+    },
+  },
+  test: {
+    include: ['packages/*/test/**/*.test.ts'],
+  },
+});
