@@ -1,0 +1,78 @@
+import { SPECULATIVE_DISTANCE } from '../core/constants.ts';
+import type { Circle } from '../geometry/circle.ts';
+import type { Segment } from '../geometry/segment.ts';
+import type { Transform } from '../math/transform.ts';
+import { makeFeatureId, type Manifold } from './manifold.ts';
+
+/**
+ * Contact between a segment A (a wall) and a circle B: at most one point.
+ *
+ * Two-sided: the closest point q of the segment to the centre c (Ericson, Real-Time Collision
+ * Detection, 5.1.2) gives the normal (c - q) / |c - q|; a centre exactly on the segment uses the
+ * segment's positive normal. One-sided: a centre behind the wall (negative side of its positive
+ * normal) gives no contact; otherwise the normal is always the positive normal, so a circle is
+ * never pushed sideways over the wall's end or pulled through from behind, while the separation
+ * stays the true distance |c - q| - r so a circle beside the end is not reported as touching.
+ * Separation in m. Writes only the geometric fields of `out`; the normal points from A to B.
+ */
+export function collideSegmentAndCircle(
+  a: Segment,
+  xfA: Transform,
+  b: Circle,
+  xfB: Transform,
+  out: Manifold,
+): void {
+  // Everything in A's frame.
+  const wx = xfB.c * b.centerX - xfB.s * b.centerY + xfB.x - xfA.x;
+  const wy = xfB.s * b.centerX + xfB.c * b.centerY + xfB.y - xfA.y;
+  const cx = xfA.c * wx + xfA.s * wy;
+  const cy = -xfA.s * wx + xfA.c * wy;
+  const ex = a.x2 - a.x1;
+  const ey = a.y2 - a.y1;
+  const length = Math.hypot(ex, ey);
+  // Positive normal (e.y, -e.x) / |e|, as documented on Segment.
+  const faceX = ey / length;
+  const faceY = -ex / length;
+  const height = faceX * (cx - a.x1) + faceY * (cy - a.y1);
+  if (a.oneSided && height < 0) {
+    out.pointCount = 0;
+    return;
+  }
+  let t = ((cx - a.x1) * ex + (cy - a.y1) * ey) / (length * length);
+  t = t < 0 ? 0 : t > 1 ? 1 : t;
+  const qx = a.x1 + t * ex;
+  const qy = a.y1 + t * ey;
+  const dx = cx - qx;
+  const dy = cy - qy;
+  const distance = Math.hypot(dx, dy);
+  const separation = distance - b.radius;
+  if (separation >= SPECULATIVE_DISTANCE) {
+    out.pointCount = 0;
+    return;
+  }
+  let nx = faceX;
+  let ny = faceY;
+  if (!a.oneSided && distance > 0) {
+    nx = dx / distance;
+    ny = dy / distance;
+  }
+  // Midway between the wall point q and the circle's surface point c - r n.
+  const px = 0.5 * (qx + cx - b.radius * nx);
+  const py = 0.5 * (qy + cy - b.radius * ny);
+  const c = xfA.c;
+  const s = xfA.s;
+  const anchorX = c * px - s * py;
+  const anchorY = s * px + c * py;
+  out.normalX = c * nx - s * ny;
+  out.normalY = s * nx + c * ny;
+  out.pointCount = 1;
+  const point = out.points[0];
+  point.anchorAX = anchorX;
+  point.anchorAY = anchorY;
+  point.anchorBX = anchorX + xfA.x - xfB.x;
+  point.anchorBY = anchorY + xfA.y - xfB.y;
+  point.x = anchorX + xfA.x;
+  point.y = anchorY + xfA.y;
+  point.separation = separation;
+  point.id = makeFeatureId(0, 0);
+}

@@ -1,0 +1,836 @@
+import type { AABB } from '../geometry/aabb.ts';
+import type { RayInput } from '../geometry/ray.ts';
+
+// A dynamic bounding-volume hierarchy of axis-aligned boxes: the idea of Box2D's b2DynamicTree
+// (Erin Catto), written from the published algorithms rather than from its code.
+//
+// - Leaves hold the boxes the caller gives (the broad phase fattens them), internal nodes the
+//   union of their two children. Node data lives in typed arrays indexed by node id; freed
+//   nodes form a singly linked free list through `parent`, so steady-state use allocates nothing.
+// - Insertion picks the sibling that minimises the surface-area-heuristic cost of the tree (the
+//   sum of internal-node perimeters: in 2D the perimeter plays the role of surface area), found
+//   by branch and bound (Bittner, Hapala and Havran 2015, "Fast insertion-based optimization of
+//   bounding volume hierarchies"; Box2D v3's b2FindBestSibling applies the same bound).
+// - On the way back up from an insertion or removal, each ancestor is rotated: a height-driven
+//   rotation when one child is more than one level taller than the other (as Box2D v2's b2Balance),
+//   otherwise the child/grandchild swap that most reduces the perimeter sum (Kopta et al. 2012,
+//   "Fast, effective BVH updates for animated scenes"; Box2D v3's b2RotateNodes), accepted only if
+//   it keeps both subtrees height-balanced. Sorted insertion (a row of boxes, a pyramid's floor)
+//   therefore still yields a height of O(log n).
+
+const NULL_NODE = -1;
+const INITIAL_CAPACITY = 16;
+const INITIAL_STACK = 64;
+
+/**
+ * Called for each leaf whose box overlaps the query box. `proxyId` is the leaf, `userData` what
+ * was stored with it. Return false to stop the query.
+ */
+export type TreeQueryCallback = (proxyId: number, userData: number) => boolean;
+
+/**
+ * Called for each leaf whose box the ray may hit. `input.maxFraction` holds the current clip
+ * (a fraction of `input.translation`, no unit). Return the fraction at which the proxy's shape
+ * was hit to clip the ray there, 0 to stop the cast, -1 to ignore this proxy and continue, or
+ * `input.maxFraction` to continue unclipped.
+ */
+export type TreeRayCastCallback = (input: RayInput, proxyId: number, userData: number) => number;
+
+/** Perimeter of the union of two boxes (m): the SAH cost of a node holding both. */
+function unionPerimeter(
+  aMinX: number,
+  aMinY: number,
+  aMaxX: number,
+  aMaxY: number,
+  bMinX: number,
+  bMinY: number,
+  bMaxX: number,
+  bMaxY: number,
+): number {
+  const wx = (aMaxX > bMaxX ? aMaxX : bMaxX) - (aMinX < bMinX ? aMinX : bMinX);
+  const wy = (aMaxY > bMaxY ? aMaxY : bMaxY) - (aMinY < bMinY ? aMinY : bMinY);
+  return 2 * (wx + wy);
+}
+
+/**
+ * A dynamic AABB tree for broad-phase queries and ray casts. Proxy ids are node ids: stable
+ * while the proxy lives, reused after it is destroyed. Boxes are in world coordinates (m).
+ * The tree must not be modified from inside a query or ray-cast callback.
+ */
+export class DynamicTree {
+  /** minX, minY, maxX, maxY per node (m). */
+  private boxes: Float64Array;
+  private child1: Int32Array;
+  private child2: Int32Array;
+  /** Parent of a live node; next free node of a freed one. */
+  private parent: Int32Array;
+  /** 0 for a leaf, 1 + the taller child's height for an internal node, -1 for a free node. */
+  private heights: Int32Array;
+  private userData: Int32Array;
+  private capacity: number;
+  private freeList = NULL_NODE;
+  private root = NULL_NODE;
+  private leafCount = 0;
+  /** Traversal stack shared by query and rayCast; `stackTop` lets a callback query again. */
+  private stack: Int32Array;
+  private stackTop = 0;
+
+  constructor(initialCapacity: number = INITIAL_CAPACITY) {
+    const capacity = Math.max(2, initialCapacity | 0);
+    this.capacity = 0;
+    this.boxes = new Float64Array(0);
+    this.child1 = new Int32Array(0);
+    this.child2 = new Int32Array(0);
+    this.parent = new Int32Array(0);
+    this.heights = new Int32Array(0);
+    this.userData = new Int32Array(0);
+    this.stack = new Int32Array(INITIAL_STACK);
+    this.grow(capacity);
+  }
+
+  /** Number of live proxies (leaves). */
+  get proxyCount(): number {
+    return this.leafCount;
+  }
+
+  /** Height of the tree: 0 for a single leaf or an empty tree. */
+  getHeight(): number {
+    return this.root === NULL_NODE ? 0 : this.heights[this.root]!;
+  }
+
+  /**
+   * Inserts a leaf holding `aabb` (m, world frame) exactly as given and returns its proxy id.
+   * `userData` is an int32 the caller gets back in callbacks (the broad phase stores shape ids).
+   */
+  createProxy(aabb: AABB, userData: number): number {
+    const leaf = this.allocateNode();
+    const boxes = this.boxes;
+    boxes[4 * leaf] = aabb.minX;
+    boxes[4 * leaf + 1] = aabb.minY;
+    boxes[4 * leaf + 2] = aabb.maxX;
+    boxes[4 * leaf + 3] = aabb.maxY;
+    this.userData[leaf] = userData;
+    this.heights[leaf] = 0;
+    this.insertLeaf(leaf);
+    this.leafCount++;
+    return leaf;
+  }
+
+  /** Removes a proxy; its id may be returned by a later createProxy. */
+  destroyProxy(proxyId: number): void {
+    this.removeLeaf(proxyId);
+    this.freeNode(proxyId);
+    this.leafCount--;
+  }
+
+  /** Replaces a proxy's box (m, world frame) and reinserts it where it now belongs. */
+  moveProxy(proxyId: number, aabb: AABB): void {
+    this.removeLeaf(proxyId);
+    const boxes = this.boxes;
+    boxes[4 * proxyId] = aabb.minX;
+    boxes[4 * proxyId + 1] = aabb.minY;
+    boxes[4 * proxyId + 2] = aabb.maxX;
+    boxes[4 * proxyId + 3] = aabb.maxY;
+    this.insertLeaf(proxyId);
+  }
+
+  /** The int32 stored with the proxy at creation. */
+  getUserData(proxyId: number): number {
+    return this.userData[proxyId]!;
+  }
+
+  /** Copies the proxy's stored box (m, world frame) into `out` and returns `out`. */
+  getFatAABB(proxyId: number, out: AABB): AABB {
+    const boxes = this.boxes;
+    out.minX = boxes[4 * proxyId]!;
+    out.minY = boxes[4 * proxyId + 1]!;
+    out.maxX = boxes[4 * proxyId + 2]!;
+    out.maxY = boxes[4 * proxyId + 3]!;
+    return out;
+  }
+
+  /** Lower x bound of the proxy's stored box (m). */
+  getMinX(proxyId: number): number {
+    return this.boxes[4 * proxyId]!;
+  }
+
+  /** Lower y bound of the proxy's stored box (m). */
+  getMinY(proxyId: number): number {
+    return this.boxes[4 * proxyId + 1]!;
+  }
+
+  /** Upper x bound of the proxy's stored box (m). */
+  getMaxX(proxyId: number): number {
+    return this.boxes[4 * proxyId + 2]!;
+  }
+
+  /** Upper y bound of the proxy's stored box (m). */
+  getMaxY(proxyId: number): number {
+    return this.boxes[4 * proxyId + 3]!;
+  }
+
+  /**
+   * Calls `callback` for every proxy whose box overlaps `aabb` (m, world frame; touching
+   * counts), in a deterministic depth-first order, until it returns false.
+   */
+  query(aabb: AABB, callback: TreeQueryCallback): void {
+    if (this.root === NULL_NODE) {
+      return;
+    }
+    const minX = aabb.minX;
+    const minY = aabb.minY;
+    const maxX = aabb.maxX;
+    const maxY = aabb.maxY;
+    const base = this.stackTop;
+    let top = base;
+    this.stack[top++] = this.root;
+    while (top > base) {
+      const node = this.stack[--top]!;
+      const boxes = this.boxes;
+      const o = 4 * node;
+      if (
+        boxes[o]! > maxX ||
+        minX > boxes[o + 2]! ||
+        boxes[o + 1]! > maxY ||
+        minY > boxes[o + 3]!
+      ) {
+        continue;
+      }
+      const first = this.child1[node]!;
+      if (first === NULL_NODE) {
+        this.stackTop = top;
+        const proceed = callback(node, this.userData[node]!);
+        this.stackTop = base;
+        if (!proceed) {
+          return;
+        }
+      } else {
+        if (top + 2 > this.stack.length) {
+          this.growStack();
+        }
+        this.stack[top++] = this.child2[node]!;
+        this.stack[top++] = first;
+      }
+    }
+  }
+
+  /**
+   * Casts the ray from `input.origin` along `input.translation` (m, world frame), clipped at
+   * `input.maxFraction`, and calls `callback` for each proxy whose box the clipped ray
+   * crosses. The callback's return value clips the ray (see TreeRayCastCallback), and
+   * `input.maxFraction` is updated to the clip so later callbacks and callers see it.
+   */
+  rayCast(input: RayInput, callback: TreeRayCastCallback): void {
+    if (this.root === NULL_NODE) {
+      return;
+    }
+    const px = input.originX;
+    const py = input.originY;
+    const dx = input.translationX;
+    const dy = input.translationY;
+    // A box is skipped if it is off the ray's line (separating axis along the ray's normal)
+    // or outside the box of the clipped segment (separating axes x and y): the segment-vs-box
+    // separating-axis test of Gino van den Bergen, "Collision Detection in Interactive 3D
+    // Environments" (2003), as Box2D uses it.
+    const length = Math.sqrt(dx * dx + dy * dy);
+    const nx = length > 0 ? -dy / length : 0;
+    const ny = length > 0 ? dx / length : 0;
+    const absNx = Math.abs(nx);
+    const absNy = Math.abs(ny);
+    let maxFraction = input.maxFraction;
+    let endX = px + maxFraction * dx;
+    let endY = py + maxFraction * dy;
+    let segMinX = px < endX ? px : endX;
+    let segMinY = py < endY ? py : endY;
+    let segMaxX = px > endX ? px : endX;
+    let segMaxY = py > endY ? py : endY;
+
+    const base = this.stackTop;
+    let top = base;
+    this.stack[top++] = this.root;
+    while (top > base) {
+      const node = this.stack[--top]!;
+      const boxes = this.boxes;
+      const o = 4 * node;
+      const bMinX = boxes[o]!;
+      const bMinY = boxes[o + 1]!;
+      const bMaxX = boxes[o + 2]!;
+      const bMaxY = boxes[o + 3]!;
+      if (bMinX > segMaxX || segMinX > bMaxX || bMinY > segMaxY || segMinY > bMaxY) {
+        continue;
+      }
+      const cx = 0.5 * (bMinX + bMaxX);
+      const cy = 0.5 * (bMinY + bMaxY);
+      const hx = 0.5 * (bMaxX - bMinX);
+      const hy = 0.5 * (bMaxY - bMinY);
+      if (Math.abs(nx * (px - cx) + ny * (py - cy)) > absNx * hx + absNy * hy) {
+        continue;
+      }
+      const first = this.child1[node]!;
+      if (first === NULL_NODE) {
+        input.maxFraction = maxFraction;
+        this.stackTop = top;
+        const value = callback(input, node, this.userData[node]!);
+        this.stackTop = base;
+        if (value === 0) {
+          input.maxFraction = 0;
+          return;
+        }
+        if (value > 0 && value <= maxFraction) {
+          maxFraction = value;
+          endX = px + maxFraction * dx;
+          endY = py + maxFraction * dy;
+          segMinX = px < endX ? px : endX;
+          segMinY = py < endY ? py : endY;
+          segMaxX = px > endX ? px : endX;
+          segMaxY = py > endY ? py : endY;
+        }
+        input.maxFraction = maxFraction;
+      } else {
+        if (top + 2 > this.stack.length) {
+          this.growStack();
+        }
+        this.stack[top++] = this.child2[node]!;
+        this.stack[top++] = first;
+      }
+    }
+  }
+
+  /**
+   * Sum of the perimeters of internal nodes divided by the root's perimeter: the SAH quality
+   * measure (lower is better; 0 for fewer than two leaves).
+   */
+  getAreaRatio(): number {
+    const root = this.root;
+    if (root === NULL_NODE || this.child1[root] === NULL_NODE) {
+      return 0;
+    }
+    const rootPerimeter = this.perimeter(root);
+    let total = 0;
+    for (let node = 0; node < this.capacity; node++) {
+      if (this.heights[node]! > 0) {
+        total += this.perimeter(node);
+      }
+    }
+    return rootPerimeter > 0 ? total / rootPerimeter : 0;
+  }
+
+  /**
+   * Checks every structural invariant (parent links, heights, enclosing boxes, leaf and free
+   * counts) and throws an Error naming the first one broken. O(n); for tests and debugging.
+   */
+  validate(): void {
+    let reachable = 0;
+    let leaves = 0;
+    if (this.root !== NULL_NODE) {
+      if (this.parent[this.root] !== NULL_NODE) {
+        throw new Error('DynamicTree: the root has a parent.');
+      }
+      const pending: number[] = [this.root];
+      while (pending.length > 0) {
+        const node = pending.pop()!;
+        reachable++;
+        if (reachable > this.capacity) {
+          throw new Error('DynamicTree: cycle detected.');
+        }
+        const a = this.child1[node]!;
+        const b = this.child2[node]!;
+        if (a === NULL_NODE) {
+          if (b !== NULL_NODE) {
+            throw new Error(`DynamicTree: leaf ${node} has a second child.`);
+          }
+          if (this.heights[node] !== 0) {
+            throw new Error(`DynamicTree: leaf ${node} has height ${this.heights[node]}.`);
+          }
+          leaves++;
+          continue;
+        }
+        for (const child of [a, b]) {
+          if (child < 0 || child >= this.capacity) {
+            throw new Error(`DynamicTree: node ${node} has child ${child} out of range.`);
+          }
+          if (this.parent[child] !== node) {
+            throw new Error(`DynamicTree: child ${child} does not point back to ${node}.`);
+          }
+          for (let k = 0; k < 2; k++) {
+            if (this.boxes[4 * node + k]! > this.boxes[4 * child + k]!) {
+              throw new Error(`DynamicTree: node ${node} does not enclose child ${child}.`);
+            }
+            if (this.boxes[4 * node + 2 + k]! < this.boxes[4 * child + 2 + k]!) {
+              throw new Error(`DynamicTree: node ${node} does not enclose child ${child}.`);
+            }
+          }
+          pending.push(child);
+        }
+        const expected = 1 + Math.max(this.heights[a]!, this.heights[b]!);
+        if (this.heights[node] !== expected) {
+          throw new Error(
+            `DynamicTree: node ${node} has height ${this.heights[node]}, expected ${expected}.`,
+          );
+        }
+      }
+    }
+    if (leaves !== this.leafCount) {
+      throw new Error(`DynamicTree: ${leaves} leaves reachable, proxy count ${this.leafCount}.`);
+    }
+    let free = 0;
+    for (let node = this.freeList; node !== NULL_NODE; node = this.parent[node]!) {
+      if (this.heights[node] !== -1) {
+        throw new Error(`DynamicTree: free node ${node} is not marked free.`);
+      }
+      free++;
+      if (free > this.capacity) {
+        throw new Error('DynamicTree: cycle in the free list.');
+      }
+    }
+    if (free + reachable !== this.capacity) {
+      throw new Error(
+        `DynamicTree: ${reachable} reachable + ${free} free nodes != capacity ${this.capacity}.`,
+      );
+    }
+  }
+
+  private perimeter(node: number): number {
+    const o = 4 * node;
+    const boxes = this.boxes;
+    return 2 * (boxes[o + 2]! - boxes[o]! + (boxes[o + 3]! - boxes[o + 1]!));
+  }
+
+  private grow(newCapacity: number): void {
+    const old = this.capacity;
+    const boxes = new Float64Array(4 * newCapacity);
+    boxes.set(this.boxes);
+    this.boxes = boxes;
+    this.child1 = growInt32(this.child1, newCapacity);
+    this.child2 = growInt32(this.child2, newCapacity);
+    this.parent = growInt32(this.parent, newCapacity);
+    this.heights = growInt32(this.heights, newCapacity);
+    this.userData = growInt32(this.userData, newCapacity);
+    // Thread the new nodes onto the free list in ascending order, ahead of any older free nodes.
+    for (let node = old; node < newCapacity; node++) {
+      this.parent[node] = node + 1 < newCapacity ? node + 1 : this.freeList;
+      this.heights[node] = -1;
+      this.child1[node] = NULL_NODE;
+      this.child2[node] = NULL_NODE;
+    }
+    this.freeList = old;
+    this.capacity = newCapacity;
+  }
+
+  private growStack(): void {
+    const stack = new Int32Array(2 * this.stack.length);
+    stack.set(this.stack);
+    this.stack = stack;
+  }
+
+  private allocateNode(): number {
+    if (this.freeList === NULL_NODE) {
+      this.grow(2 * this.capacity);
+    }
+    const node = this.freeList;
+    this.freeList = this.parent[node]!;
+    this.parent[node] = NULL_NODE;
+    this.child1[node] = NULL_NODE;
+    this.child2[node] = NULL_NODE;
+    this.heights[node] = 0;
+    this.userData[node] = -1;
+    return node;
+  }
+
+  private freeNode(node: number): void {
+    this.parent[node] = this.freeList;
+    this.heights[node] = -1;
+    this.child1[node] = NULL_NODE;
+    this.child2[node] = NULL_NODE;
+    this.freeList = node;
+  }
+
+  /**
+   * Branch-and-bound search for the sibling that minimises the cost of inserting `leaf` L
+   * (Bittner et al. 2015, section 3). Making node X the sibling of L costs
+   *   cost(X) = perimeter(X ∪ L) + Σ over ancestors P of X of [perimeter(P ∪ L) - perimeter(P)]
+   * (the new parent plus the growth of every ancestor). Every node below an internal node C
+   * pays C's growth and at least perimeter(L) for its own new parent, so the subtree of C is
+   * searched only while cost(C) - perimeter(C) + perimeter(L) can beat the best cost found.
+   * The search follows one path, into the child with the lower bound, instead of the paper's
+   * priority queue: the same trade Box2D v3 makes, giving nearly the same trees with no queue.
+   */
+  private findBestSibling(leaf: number): number {
+    const boxes = this.boxes;
+    const lo = 4 * leaf;
+    const lMinX = boxes[lo]!;
+    const lMinY = boxes[lo + 1]!;
+    const lMaxX = boxes[lo + 2]!;
+    const lMaxY = boxes[lo + 3]!;
+    const leafPerimeter = 2 * (lMaxX - lMinX + (lMaxY - lMinY));
+    const leafCenterX = lMinX + lMaxX;
+    const leafCenterY = lMinY + lMaxY;
+
+    let node = this.root;
+    const o = 4 * node;
+    let nodePerimeter = this.perimeter(node);
+    let direct = unionPerimeter(
+      boxes[o]!,
+      boxes[o + 1]!,
+      boxes[o + 2]!,
+      boxes[o + 3]!,
+      lMinX,
+      lMinY,
+      lMaxX,
+      lMaxY,
+    );
+    let inherited = 0;
+    let best = node;
+    let bestCost = direct;
+
+    while (this.child1[node] !== NULL_NODE) {
+      // The cost of the current node as sibling is inherited + direct, already compared when
+      // the node was reached. Going below it, every descendant also pays the growth of this node.
+      inherited += direct - nodePerimeter;
+
+      const a = this.child1[node]!;
+      const b = this.child2[node]!;
+      const ao = 4 * a;
+      const bo = 4 * b;
+      const directA = unionPerimeter(
+        boxes[ao]!,
+        boxes[ao + 1]!,
+        boxes[ao + 2]!,
+        boxes[ao + 3]!,
+        lMinX,
+        lMinY,
+        lMaxX,
+        lMaxY,
+      );
+      const directB = unionPerimeter(
+        boxes[bo]!,
+        boxes[bo + 1]!,
+        boxes[bo + 2]!,
+        boxes[bo + 3]!,
+        lMinX,
+        lMinY,
+        lMaxX,
+        lMaxY,
+      );
+      const costA = inherited + directA;
+      const costB = inherited + directB;
+      if (costA < bestCost) {
+        best = a;
+        bestCost = costA;
+      }
+      if (costB < bestCost) {
+        best = b;
+        bestCost = costB;
+      }
+      const isLeafA = this.child1[a] === NULL_NODE;
+      const isLeafB = this.child1[b] === NULL_NODE;
+      // Below child C every candidate pays at least inherited + growth of C + perimeter(L).
+      const perimeterA = isLeafA ? 0 : this.perimeter(a);
+      const perimeterB = isLeafB ? 0 : this.perimeter(b);
+      const lowerA = isLeafA ? Infinity : inherited + directA - perimeterA + leafPerimeter;
+      const lowerB = isLeafB ? Infinity : inherited + directB - perimeterB + leafPerimeter;
+      if (bestCost <= lowerA && bestCost <= lowerB) {
+        break;
+      }
+      let goA: boolean;
+      if (lowerA === lowerB) {
+        // Tie (common when L lies inside both): descend towards the nearer centre.
+        const ax = boxes[ao]! + boxes[ao + 2]! - leafCenterX;
+        const ay = boxes[ao + 1]! + boxes[ao + 3]! - leafCenterY;
+        const bx = boxes[bo]! + boxes[bo + 2]! - leafCenterX;
+        const by = boxes[bo + 1]! + boxes[bo + 3]! - leafCenterY;
+        goA = ax * ax + ay * ay <= bx * bx + by * by;
+      } else {
+        goA = lowerA < lowerB;
+      }
+      if (goA) {
+        node = a;
+        nodePerimeter = perimeterA;
+        direct = directA;
+      } else {
+        node = b;
+        nodePerimeter = perimeterB;
+        direct = directB;
+      }
+    }
+    return best;
+  }
+
+  private insertLeaf(leaf: number): void {
+    if (this.root === NULL_NODE) {
+      this.root = leaf;
+      this.parent[leaf] = NULL_NODE;
+      return;
+    }
+    const sibling = this.findBestSibling(leaf);
+    const oldParent = this.parent[sibling]!;
+    const newParent = this.allocateNode();
+    this.parent[newParent] = oldParent;
+    this.child1[newParent] = sibling;
+    this.child2[newParent] = leaf;
+    this.parent[sibling] = newParent;
+    this.parent[leaf] = newParent;
+    if (oldParent === NULL_NODE) {
+      this.root = newParent;
+    } else if (this.child1[oldParent] === sibling) {
+      this.child1[oldParent] = newParent;
+    } else {
+      this.child2[oldParent] = newParent;
+    }
+    this.refitAndRotateFrom(newParent);
+  }
+
+  private removeLeaf(leaf: number): void {
+    if (leaf === this.root) {
+      this.root = NULL_NODE;
+      return;
+    }
+    const oldParent = this.parent[leaf]!;
+    const grandParent = this.parent[oldParent]!;
+    const sibling =
+      this.child1[oldParent] === leaf ? this.child2[oldParent]! : this.child1[oldParent]!;
+    this.freeNode(oldParent);
+    this.parent[leaf] = NULL_NODE;
+    if (grandParent === NULL_NODE) {
+      this.root = sibling;
+      this.parent[sibling] = NULL_NODE;
+      return;
+    }
+    if (this.child1[grandParent] === oldParent) {
+      this.child1[grandParent] = sibling;
+    } else {
+      this.child2[grandParent] = sibling;
+    }
+    this.parent[sibling] = grandParent;
+    this.refitAndRotateFrom(grandParent);
+  }
+
+  /** Recomputes boxes and heights from `node` to the root, rotating each ancestor on the way. */
+  private refitAndRotateFrom(node: number): void {
+    let index = node;
+    while (index !== NULL_NODE) {
+      this.refit(index);
+      index = this.rotate(index);
+      index = this.parent[index]!;
+    }
+  }
+
+  /** Sets an internal node's box to the union of its children and its height from theirs. */
+  private refit(node: number): void {
+    const a = this.child1[node]!;
+    const b = this.child2[node]!;
+    const boxes = this.boxes;
+    const o = 4 * node;
+    const ao = 4 * a;
+    const bo = 4 * b;
+    boxes[o] = Math.min(boxes[ao]!, boxes[bo]!);
+    boxes[o + 1] = Math.min(boxes[ao + 1]!, boxes[bo + 1]!);
+    boxes[o + 2] = Math.max(boxes[ao + 2]!, boxes[bo + 2]!);
+    boxes[o + 3] = Math.max(boxes[ao + 3]!, boxes[bo + 3]!);
+    const ha = this.heights[a]!;
+    const hb = this.heights[b]!;
+    this.heights[node] = 1 + (ha > hb ? ha : hb);
+  }
+
+  /**
+   * Rotates at internal node `a` (already refitted) and returns the node now at its place.
+   * Height imbalance greater than one promotes the taller child (Box2D v2's AVL-like
+   * balance); otherwise one child is swapped with a grandchild, or two grandchildren are
+   * swapped, when that lowers the sum of the perimeters of `a`'s children without
+   * unbalancing them.
+   */
+  private rotate(a: number): number {
+    const b = this.child1[a]!;
+    const c = this.child2[a]!;
+    const heights = this.heights;
+    const hb = heights[b]!;
+    const hc = heights[c]!;
+    if (hc - hb > 1) {
+      return this.promote(a, c, b);
+    }
+    if (hb - hc > 1) {
+      return this.promote(a, b, c);
+    }
+    if (hb === 0 && hc === 0) {
+      return a;
+    }
+
+    // Candidate swaps, scored by the change in total internal perimeter (negative is better).
+    // 1: b <-> child of c; 2: c <-> child of b; 3: grandchild of b <-> grandchild of c.
+    let bestGain = 0;
+    let bestKind = 0;
+    let bestFirst = NULL_NODE;
+    let bestSecond = NULL_NODE;
+
+    if (hc > 0) {
+      const f = this.child1[c]!;
+      const g = this.child2[c]!;
+      const perimeterC = this.perimeter(c);
+      // Swap b with f: c becomes b ∪ g.
+      if (
+        Math.abs(hb - heights[g]!) <= 1 &&
+        Math.abs(heights[f]! - (1 + Math.max(hb, heights[g]!))) <= 1
+      ) {
+        const gain = this.pairPerimeter(b, g) - perimeterC;
+        if (gain < bestGain) {
+          bestGain = gain;
+          bestKind = 1;
+          bestFirst = b;
+          bestSecond = f;
+        }
+      }
+      if (
+        Math.abs(hb - heights[f]!) <= 1 &&
+        Math.abs(heights[g]! - (1 + Math.max(hb, heights[f]!))) <= 1
+      ) {
+        const gain = this.pairPerimeter(b, f) - perimeterC;
+        if (gain < bestGain) {
+          bestGain = gain;
+          bestKind = 1;
+          bestFirst = b;
+          bestSecond = g;
+        }
+      }
+    }
+    if (hb > 0) {
+      const d = this.child1[b]!;
+      const e = this.child2[b]!;
+      const perimeterB = this.perimeter(b);
+      if (
+        Math.abs(hc - heights[e]!) <= 1 &&
+        Math.abs(heights[d]! - (1 + Math.max(hc, heights[e]!))) <= 1
+      ) {
+        const gain = this.pairPerimeter(c, e) - perimeterB;
+        if (gain < bestGain) {
+          bestGain = gain;
+          bestKind = 1;
+          bestFirst = c;
+          bestSecond = d;
+        }
+      }
+      if (
+        Math.abs(hc - heights[d]!) <= 1 &&
+        Math.abs(heights[e]! - (1 + Math.max(hc, heights[d]!))) <= 1
+      ) {
+        const gain = this.pairPerimeter(c, d) - perimeterB;
+        if (gain < bestGain) {
+          bestGain = gain;
+          bestKind = 1;
+          bestFirst = c;
+          bestSecond = e;
+        }
+      }
+      if (hc > 0) {
+        const f = this.child1[c]!;
+        const g = this.child2[c]!;
+        const base = perimeterB + this.perimeter(c);
+        // Swap d with f: b = f ∪ e, c = d ∪ g; or d with g: b = g ∪ e, c = f ∪ d.
+        if (
+          Math.abs(heights[f]! - heights[e]!) <= 1 &&
+          Math.abs(heights[d]! - heights[g]!) <= 1 &&
+          Math.abs(Math.max(heights[f]!, heights[e]!) - Math.max(heights[d]!, heights[g]!)) <= 1
+        ) {
+          const gain = this.pairPerimeter(f, e) + this.pairPerimeter(d, g) - base;
+          if (gain < bestGain) {
+            bestGain = gain;
+            bestKind = 2;
+            bestFirst = d;
+            bestSecond = f;
+          }
+        }
+        if (
+          Math.abs(heights[g]! - heights[e]!) <= 1 &&
+          Math.abs(heights[d]! - heights[f]!) <= 1 &&
+          Math.abs(Math.max(heights[g]!, heights[e]!) - Math.max(heights[d]!, heights[f]!)) <= 1
+        ) {
+          const gain = this.pairPerimeter(g, e) + this.pairPerimeter(d, f) - base;
+          if (gain < bestGain) {
+            bestKind = 2;
+            bestFirst = d;
+            bestSecond = g;
+          }
+        }
+      }
+    }
+    if (bestKind === 0) {
+      return a;
+    }
+    // Swap the two nodes between their parents, then refit the parents bottom-up.
+    const parentFirst = this.parent[bestFirst]!;
+    const parentSecond = this.parent[bestSecond]!;
+    this.replaceChild(parentFirst, bestFirst, bestSecond);
+    this.replaceChild(parentSecond, bestSecond, bestFirst);
+    if (bestKind === 1) {
+      // bestFirst was a child of a and moves down under parentSecond.
+      this.refit(parentSecond);
+    } else {
+      this.refit(parentFirst);
+      this.refit(parentSecond);
+    }
+    this.refit(a);
+    return a;
+  }
+
+  /**
+   * Promotes `tall`, a child of `a` at least two levels taller than its sibling `short`, to
+   * `a`'s place; `a` keeps `short` and takes the shorter of `tall`'s children, `tall` keeps the
+   * taller one. Returns `tall`.
+   */
+  private promote(a: number, tall: number, short: number): number {
+    const f = this.child1[tall]!;
+    const g = this.child2[tall]!;
+    const aParent = this.parent[a]!;
+
+    this.parent[tall] = aParent;
+    if (aParent === NULL_NODE) {
+      this.root = tall;
+    } else if (this.child1[aParent] === a) {
+      this.child1[aParent] = tall;
+    } else {
+      this.child2[aParent] = tall;
+    }
+
+    const keep = this.heights[f]! >= this.heights[g]! ? f : g;
+    const give = keep === f ? g : f;
+    this.child1[a] = short;
+    this.child2[a] = give;
+    this.parent[give] = a;
+    this.child1[tall] = a;
+    this.child2[tall] = keep;
+    this.parent[a] = tall;
+    this.refit(a);
+    this.refit(tall);
+    return tall;
+  }
+
+  private replaceChild(parentNode: number, oldChild: number, newChild: number): void {
+    if (this.child1[parentNode] === oldChild) {
+      this.child1[parentNode] = newChild;
+    } else {
+      this.child2[parentNode] = newChild;
+    }
+    this.parent[newChild] = parentNode;
+  }
+
+  private pairPerimeter(p: number, q: number): number {
+    const boxes = this.boxes;
+    const po = 4 * p;
+    const qo = 4 * q;
+    return unionPerimeter(
+      boxes[po]!,
+      boxes[po + 1]!,
+      boxes[po + 2]!,
+      boxes[po + 3]!,
+      boxes[qo]!,
+      boxes[qo + 1]!,
+      boxes[qo + 2]!,
+      boxes[qo + 3]!,
+    );
+  }
+}
+
+function growInt32(array: Int32Array, length: number): Int32Array {
+  const grown = new Int32Array(length);
+  grown.set(array);
+  return grown;
+}

@@ -1,0 +1,132 @@
+import { PhysicalError } from '../core/errors.ts';
+import { requireFinite, requirePositive } from '../core/validate.ts';
+import { MAX_POLYGON_VERTICES } from '../core/constants.ts';
+import type { Vec2Like } from '../math/vec2.ts';
+import { Body, type BodyOptions } from './body.ts';
+import type { MaterialOptions } from './shape.ts';
+
+// The bodies the thesis's users reach for, one call each. Each takes the body options plus the
+// shape's size and material, so `particle({ position, radius, restitution })` is the whole story.
+
+type Common<UserData> = Omit<BodyOptions<UserData>, 'shapes'> & MaterialOptions;
+
+/** Options of {@link particle}. */
+export interface ParticleOptions<UserData = unknown> extends Common<UserData> {
+  /** Radius (m), > 0. */
+  readonly radius: number;
+}
+
+/** Options of {@link box}. */
+export interface BoxOptions<UserData = unknown> extends Common<UserData> {
+  /** Full width (m), > 0. */
+  readonly width: number;
+  /** Full height (m), > 0. */
+  readonly height: number;
+}
+
+/** Options of {@link regularPolygon}. */
+export interface RegularPolygonOptions<UserData = unknown> extends Common<UserData> {
+  /** Number of sides, 3 to 8. */
+  readonly sides: number;
+  /** Distance from the centre to each vertex (m), > 0. */
+  readonly radius: number;
+}
+
+/** Options of {@link polygon}. */
+export interface PolygonOptions<UserData = unknown> extends Common<UserData> {
+  /** 3 to 8 vertices of a convex polygon, relative to `position` (m), either winding. */
+  readonly vertices: readonly Vec2Like[];
+}
+
+/** Options of {@link wall}. */
+export interface WallOptions<UserData = unknown> extends Omit<
+  Common<UserData>,
+  'type' | 'density'
+> {
+  /** Start point (m), relative to `position` (world coordinates when `position` is omitted). */
+  readonly from: Vec2Like;
+  /** End point (m). */
+  readonly to: Vec2Like;
+  /** Collide only on the positive side (the side facing up for a left-to-right wall on a y-down screen). */
+  readonly oneSided?: boolean;
+  /** Walls are static unless made kinematic (a moving platform). */
+  readonly type?: 'static' | 'kinematic';
+}
+
+function material(options: MaterialOptions): MaterialOptions {
+  const result: { density?: number; friction?: number; restitution?: number } = {};
+  if (options.density !== undefined) result.density = options.density;
+  if (options.friction !== undefined) result.friction = options.friction;
+  if (options.restitution !== undefined) result.restitution = options.restitution;
+  return result;
+}
+
+/** A circle body: the thesis's particle. Dynamic unless `type` says otherwise. */
+export function particle<UserData = unknown>(options: ParticleOptions<UserData>): Body<UserData> {
+  return new Body<UserData>({
+    ...options,
+    shapes: [{ type: 'circle', radius: options.radius, ...material(options) }],
+  });
+}
+
+/** A rectangle body of `width` x `height` metres, centred on its position. */
+export function box<UserData = unknown>(options: BoxOptions<UserData>): Body<UserData> {
+  return new Body<UserData>({
+    ...options,
+    shapes: [{ type: 'box', width: options.width, height: options.height, ...material(options) }],
+  });
+}
+
+/**
+ * A regular polygon with `sides` sides (3 to 8) and circumradius `radius`, centred on its
+ * position, with a vertex at angle 0 (on the +x axis) before the body's rotation.
+ */
+export function regularPolygon<UserData = unknown>(
+  options: RegularPolygonOptions<UserData>,
+): Body<UserData> {
+  const sides = requireFinite('sides', options.sides);
+  if (!Number.isInteger(sides) || sides < 3 || sides > MAX_POLYGON_VERTICES) {
+    throw new PhysicalError(
+      'sides',
+      `must be a whole number from 3 to ${MAX_POLYGON_VERTICES}, got ${sides}.`,
+    );
+  }
+  const radius = requirePositive('radius', options.radius);
+  const vertices: Vec2Like[] = [];
+  for (let i = 0; i < sides; i++) {
+    const angle = (2 * Math.PI * i) / sides;
+    vertices.push({ x: radius * Math.cos(angle), y: radius * Math.sin(angle) });
+  }
+  return new Body<UserData>({
+    ...options,
+    shapes: [{ type: 'polygon', vertices, ...material(options) }],
+  });
+}
+
+/** A convex polygon body from its vertices (relative to `position`). Concave lists are rejected. */
+export function polygon<UserData = unknown>(options: PolygonOptions<UserData>): Body<UserData> {
+  return new Body<UserData>({
+    ...options,
+    shapes: [{ type: 'polygon', vertices: options.vertices, ...material(options) }],
+  });
+}
+
+/**
+ * A wall: a static segment from `from` to `to`. Without `position`, the points are world
+ * coordinates.
+ */
+export function wall<UserData = unknown>(options: WallOptions<UserData>): Body<UserData> {
+  return new Body<UserData>({
+    ...options,
+    type: options.type ?? 'static',
+    shapes: [
+      {
+        type: 'segment',
+        from: options.from,
+        to: options.to,
+        oneSided: options.oneSided ?? false,
+        ...material(options),
+      },
+    ],
+  });
+}

@@ -1,0 +1,38 @@
+// Solver body state: the velocities and the pose change of one step, packed for the solver loops.
+// Slot 0 is the identity state that static (and sleeping) bodies share, so the contact loops need
+// no branch for them: its velocity stays zero because every static body has zero inverse mass.
+//
+// Layout per body, stride 8 doubles (one 64-byte cache line):
+//   0 vx, 1 vy, 2 w        velocity (m/s, rad/s)
+//   3 deltaAngle            rotation this step, exact sum of h w (rad)
+//   4 dpx, 5 dpy            translation of the centre of mass this step (m)
+//   6 qc, 7 qs              rotation this step as cosine/sine (for the contact anchors)
+
+export const STATE_STRIDE = 8;
+export const V_X = 0;
+export const V_Y = 1;
+export const W = 2;
+export const DELTA_ANGLE = 3;
+export const DP_X = 4;
+export const DP_Y = 5;
+export const Q_C = 6;
+export const Q_S = 7;
+
+/** Growable array of solver body states. */
+export class BodyStates {
+  data: Float64Array = new Float64Array(STATE_STRIDE * 64);
+
+  /** Makes room for `count` states plus the identity slot, and resets the identity slot. */
+  reserve(count: number): Float64Array {
+    const needed = (count + 1) * STATE_STRIDE;
+    if (this.data.length < needed) {
+      let size = this.data.length;
+      while (size < needed) size *= 2;
+      this.data = new Float64Array(size);
+    }
+    const d = this.data;
+    d.fill(0, 0, STATE_STRIDE);
+    d[Q_C] = 1;
+    return d;
+  }
+}

@@ -1,0 +1,703 @@
+import { PhysicalError } from '../core/errors.ts';
+import { Listeners } from '../core/listeners.ts';
+import {
+  requireFinite,
+  requireNonNegative,
+  requirePositive,
+  requireVector,
+} from '../core/validate.ts';
+import { computeCircleMass } from '../geometry/circle.ts';
+import { MassData } from '../geometry/mass-data.ts';
+import { computePolygonMass } from '../geometry/polygon.ts';
+import { Transform } from '../math/transform.ts';
+import type { Vec2, Vec2Like } from '../math/vec2.ts';
+import type { World } from '../world/world.ts';
+import type { Contact } from './contact.ts';
+import type { BodyEvents } from './events.ts';
+import { Force, validateDuration, type ForceOptions, type TorqueOptions } from './force.ts';
+import { Shape, type ShapeOptions } from './shape.ts';
+
+/**
+ * - `'dynamic'`: moved by forces and collisions; needs a positive mass.
+ * - `'static'`: never moves (walls, the ground); infinite mass.
+ * - `'kinematic'`: moves only by the velocity you give it; pushes dynamic bodies, is not pushed.
+ */
+export type BodyType = 'dynamic' | 'static' | 'kinematic';
+
+/** Describes a body. Every field is optional; units are SI (m, kg, s, rad). */
+export interface BodyOptions<UserData = unknown> {
+  /** Default `'dynamic'`. */
+  readonly type?: BodyType;
+  /** Position of the body origin in world coordinates (m). Default (0, 0). */
+  readonly position?: Vec2Like;
+  /** Rotation (rad). Positive turns +x towards +y: clockwise on a y-down screen. Default 0. */
+  readonly angle?: number;
+  /** Velocity of the centre of mass (m/s). Default (0, 0). */
+  readonly linearVelocity?: Vec2Like;
+  /** Angular velocity (rad/s). Default 0. */
+  readonly angularVelocity?: number;
+  /** The body's shapes; several make a compound body. */
+  readonly shapes?: readonly ShapeOptions[];
+  /**
+   * Overrides the mass computed from the shapes' density (kg, > 0). The centre of mass stays
+   * where the shapes put it; the moment of inertia scales with the mass unless also given.
+   */
+  readonly mass?: number;
+  /** Overrides the moment of inertia about the centre of mass (kg m^2, > 0). */
+  readonly inertia?: number;
+  /** Multiplies the world's gravity for this body. Default 1; 0 makes it float. */
+  readonly gravityScale?: number;
+  /** Linear damping (1/s): dv/dt = -c v. Default 0. Use it for "slows down by itself", not for air. */
+  readonly linearDamping?: number;
+  /** Angular damping (1/s). Default 0. */
+  readonly angularDamping?: number;
+  /**
+   * The thesis's drag: a force against the motion, F = -drag * |v| * v (N s^2/m^2), as air exerts
+   * on a moving object. Default 0.
+   */
+  readonly drag?: number;
+  /** Prevents rotation (infinite moment of inertia). Default false. */
+  readonly fixedRotation?: boolean;
+  /** Lets the body fall asleep when it comes to rest. Default true. */
+  readonly allowSleep?: boolean;
+  /** Starts asleep (it wakes on contact, force or any change). Default false. */
+  readonly asleep?: boolean;
+  /** The thesis's `onMove`: called after each step in which the body moved. */
+  readonly onMove?: BodyEvents['move'];
+  /** The thesis's `onCollision`: called after each step in which the body was in a collision. */
+  readonly onCollision?: BodyEvents['collision'];
+  /** Anything the app wants to keep with the body (a colour, a game object). */
+  readonly userData?: UserData;
+}
+
+const BODY_TYPES: readonly BodyType[] = ['dynamic', 'static', 'kinematic'];
+const scratchMass = new MassData();
+
+/**
+ * A rigid body: the thesis's RigidBody2D. Build one, then `world.add(body)`; or use the helpers
+ * {@link particle}, {@link box}, {@link regularPolygon}, {@link polygon} and {@link wall}.
+ *
+ * Coordinates are SI in a y-down world by default (x right, y down, like the screen).
+ */
+export class Body<UserData = unknown> {
+  /** Dynamic, static or kinematic; fixed at creation. */
+  readonly type: BodyType;
+  /** Anything the app keeps with the body. */
+  userData: UserData | undefined;
+
+  // ---- Internal state. Fields marked @internal are stripped from the published types. ----
+  /** @internal Transform of the body origin. */
+  readonly transform: Transform = new Transform();
+  /** @internal Unwrapped rotation (rad). */
+  angleValue: number;
+  /** @internal Centre of mass, world (m). */
+  centerX = 0;
+  centerY = 0;
+  /** @internal Centre of mass, body-local (m). */
+  localCenterX = 0;
+  localCenterY = 0;
+  /** @internal Centre of mass and angle at the start of the step, for continuous collision. */
+  center0X = 0;
+  center0Y = 0;
+  angle0 = 0;
+  /** @internal Velocity of the centre of mass (m/s) and angular velocity (rad/s). */
+  velocityX = 0;
+  velocityY = 0;
+  angularVelocityValue = 0;
+  /** @internal Mass properties. */
+  massValue = 0;
+  invMass = 0;
+  inertiaValue = 0;
+  invInertia = 0;
+  massOverride = 0;
+  inertiaOverride = 0;
+  /** @internal Force and torque to apply this step (N, N m), gathered from `forces`. */
+  forceX = 0;
+  forceY = 0;
+  torqueValue = 0;
+  gravityScaleValue: number;
+  linearDampingValue: number;
+  angularDampingValue: number;
+  dragValue: number;
+  fixedRotationValue: boolean;
+  allowSleepValue: boolean;
+  /** @internal */
+  awake: boolean;
+  sleepTime = 0;
+  /** @internal Largest and smallest distance from the centre of mass to the surface (m). */
+  maxExtent = 0;
+  minExtent = 0;
+  /** @internal */
+  readonly shapeList: Shape[] = [];
+  readonly forceList: Force[] = [];
+  /** @internal Contacts touching this body's shapes (both touching and merely overlapping boxes). */
+  readonly contacts: Contact[] = [];
+  /** @internal The world holding the body, or null. */
+  worldRef: World | null = null;
+  /** @internal Index in the world's body array. */
+  worldIndex = -1;
+  /** @internal World-local id, stable while in the world. */
+  id = -1;
+  /** @internal Index in the solver's state arrays this step; 0 (the identity state) when not solved. */
+  solverIndex = 0;
+  /** @internal Stamp of the last island search that visited the body. */
+  islandStamp = 0;
+  /** @internal A removal was requested during a step; no more events. */
+  removalPending = false;
+  /** @internal */
+  readonly listeners: Listeners<BodyEvents> = new Listeners<BodyEvents>();
+
+  private readonly positionView: Vec2 = { x: 0, y: 0 };
+  private readonly velocityView: Vec2 = { x: 0, y: 0 };
+  private readonly centerView: Vec2 = { x: 0, y: 0 };
+
+  constructor(options: BodyOptions<UserData> = {}) {
+    if (options === null || typeof options !== 'object') {
+      throw new PhysicalError(
+        'options',
+        `must be an object of body options, got ${String(options)}.`,
+      );
+    }
+    const type = options.type ?? 'dynamic';
+    if (!BODY_TYPES.includes(type)) {
+      throw new PhysicalError(
+        'type',
+        `must be 'dynamic', 'static' or 'kinematic', got ${String(type)}.`,
+      );
+    }
+    this.type = type;
+    const position = options.position ?? { x: 0, y: 0 };
+    requireVector('position', position);
+    this.angleValue = requireFinite('angle', options.angle ?? 0);
+    this.transform.set(position.x, position.y, this.angleValue);
+    const velocity = options.linearVelocity ?? { x: 0, y: 0 };
+    requireVector('linearVelocity', velocity);
+    const angularVelocity = requireFinite('angularVelocity', options.angularVelocity ?? 0);
+    this.gravityScaleValue = requireFinite('gravityScale', options.gravityScale ?? 1);
+    this.linearDampingValue = requireNonNegative('linearDamping', options.linearDamping ?? 0);
+    this.angularDampingValue = requireNonNegative('angularDamping', options.angularDamping ?? 0);
+    this.dragValue = requireNonNegative('drag', options.drag ?? 0);
+    this.fixedRotationValue = options.fixedRotation ?? false;
+    this.allowSleepValue = options.allowSleep ?? true;
+    this.awake = type !== 'static' && !(options.asleep ?? false);
+    if (options.mass !== undefined) this.massOverride = requirePositive('mass', options.mass);
+    if (options.inertia !== undefined)
+      this.inertiaOverride = requirePositive('inertia', options.inertia);
+    this.userData = options.userData;
+
+    const shapes = options.shapes ?? [];
+    if (!Array.isArray(shapes)) {
+      throw new PhysicalError('shapes', 'must be an array of shape descriptions.');
+    }
+    for (let i = 0; i < shapes.length; i++) {
+      this.shapeList.push(this.createShape(shapes[i] as ShapeOptions, `shapes[${i}]`));
+    }
+    this.updateMassData();
+    if (type !== 'static') {
+      this.velocityX = velocity.x;
+      this.velocityY = velocity.y;
+      this.angularVelocityValue = this.fixedRotationValue ? 0 : angularVelocity;
+    }
+    if (options.onMove !== undefined) this.listeners.on('move', options.onMove);
+    if (options.onCollision !== undefined) this.listeners.on('collision', options.onCollision);
+  }
+
+  // ---------------------------------------------------------------- pose and velocity
+
+  /** The world this body is in, or null. */
+  get world(): World | null {
+    return this.worldRef;
+  }
+
+  /**
+   * Position of the body origin in world coordinates (m). The returned object is a view the body
+   * reuses: read it, do not keep or modify it. Setting it teleports the body and wakes it.
+   */
+  get position(): Readonly<Vec2> {
+    this.positionView.x = this.transform.x;
+    this.positionView.y = this.transform.y;
+    return this.positionView;
+  }
+
+  set position(value: Vec2Like) {
+    requireVector('position', value);
+    this.transform.x = value.x;
+    this.transform.y = value.y;
+    this.syncCenter();
+    this.worldRef?.bodyMoved(this);
+  }
+
+  /** Rotation (rad), unwrapped (it keeps counting past 2 pi). Setting it wakes the body. */
+  get angle(): number {
+    return this.angleValue;
+  }
+
+  set angle(value: number) {
+    this.angleValue = requireFinite('angle', value);
+    this.transform.set(this.transform.x, this.transform.y, value);
+    this.syncCenter();
+    this.worldRef?.bodyMoved(this);
+  }
+
+  /** Centre of mass in world coordinates (m); a reused view, like {@link position}. */
+  get centerOfMass(): Readonly<Vec2> {
+    this.centerView.x = this.centerX;
+    this.centerView.y = this.centerY;
+    return this.centerView;
+  }
+
+  /** Velocity of the centre of mass (m/s); a reused view. Setting it wakes the body. */
+  get linearVelocity(): Readonly<Vec2> {
+    this.velocityView.x = this.velocityX;
+    this.velocityView.y = this.velocityY;
+    return this.velocityView;
+  }
+
+  set linearVelocity(value: Vec2Like) {
+    requireVector('linearVelocity', value);
+    if (this.type === 'static') return;
+    this.velocityX = value.x;
+    this.velocityY = value.y;
+    this.wake();
+  }
+
+  /** Angular velocity (rad/s). Setting it wakes the body. */
+  get angularVelocity(): number {
+    return this.angularVelocityValue;
+  }
+
+  set angularVelocity(value: number) {
+    requireFinite('angularVelocity', value);
+    if (this.type === 'static' || this.fixedRotationValue) return;
+    this.angularVelocityValue = value;
+    this.wake();
+  }
+
+  /** Kinetic energy, translational plus rotational (J). */
+  get kineticEnergy(): number {
+    const v2 = this.velocityX * this.velocityX + this.velocityY * this.velocityY;
+    const w = this.angularVelocityValue;
+    return 0.5 * this.massValue * v2 + 0.5 * this.inertiaValue * w * w;
+  }
+
+  /** Converts a body-local point to world coordinates (m). */
+  getWorldPoint(local: Vec2Like, out: Vec2 = { x: 0, y: 0 }): Vec2 {
+    const { c, s, x, y } = this.transform;
+    const lx = local.x;
+    const ly = local.y;
+    out.x = c * lx - s * ly + x;
+    out.y = s * lx + c * ly + y;
+    return out;
+  }
+
+  /** Converts a world point to body-local coordinates (m). */
+  getLocalPoint(world: Vec2Like, out: Vec2 = { x: 0, y: 0 }): Vec2 {
+    const { c, s, x, y } = this.transform;
+    const dx = world.x - x;
+    const dy = world.y - y;
+    out.x = c * dx + s * dy;
+    out.y = -s * dx + c * dy;
+    return out;
+  }
+
+  /** Velocity of the body's material at a world point (m/s): v + w x r. */
+  getVelocityAt(world: Vec2Like, out: Vec2 = { x: 0, y: 0 }): Vec2 {
+    const w = this.angularVelocityValue;
+    out.x = this.velocityX - w * (world.y - this.centerY);
+    out.y = this.velocityY + w * (world.x - this.centerX);
+    return out;
+  }
+
+  // ---------------------------------------------------------------- mass
+
+  /** Mass (kg); 0 for static and kinematic bodies. Setting it overrides the shapes' density. */
+  get mass(): number {
+    return this.massValue;
+  }
+
+  set mass(value: number) {
+    this.requireDynamic('mass');
+    this.massOverride = requirePositive('mass', value);
+    this.updateMassData();
+    this.wake();
+  }
+
+  /** Moment of inertia about the centre of mass (kg m^2). Setting it overrides the computed value. */
+  get inertia(): number {
+    return this.inertiaValue;
+  }
+
+  set inertia(value: number) {
+    this.requireDynamic('inertia');
+    this.inertiaOverride = requirePositive('inertia', value);
+    this.updateMassData();
+    this.wake();
+  }
+
+  /** Forgets `mass` and `inertia` set by hand and computes them from the shapes again. */
+  resetMass(): void {
+    this.massOverride = 0;
+    this.inertiaOverride = 0;
+    this.updateMassData();
+    this.wake();
+  }
+
+  /** Centre of mass in body-local coordinates (m); a new object. */
+  get localCenterOfMass(): Vec2 {
+    return { x: this.localCenterX, y: this.localCenterY };
+  }
+
+  // ---------------------------------------------------------------- settings
+
+  /** Multiplies the world's gravity for this body. */
+  get gravityScale(): number {
+    return this.gravityScaleValue;
+  }
+
+  set gravityScale(value: number) {
+    this.gravityScaleValue = requireFinite('gravityScale', value);
+    this.wake();
+  }
+
+  /** Linear damping (1/s). */
+  get linearDamping(): number {
+    return this.linearDampingValue;
+  }
+
+  set linearDamping(value: number) {
+    this.linearDampingValue = requireNonNegative('linearDamping', value);
+  }
+
+  /** Angular damping (1/s). */
+  get angularDamping(): number {
+    return this.angularDampingValue;
+  }
+
+  set angularDamping(value: number) {
+    this.angularDampingValue = requireNonNegative('angularDamping', value);
+  }
+
+  /** Quadratic drag coefficient (N s^2/m^2): F = -drag |v| v. */
+  get drag(): number {
+    return this.dragValue;
+  }
+
+  set drag(value: number) {
+    this.dragValue = requireNonNegative('drag', value);
+  }
+
+  /** True when the body cannot rotate. */
+  get fixedRotation(): boolean {
+    return this.fixedRotationValue;
+  }
+
+  set fixedRotation(value: boolean) {
+    this.fixedRotationValue = value;
+    if (value) this.angularVelocityValue = 0;
+    this.updateMassData();
+    this.wake();
+  }
+
+  /** Whether the body may fall asleep when it rests. Turning it off wakes the body. */
+  get allowSleep(): boolean {
+    return this.allowSleepValue;
+  }
+
+  set allowSleep(value: boolean) {
+    this.allowSleepValue = value;
+    if (!value) this.wake();
+  }
+
+  /** True unless the body sleeps (static bodies never count as awake). */
+  get isAwake(): boolean {
+    return this.awake;
+  }
+
+  /** Wakes the body and everything resting on it. Harmless on an awake or static body. */
+  wake(): void {
+    if (this.type === 'static') return;
+    if (this.worldRef !== null) this.worldRef.wakeBody(this);
+    else {
+      this.awake = true;
+      this.sleepTime = 0;
+    }
+  }
+
+  /** Puts the body to sleep now (it stops until something wakes it). */
+  sleep(): void {
+    if (this.type === 'static') return;
+    if (this.worldRef !== null) this.worldRef.sleepBody(this);
+    else this.awake = false;
+  }
+
+  // ---------------------------------------------------------------- shapes
+
+  /** The body's shapes. */
+  get shapes(): readonly Shape[] {
+    return this.shapeList;
+  }
+
+  /** Adds a shape (compound bodies); the mass is computed again. */
+  addShape(options: ShapeOptions): Shape {
+    this.worldRef?.requireUnlocked('addShape');
+    const shape = this.createShape(options, 'shape');
+    this.shapeList.push(shape);
+    this.updateMassData();
+    this.worldRef?.shapeAdded(shape);
+    this.wake();
+    return shape;
+  }
+
+  /** Removes one of the body's shapes; the mass is computed again. */
+  removeShape(shape: Shape): void {
+    this.worldRef?.requireUnlocked('removeShape');
+    const index = this.shapeList.indexOf(shape);
+    if (index < 0) throw new PhysicalError('shape', 'is not a shape of this body.');
+    this.worldRef?.shapeRemoved(shape);
+    this.shapeList.splice(index, 1);
+    this.updateMassData();
+    this.wake();
+  }
+
+  // ---------------------------------------------------------------- forces
+
+  /** Forces and torques currently acting (those with a duration not yet used up). */
+  get forces(): readonly Force[] {
+    return this.forceList;
+  }
+
+  /**
+   * Applies a force (N, world coordinates) for a {@link Duration}: `'instant'` (one step, the
+   * default), `'constant'` (until removed) or a number of seconds. Returns the {@link Force}, which
+   * can be changed or removed later. Wakes the body.
+   *
+   * @example
+   * const push = body.applyForce({ x: 10, y: 0 }, { duration: 'constant' });
+   * // later
+   * push.remove();
+   */
+  applyForce(force: Vec2Like, options: ForceOptions = {}): Force {
+    this.requireDynamic('applyForce');
+    requireVector('force', force);
+    const result = new Force(force.x, force.y, 0, validateDuration(options.duration ?? 'instant'));
+    if (options.point !== undefined) {
+      requireVector('point', options.point);
+      // Attach the point to the body so it turns with it.
+      const local = this.getLocalPoint(options.point);
+      result.localPointX = local.x;
+      result.localPointY = local.y;
+      result.hasPoint = true;
+    }
+    this.attachForce(result);
+    return result;
+  }
+
+  /** Applies a torque (N m) for a {@link Duration}, like {@link applyForce}. */
+  applyTorque(torque: number, options: TorqueOptions = {}): Force {
+    this.requireDynamic('applyTorque');
+    requireFinite('torque', torque);
+    const result = new Force(0, 0, torque, validateDuration(options.duration ?? 'instant'));
+    this.attachForce(result);
+    return result;
+  }
+
+  /** Removes a force or torque. Removing one that already ended is harmless. */
+  removeForce(force: Force): void {
+    const index = this.forceList.indexOf(force);
+    if (index < 0) return;
+    this.forceList.splice(index, 1);
+    force.onRemove = null;
+    force.onChange = null;
+  }
+
+  /** Removes every force and torque. */
+  clearForces(): void {
+    for (const force of this.forceList) {
+      force.onRemove = null;
+      force.onChange = null;
+    }
+    this.forceList.length = 0;
+  }
+
+  /**
+   * Changes the velocity at once by an impulse (N s, world), at a world point (default: the centre
+   * of mass, no spin). Δv = J / m, Δω = (r x J) / I.
+   */
+  applyImpulse(impulse: Vec2Like, point?: Vec2Like): void {
+    this.requireDynamic('applyImpulse');
+    requireVector('impulse', impulse);
+    this.velocityX += this.invMass * impulse.x;
+    this.velocityY += this.invMass * impulse.y;
+    if (point !== undefined) {
+      requireVector('point', point);
+      const rx = point.x - this.centerX;
+      const ry = point.y - this.centerY;
+      this.angularVelocityValue += this.invInertia * (rx * impulse.y - ry * impulse.x);
+    }
+    this.wake();
+  }
+
+  /** Changes the angular velocity at once by an angular impulse (N m s): Δω = L / I. */
+  applyAngularImpulse(impulse: number): void {
+    this.requireDynamic('applyAngularImpulse');
+    requireFinite('impulse', impulse);
+    this.angularVelocityValue += this.invInertia * impulse;
+    this.wake();
+  }
+
+  // ---------------------------------------------------------------- events
+
+  /**
+   * Listens to an event of this body: `'move'` (the thesis's onMove), `'collision'` (onCollision),
+   * `'contactBegin'`, `'contactEnd'`. Returns a function that removes the listener.
+   */
+  on<K extends keyof BodyEvents>(type: K, listener: BodyEvents[K]): () => void {
+    return this.listeners.on(type, listener);
+  }
+
+  /** Removes a listener added with {@link on}. */
+  off<K extends keyof BodyEvents>(type: K, listener: BodyEvents[K]): void {
+    this.listeners.off(type, listener);
+  }
+
+  // ---------------------------------------------------------------- internals
+
+  /** @internal Recomputes the centre of mass in world coordinates from the transform. */
+  syncCenter(): void {
+    const { c, s, x, y } = this.transform;
+    this.centerX = c * this.localCenterX - s * this.localCenterY + x;
+    this.centerY = s * this.localCenterX + c * this.localCenterY + y;
+  }
+
+  /**
+   * @internal Mass, centre of mass and inertia from the shapes (parallel-axis theorem to combine
+   * them about the common centre), then the overrides.
+   */
+  updateMassData(): void {
+    this.massValue = 0;
+    this.invMass = 0;
+    this.inertiaValue = 0;
+    this.invInertia = 0;
+    this.localCenterX = 0;
+    this.localCenterY = 0;
+    this.computeExtents();
+    if (this.type !== 'dynamic') {
+      this.syncCenter();
+      return;
+    }
+    let mass = 0;
+    let cx = 0;
+    let cy = 0;
+    let inertiaAtOrigin = 0;
+    for (let i = 0; i < this.shapeList.length; i++) {
+      const shape = this.shapeList[i]!;
+      const g = shape.geometry;
+      if (g.kind === 'segment') {
+        throw new PhysicalError(
+          `shapes[${i}]`,
+          'a segment has no area and so no mass: put walls on a static or kinematic body.',
+        );
+      }
+      if (shape.density <= 0 && this.massOverride === 0) {
+        throw new PhysicalError(
+          `shapes[${i}].density`,
+          `must be greater than zero on a dynamic body, got ${shape.density} (or set the body's mass).`,
+        );
+      }
+      const data =
+        g.kind === 'circle'
+          ? computeCircleMass(g, shape.density, scratchMass)
+          : computePolygonMass(g, shape.density, scratchMass);
+      mass += data.mass;
+      cx += data.mass * data.centerX;
+      cy += data.mass * data.centerY;
+      inertiaAtOrigin +=
+        data.rotationalInertia +
+        data.mass * (data.centerX * data.centerX + data.centerY * data.centerY);
+    }
+    if (mass > 0) {
+      cx /= mass;
+      cy /= mass;
+    }
+    let inertia = inertiaAtOrigin - mass * (cx * cx + cy * cy);
+    if (this.massOverride > 0) {
+      // Same shape, different density: inertia scales with mass. A point mass has none.
+      inertia = mass > 0 ? (inertia * this.massOverride) / mass : 0;
+      mass = this.massOverride;
+    }
+    if (!(mass > 0)) {
+      throw new PhysicalError(
+        'mass',
+        'a dynamic body needs a positive mass: give it a shape with density > 0, or set `mass`.',
+      );
+    }
+    if (this.inertiaOverride > 0) inertia = this.inertiaOverride;
+    this.massValue = mass;
+    this.invMass = 1 / mass;
+    this.localCenterX = cx;
+    this.localCenterY = cy;
+    if (!this.fixedRotationValue && inertia > 0) {
+      this.inertiaValue = inertia;
+      this.invInertia = 1 / inertia;
+    }
+    this.syncCenter();
+    this.computeExtents();
+  }
+
+  /** Largest and smallest reach of the shapes from the centre of mass, for sleep and continuous collision. */
+  private computeExtents(): void {
+    let maxExtent = 0;
+    let minExtent = Infinity;
+    const cx = this.localCenterX;
+    const cy = this.localCenterY;
+    for (const shape of this.shapeList) {
+      const g = shape.geometry;
+      if (g.kind === 'circle') {
+        const d = Math.hypot(g.centerX - cx, g.centerY - cy);
+        maxExtent = Math.max(maxExtent, d + g.radius);
+        minExtent = Math.min(minExtent, g.radius);
+      } else if (g.kind === 'polygon') {
+        let inner = Infinity;
+        for (let i = 0; i < g.count; i++) {
+          const vx = g.vertices[2 * i]!;
+          const vy = g.vertices[2 * i + 1]!;
+          maxExtent = Math.max(maxExtent, Math.hypot(vx - cx, vy - cy) + g.radius);
+          // Distance from the centroid to each edge: the polygon's inradius bound.
+          const d =
+            (vx - g.centroidX) * g.normals[2 * i]! + (vy - g.centroidY) * g.normals[2 * i + 1]!;
+          inner = Math.min(inner, d);
+        }
+        minExtent = Math.min(minExtent, inner + g.radius);
+      } else {
+        maxExtent = Math.max(
+          maxExtent,
+          Math.hypot(g.x1 - cx, g.y1 - cy),
+          Math.hypot(g.x2 - cx, g.y2 - cy),
+        );
+        minExtent = 0;
+      }
+    }
+    this.maxExtent = maxExtent;
+    this.minExtent = minExtent === Infinity ? 0 : minExtent;
+  }
+
+  private createShape(options: ShapeOptions, field: string): Shape {
+    return new Shape(this as Body, options, field);
+  }
+
+  private attachForce(force: Force): void {
+    force.onRemove = (f) => this.removeForce(f);
+    force.onChange = () => this.wake();
+    this.forceList.push(force);
+    this.wake();
+  }
+
+  private requireDynamic(what: string): void {
+    if (this.type !== 'dynamic') {
+      throw new PhysicalError(
+        what,
+        `acts only on dynamic bodies; this body is ${this.type}. A static body never moves; move a kinematic body by setting its velocity.`,
+      );
+    }
+  }
+}

@@ -1,0 +1,135 @@
+import { PairSet } from '../collision/pair-set.ts';
+import { aabbOverlaps } from '../geometry/aabb.ts';
+import type { Body } from './body.ts';
+import { canCollide, Contact, shouldSwap } from './contact.ts';
+import type { Islands } from './island.ts';
+import type { Shape } from './shape.ts';
+
+/**
+ * Owns the contacts: creates one when the broad phase reports a new pair of overlapping fat boxes,
+ * updates every active one in the narrow phase, and destroys it when the boxes part. Contacts are
+ * pooled, so a scene that keeps its pairs allocates nothing.
+ */
+export class ContactManager {
+  /** Every contact, in creation order (removal swaps the last one in). */
+  readonly contacts: Contact[] = [];
+  /** Contacts that started touching during the last narrow phase. */
+  readonly began: Contact[] = [];
+  /** Shape pairs that stopped touching during the last narrow phase (or were destroyed touching). */
+  readonly endedA: Shape[] = [];
+  readonly endedB: Shape[] = [];
+  endedCount = 0;
+  private readonly pairs = new PairSet();
+  private readonly pool: Contact[] = [];
+
+  constructor(private readonly islands: Islands) {}
+
+  /** Broad-phase callback: a new pair of overlapping fat boxes. */
+  addPair(shapeA: Shape, shapeB: Shape): void {
+    const bodyA = shapeA.body;
+    const bodyB = shapeB.body;
+    if (bodyA === bodyB) return;
+    // Only pairs where something can be pushed matter.
+    if (bodyA.type !== 'dynamic' && bodyB.type !== 'dynamic') return;
+    if (!canCollide(shapeA, shapeB)) return;
+    if (!this.pairs.add(shapeA.id, shapeB.id)) return;
+    const contact = this.pool.pop() ?? new Contact();
+    if (shouldSwap(shapeA, shapeB)) contact.init(shapeB, shapeA);
+    else contact.init(shapeA, shapeB);
+    contact.index = this.contacts.length;
+    this.contacts.push(contact);
+    contact.indexInA = contact.bodyA.contacts.length;
+    contact.bodyA.contacts.push(contact);
+    contact.indexInB = contact.bodyB.contacts.length;
+    contact.bodyB.contacts.push(contact);
+  }
+
+  /**
+   * Narrow phase over every contact with an awake body: drop the ones whose fat boxes parted,
+   * update the manifolds of the rest, record which started or stopped touching, and wake a
+   * sleeping body that something started touching.
+   */
+  collide(): void {
+    this.began.length = 0;
+    this.endedCount = 0;
+    const contacts = this.contacts;
+    let i = 0;
+    while (i < contacts.length) {
+      const contact = contacts[i]!;
+      const bodyA = contact.bodyA;
+      const bodyB = contact.bodyB;
+      if (!bodyA.awake && !bodyB.awake) {
+        i++;
+        continue;
+      }
+      if (!aabbOverlaps(contact.shapeA.fatAABB, contact.shapeB.fatAABB)) {
+        this.destroy(contact, false);
+        continue; // the last contact now sits at index i
+      }
+      const wasTouching = contact.touching;
+      const touching = contact.update();
+      if (touching && !wasTouching) {
+        this.began.push(contact);
+        if (!bodyA.awake) this.islands.wake(bodyA);
+        if (!bodyB.awake) this.islands.wake(bodyB);
+      } else if (!touching && wasTouching) {
+        this.recordEnd(contact);
+      }
+      i++;
+    }
+  }
+
+  /** Destroys every contact of a body (it is being removed), waking what touched it. */
+  destroyContactsOf(body: Body): void {
+    while (body.contacts.length > 0) {
+      this.destroy(body.contacts[body.contacts.length - 1]!, true);
+    }
+  }
+
+  /** Destroys every contact of a shape (it is being removed). */
+  destroyContactsOfShape(shape: Shape): void {
+    const contacts = shape.body.contacts;
+    for (let i = contacts.length - 1; i >= 0; i--) {
+      const contact = contacts[i]!;
+      if (contact.shapeA === shape || contact.shapeB === shape) this.destroy(contact, true);
+    }
+  }
+
+  private destroy(contact: Contact, wakeBodies: boolean): void {
+    if (contact.touching) {
+      this.recordEnd(contact);
+      if (wakeBodies) {
+        this.islands.wake(contact.bodyA);
+        this.islands.wake(contact.bodyB);
+      }
+    }
+    this.pairs.remove(contact.shapeA.id, contact.shapeB.id);
+    removeFromBody(contact.bodyA.contacts, contact.indexInA, contact);
+    removeFromBody(contact.bodyB.contacts, contact.indexInB, contact);
+    const last = this.contacts.pop()!;
+    if (last !== contact) {
+      this.contacts[contact.index] = last;
+      last.index = contact.index;
+    }
+    contact.index = -1;
+    contact.touching = false;
+    contact.manifold.pointCount = 0;
+    this.pool.push(contact);
+  }
+
+  private recordEnd(contact: Contact): void {
+    const n = this.endedCount++;
+    this.endedA[n] = contact.shapeA;
+    this.endedB[n] = contact.shapeB;
+  }
+}
+
+/** Swap-removes a contact from a body's list, fixing the moved contact's back-index. */
+function removeFromBody(list: Contact[], index: number, contact: Contact): void {
+  const last = list.pop()!;
+  if (last === contact) return;
+  list[index] = last;
+  // The list belongs to one body, which is either side of the moved contact.
+  if (last.bodyA.contacts === list) last.indexInA = index;
+  else last.indexInB = index;
+}

@@ -1,0 +1,171 @@
+import { PhysicalError } from '../core/errors.ts';
+import { requireFinite, requireNonNegative, requireVector } from '../core/validate.ts';
+import { AABB } from '../geometry/aabb.ts';
+import { computeCircleAABB, makeCircle, type Circle } from '../geometry/circle.ts';
+import { computePolygonAABB, makeBox, makePolygon, type Polygon } from '../geometry/polygon.ts';
+import { computeSegmentAABB, makeSegment, type Segment } from '../geometry/segment.ts';
+import type { Transform } from '../math/transform.ts';
+import type { Vec2Like } from '../math/vec2.ts';
+import type { Body } from './body.ts';
+
+/** Surface and mass properties shared by every shape kind. */
+export interface MaterialOptions {
+  /** Mass per area (kg/m^2). Default 1. Must be > 0 on a dynamic body. */
+  readonly density?: number;
+  /** Coulomb friction coefficient, >= 0. Default 0.6. Two shapes mix as sqrt(fA * fB). */
+  readonly friction?: number;
+  /** Coefficient of restitution (bounciness), >= 0, usually 0..1. Default 0. Two shapes mix as max. */
+  readonly restitution?: number;
+}
+
+/** A circle: the thesis's particle. */
+export interface CircleShapeOptions extends MaterialOptions {
+  readonly type: 'circle';
+  /** Radius (m), > 0. */
+  readonly radius: number;
+  /** Centre relative to the body origin (m). Default (0, 0). */
+  readonly offset?: Vec2Like;
+}
+
+/** A convex polygon from its vertices, relative to the body origin (m); either winding. */
+export interface PolygonShapeOptions extends MaterialOptions {
+  readonly type: 'polygon';
+  /** 3 to 8 points of a convex polygon (m, body-local). Concave lists are rejected with an error. */
+  readonly vertices: readonly Vec2Like[];
+  /** Rounding radius (m), default 0. */
+  readonly radius?: number;
+}
+
+/** A box (rectangle), the most common polygon. */
+export interface BoxShapeOptions extends MaterialOptions {
+  readonly type: 'box';
+  /** Full width along the body's x axis (m), > 0. */
+  readonly width: number;
+  /** Full height along the body's y axis (m), > 0. */
+  readonly height: number;
+  /** Centre relative to the body origin (m). Default (0, 0). */
+  readonly offset?: Vec2Like;
+  /** Rotation relative to the body (rad). Default 0. */
+  readonly angle?: number;
+  /** Rounding radius (m), default 0. */
+  readonly radius?: number;
+}
+
+/**
+ * A line segment from `from` to `to` (m, body-local): the thesis's wall. It has no area, so it
+ * belongs on a static or kinematic body. A one-sided segment collides only with shapes on its
+ * positive side: on a y-down screen, the side that faces up when the segment runs left to right.
+ */
+export interface SegmentShapeOptions extends MaterialOptions {
+  readonly type: 'segment';
+  readonly from: Vec2Like;
+  readonly to: Vec2Like;
+  /** Default false (both sides collide). */
+  readonly oneSided?: boolean;
+}
+
+/** Describes one shape of a body. */
+export type ShapeOptions =
+  CircleShapeOptions | PolygonShapeOptions | BoxShapeOptions | SegmentShapeOptions;
+
+/** The geometry of a shape, in its body's frame. */
+export type Geometry = Circle | Polygon | Segment;
+
+/**
+ * A shape attached to a body: geometry plus material. Created from {@link ShapeOptions} by the
+ * body; read its properties, or change the material at any time.
+ */
+export class Shape {
+  /** The body this shape belongs to. */
+  readonly body: Body;
+  /** Geometry in the body's frame (read-only: build a new shape to change it). */
+  readonly geometry: Geometry;
+  /** Mass per area (kg/m^2). Change it through {@link Body.setShapeDensity}-free rebuild: read-only here. */
+  readonly density: number;
+  /** Coulomb friction coefficient. */
+  friction: number;
+  /** Coefficient of restitution. */
+  restitution: number;
+
+  /** @internal World-local id, -1 outside a world. */
+  id = -1;
+  /** @internal Broad-phase proxy key, -1 outside a world. */
+  proxyKey = -1;
+  /** @internal Tight bounding box at the body's current transform (m). */
+  readonly aabb: AABB = new AABB();
+  /** @internal The broad phase's fattened box. */
+  readonly fatAABB: AABB = new AABB();
+
+  constructor(body: Body, options: ShapeOptions, field: string) {
+    this.body = body;
+    if (options === null || typeof options !== 'object') {
+      throw new PhysicalError(field, `must be a shape description object, got ${String(options)}.`);
+    }
+    this.density = requireNonNegative(`${field}.density`, options.density ?? 1);
+    this.friction = requireNonNegative(`${field}.friction`, options.friction ?? 0.6);
+    this.restitution = requireNonNegative(`${field}.restitution`, options.restitution ?? 0);
+    this.geometry = createGeometry(options, field);
+  }
+
+  /** Recomputes the tight box for a transform. */
+  computeAABB(xf: Transform): AABB {
+    const g = this.geometry;
+    if (g.kind === 'circle') return computeCircleAABB(g, xf, this.aabb);
+    if (g.kind === 'polygon') return computePolygonAABB(g, xf, this.aabb);
+    return computeSegmentAABB(g, xf, this.aabb);
+  }
+}
+
+function createGeometry(options: ShapeOptions, field: string): Geometry {
+  switch (options.type) {
+    case 'circle': {
+      const offset = options.offset ?? ORIGIN;
+      requireVector(`${field}.offset`, offset);
+      return makeCircle(offset.x, offset.y, options.radius, field);
+    }
+    case 'polygon': {
+      if (!Array.isArray(options.vertices)) {
+        throw new PhysicalError(`${field}.vertices`, 'must be an array of points { x, y } (m).');
+      }
+      return makePolygon(
+        options.vertices,
+        requireNonNegative(`${field}.radius`, options.radius ?? 0),
+        field,
+      );
+    }
+    case 'box': {
+      const offset = options.offset ?? ORIGIN;
+      requireVector(`${field}.offset`, offset);
+      const width = requireFinite(`${field}.width`, options.width);
+      const height = requireFinite(`${field}.height`, options.height);
+      return makeBox(
+        width / 2,
+        height / 2,
+        offset.x,
+        offset.y,
+        requireFinite(`${field}.angle`, options.angle ?? 0),
+        requireNonNegative(`${field}.radius`, options.radius ?? 0),
+        field,
+      );
+    }
+    case 'segment': {
+      requireVector(`${field}.from`, options.from);
+      requireVector(`${field}.to`, options.to);
+      return makeSegment(
+        options.from.x,
+        options.from.y,
+        options.to.x,
+        options.to.y,
+        options.oneSided ?? false,
+        field,
+      );
+    }
+    default:
+      throw new PhysicalError(
+        `${field}.type`,
+        `must be 'circle', 'polygon', 'box' or 'segment', got ${String((options as { type?: unknown }).type)}.`,
+      );
+  }
+}
+
+const ORIGIN: Vec2Like = { x: 0, y: 0 };

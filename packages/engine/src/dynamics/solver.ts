@@ -1,0 +1,283 @@
+import type { Body } from './body.ts';
+import {
+  BodyStates,
+  DELTA_ANGLE,
+  DP_X,
+  DP_Y,
+  Q_C,
+  Q_S,
+  STATE_STRIDE,
+  V_X,
+  V_Y,
+  W,
+} from './body-state.ts';
+import type { Contact } from './contact.ts';
+import {
+  applyRestitution,
+  ContactConstraints,
+  prepareContacts,
+  solveContacts,
+  storeImpulses,
+  warmStartContacts,
+} from './contact-solver.ts';
+import { Softness } from './softness.ts';
+
+/** World settings the solver reads each step. */
+export interface SolverSettings {
+  gravityX: number;
+  gravityY: number;
+  subSteps: number;
+  contactHertz: number;
+  contactDampingRatio: number;
+  maxContactPushSpeed: number;
+  restitutionThreshold: number;
+  maxLinearSpeed: number;
+}
+
+/**
+ * Integrates and solves the awake bodies for one step with Box2D v3's soft step:
+ *
+ *   prepare contacts (once per step, anchors and masses fixed for the step)
+ *   for each sub-step h = dt / n:
+ *     integrate velocities (semi-implicit Euler: forces, gravity, damping, drag)
+ *     warm start, solve contacts with soft position correction
+ *     integrate positions (x += h v, using the new v: semi-implicit Euler)
+ *     relax contacts (solve again without the position correction's bias)
+ *   restitution, store impulses, write the new poses back to the bodies
+ *
+ * Why this rather than Baumgarte or split impulses: sub-stepping makes the contact stiffness
+ * independent of mass ratios and step size (Catto, "Solver2D", 2024), stacks come to rest without
+ * jitter, and there is no separate position pass to tune. The relax pass removes the velocity the
+ * soft push added, so position correction does not turn into bounce.
+ */
+export class Solver {
+  readonly states: BodyStates = new BodyStates();
+  readonly constraints: ContactConstraints = new ContactConstraints();
+  /** Awake non-static bodies of this step, in world order; body.solverIndex = position + 1. */
+  readonly awake: Body[] = [];
+  private readonly contactSoftness = new Softness();
+  private readonly staticSoftness = new Softness();
+
+  /**
+   * Collects the awake bodies, gathers their forces for this step and loads their states. Must run
+   * before {@link solve}; `bodies` is every body of the world.
+   */
+  gatherBodies(bodies: readonly Body[], dt: number): void {
+    const awake = this.awake;
+    awake.length = 0;
+    for (let i = 0; i < bodies.length; i++) {
+      const body = bodies[i]!;
+      body.solverIndex = 0;
+      if (body.awake && body.type !== 'static') {
+        awake.push(body);
+        body.solverIndex = awake.length;
+      }
+    }
+    const s = this.states.reserve(awake.length);
+    for (let i = 0; i < awake.length; i++) {
+      const body = awake[i]!;
+      const k = (i + 1) * STATE_STRIDE;
+      s[k + V_X] = body.velocityX;
+      s[k + V_Y] = body.velocityY;
+      s[k + W] = body.angularVelocityValue;
+      s[k + DELTA_ANGLE] = 0;
+      s[k + DP_X] = 0;
+      s[k + DP_Y] = 0;
+      s[k + Q_C] = 1;
+      s[k + Q_S] = 0;
+      body.center0X = body.centerX;
+      body.center0Y = body.centerY;
+      body.angle0 = body.angleValue;
+      gatherForces(body, dt);
+    }
+  }
+
+  /** Solves the step for the gathered bodies and the given touching contacts. */
+  solve(contacts: readonly Contact[], settings: SolverSettings, dt: number): void {
+    const awake = this.awake;
+    const s = this.states.data;
+    const constraints = this.constraints;
+    const subSteps = settings.subSteps;
+    const h = dt / subSteps;
+    const inverseH = 1 / h;
+
+    // Contacts that matter this step: touching, with something that can move.
+    const list = constraints.contacts;
+    list.length = 0;
+    for (let i = 0; i < contacts.length; i++) {
+      const contact = contacts[i]!;
+      if (!contact.touching) continue;
+      const a = contact.bodyA;
+      const b = contact.bodyB;
+      if ((a.solverIndex === 0 || a.invMass === 0) && (b.solverIndex === 0 || b.invMass === 0)) {
+        continue;
+      }
+      list.push(contact);
+    }
+    // A contact spring stiffer than a quarter of the sub-step rate would be under-resolved.
+    const contactHertz = Math.min(settings.contactHertz, (0.25 * subSteps) / dt);
+    this.contactSoftness.set(contactHertz, settings.contactDampingRatio, h);
+    this.staticSoftness.set(2 * contactHertz, settings.contactDampingRatio, h);
+    prepareContacts(constraints, s, this.contactSoftness, this.staticSoftness);
+
+    for (let step = 0; step < subSteps; step++) {
+      integrateVelocities(awake, s, settings, h);
+      warmStartContacts(constraints, s);
+      solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, true);
+      integratePositions(awake, s, h);
+      solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, false);
+    }
+    applyRestitution(constraints, s, settings.restitutionThreshold);
+    storeImpulses(constraints);
+    this.finalizeBodies(dt);
+  }
+
+  /** Writes velocities and poses back to the bodies and updates their sleep timers. */
+  private finalizeBodies(dt: number): void {
+    const awake = this.awake;
+    const s = this.states.data;
+    for (let i = 0; i < awake.length; i++) {
+      const body = awake[i]!;
+      const k = (i + 1) * STATE_STRIDE;
+      const vx = s[k + V_X]!;
+      const vy = s[k + V_Y]!;
+      const w = s[k + W]!;
+      const dpx = s[k + DP_X]!;
+      const dpy = s[k + DP_Y]!;
+      body.velocityX = vx;
+      body.velocityY = vy;
+      body.angularVelocityValue = w;
+      body.centerX += dpx;
+      body.centerY += dpy;
+      const angle = body.angleValue + s[k + DELTA_ANGLE]!;
+      body.angleValue = angle;
+      // The angle is the exact sum of h w; the transform follows it, so rotation never drifts
+      // from the integrated angle.
+      const c = Math.cos(angle);
+      const sn = Math.sin(angle);
+      const xf = body.transform;
+      xf.c = c;
+      xf.s = sn;
+      xf.x = body.centerX - (c * body.localCenterX - sn * body.localCenterY);
+      xf.y = body.centerY - (sn * body.localCenterX + c * body.localCenterY);
+
+      // Sleep: the body must be slow, and not being moved by position correction either
+      // (Box2D v3's rule, with its 0.5 weight on correction).
+      if (!body.allowSleepValue) {
+        body.sleepTime = 0;
+        continue;
+      }
+      const extent = body.maxExtent;
+      const speed = Math.sqrt(vx * vx + vy * vy) + extent * Math.abs(w);
+      const moved = Math.sqrt(dpx * dpx + dpy * dpy) + extent * Math.abs(s[k + DELTA_ANGLE]!);
+      const sleepSpeed = Math.max(speed, (0.5 * moved) / dt);
+      if (sleepSpeed > SLEEP_SPEED) body.sleepTime = 0;
+      else body.sleepTime += dt;
+    }
+  }
+}
+
+/** Bodies slower than this (m/s, at their farthest point) count as resting. */
+export const SLEEP_SPEED = 0.05;
+
+/** Sums the body's forces for this step (scaled by the part of the step each acts) and drops spent ones. */
+function gatherForces(body: Body, dt: number): void {
+  let fx = 0;
+  let fy = 0;
+  let torque = 0;
+  const forces = body.forceList;
+  if (forces.length > 0) {
+    const c = body.transform.c;
+    const sn = body.transform.s;
+    for (let i = 0; i < forces.length; i++) {
+      const force = forces[i]!;
+      const fraction = force.consume(dt);
+      if (fraction === 0) continue;
+      const x = force.x * fraction;
+      const y = force.y * fraction;
+      fx += x;
+      fy += y;
+      torque += force.torque * fraction;
+      if (force.hasPoint) {
+        // Lever arm from the centre of mass to the point attached to the body.
+        const rx = c * force.localPointX - sn * force.localPointY + body.transform.x - body.centerX;
+        const ry = sn * force.localPointX + c * force.localPointY + body.transform.y - body.centerY;
+        torque += rx * y - ry * x;
+      }
+    }
+    for (let i = forces.length - 1; i >= 0; i--) {
+      if (forces[i]!.isExpired) body.removeForce(forces[i]!);
+    }
+  }
+  body.forceX = fx;
+  body.forceY = fy;
+  body.torqueValue = torque;
+}
+
+/**
+ * Semi-implicit Euler, velocity half: v += h (F / m + g), with damping and the thesis's drag
+ * applied implicitly (v / (1 + h c)) so that no damping value can reverse a velocity.
+ */
+function integrateVelocities(
+  awake: readonly Body[],
+  s: Float64Array,
+  settings: SolverSettings,
+  h: number,
+): void {
+  const gx = settings.gravityX;
+  const gy = settings.gravityY;
+  const maxSpeedSquared = settings.maxLinearSpeed * settings.maxLinearSpeed;
+  for (let i = 0; i < awake.length; i++) {
+    const body = awake[i]!;
+    const invMass = body.invMass;
+    if (invMass === 0) continue; // kinematic: keeps the velocity it was given
+    const k = (i + 1) * STATE_STRIDE;
+    const scale = body.gravityScaleValue;
+    let vx = s[k + V_X]! + h * (invMass * body.forceX + scale * gx);
+    let vy = s[k + V_Y]! + h * (invMass * body.forceY + scale * gy);
+    let w = s[k + W]! + h * body.invInertia * body.torqueValue;
+    const linearDamping = body.linearDampingValue;
+    if (linearDamping > 0) {
+      const factor = 1 / (1 + h * linearDamping);
+      vx *= factor;
+      vy *= factor;
+    }
+    const drag = body.dragValue;
+    if (drag > 0) {
+      const factor = 1 / (1 + h * invMass * drag * Math.sqrt(vx * vx + vy * vy));
+      vx *= factor;
+      vy *= factor;
+    }
+    if (body.angularDampingValue > 0) w /= 1 + h * body.angularDampingValue;
+    const speedSquared = vx * vx + vy * vy;
+    if (speedSquared > maxSpeedSquared) {
+      const ratio = settings.maxLinearSpeed / Math.sqrt(speedSquared);
+      vx *= ratio;
+      vy *= ratio;
+    }
+    s[k + V_X] = vx;
+    s[k + V_Y] = vy;
+    s[k + W] = w;
+  }
+}
+
+/** Semi-implicit Euler, position half: x += h v with the velocity just solved. */
+function integratePositions(awake: readonly Body[], s: Float64Array, h: number): void {
+  for (let i = 0; i < awake.length; i++) {
+    const k = (i + 1) * STATE_STRIDE;
+    const w = s[k + W]!;
+    s[k + DP_X] += h * s[k + V_X]!;
+    s[k + DP_Y] += h * s[k + V_Y]!;
+    if (w !== 0) {
+      s[k + DELTA_ANGLE] += h * w;
+      // First-order rotation update, renormalised: enough for the contact anchors within a step.
+      const qc = s[k + Q_C]!;
+      const qs = s[k + Q_S]!;
+      const c = qc - h * w * qs;
+      const sn = qs + h * w * qc;
+      const inverseLength = 1 / Math.sqrt(c * c + sn * sn);
+      s[k + Q_C] = c * inverseLength;
+      s[k + Q_S] = sn * inverseLength;
+    }
+  }
+}

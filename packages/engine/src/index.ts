@@ -1,0 +1,36 @@
+// Physical's public API. Everything not listed here is internal.
+
+export { World } from './world/world.ts';
+export type { WorldEvents } from './world/world.ts';
+export type { WorldOptions } from './world/world-options.ts';
+export type { RayCastHit } from './world/queries.ts';
+
+export { Body } from './dynamics/body.ts';
+export type { BodyOptions, BodyType } from './dynamics/body.ts';
+export { box, particle, polygon, regularPolygon, wall } from './dynamics/body-factories.ts';
+export type {
+  BoxOptions,
+  ParticleOptions,
+  PolygonOptions,
+  RegularPolygonOptions,
+  WallOptions,
+} from './dynamics/body-factories.ts';
+export { Shape } from './dynamics/shape.ts';
+export type {
+  BoxShapeOptions,
+  CircleShapeOptions,
+  Geometry,
+  MaterialOptions,
+  PolygonShapeOptions,
+  SegmentShapeOptions,
+  ShapeOptions,
+} from './dynamics/shape.ts';
+export type { Circle } from './geometry/circle.ts';
+export type { Polygon } from './geometry/polygon.ts';
+export type { Segment } from './geometry/segment.ts';
+export { Force } from './dynamics/force.ts';
+export type { Duration, ForceOptions, TorqueOptions } from './dynamics/force.ts';
+export type { BodyEvents, CollisionEvent, ContactEvent, ContactPoint } from './dynamics/events.ts';
+
+export { PhysicalError } from './core/errors.ts';
+export type { Vec2, Vec2Like } from './math/vec2.ts';

@@ -1,0 +1,96 @@
+import { PhysicalError } from '../core/errors.ts';
+import {
+  requireFinite,
+  requireNonNegative,
+  requirePositive,
+  requireVector,
+} from '../core/validate.ts';
+import type { Vec2Like } from '../math/vec2.ts';
+
+/** Options of a {@link World}. Every field is optional; units are SI. */
+export interface WorldOptions {
+  /**
+   * Gravity (m/s^2). The world is y-down like the screen, so the default (0, 9.81) pulls down the
+   * screen. Any vector works, including zero (space, or a top-down table).
+   */
+  readonly gravity?: Vec2Like;
+  /**
+   * Sub-steps per step, 1..64 (default 4). More sub-steps make stiff stacks and fast, heavy
+   * contacts more accurate at proportional cost.
+   */
+  readonly subSteps?: number;
+  /**
+   * Below this approach speed (m/s) collisions do not bounce (default 1 m/s, as in Box2D): it keeps
+   * resting bodies from jittering. Set 0 for exact restitution at every speed (teaching).
+   */
+  readonly restitutionThreshold?: number;
+  /** Stiffness of the soft contact (Hz, default 30). Rarely needs changing. */
+  readonly contactHertz?: number;
+  /** Damping ratio of the soft contact (default 10: strongly damped, so no bounce from overlap). */
+  readonly contactDampingRatio?: number;
+  /** Fastest speed (m/s) at which overlapping shapes are pushed apart (default 3). */
+  readonly maxContactPushSpeed?: number;
+  /** Speed limit for any body (m/s, default 400): keeps a runaway body finite. */
+  readonly maxLinearSpeed?: number;
+  /** Lets resting bodies sleep (default true). Sleeping bodies cost nothing until woken. */
+  readonly enableSleep?: boolean;
+  /** Seconds a body must rest before it sleeps (default 0.5). */
+  readonly timeToSleep?: number;
+  /** Continuous collision of fast bodies against static shapes (default true). */
+  readonly enableContinuous?: boolean;
+}
+
+/** @internal Validated options with defaults. */
+export interface ResolvedWorldOptions {
+  gravityX: number;
+  gravityY: number;
+  subSteps: number;
+  restitutionThreshold: number;
+  contactHertz: number;
+  contactDampingRatio: number;
+  maxContactPushSpeed: number;
+  maxLinearSpeed: number;
+  enableSleep: boolean;
+  timeToSleep: number;
+  enableContinuous: boolean;
+}
+
+/** @internal */
+export function resolveWorldOptions(options: WorldOptions): ResolvedWorldOptions {
+  if (options === null || typeof options !== 'object') {
+    throw new PhysicalError(
+      'options',
+      `must be an object of world options, got ${String(options)}.`,
+    );
+  }
+  const gravity = options.gravity ?? { x: 0, y: 9.81 };
+  requireVector('gravity', gravity);
+  return {
+    gravityX: gravity.x,
+    gravityY: gravity.y,
+    subSteps: validateSubSteps(options.subSteps ?? 4),
+    restitutionThreshold: requireNonNegative(
+      'restitutionThreshold',
+      options.restitutionThreshold ?? 1,
+    ),
+    contactHertz: requirePositive('contactHertz', options.contactHertz ?? 30),
+    contactDampingRatio: requireNonNegative(
+      'contactDampingRatio',
+      options.contactDampingRatio ?? 10,
+    ),
+    maxContactPushSpeed: requirePositive('maxContactPushSpeed', options.maxContactPushSpeed ?? 3),
+    maxLinearSpeed: requirePositive('maxLinearSpeed', options.maxLinearSpeed ?? 400),
+    enableSleep: options.enableSleep ?? true,
+    timeToSleep: requireNonNegative('timeToSleep', options.timeToSleep ?? 0.5),
+    enableContinuous: options.enableContinuous ?? true,
+  };
+}
+
+/** @internal */
+export function validateSubSteps(value: number): number {
+  requireFinite('subSteps', value);
+  if (!Number.isInteger(value) || value < 1 || value > 64) {
+    throw new PhysicalError('subSteps', `must be a whole number from 1 to 64, got ${value}.`);
+  }
+  return value;
+}

@@ -1,0 +1,545 @@
+import { SPECULATIVE_DISTANCE } from '../core/constants.ts';
+import { PhysicalError } from '../core/errors.ts';
+import { Listeners } from '../core/listeners.ts';
+import { requireFinite, requireNonNegative, requireVector } from '../core/validate.ts';
+import { BroadPhase, type ProxyType } from '../collision/broad-phase.ts';
+import { AABB } from '../geometry/aabb.ts';
+import type { Vec2, Vec2Like } from '../math/vec2.ts';
+import type { Body } from '../dynamics/body.ts';
+import { ContactManager } from '../dynamics/contact-manager.ts';
+import { ContinuousSolver } from '../dynamics/continuous.ts';
+import { CollisionEventData, ContactEventData, type BodyEvents } from '../dynamics/events.ts';
+import { Islands } from '../dynamics/island.ts';
+import type { Shape } from '../dynamics/shape.ts';
+import { Solver } from '../dynamics/solver.ts';
+import { WorldQueries, type RayCastHit } from './queries.ts';
+import {
+  resolveWorldOptions,
+  validateSubSteps,
+  type ResolvedWorldOptions,
+  type WorldOptions,
+} from './world-options.ts';
+
+/** Events of a world: the same as a body's, for every body. */
+export type WorldEvents = BodyEvents;
+
+const PROXY_TYPE: Record<Body['type'], ProxyType> = { static: 0, kinematic: 1, dynamic: 2 };
+
+/**
+ * A physics world: the bodies, and the clock that moves them. Add and remove bodies at any time,
+ * even from inside an event listener (the change then applies at the end of the current step).
+ *
+ * @example
+ * const world = new World(); // y-down, gravity 9.81 m/s^2
+ * world.add(wall({ from: { x: 0, y: 5 }, to: { x: 10, y: 5 } }));
+ * const ball = world.add(particle({ position: { x: 5, y: 0 }, radius: 0.25 }));
+ * for (let i = 0; i < 60; i++) world.step(1 / 60);
+ */
+export class World {
+  private readonly settings: ResolvedWorldOptions;
+  private readonly bodyList: Body[] = [];
+  private readonly broadPhase = new BroadPhase();
+  private readonly islands = new Islands();
+  private readonly contactManager = new ContactManager(this.islands);
+  private readonly solver = new Solver();
+  private readonly continuous = new ContinuousSolver();
+  private readonly queries: WorldQueries;
+  private readonly shapesById: (Shape | null)[] = [];
+  private readonly freeShapeIds: number[] = [];
+  private nextBodyId = 0;
+  private locked = false;
+  private readonly pendingAdds: Body[] = [];
+  private readonly pendingRemoves: Body[] = [];
+  private readonly listeners = new Listeners<WorldEvents>();
+  private readonly collisionEvent = new CollisionEventData();
+  private readonly contactEvent = new ContactEventData();
+  private readonly gravityView: Vec2 = { x: 0, y: 0 };
+  private readonly proxyBox = new AABB();
+  private readonly onPair = (shapeIdA: number, shapeIdB: number): void => {
+    this.contactManager.addPair(this.shapesById[shapeIdA]!, this.shapesById[shapeIdB]!);
+  };
+  private lastStep = 1 / 60;
+  private stepCount = 0;
+
+  constructor(options: WorldOptions = {}) {
+    this.settings = resolveWorldOptions(options);
+    this.queries = new WorldQueries(this.broadPhase, this.shapesById);
+  }
+
+  // ---------------------------------------------------------------- settings
+
+  /** Gravity (m/s^2), y-down by default. Setting it wakes every body (a tilted phone must move them). */
+  get gravity(): Readonly<Vec2> {
+    this.gravityView.x = this.settings.gravityX;
+    this.gravityView.y = this.settings.gravityY;
+    return this.gravityView;
+  }
+
+  set gravity(value: Vec2Like) {
+    requireVector('gravity', value);
+    if (value.x === this.settings.gravityX && value.y === this.settings.gravityY) return;
+    this.settings.gravityX = value.x;
+    this.settings.gravityY = value.y;
+    for (const body of this.bodyList) if (body.type === 'dynamic') this.islands.wake(body);
+  }
+
+  /** Sub-steps per step (1..64). */
+  get subSteps(): number {
+    return this.settings.subSteps;
+  }
+
+  set subSteps(value: number) {
+    this.settings.subSteps = validateSubSteps(value);
+  }
+
+  /** Approach speed (m/s) below which collisions do not bounce; 0 for exact restitution. */
+  get restitutionThreshold(): number {
+    return this.settings.restitutionThreshold;
+  }
+
+  set restitutionThreshold(value: number) {
+    this.settings.restitutionThreshold = requireNonNegative('restitutionThreshold', value);
+  }
+
+  /** Whether resting bodies fall asleep. Turning it off wakes every body. */
+  get enableSleep(): boolean {
+    return this.settings.enableSleep;
+  }
+
+  set enableSleep(value: boolean) {
+    this.settings.enableSleep = value;
+    if (!value) for (const body of this.bodyList) this.islands.wake(body);
+  }
+
+  // ---------------------------------------------------------------- bodies
+
+  /** The bodies in the world, in the order they were added. */
+  get bodies(): readonly Body[] {
+    return this.bodyList;
+  }
+
+  /** Number of steps taken. */
+  get steps(): number {
+    return this.stepCount;
+  }
+
+  /** True while a step (including its event listeners) runs. */
+  get isStepping(): boolean {
+    return this.locked;
+  }
+
+  /**
+   * Adds a body and returns it. Inside an event listener the body joins at the end of the step.
+   * Throws if the body is already in a world.
+   */
+  add<B extends Body>(body: B): B {
+    if (body === null || typeof body !== 'object' || !('shapeList' in body)) {
+      throw new PhysicalError(
+        'body',
+        `must be a Body (for example particle({...})), got ${String(body)}.`,
+      );
+    }
+    if (body.worldRef !== null) {
+      throw new PhysicalError(
+        'body',
+        body.worldRef === this
+          ? 'is already in this world (added twice).'
+          : 'is already in another world; remove it there first.',
+      );
+    }
+    body.worldRef = this;
+    if (this.locked) this.pendingAdds.push(body);
+    else this.insertBody(body);
+    return body;
+  }
+
+  /**
+   * Removes a body. Inside an event listener the body leaves at the end of the step and gets no
+   * more events. Throws if the body is not in this world (for example, removed twice).
+   */
+  remove(body: Body): void {
+    if (
+      body === null ||
+      typeof body !== 'object' ||
+      body.worldRef !== this ||
+      body.removalPending
+    ) {
+      throw new PhysicalError('body', 'is not in this world (removed twice, or never added).');
+    }
+    const pending = this.pendingAdds.indexOf(body);
+    if (pending >= 0) {
+      this.pendingAdds.splice(pending, 1);
+      body.worldRef = null;
+      return;
+    }
+    if (this.locked) {
+      body.removalPending = true;
+      this.pendingRemoves.push(body);
+      return;
+    }
+    this.locked = true;
+    try {
+      this.extractBody(body);
+      this.dispatchContactEnds();
+    } finally {
+      this.locked = false;
+    }
+    this.flushPending();
+  }
+
+  /** True if the body is in this world (or joins it at the end of the current step). */
+  has(body: Body): boolean {
+    return body.worldRef === this && !body.removalPending;
+  }
+
+  /** Removes every body. */
+  clear(): void {
+    for (const body of this.bodyList.slice()) this.remove(body);
+    for (const body of this.pendingAdds.slice()) this.remove(body);
+  }
+
+  // ---------------------------------------------------------------- stepping
+
+  /**
+   * Advances the world by `dt` seconds (default 1/60): the thesis's tick. For the same physics at
+   * any display rate, call it with a fixed dt (see the canvas package's fixed-step loop).
+   *
+   * Stages, in order: find new pairs (broad phase); update contacts (narrow phase); gather awake
+   * bodies and their forces; solve (soft step sub-steps, restitution); continuous collision of
+   * fast bodies; update the broad phase; sleep resting islands; emit events; apply the adds and
+   * removes made by listeners.
+   */
+  step(dt: number = 1 / 60): void {
+    if (this.locked) {
+      throw new PhysicalError(
+        'step',
+        'cannot be called while the world is stepping (from a listener).',
+      );
+    }
+    requireFinite('dt', dt);
+    if (dt < 0) throw new PhysicalError('dt', `must be zero or more seconds, got ${dt}.`);
+    if (dt === 0) return;
+    this.locked = true;
+    try {
+      this.broadPhase.updatePairs(this.onPair);
+      this.contactManager.collide();
+      this.solver.gatherBodies(this.bodyList, dt);
+      this.solver.solve(this.contactManager.contacts, this.settings, dt);
+      if (this.settings.enableContinuous) this.solveContinuous();
+      this.updateBroadPhase();
+      if (this.settings.enableSleep) {
+        this.islands.sleepRestingIslands(this.solver.awake, this.settings.timeToSleep);
+      }
+      this.lastStep = dt;
+      this.stepCount++;
+      this.dispatchEvents();
+    } finally {
+      this.locked = false;
+    }
+    this.flushPending();
+  }
+
+  // ---------------------------------------------------------------- queries
+
+  /**
+   * The body with a shape containing the world point (m), or null. If several do, the one added
+   * last (drawn on top).
+   */
+  bodyAt(point: Vec2Like): Body | null {
+    requireVector('point', point);
+    return this.queries.bodyAt(point.x, point.y);
+  }
+
+  /** Bodies with a shape whose bounding box overlaps the box (m), each once, in world order. */
+  bodiesInAABB(box: {
+    readonly minX: number;
+    readonly minY: number;
+    readonly maxX: number;
+    readonly maxY: number;
+  }): Body[] {
+    requireFinite('box.minX', box.minX);
+    requireFinite('box.minY', box.minY);
+    requireFinite('box.maxX', box.maxX);
+    requireFinite('box.maxY', box.maxY);
+    return this.queries.bodiesInAABB(box.minX, box.minY, box.maxX, box.maxY);
+  }
+
+  /** The first shape hit by the ray from `from` to `to` (m), or null. */
+  rayCast(from: Vec2Like, to: Vec2Like): RayCastHit | null {
+    requireVector('from', from);
+    requireVector('to', to);
+    return this.queries.rayCast(from.x, from.y, to.x, to.y);
+  }
+
+  // ---------------------------------------------------------------- events
+
+  /**
+   * Listens to an event of every body: `'move'`, `'collision'`, `'contactBegin'`, `'contactEnd'`.
+   * Listeners run after the step, in the order added. Returns a function that removes the listener.
+   */
+  on<K extends keyof WorldEvents>(type: K, listener: WorldEvents[K]): () => void {
+    return this.listeners.on(type, listener);
+  }
+
+  /** Removes a listener added with {@link on}. */
+  off<K extends keyof WorldEvents>(type: K, listener: WorldEvents[K]): void {
+    this.listeners.off(type, listener);
+  }
+
+  // ---------------------------------------------------------------- hooks used by Body
+
+  /** @internal A body was moved by hand (teleport): refresh its boxes and wake it. */
+  bodyMoved(body: Body): void {
+    body.center0X = body.centerX;
+    body.center0Y = body.centerY;
+    body.angle0 = body.angleValue;
+    if (this.bodyList[body.worldIndex] !== body) return; // joins at the end of the step
+    this.refreshProxies(body, true);
+    if (body.type === 'static') {
+      for (const contact of body.contacts) this.islands.wake(contact.other(body));
+    } else {
+      this.islands.wake(body);
+    }
+  }
+
+  /** @internal */
+  wakeBody(body: Body): void {
+    this.islands.wake(body);
+  }
+
+  /** @internal */
+  sleepBody(body: Body): void {
+    this.islands.sleep(body);
+  }
+
+  /** @internal */
+  requireUnlocked(what: string): void {
+    if (this.locked) {
+      throw new PhysicalError(
+        what,
+        'cannot change shapes while the world is stepping; do it after step().',
+      );
+    }
+  }
+
+  /** @internal */
+  shapeAdded(shape: Shape): void {
+    if (this.bodyList[shape.body.worldIndex] === shape.body) this.createProxy(shape);
+  }
+
+  /** @internal */
+  shapeRemoved(shape: Shape): void {
+    if (shape.proxyKey < 0) return;
+    this.contactManager.destroyContactsOfShape(shape);
+    this.destroyProxy(shape);
+    this.dispatchContactEnds();
+  }
+
+  // ---------------------------------------------------------------- internals
+
+  private insertBody(body: Body): void {
+    body.id = this.nextBodyId++;
+    body.worldIndex = this.bodyList.length;
+    body.removalPending = false;
+    body.center0X = body.centerX;
+    body.center0Y = body.centerY;
+    body.angle0 = body.angleValue;
+    this.bodyList.push(body);
+    for (const shape of body.shapeList) this.createProxy(shape);
+  }
+
+  private extractBody(body: Body): void {
+    this.contactManager.destroyContactsOf(body);
+    for (const shape of body.shapeList) this.destroyProxy(shape);
+    this.bodyList.splice(body.worldIndex, 1);
+    for (let i = body.worldIndex; i < this.bodyList.length; i++) this.bodyList[i]!.worldIndex = i;
+    body.worldRef = null;
+    body.worldIndex = -1;
+    body.removalPending = false;
+    body.solverIndex = 0;
+  }
+
+  private createProxy(shape: Shape): void {
+    const id = this.freeShapeIds.length > 0 ? this.freeShapeIds.pop()! : this.shapesById.length;
+    shape.id = id;
+    this.shapesById[id] = shape;
+    const box = this.speculativeBox(shape);
+    shape.proxyKey = this.broadPhase.createProxy(box, PROXY_TYPE[shape.body.type], id, false);
+    this.broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
+  }
+
+  private destroyProxy(shape: Shape): void {
+    this.broadPhase.destroyProxy(shape.proxyKey);
+    this.shapesById[shape.id] = null;
+    this.freeShapeIds.push(shape.id);
+    shape.id = -1;
+    shape.proxyKey = -1;
+  }
+
+  /** The shape's box at the body's transform, grown by the speculative distance. */
+  private speculativeBox(shape: Shape): AABB {
+    const tight = shape.computeAABB(shape.body.transform);
+    return this.proxyBox.set(
+      tight.minX - SPECULATIVE_DISTANCE,
+      tight.minY - SPECULATIVE_DISTANCE,
+      tight.maxX + SPECULATIVE_DISTANCE,
+      tight.maxY + SPECULATIVE_DISTANCE,
+    );
+  }
+
+  private refreshProxies(body: Body, forcePairs: boolean): void {
+    for (const shape of body.shapeList) {
+      const moved = this.broadPhase.moveProxy(shape.proxyKey, this.speculativeBox(shape));
+      if (moved) this.broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
+      else if (forcePairs && body.type === 'static') this.broadPhase.bufferMove(shape.proxyKey);
+    }
+  }
+
+  private solveContinuous(): void {
+    const awake = this.solver.awake;
+    for (let i = 0; i < awake.length; i++) {
+      const body = awake[i]!;
+      if (body.type !== 'dynamic' || !ContinuousSolver.isFast(body)) continue;
+      this.continuous.solve(body, this.broadPhase, this.shapesById);
+    }
+  }
+
+  private updateBroadPhase(): void {
+    const awake = this.solver.awake;
+    for (let i = 0; i < awake.length; i++) this.refreshProxies(awake[i]!, false);
+  }
+
+  private flushPending(): void {
+    while (this.pendingAdds.length > 0 || this.pendingRemoves.length > 0) {
+      this.locked = true;
+      try {
+        while (this.pendingRemoves.length > 0) this.extractBody(this.pendingRemoves.shift()!);
+        while (this.pendingAdds.length > 0) this.insertBody(this.pendingAdds.shift()!);
+        this.dispatchContactEnds();
+      } finally {
+        this.locked = false;
+      }
+    }
+  }
+
+  private dispatchEvents(): void {
+    const manager = this.contactManager;
+    const began = manager.began;
+    if (began.length > 0) {
+      const event = this.contactEvent;
+      for (let i = 0; i < began.length; i++) {
+        const contact = began[i]!;
+        this.emitContact('contactBegin', event, contact.shapeA, contact.shapeB);
+      }
+    }
+    this.dispatchContactEnds();
+    this.dispatchCollisions();
+    this.dispatchMoves();
+  }
+
+  private dispatchContactEnds(): void {
+    const manager = this.contactManager;
+    const count = manager.endedCount;
+    manager.endedCount = 0;
+    for (let i = 0; i < count; i++) {
+      this.emitContact('contactEnd', this.contactEvent, manager.endedA[i]!, manager.endedB[i]!);
+    }
+  }
+
+  private emitContact(
+    type: 'contactBegin' | 'contactEnd',
+    event: ContactEventData,
+    shapeA: Shape,
+    shapeB: Shape,
+  ): void {
+    const bodyA = shapeA.body;
+    const bodyB = shapeB.body;
+    const worldListeners = this.listeners.get(type);
+    const listenersA = bodyA.listeners.get(type);
+    const listenersB = bodyB.listeners.get(type);
+    if (worldListeners === undefined && listenersA === undefined && listenersB === undefined)
+      return;
+    if (type === 'contactBegin' && (bodyA.removalPending || bodyB.removalPending)) return;
+    event.bodyA = bodyA;
+    event.bodyB = bodyB;
+    event.shapeA = shapeA;
+    event.shapeB = shapeB;
+    callAll(worldListeners, event);
+    callAll(listenersA, event);
+    callAll(listenersB, event);
+  }
+
+  private dispatchCollisions(): void {
+    const contacts = this.solver.constraints.contacts;
+    const worldListeners = this.listeners.get('collision');
+    const event = this.collisionEvent;
+    for (let i = 0; i < contacts.length; i++) {
+      const contact = contacts[i]!;
+      const bodyA = contact.bodyA;
+      const bodyB = contact.bodyB;
+      const listenersA = bodyA.listeners.get('collision');
+      const listenersB = bodyB.listeners.get('collision');
+      if (worldListeners === undefined && listenersA === undefined && listenersB === undefined)
+        continue;
+      if (bodyA.removalPending || bodyB.removalPending) continue;
+      const m = contact.manifold;
+      let normalImpulse = 0;
+      let tangentImpulse = 0;
+      let approach = 0;
+      for (let j = 0; j < m.pointCount; j++) {
+        const mp = m.points[j]!;
+        normalImpulse += mp.normalImpulse;
+        tangentImpulse += mp.tangentImpulse;
+        approach = Math.max(approach, -mp.relativeVelocity);
+        const point = event.points[j]!;
+        point.x = mp.x;
+        point.y = mp.y;
+        point.separation = mp.separation;
+        point.normalImpulse = mp.normalImpulse;
+        point.tangentImpulse = mp.tangentImpulse;
+      }
+      if (normalImpulse <= 0) continue;
+      event.bodyA = bodyA;
+      event.bodyB = bodyB;
+      event.shapeA = contact.shapeA;
+      event.shapeB = contact.shapeB;
+      event.normalX = m.normalX;
+      event.normalY = m.normalY;
+      event.pointCount = m.pointCount;
+      event.normalImpulse = normalImpulse;
+      event.tangentImpulse = tangentImpulse;
+      event.approachSpeed = approach;
+      callAll(worldListeners, event);
+      callAll(listenersA, event);
+      callAll(listenersB, event);
+    }
+  }
+
+  private dispatchMoves(): void {
+    const awake = this.solver.awake;
+    const worldListeners = this.listeners.get('move');
+    for (let i = 0; i < awake.length; i++) {
+      const body = awake[i]!;
+      const listeners = body.listeners.get('move');
+      if ((worldListeners === undefined && listeners === undefined) || body.removalPending)
+        continue;
+      const moved =
+        body.centerX !== body.center0X ||
+        body.centerY !== body.center0Y ||
+        body.angleValue !== body.angle0;
+      if (!moved) continue;
+      callAll(worldListeners, body);
+      callAll(listeners, body);
+    }
+  }
+
+  /** @internal Duration of the last step (s), for tools that turn impulses into forces. */
+  get lastStepDuration(): number {
+    return this.lastStep;
+  }
+}
+
+function callAll<E>(listeners: readonly ((event: E) => void)[] | undefined, event: E): void {
+  if (listeners === undefined) return;
+  for (let i = 0; i < listeners.length; i++) listeners[i]!(event);
+}

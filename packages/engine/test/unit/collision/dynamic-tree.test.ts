@@ -1,0 +1,246 @@
+import { describe, expect, it } from 'vitest';
+import { DynamicTree } from '../../../src/collision/dynamic-tree.ts';
+import { AABB, aabbOverlaps } from '../../../src/geometry/aabb.ts';
+import { RayInput } from '../../../src/geometry/ray.ts';
+
+/** Mulberry32: a small seeded PRNG so every run sees the same sequence. */
+function makeRandom(seed: number): () => number {
+  let state = seed >>> 0;
+  return () => {
+    state = (state + 0x6d2b79f5) >>> 0;
+    let t = state;
+    t = Math.imul(t ^ (t >>> 15), t | 1);
+    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
+  };
+}
+
+function randomBox(random: () => number, extent: number, maxSize: number): AABB {
+  const x = (random() * 2 - 1) * extent;
+  const y = (random() * 2 - 1) * extent;
+  return new AABB().set(x, y, x + 0.01 + random() * maxSize, y + 0.01 + random() * maxSize);
+}
+
+/** Entry fraction of the ray into the box by the slab method, or Infinity if it misses. */
+function rayBoxFraction(input: RayInput, box: AABB): number {
+  let tMin = 0;
+  let tMax = input.maxFraction;
+  const origin = [input.originX, input.originY];
+  const direction = [input.translationX, input.translationY];
+  const lower = [box.minX, box.minY];
+  const upper = [box.maxX, box.maxY];
+  for (let axis = 0; axis < 2; axis++) {
+    const p = origin[axis]!;
+    const d = direction[axis]!;
+    if (d === 0) {
+      if (p < lower[axis]! || p > upper[axis]!) {
+        return Infinity;
+      }
+      continue;
+    }
+    let t1 = (lower[axis]! - p) / d;
+    let t2 = (upper[axis]! - p) / d;
+    if (t1 > t2) {
+      [t1, t2] = [t2, t1];
+    }
+    tMin = Math.max(tMin, t1);
+    tMax = Math.min(tMax, t2);
+    if (tMin > tMax) {
+      return Infinity;
+    }
+  }
+  return tMin;
+}
+
+describe('DynamicTree', () => {
+  it('keeps its invariants and answers queries like brute force under random insert, move and destroy', () => {
+    const random = makeRandom(12345);
+    const tree = new DynamicTree();
+    const live = new Map<number, AABB>();
+    const scratch = new AABB();
+
+    for (let batch = 0; batch < 40; batch++) {
+      for (let op = 0; op < 25; op++) {
+        const roll = random();
+        const ids = [...live.keys()];
+        if (roll < 0.5 || ids.length < 10) {
+          const box = randomBox(random, 50, 4);
+          const id = tree.createProxy(box, 1000 + live.size);
+          expect(live.has(id)).toBe(false);
+          live.set(id, box);
+        } else if (roll < 0.8) {
+          const id = ids[Math.floor(random() * ids.length)]!;
+          const box = randomBox(random, 50, 4);
+          tree.moveProxy(id, box);
+          live.set(id, box);
+        } else {
+          const id = ids[Math.floor(random() * ids.length)]!;
+          tree.destroyProxy(id);
+          live.delete(id);
+        }
+      }
+      tree.validate();
+      expect(tree.proxyCount).toBe(live.size);
+      for (const [id, box] of live) {
+        tree.getFatAABB(id, scratch);
+        expect([scratch.minX, scratch.minY, scratch.maxX, scratch.maxY]).toEqual([
+          box.minX,
+          box.minY,
+          box.maxX,
+          box.maxY,
+        ]);
+      }
+
+      for (let q = 0; q < 10; q++) {
+        const query = randomBox(random, 50, 20);
+        const found: number[] = [];
+        tree.query(query, (proxyId) => {
+          found.push(proxyId);
+          return true;
+        });
+        const expected = [...live].filter(([, box]) => aabbOverlaps(box, query)).map(([id]) => id);
+        expect(found.sort((a, b) => a - b)).toEqual(expected.sort((a, b) => a - b));
+      }
+    }
+    expect(live.size).toBeGreaterThan(200);
+  });
+
+  it('returns the user data stored with each proxy', () => {
+    const tree = new DynamicTree();
+    const a = tree.createProxy(new AABB().set(0, 0, 1, 1), 7);
+    const b = tree.createProxy(new AABB().set(5, 5, 6, 6), 42);
+    expect(tree.getUserData(a)).toBe(7);
+    expect(tree.getUserData(b)).toBe(42);
+    const seen: number[] = [];
+    tree.query(new AABB().set(4, 4, 7, 7), (_proxyId, userData) => {
+      seen.push(userData);
+      return true;
+    });
+    expect(seen).toEqual([42]);
+  });
+
+  it('stops a query when the callback returns false', () => {
+    const tree = new DynamicTree();
+    for (let i = 0; i < 20; i++) {
+      tree.createProxy(new AABB().set(i, 0, i + 0.5, 1), i);
+    }
+    let calls = 0;
+    tree.query(new AABB().set(-1, -1, 30, 2), () => {
+      calls++;
+      return calls < 3;
+    });
+    expect(calls).toBe(3);
+  });
+
+  it('supports a query from inside a query callback', () => {
+    const tree = new DynamicTree();
+    for (let i = 0; i < 50; i++) {
+      tree.createProxy(new AABB().set(i, 0, i + 0.9, 1), i);
+    }
+    let outer = 0;
+    let inner = 0;
+    tree.query(new AABB().set(-1, -1, 100, 2), () => {
+      outer++;
+      tree.query(new AABB().set(10.5, 0, 12.5, 1), () => {
+        inner++;
+        return true;
+      });
+      return true;
+    });
+    expect(outer).toBe(50);
+    expect(inner).toBe(50 * 3);
+  });
+
+  it('finds the same first ray hit as brute force', () => {
+    const random = makeRandom(777);
+    const tree = new DynamicTree();
+    const boxes = new Map<number, AABB>();
+    for (let i = 0; i < 300; i++) {
+      const box = randomBox(random, 40, 3);
+      boxes.set(tree.createProxy(box, i), box);
+    }
+    const input = new RayInput();
+    let hits = 0;
+    for (let r = 0; r < 200; r++) {
+      const angle = random() * 2 * Math.PI;
+      input.originX = (random() * 2 - 1) * 60;
+      input.originY = (random() * 2 - 1) * 60;
+      input.translationX = 100 * Math.cos(angle);
+      input.translationY = 100 * Math.sin(angle);
+      input.maxFraction = 1;
+
+      let expectedFraction = Infinity;
+      for (const box of boxes.values()) {
+        expectedFraction = Math.min(expectedFraction, rayBoxFraction(input, box));
+      }
+
+      let bestFraction = Infinity;
+      tree.rayCast(input, (rayInput, proxyId) => {
+        const fraction = rayBoxFraction(rayInput, boxes.get(proxyId)!);
+        if (fraction === Infinity) {
+          return -1;
+        }
+        bestFraction = fraction;
+        return fraction;
+      });
+      if (expectedFraction === Infinity) {
+        expect(bestFraction).toBe(Infinity);
+        expect(input.maxFraction).toBe(1);
+      } else {
+        hits++;
+        expect(bestFraction).toBeCloseTo(expectedFraction, 12);
+        expect(input.maxFraction).toBeCloseTo(expectedFraction, 12);
+      }
+    }
+    expect(hits).toBeGreaterThan(50);
+  });
+
+  it('stops a ray cast when the callback returns 0', () => {
+    const tree = new DynamicTree();
+    for (let i = 0; i < 10; i++) {
+      tree.createProxy(new AABB().set(i * 2, -1, i * 2 + 1, 1), i);
+    }
+    const input = new RayInput();
+    input.originX = -5;
+    input.translationX = 40;
+    let calls = 0;
+    tree.rayCast(input, () => {
+      calls++;
+      return 0;
+    });
+    expect(calls).toBe(1);
+    expect(input.maxFraction).toBe(0);
+  });
+
+  it('stays O(log n) high for 1000 proxies inserted in sorted order', () => {
+    const tree = new DynamicTree();
+    for (let i = 0; i < 1000; i++) {
+      tree.createProxy(new AABB().set(i, 0, i + 1, 1), i);
+    }
+    tree.validate();
+    // A perfectly balanced tree of 1000 leaves has height 10.
+    expect(tree.getHeight()).toBeLessThanOrEqual(20);
+    expect(tree.getAreaRatio()).toBeLessThan(20);
+  });
+
+  it('reuses destroyed proxy ids and keeps its capacity after churn', () => {
+    const tree = new DynamicTree();
+    const ids: number[] = [];
+    for (let i = 0; i < 100; i++) {
+      ids.push(tree.createProxy(new AABB().set(i, i, i + 1, i + 1), i));
+    }
+    const maxId = Math.max(...ids);
+    for (let round = 0; round < 5; round++) {
+      for (let i = 0; i < 100; i++) {
+        tree.destroyProxy(ids[i]!);
+      }
+      expect(tree.proxyCount).toBe(0);
+      expect(tree.getHeight()).toBe(0);
+      for (let i = 0; i < 100; i++) {
+        ids[i] = tree.createProxy(new AABB().set(i, -i, i + 1, -i + 1), i);
+      }
+    }
+    tree.validate();
+    expect(Math.max(...ids)).toBeLessThanOrEqual(maxId);
+  });
+});
