@@ -30,7 +30,14 @@ export type { Polygon } from './geometry/polygon.ts';
 export type { Segment } from './geometry/segment.ts';
 export { Force } from './dynamics/force.ts';
 export type { Duration, ForceOptions, TorqueOptions } from './dynamics/force.ts';
-export type { BodyEvents, CollisionEvent, ContactEvent, ContactPoint } from './dynamics/events.ts';
+export type {
+  BodyEvents,
+  CollisionEvent,
+  ContactEvent,
+  ContactPoint,
+  ContactView,
+  WorldOnlyEvents,
+} from './dynamics/events.ts';
 
 export { PhysicalError } from './core/errors.ts';
 export type { Vec2, Vec2Like } from './math/vec2.ts';

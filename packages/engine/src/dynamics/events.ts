@@ -42,6 +42,9 @@ export interface CollisionEvent {
   readonly approachSpeed: number;
 }
 
+/** A pair of shapes in contact, as {@link World.forEachContact} shows it (same fields as a collision). */
+export type ContactView = CollisionEvent;
+
 /** Two shapes started or stopped touching. Reused like {@link CollisionEvent}. */
 export interface ContactEvent {
   readonly bodyA: Body;
@@ -60,6 +63,16 @@ export interface BodyEvents {
   contactBegin: (event: ContactEvent) => void;
   /** One of the body's shapes stopped touching another shape (or one of them was removed). */
   contactEnd: (event: ContactEvent) => void;
+}
+
+/** Events only a world has. */
+export interface WorldOnlyEvents {
+  /** A body joined the world (after `add`, or at the end of the step it was added in). */
+  bodyAdded: (body: Body) => void;
+  /** A body left the world. */
+  bodyRemoved: (body: Body) => void;
+  /** A sleeping body woke up (a renderer that stopped drawing a sleeping world starts again). */
+  wake: (body: Body) => void;
 }
 
 /** Mutable point behind {@link ContactPoint}. */

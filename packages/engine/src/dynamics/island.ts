@@ -8,8 +8,11 @@ import type { Body } from './body.ts';
  * soon as it reaches one that has not, so a moving scene pays almost nothing.
  */
 export class Islands {
+  /** Called for every body that wakes up (the world turns it into its 'wake' event). */
+  onWake: ((body: Body) => void) | null = null;
   private stamp = 0;
   private readonly stack: Body[] = [];
+  private readonly woken: Body[] = [];
   private readonly members: Body[] = [];
 
   /** Puts to sleep every island of `awake` bodies that has rested for `timeToSleep` seconds. */
@@ -32,12 +35,15 @@ export class Islands {
     body.sleepTime = 0;
     if (body.awake) return;
     const stack = this.stack;
+    const woken = this.woken;
     stack.length = 0;
+    woken.length = 0;
     body.awake = true;
     stack.push(body);
     while (stack.length > 0) {
       const current = stack.pop()!;
       current.sleepTime = 0;
+      woken.push(current);
       if (current.type === 'kinematic') continue;
       for (let i = 0; i < current.contacts.length; i++) {
         const contact = current.contacts[i]!;
@@ -48,6 +54,8 @@ export class Islands {
         stack.push(other);
       }
     }
+    const onWake = this.onWake;
+    if (onWake !== null) for (let i = 0; i < woken.length; i++) onWake(woken[i]!);
   }
 
   /** Puts a body and its whole island to sleep now. */

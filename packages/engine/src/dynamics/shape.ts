@@ -107,7 +107,24 @@ export class Shape {
     this.geometry = createGeometry(options, field);
   }
 
-  /** Recomputes the tight box for a transform. */
+  /** The shape's bounding box in world coordinates (m), at the body's current pose. */
+  getBounds(
+    out: { minX: number; minY: number; maxX: number; maxY: number } = {
+      minX: 0,
+      minY: 0,
+      maxX: 0,
+      maxY: 0,
+    },
+  ): { minX: number; minY: number; maxX: number; maxY: number } {
+    const box = this.computeAABB(this.body.transform);
+    out.minX = box.minX;
+    out.minY = box.minY;
+    out.maxX = box.maxX;
+    out.maxY = box.maxY;
+    return out;
+  }
+
+  /** @internal Recomputes the tight box for a transform. */
   computeAABB(xf: Transform): AABB {
     const g = this.geometry;
     if (g.kind === 'circle') return computeCircleAABB(g, xf, this.aabb);

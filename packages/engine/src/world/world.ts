@@ -6,9 +6,16 @@ import { BroadPhase, type ProxyType } from '../collision/broad-phase.ts';
 import { AABB } from '../geometry/aabb.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
+import type { Contact } from '../dynamics/contact.ts';
 import { ContactManager } from '../dynamics/contact-manager.ts';
 import { ContinuousSolver } from '../dynamics/continuous.ts';
-import { CollisionEventData, ContactEventData, type BodyEvents } from '../dynamics/events.ts';
+import {
+  CollisionEventData,
+  ContactEventData,
+  type BodyEvents,
+  type ContactView,
+  type WorldOnlyEvents,
+} from '../dynamics/events.ts';
 import { Islands } from '../dynamics/island.ts';
 import type { Shape } from '../dynamics/shape.ts';
 import { Solver } from '../dynamics/solver.ts';
@@ -20,8 +27,8 @@ import {
   type WorldOptions,
 } from './world-options.ts';
 
-/** Events of a world: the same as a body's, for every body. */
-export type WorldEvents = BodyEvents;
+/** Events of a world: a body's events for every body, plus bodies added, removed and woken. */
+export type WorldEvents = BodyEvents & WorldOnlyEvents;
 
 const PROXY_TYPE: Record<Body['type'], ProxyType> = { static: 0, kinematic: 1, dynamic: 2 };
 
@@ -64,6 +71,10 @@ export class World {
   constructor(options: WorldOptions = {}) {
     this.settings = resolveWorldOptions(options);
     this.queries = new WorldQueries(this.broadPhase, this.shapesById);
+    this.islands.onWake = (body) => {
+      const listeners = this.listeners.get('wake');
+      if (listeners !== undefined) callAll(listeners, body);
+    };
   }
 
   // ---------------------------------------------------------------- settings
@@ -271,6 +282,27 @@ export class World {
     return this.queries.rayCast(from.x, from.y, to.x, to.y);
   }
 
+  /** Number of bodies that are awake and not static: 0 means the world is at rest. */
+  get awakeBodyCount(): number {
+    let count = 0;
+    for (const body of this.bodyList) if (body.awake) count++;
+    return count;
+  }
+
+  /**
+   * Visits every pair of shapes in contact (touching, or within the speculative margin), with the
+   * manifold and the impulses of the last step: for debug drawing and inspection. The view object
+   * is reused between calls: copy what you keep.
+   */
+  forEachContact(visitor: (contact: ContactView) => void): void {
+    const event = this.collisionEvent;
+    for (const contact of this.contactManager.contacts) {
+      if (!contact.touching) continue;
+      this.fillCollisionEvent(contact, event);
+      visitor(event);
+    }
+  }
+
   // ---------------------------------------------------------------- events
 
   /**
@@ -346,6 +378,7 @@ export class World {
     body.angle0 = body.angleValue;
     this.bodyList.push(body);
     for (const shape of body.shapeList) this.createProxy(shape);
+    callAll(this.listeners.get('bodyAdded'), body);
   }
 
   private extractBody(body: Body): void {
@@ -357,6 +390,7 @@ export class World {
     body.worldIndex = -1;
     body.removalPending = false;
     body.solverIndex = 0;
+    callAll(this.listeners.get('bodyRemoved'), body);
   }
 
   private createProxy(shape: Shape): void {
@@ -482,37 +516,41 @@ export class World {
       if (worldListeners === undefined && listenersA === undefined && listenersB === undefined)
         continue;
       if (bodyA.removalPending || bodyB.removalPending) continue;
-      const m = contact.manifold;
-      let normalImpulse = 0;
-      let tangentImpulse = 0;
-      let approach = 0;
-      for (let j = 0; j < m.pointCount; j++) {
-        const mp = m.points[j]!;
-        normalImpulse += mp.normalImpulse;
-        tangentImpulse += mp.tangentImpulse;
-        approach = Math.max(approach, -mp.relativeVelocity);
-        const point = event.points[j]!;
-        point.x = mp.x;
-        point.y = mp.y;
-        point.separation = mp.separation;
-        point.normalImpulse = mp.normalImpulse;
-        point.tangentImpulse = mp.tangentImpulse;
-      }
-      if (normalImpulse <= 0) continue;
-      event.bodyA = bodyA;
-      event.bodyB = bodyB;
-      event.shapeA = contact.shapeA;
-      event.shapeB = contact.shapeB;
-      event.normalX = m.normalX;
-      event.normalY = m.normalY;
-      event.pointCount = m.pointCount;
-      event.normalImpulse = normalImpulse;
-      event.tangentImpulse = tangentImpulse;
-      event.approachSpeed = approach;
+      this.fillCollisionEvent(contact, event);
+      if (event.normalImpulse <= 0) continue;
       callAll(worldListeners, event);
       callAll(listenersA, event);
       callAll(listenersB, event);
     }
+  }
+
+  private fillCollisionEvent(contact: Contact, event: CollisionEventData): void {
+    const m = contact.manifold;
+    let normalImpulse = 0;
+    let tangentImpulse = 0;
+    let approach = 0;
+    for (let j = 0; j < m.pointCount; j++) {
+      const mp = m.points[j]!;
+      normalImpulse += mp.normalImpulse;
+      tangentImpulse += mp.tangentImpulse;
+      approach = Math.max(approach, -mp.relativeVelocity);
+      const point = event.points[j]!;
+      point.x = mp.x;
+      point.y = mp.y;
+      point.separation = mp.separation;
+      point.normalImpulse = mp.normalImpulse;
+      point.tangentImpulse = mp.tangentImpulse;
+    }
+    event.bodyA = contact.bodyA;
+    event.bodyB = contact.bodyB;
+    event.shapeA = contact.shapeA;
+    event.shapeB = contact.shapeB;
+    event.normalX = m.normalX;
+    event.normalY = m.normalY;
+    event.pointCount = m.pointCount;
+    event.normalImpulse = normalImpulse;
+    event.tangentImpulse = tangentImpulse;
+    event.approachSpeed = approach;
   }
 
   private dispatchMoves(): void {

@@ -96,8 +96,11 @@ describe('collideCircles', () => {
     point.maxNormalImpulse = 5;
     point.relativeVelocity = 7;
     collideCircles(big, xf(0, 0), small, xf(1, 0), manifold);
-    expect([point.normalImpulse, point.tangentImpulse, point.maxNormalImpulse, point.relativeVelocity]).toEqual([
-      3, -2, 5, 7,
-    ]);
+    expect([
+      point.normalImpulse,
+      point.tangentImpulse,
+      point.maxNormalImpulse,
+      point.relativeVelocity,
+    ]).toEqual([3, -2, 5, 7]);
   });
 });

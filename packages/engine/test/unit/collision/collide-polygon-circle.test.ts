@@ -50,7 +50,13 @@ describe('collidePolygonAndCircle', () => {
     const manifold = new Manifold();
     manifold.pointCount = 1;
     const circle = makeCircle(0, 0, 0.5, 'b');
-    collidePolygonAndCircle(box, xf(0, 0), circle, xf(0, 1.5 + SPECULATIVE_DISTANCE + 1e-3), manifold);
+    collidePolygonAndCircle(
+      box,
+      xf(0, 0),
+      circle,
+      xf(0, 1.5 + SPECULATIVE_DISTANCE + 1e-3),
+      manifold,
+    );
     expect(manifold.pointCount).toBe(0);
     // Over the corner the face gap is only 0.01, but the true distance is 0.01 * sqrt(2) + ... > 0.02.
     const diagonal = 1 + (0.5 + 0.021) / Math.SQRT2;

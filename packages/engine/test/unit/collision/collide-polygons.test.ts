@@ -79,7 +79,10 @@ describe('collidePolygons', () => {
       expect(manifold.normalY).toBeCloseTo(1, 14);
       const points = pointsOf(manifold);
       expect(points.map((p) => p.x)).toEqual([expect.closeTo(-0.4, 14), expect.closeTo(0.6, 14)]);
-      expect(points.map((p) => p.y)).toEqual([expect.closeTo(0.475, 14), expect.closeTo(0.475, 14)]);
+      expect(points.map((p) => p.y)).toEqual([
+        expect.closeTo(0.475, 14),
+        expect.closeTo(0.475, 14),
+      ]);
     }
   });
 
@@ -222,9 +225,12 @@ describe('collidePolygons', () => {
     collidePolygons(unit, xf(0, 0), unit, xf(0, 0.95), manifold);
     expect(manifold.pointCount).toBe(2);
     for (const point of manifold.points) {
-      expect([point.normalImpulse, point.tangentImpulse, point.maxNormalImpulse, point.relativeVelocity]).toEqual([
-        1, 2, 3, 4,
-      ]);
+      expect([
+        point.normalImpulse,
+        point.tangentImpulse,
+        point.maxNormalImpulse,
+        point.relativeVelocity,
+      ]).toEqual([1, 2, 3, 4]);
     }
   });
 });

@@ -51,7 +51,13 @@ describe('collideSegmentAndCircle', () => {
     const manifold = new Manifold();
     manifold.pointCount = 1;
     const circle = makeCircle(0, 0, 0.5, 'b');
-    collideSegmentAndCircle(twoSided, xf(0, 0), circle, xf(0, 0.5 + SPECULATIVE_DISTANCE + 1e-3), manifold);
+    collideSegmentAndCircle(
+      twoSided,
+      xf(0, 0),
+      circle,
+      xf(0, 0.5 + SPECULATIVE_DISTANCE + 1e-3),
+      manifold,
+    );
     expect(manifold.pointCount).toBe(0);
     collideSegmentAndCircle(twoSided, xf(0, 0), circle, xf(0, 0.51), manifold);
     expect(manifold.pointCount).toBe(1);

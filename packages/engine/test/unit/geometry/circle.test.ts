@@ -65,7 +65,9 @@ describe('computeCircleMass', () => {
     const expectedMass = 2.5 * Math.PI * 0.25 * 0.25;
     expect(Math.abs(mass.mass - expectedMass) / expectedMass).toBeLessThan(1e-12);
     const expectedInertia = (expectedMass * 0.25 * 0.25) / 2;
-    expect(Math.abs(mass.rotationalInertia - expectedInertia) / expectedInertia).toBeLessThan(1e-12);
+    expect(Math.abs(mass.rotationalInertia - expectedInertia) / expectedInertia).toBeLessThan(
+      1e-12,
+    );
     expect(mass.centerX).toBe(0.3);
     expect(mass.centerY).toBe(-0.7);
   });

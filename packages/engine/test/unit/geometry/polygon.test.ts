@@ -202,7 +202,10 @@ describe('makeBox', () => {
   it('places a rotated box around its centre', () => {
     const box = makeBox(2, 1, 3, 4, Math.PI / 2, 0, 's');
     expect(box.count).toBe(4);
-    const corners = vertexList(box).map(([x, y]) => [Math.round(x! * 1e9) / 1e9, Math.round(y! * 1e9) / 1e9]);
+    const corners = vertexList(box).map(([x, y]) => [
+      Math.round(x! * 1e9) / 1e9,
+      Math.round(y! * 1e9) / 1e9,
+    ]);
     expect(corners).toEqual([
       [4, 2],
       [4, 6],
@@ -247,7 +250,8 @@ describe('computePolygonMass', () => {
     expectRelative(mass.mass, 0.5 * area);
     expectRelative(mass.centerX, 8 / 3);
     expectRelative(mass.centerY, 7 / 3);
-    const sides = (5 - 1) ** 2 + (2 - 1) ** 2 + (2 - 5) ** 2 + (4 - 2) ** 2 + (1 - 2) ** 2 + (1 - 4) ** 2;
+    const sides =
+      (5 - 1) ** 2 + (2 - 1) ** 2 + (2 - 5) ** 2 + (4 - 2) ** 2 + (1 - 2) ** 2 + (1 - 4) ** 2;
     expectRelative(mass.rotationalInertia, (mass.mass * sides) / 36);
   });
 
@@ -255,7 +259,10 @@ describe('computePolygonMass', () => {
     const R = 0.8;
     const hexagon: { x: number; y: number }[] = [];
     for (let i = 0; i < 6; i++) {
-      hexagon.push({ x: 10 + R * Math.cos((i * Math.PI) / 3), y: -4 + R * Math.sin((i * Math.PI) / 3) });
+      hexagon.push({
+        x: 10 + R * Math.cos((i * Math.PI) / 3),
+        y: -4 + R * Math.sin((i * Math.PI) / 3),
+      });
     }
     const mass = computePolygonMass(makePolygon(hexagon, 0, 's'), 2, new MassData());
     expectRelative(mass.mass, 2 * ((3 * Math.sqrt(3)) / 2) * R * R);
@@ -275,7 +282,9 @@ describe('computePolygonMass', () => {
     const rectangle = (w: number, h: number, cx: number, cy: number): number =>
       (w * h * (w * w + h * h)) / 12 + w * h * (cx * cx + cy * cy);
     const quarter =
-      (Math.PI * r ** 4) / 8 + 2 * ((a * r ** 3) / 3 + (b * r ** 3) / 3) + ((Math.PI * r * r) / 4) * (a * a + b * b);
+      (Math.PI * r ** 4) / 8 +
+      2 * ((a * r ** 3) / 3 + (b * r ** 3) / 3) +
+      ((Math.PI * r * r) / 4) * (a * a + b * b);
     const polar =
       rectangle(2 * a, 2 * b, 0, 0) +
       2 * rectangle(2 * a, r, 0, b + r / 2) +
