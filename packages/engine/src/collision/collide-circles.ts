@@ -15,6 +15,7 @@ export function collideCircles(
   b: Circle,
   xfB: Transform,
   out: Manifold,
+  speculativeDistance: number = SPECULATIVE_DISTANCE,
 ): void {
   // Centres relative to A's origin, world orientation.
   const ax = xfA.c * a.centerX - xfA.s * a.centerY;
@@ -25,7 +26,7 @@ export function collideCircles(
   const dy = by - ay;
   const distance = Math.hypot(dx, dy);
   const separation = distance - a.radius - b.radius;
-  if (separation >= SPECULATIVE_DISTANCE) {
+  if (separation >= speculativeDistance) {
     out.pointCount = 0;
     return;
   }

@@ -20,6 +20,7 @@ export function collidePolygonAndCircle(
   b: Circle,
   xfB: Transform,
   out: Manifold,
+  speculativeDistance: number = SPECULATIVE_DISTANCE,
 ): void {
   const vertices = a.vertices;
   const normals = a.normals;
@@ -42,7 +43,7 @@ export function collidePolygonAndCircle(
       edge = i;
     }
   }
-  if (faceSeparation - rA - rB >= SPECULATIVE_DISTANCE) {
+  if (faceSeparation - rA - rB >= speculativeDistance) {
     out.pointCount = 0;
     return;
   }
@@ -68,7 +69,7 @@ export function collidePolygonAndCircle(
     const dy = cy - surfaceY;
     const distance = Math.hypot(dx, dy);
     separation = distance - rA - rB;
-    if (separation >= SPECULATIVE_DISTANCE) {
+    if (separation >= speculativeDistance) {
       out.pointCount = 0;
       return;
     }

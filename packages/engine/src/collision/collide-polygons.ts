@@ -38,7 +38,7 @@ const FLIP_BIAS = 0.1 * LINEAR_SLOP;
  *    the normal along it: only then does rounding see the true distance at a corner.
  * 4. Otherwise Sutherland-Hodgman clipping of the incident edge against the reference face's two
  *    side planes; each clipped point is measured along the reference normal and kept while its
- *    separation (radii included) is below SPECULATIVE_DISTANCE.
+ *    separation (radii included) is below the speculative distance.
  * Points lie midway between the two rounded surfaces. Ids pair the reference edge with the incident
  * vertex, so they persist while the same faces touch. Writes only the geometric fields of `out`;
  * the normal points from A to B (world frame).
@@ -49,6 +49,7 @@ export function collidePolygons(
   b: Polygon,
   xfB: Transform,
   out: Manifold,
+  speculativeDistance: number = SPECULATIVE_DISTANCE,
 ): void {
   const countA = a.count;
   const countB = b.count;
@@ -83,10 +84,7 @@ export function collidePolygons(
   const separationB = findMaxSeparation(countB, verticesB, normalsB, countA, verticesA);
   const edgeB = maxSeparationEdge;
   const radius = a.radius + b.radius;
-  if (
-    separationA - radius >= SPECULATIVE_DISTANCE ||
-    separationB - radius >= SPECULATIVE_DISTANCE
-  ) {
+  if (separationA - radius >= speculativeDistance || separationB - radius >= speculativeDistance) {
     out.pointCount = 0;
     return;
   }
@@ -169,7 +167,7 @@ export function collidePolygons(
         const gapY = p2y - p1y;
         const distance = Math.hypot(gapX, gapY);
         const separation = distance - radius;
-        if (separation >= SPECULATIVE_DISTANCE) {
+        if (separation >= speculativeDistance) {
           out.pointCount = 0;
           return;
         }
@@ -242,7 +240,7 @@ export function collidePolygons(
   const outNormalY = isFlipped ? -ny : ny;
   let pointCount = 0;
   const coreA = nx * (ax - v11x) + ny * (ay - v11y);
-  if (coreA - radius < SPECULATIVE_DISTANCE) {
+  if (coreA - radius < speculativeDistance) {
     // Midway between the reference surface (plane + radius1) and the incident one (p - radius2 n).
     const shift = 0.5 * (radius1 - radius2 - coreA);
     writePoint(
@@ -259,7 +257,7 @@ export function collidePolygons(
   }
   if (count === 2) {
     const coreB = nx * (bx - v11x) + ny * (by - v11y);
-    if (coreB - radius < SPECULATIVE_DISTANCE) {
+    if (coreB - radius < speculativeDistance) {
       const shift = 0.5 * (radius1 - radius2 - coreB);
       writePoint(
         out,

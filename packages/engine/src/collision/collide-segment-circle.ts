@@ -21,6 +21,7 @@ export function collideSegmentAndCircle(
   b: Circle,
   xfB: Transform,
   out: Manifold,
+  speculativeDistance: number = SPECULATIVE_DISTANCE,
 ): void {
   // Everything in A's frame.
   const wx = xfB.c * b.centerX - xfB.s * b.centerY + xfB.x - xfA.x;
@@ -46,7 +47,7 @@ export function collideSegmentAndCircle(
   const dy = cy - qy;
   const distance = Math.hypot(dx, dy);
   const separation = distance - b.radius;
-  if (separation >= SPECULATIVE_DISTANCE) {
+  if (separation >= speculativeDistance) {
     out.pointCount = 0;
     return;
   }

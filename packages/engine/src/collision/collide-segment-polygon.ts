@@ -27,6 +27,7 @@ export function collideSegmentAndPolygon(
   b: Polygon,
   xfB: Transform,
   out: Manifold,
+  speculativeDistance: number = SPECULATIVE_DISTANCE,
 ): void {
   const ex = a.x2 - a.x1;
   const ey = a.y2 - a.y1;
@@ -47,7 +48,7 @@ export function collideSegmentAndPolygon(
     polygon.normals[3] = -ny;
     polygon.centroidX = 0.5 * (a.x1 + a.x2);
     polygon.centroidY = 0.5 * (a.y1 + a.y2);
-    collidePolygons(polygon, xfA, b, xfB, out);
+    collidePolygons(polygon, xfA, b, xfB, out, speculativeDistance);
     return;
   }
 
@@ -121,7 +122,7 @@ export function collideSegmentAndPolygon(
     const y = k === 0 ? py : qy;
     const core = nx * x + ny * y;
     const separation = core - radius;
-    if (separation >= SPECULATIVE_DISTANCE) {
+    if (separation >= speculativeDistance) {
       continue;
     }
     // Midway between the wall (height 0) and B's surface (height core - radius).

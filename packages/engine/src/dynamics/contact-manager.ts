@@ -49,7 +49,7 @@ export class ContactManager {
    * update the manifolds of the rest, record which started or stopped touching, and wake a
    * sleeping body that something started touching.
    */
-  collide(): void {
+  collide(dt: number): void {
     this.began.length = 0;
     this.endedCount = 0;
     const contacts = this.contacts;
@@ -67,7 +67,7 @@ export class ContactManager {
         continue; // the last contact now sits at index i
       }
       const wasTouching = contact.touching;
-      const touching = contact.update();
+      const touching = contact.update(dt);
       if (touching && !wasTouching) {
         this.began.push(contact);
         if (!bodyA.awake) this.islands.wake(bodyA);

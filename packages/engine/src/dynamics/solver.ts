@@ -163,7 +163,9 @@ export class Solver {
 
       // Sleep: the body must be slow, and not being moved by position correction either
       // (Box2D v3's rule, with its 0.5 weight on correction).
-      if (!body.allowSleepValue) {
+      // A body with a force still to act (a 'constant' or timed one) must not sleep: a small
+      // force on a heavy body is slow at first, and sleeping would zero its velocity and stop it.
+      if (!body.allowSleepValue || body.forceList.length > 0) {
         body.sleepTime = 0;
         continue;
       }

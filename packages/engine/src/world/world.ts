@@ -233,7 +233,7 @@ export class World {
     this.locked = true;
     try {
       this.broadPhase.updatePairs(this.onPair);
-      this.contactManager.collide();
+      this.contactManager.collide(dt);
       this.solver.gatherBodies(this.bodyList, dt);
       this.solver.solve(this.contactManager.contacts, this.settings, dt);
       if (this.settings.enableContinuous) this.solveContinuous();
@@ -410,14 +410,24 @@ export class World {
     shape.proxyKey = -1;
   }
 
-  /** The shape's box at the body's transform, grown by the speculative distance. */
+  /**
+   * The shape's box at the body's pose, grown by the speculative distance and stretched along the
+   * body's velocity over one more step, so the pair exists (and its speculative contact can stop
+   * the motion) before a fast body reaches what it will hit.
+   */
   private speculativeBox(shape: Shape): AABB {
-    const tight = shape.computeAABB(shape.body.transform);
+    const body = shape.body;
+    const tight = shape.computeAABB(body.transform);
+    const dt = this.lastStep;
+    const spin = Math.abs(body.angularVelocityValue) * body.maxExtent * dt;
+    const grow = SPECULATIVE_DISTANCE + spin;
+    const dx = body.velocityX * dt;
+    const dy = body.velocityY * dt;
     return this.proxyBox.set(
-      tight.minX - SPECULATIVE_DISTANCE,
-      tight.minY - SPECULATIVE_DISTANCE,
-      tight.maxX + SPECULATIVE_DISTANCE,
-      tight.maxY + SPECULATIVE_DISTANCE,
+      tight.minX - grow + Math.min(dx, 0),
+      tight.minY - grow + Math.min(dy, 0),
+      tight.maxX + grow + Math.max(dx, 0),
+      tight.maxY + grow + Math.max(dy, 0),
     );
   }
 
