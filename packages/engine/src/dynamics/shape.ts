@@ -1,5 +1,10 @@
 import { PhysicalError } from '../core/errors.ts';
-import { requireFinite, requireNonNegative, requireVector } from '../core/validate.ts';
+import {
+  requireFinite,
+  requireNonNegative,
+  requirePositive,
+  requireVector,
+} from '../core/validate.ts';
 import { AABB } from '../geometry/aabb.ts';
 import { computeCircleAABB, makeCircle, type Circle } from '../geometry/circle.ts';
 import { computePolygonAABB, makeBox, makePolygon, type Polygon } from '../geometry/polygon.ts';
@@ -153,8 +158,8 @@ function createGeometry(options: ShapeOptions, field: string): Geometry {
     case 'box': {
       const offset = options.offset ?? ORIGIN;
       requireVector(`${field}.offset`, offset);
-      const width = requireFinite(`${field}.width`, options.width);
-      const height = requireFinite(`${field}.height`, options.height);
+      const width = requirePositive(`${field}.width`, options.width);
+      const height = requirePositive(`${field}.height`, options.height);
       return makeBox(
         width / 2,
         height / 2,
