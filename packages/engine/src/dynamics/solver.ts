@@ -235,18 +235,19 @@ function integrateVelocities(
     if (invMass === 0) continue; // kinematic: keeps the velocity it was given
     const k = (i + 1) * STATE_STRIDE;
     const scale = body.gravityScaleValue;
-    let vx = s[k + V_X]! + h * (invMass * body.forceX + scale * gx);
-    let vy = s[k + V_Y]! + h * (invMass * body.forceY + scale * gy);
+    let vx = s[k + V_X]!;
+    let vy = s[k + V_Y]!;
+    // The thesis's drag, F = -drag |v| v, with |v| taken at the start of the sub-step: then the
+    // discrete motion has the exact terminal speed sqrt(m g / drag) and coasts exactly as
+    // 1/v = 1/v0 + (drag/m) t.
+    const drag = body.dragValue;
+    const dragFactor = drag > 0 ? 1 / (1 + h * invMass * drag * Math.sqrt(vx * vx + vy * vy)) : 1;
+    vx = (vx + h * (invMass * body.forceX + scale * gx)) * dragFactor;
+    vy = (vy + h * (invMass * body.forceY + scale * gy)) * dragFactor;
     let w = s[k + W]! + h * body.invInertia * body.torqueValue;
     const linearDamping = body.linearDampingValue;
     if (linearDamping > 0) {
       const factor = 1 / (1 + h * linearDamping);
-      vx *= factor;
-      vy *= factor;
-    }
-    const drag = body.dragValue;
-    if (drag > 0) {
-      const factor = 1 / (1 + h * invMass * drag * Math.sqrt(vx * vx + vy * vy));
       vx *= factor;
       vy *= factor;
     }
