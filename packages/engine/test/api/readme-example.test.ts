@@ -1,10 +1,12 @@
 import { mkdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import ts from 'typescript';
 import { afterEach, describe, expect, it, vi } from 'vitest';
 
-// The root README's example is executed as written: extracted, saved as a module and imported
-// (the test runner resolves '@physical/engine' to the sources), so it can never rot.
+// The root README's example is type-checked and executed as written: extracted, saved as a module,
+// checked with the compiler against the engine's sources, and imported (the test runner resolves
+// '@physical/engine' to the sources), so it can never rot.
 
 const here = dirname(fileURLToPath(import.meta.url));
 const readme = readFileSync(join(here, '../../../../README.md'), 'utf8');
@@ -16,21 +18,44 @@ function extractExample(markdown: string): string {
   return match[1]!;
 }
 
+function writeExample(): string {
+  const folder = join(here, 'generated');
+  mkdirSync(folder, { recursive: true });
+  const file = join(folder, 'readme-example.ts');
+  writeFileSync(file, extractExample(readme));
+  return file;
+}
+
 describe('the README example', () => {
   afterEach(() => {
     vi.restoreAllMocks();
   });
+
+  it('type-checks against the public API', () => {
+    const file = writeExample();
+    const program = ts.createProgram([file], {
+      strict: true,
+      noEmit: true,
+      target: ts.ScriptTarget.ES2022,
+      module: ts.ModuleKind.ESNext,
+      moduleResolution: ts.ModuleResolutionKind.Bundler,
+      allowImportingTsExtensions: true,
+      skipLibCheck: true,
+      types: [],
+      paths: { '@physical/engine': [join(here, '../../src/index.ts')] },
+    });
+    const diagnostics = ts
+      .getPreEmitDiagnostics(program)
+      .map((d) => ts.flattenDiagnosticMessageText(d.messageText, '\n'));
+    expect(diagnostics).toEqual([]);
+  }, 30_000);
 
   it('runs and prints what its comments promise', async () => {
     const lines: string[] = [];
     vi.spyOn(console, 'log').mockImplementation((line: unknown) => {
       lines.push(String(line));
     });
-    const folder = join(here, 'generated');
-    mkdirSync(folder, { recursive: true });
-    const file = join(folder, 'readme-example.ts');
-    writeFileSync(file, extractExample(readme));
-    await import(/* @vite-ignore */ file);
+    await import(/* @vite-ignore */ writeExample());
 
     const rest = lines.find((line) => line.startsWith('ball rests at y = '));
     expect(rest).toBeDefined();
