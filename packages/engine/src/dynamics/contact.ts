@@ -4,12 +4,18 @@ import { collidePolygons } from '../collision/collide-polygons.ts';
 import { collideSegmentAndCircle } from '../collision/collide-segment-circle.ts';
 import { collideSegmentAndPolygon } from '../collision/collide-segment-polygon.ts';
 import { Manifold, type ManifoldPoint } from '../collision/manifold.ts';
-import { SPECULATIVE_DISTANCE } from '../core/constants.ts';
+import { LINEAR_SLOP, SPECULATIVE_DISTANCE } from '../core/constants.ts';
 import type { Circle } from '../geometry/circle.ts';
 import type { Polygon } from '../geometry/polygon.ts';
 import type { Segment } from '../geometry/segment.ts';
 import type { Body } from './body.ts';
 import type { Shape } from './shape.ts';
+
+// Manifolds are reused while B moved less than this relative to A (m). Motion along the normal is
+// measured exactly on reuse; only sliding along the surface can leave a contact point behind its
+// true place, by at most this much: half the slop, below anything the solver resolves.
+const REUSE_TOLERANCE = 0.5 * LINEAR_SLOP;
+const REUSE_TOLERANCE_SQUARED = REUSE_TOLERANCE * REUSE_TOLERANCE;
 
 // The narrow-phase table: which collide function handles a pair of shape kinds, with shape A the
 // higher-ranked kind (segment > polygon > circle). One switch here instead of registration by
@@ -48,8 +54,24 @@ export class Contact {
   restitution = 0;
   /** Which collide function applies. */
   pairKind = 0;
+  /**
+   * Normal and friction impulse each manifold point delivered during the last solved step (N s):
+   * the sum over the sub-steps plus restitution, for events. The manifold's own impulses are the
+   * per-sub-step values kept for warm starting.
+   */
+  readonly stepNormalImpulse: [number, number] = [0, 0];
+  readonly stepTangentImpulse: [number, number] = [0, 0];
   /** The manifold has at least one point (possibly speculative). */
   touching = false;
+  /**
+   * Manifold reuse: the relative pose of B in A's frame when the manifold was last computed in
+   * full (x, y, cosine, sine), then per point the surface point of A in A's frame and of B in B's
+   * frame (4 numbers each), then the normal in A's frame. `hasCache` says whether it is valid.
+   */
+  private readonly cache = new Float64Array(14);
+  private hasCache = false;
+  /** Distance from body B's origin to its centre of mass (m), for the reuse bound. */
+  private extentB = 0;
   /** Index in the world's contact array, and in each body's contact list. */
   index = -1;
   indexInA = -1;
@@ -64,7 +86,11 @@ export class Contact {
     this.friction = Math.sqrt(a.friction * b.friction);
     this.restitution = Math.max(a.restitution, b.restitution);
     this.touching = false;
+    this.hasCache = false;
+    this.extentB = Math.hypot(b.body.localCenterX, b.body.localCenterY);
     this.manifold.pointCount = 0;
+    this.stepNormalImpulse[0] = this.stepNormalImpulse[1] = 0;
+    this.stepTangentImpulse[0] = this.stepTangentImpulse[1] = 0;
     const kindA = a.geometry.kind;
     const kindB = b.geometry.kind;
     if (kindA === 'circle') this.pairKind = PAIR_CIRCLES;
@@ -102,6 +128,23 @@ export class Contact {
     const bodyB = this.bodyB;
     const xfA = bodyA.transform;
     const xfB = bodyB.transform;
+    // B's pose in A's frame.
+    const cA = xfA.c;
+    const sA = xfA.s;
+    const relC = cA * xfB.c + sA * xfB.s;
+    const relS = cA * xfB.s - sA * xfB.c;
+    const ox = xfB.x - xfA.x;
+    const oy = xfB.y - xfA.y;
+    const relX = cA * ox + sA * oy;
+    const relY = -sA * ox + cA * oy;
+    if (this.hasCache && this.poseIsClose(relX, relY, relC, relS)) {
+      this.refreshFromCache();
+      p0.maxNormalImpulse = 0;
+      p1.maxNormalImpulse = 0;
+      this.stepNormalImpulse[0] = this.stepNormalImpulse[1] = 0;
+      this.stepTangentImpulse[0] = this.stepTangentImpulse[1] = 0;
+      return this.touching;
+    }
     // Bound on how much the gap can close this step: relative speed plus rotation at the rim.
     const dvx = bodyB.velocityX - bodyA.velocityX;
     const dvy = bodyB.velocityY - bodyA.velocityY;
@@ -129,6 +172,7 @@ export class Contact {
         break;
     }
     if (reach > 0 && m.pointCount > 0) this.dropPassingPoints(dt);
+    this.storeCache(relX, relY, relC, relS);
 
     for (let i = 0; i < m.pointCount; i++) {
       const p = i === 0 ? p0 : p1;
@@ -143,8 +187,91 @@ export class Contact {
         p.tangentImpulse = tangent1;
       }
     }
+    this.stepNormalImpulse[0] = this.stepNormalImpulse[1] = 0;
+    this.stepTangentImpulse[0] = this.stepTangentImpulse[1] = 0;
     this.touching = m.pointCount > 0;
     return this.touching;
+  }
+
+  /**
+   * True if B moved relative to A by less than REUSE_TOLERANCE at any of its points since the
+   * manifold was computed in full: then the same features touch, and only the separations need
+   * updating. Resting stacks (most contacts of a settled scene) skip the separating-axis test and
+   * the clipping this way (the manifold reuse of Parry/Rapier).
+   */
+  private poseIsClose(x: number, y: number, c: number, s: number): boolean {
+    const cache = this.cache;
+    const dx = x - cache[0]!;
+    const dy = y - cache[1]!;
+    // |sin| of the rotation since then, times the farthest point of B from its own origin.
+    const turn = Math.abs(s * cache[2]! - c * cache[3]!);
+    const reachB = this.bodyB.maxExtent + this.extentB;
+    return dx * dx + dy * dy + turn * reachB * turn * reachB < REUSE_TOLERANCE_SQUARED;
+  }
+
+  private storeCache(x: number, y: number, c: number, s: number): void {
+    const m = this.manifold;
+    const cache = this.cache;
+    // Only polygon pairs are worth it: the circle kernels cost less than the bookkeeping.
+    if (
+      m.pointCount === 0 ||
+      (this.pairKind !== PAIR_POLYGONS && this.pairKind !== PAIR_SEGMENT_POLYGON)
+    ) {
+      this.hasCache = false;
+      return;
+    }
+    cache[0] = x;
+    cache[1] = y;
+    cache[2] = c;
+    cache[3] = s;
+    const xfA = this.bodyA.transform;
+    const xfB = this.bodyB.transform;
+    const nx = m.normalX;
+    const ny = m.normalY;
+    for (let i = 0; i < m.pointCount; i++) {
+      const p = m.points[i]!;
+      const half = 0.5 * p.separation;
+      // Surface points: the manifold point is midway between them along the normal.
+      const ax = p.x - half * nx - xfA.x;
+      const ay = p.y - half * ny - xfA.y;
+      const bx = p.x + half * nx - xfB.x;
+      const by = p.y + half * ny - xfB.y;
+      const k = 4 + 4 * i;
+      cache[k] = xfA.c * ax + xfA.s * ay;
+      cache[k + 1] = -xfA.s * ax + xfA.c * ay;
+      cache[k + 2] = xfB.c * bx + xfB.s * by;
+      cache[k + 3] = -xfB.s * bx + xfB.c * by;
+    }
+    cache[12] = xfA.c * nx + xfA.s * ny;
+    cache[13] = -xfA.s * nx + xfA.c * ny;
+    this.hasCache = true;
+  }
+
+  /** Moves the cached surface points with their bodies and measures the gap along the normal again. */
+  private refreshFromCache(): void {
+    const m = this.manifold;
+    const cache = this.cache;
+    const xfA = this.bodyA.transform;
+    const xfB = this.bodyB.transform;
+    const nx = xfA.c * cache[12]! - xfA.s * cache[13]!;
+    const ny = xfA.s * cache[12]! + xfA.c * cache[13]!;
+    m.normalX = nx;
+    m.normalY = ny;
+    for (let i = 0; i < m.pointCount; i++) {
+      const k = 4 + 4 * i;
+      const ax = xfA.c * cache[k]! - xfA.s * cache[k + 1]! + xfA.x;
+      const ay = xfA.s * cache[k]! + xfA.c * cache[k + 1]! + xfA.y;
+      const bx = xfB.c * cache[k + 2]! - xfB.s * cache[k + 3]! + xfB.x;
+      const by = xfB.s * cache[k + 2]! + xfB.c * cache[k + 3]! + xfB.y;
+      const p = m.points[i]!;
+      p.separation = (bx - ax) * nx + (by - ay) * ny;
+      p.x = 0.5 * (ax + bx);
+      p.y = 0.5 * (ay + by);
+      p.anchorAX = p.x - xfA.x;
+      p.anchorAY = p.y - xfA.y;
+      p.anchorBX = p.x - xfB.x;
+      p.anchorBY = p.y - xfB.y;
+    }
   }
 
   /** Keeps far speculative points only where the bodies approach along the normal fast enough. */
