@@ -24,7 +24,7 @@ const MAX_ITERATIONS = 20;
  */
 export class DistanceProxy {
   /** Core vertices x0, y0, x1, y1, ... in the body frame (m); only the first 2 * count are used. */
-  readonly vertices = new Float64Array(2 * MAX_POLYGON_VERTICES);
+  readonly vertices: Float64Array = new Float64Array(2 * MAX_POLYGON_VERTICES);
   /** Number of core vertices, 1..MAX_POLYGON_VERTICES. */
   count = 0;
   /** Radius around the core (m), >= 0. */

@@ -8,7 +8,7 @@ export const LINEAR_SLOP = 0.005;
  * Contact points are kept while the shapes are closer than this, before they touch, so the solver
  * can stop a body exactly at the surface instead of after it has passed it (speculative contacts, m).
  */
-export const SPECULATIVE_DISTANCE = 4 * LINEAR_SLOP;
+export const SPECULATIVE_DISTANCE: number = 4 * LINEAR_SLOP;
 
 /** Broad-phase boxes are fattened by this much so that small motions do not update the tree (m). */
 export const AABB_MARGIN = 0.1;
