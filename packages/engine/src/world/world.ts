@@ -541,15 +541,18 @@ export class World {
     let approach = 0;
     for (let j = 0; j < m.pointCount; j++) {
       const mp = m.points[j]!;
-      normalImpulse += mp.normalImpulse;
-      tangentImpulse += mp.tangentImpulse;
+      // What the step delivered (all sub-steps plus restitution), not the per-sub-step warm start.
+      const pointNormal = contact.stepNormalImpulse[j]!;
+      const pointTangent = contact.stepTangentImpulse[j]!;
+      normalImpulse += pointNormal;
+      tangentImpulse += pointTangent;
       approach = Math.max(approach, -mp.relativeVelocity);
       const point = event.points[j]!;
       point.x = mp.x;
       point.y = mp.y;
       point.separation = mp.separation;
-      point.normalImpulse = mp.normalImpulse;
-      point.tangentImpulse = mp.tangentImpulse;
+      point.normalImpulse = pointNormal;
+      point.tangentImpulse = pointTangent;
     }
     event.bodyA = contact.bodyA;
     event.bodyB = contact.bodyB;

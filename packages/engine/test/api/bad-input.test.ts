@@ -17,7 +17,7 @@ function errorOf(action: () => unknown): PhysicalError {
     action();
   } catch (error) {
     if (error instanceof PhysicalError) return error;
-    throw new Error(`expected a PhysicalError, got ${String(error)}`);
+    throw new Error(`expected a PhysicalError, got ${String(error)}`, { cause: error });
   }
   throw new Error('expected a PhysicalError, but nothing was thrown');
 }
