@@ -1,5 +1,6 @@
 import type { Contact } from './contact.ts';
-import { DP_X, DP_Y, Q_C, Q_S, STATE_STRIDE, V_X, V_Y, W } from './body-state.ts';
+import type { Shape } from './shape.ts';
+import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, STATE_STRIDE, V_X, V_Y, W } from './body-state.ts';
 import type { Softness } from './softness.ts';
 
 // Contact constraints of one step, prepared once into flat arrays so the sub-step loops touch only
@@ -23,7 +24,20 @@ const BIAS_RATE = 8;
 const MASS_SCALE = 9;
 const IMPULSE_SCALE = 10;
 const POINT_COUNT = 11;
-const POINTS = 12;
+// Where the common point of application lives (see prepareContacts), and the motion since the
+// lever arms were set.
+const SHIFT_WEIGHT_A = 12;
+const SHIFT_WEIGHT_B = 13;
+const REF_DP_AX = 14;
+const REF_DP_AY = 15;
+const REF_DP_BX = 16;
+const REF_DP_BY = 17;
+// Circle pairs: radii and the centre difference cB - cA at the step's start.
+const RADIUS_A = 18;
+const RADIUS_B = 19;
+const CENTER_DX = 20;
+const CENTER_DY = 21;
+const POINTS = 22;
 // Per-point layout, relative to POINTS + j * POINT_STRIDE.
 const R_AX = 0;
 const R_AY = 1;
@@ -38,8 +52,9 @@ const TANGENT_MASS = 9;
 const RELATIVE_VELOCITY = 10;
 const TOTAL_NORMAL_IMPULSE = 11;
 const TOTAL_TANGENT_IMPULSE = 12;
-const BASELINE_VELOCITY = 13;
-const RESTITUTION_IMPULSE = 14;
+// Impact state of a point: 0 none; 1 an impact found in this sub-step's solve pass, to bounce in
+// its relax pass; 2 bounced in this sub-step (the bounce is not warm-started).
+const IMPACT = 15;
 const POINT_STRIDE = 16;
 const STRIDE = POINTS + 2 * POINT_STRIDE;
 
@@ -49,6 +64,9 @@ export class ContactConstraints {
   data: Float64Array = new Float64Array(STRIDE * 256);
   /** State offsets (index * STATE_STRIDE) of body A and B per constraint. */
   bodies: Int32Array = new Int32Array(2 * 256);
+  /** Constraints between two circles centred on their bodies: their normal follows the centres. */
+  circlePairs: Int32Array = new Int32Array(64);
+  circlePairCount = 0;
   /** The contact each constraint came from, to store impulses back. */
   readonly contacts: Contact[] = [];
 
@@ -75,6 +93,7 @@ export function prepareContacts(
 ): void {
   const count = constraints.contacts.length;
   constraints.count = count;
+  constraints.circlePairCount = 0;
   constraints.reserve(count);
   const c = constraints.data;
   const indices = constraints.bodies;
@@ -109,6 +128,33 @@ export function prepareContacts(
     c[base + MASS_SCALE] = soft.massScale;
     c[base + IMPULSE_SCALE] = soft.impulseScale;
     c[base + POINT_COUNT] = m.pointCount;
+    const radiusA = centredCircleRadius(contact.shapeA);
+    const radiusB = centredCircleRadius(contact.shapeB);
+    c[base + RADIUS_A] = radiusA;
+    c[base + RADIUS_B] = radiusB;
+    c[base + CENTER_DX] = bodyB.centerX - bodyA.centerX;
+    c[base + CENTER_DY] = bodyB.centerY - bodyA.centerY;
+    c[base + REF_DP_AX] = 0;
+    c[base + REF_DP_AY] = 0;
+    c[base + REF_DP_BX] = 0;
+    c[base + REF_DP_BY] = 0;
+    if (radiusB > 0 && radiusA === 0) {
+      // On the circle's line of centres, so the circle gets no torque from a normal impulse.
+      c[base + SHIFT_WEIGHT_A] = 0;
+      c[base + SHIFT_WEIGHT_B] = 1;
+    } else {
+      const total = mA + mB;
+      c[base + SHIFT_WEIGHT_A] = total > 0 ? mA / total : 0;
+      c[base + SHIFT_WEIGHT_B] = total > 0 ? mB / total : 0;
+    }
+    if (radiusA > 0 && radiusB > 0) {
+      if (constraints.circlePairs.length === constraints.circlePairCount) {
+        const grown = new Int32Array(2 * constraints.circlePairs.length);
+        grown.set(constraints.circlePairs);
+        constraints.circlePairs = grown;
+      }
+      constraints.circlePairs[constraints.circlePairCount++] = i;
+    }
     const tx = ny;
     const ty = -nx;
     const vAx = states[a + V_X]!;
@@ -135,6 +181,7 @@ export function prepareContacts(
       c[p + MAX_NORMAL_IMPULSE] = 0;
       c[p + TOTAL_NORMAL_IMPULSE] = 0;
       c[p + TOTAL_TANGENT_IMPULSE] = 0;
+      c[p + IMPACT] = 0;
       const rnA = rAx * ny - rAy * nx;
       const rnB = rBx * ny - rBy * nx;
       const kNormal = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
@@ -149,6 +196,97 @@ export function prepareContacts(
       const dvy = vBy + wB * rBx - (vAy + wA * rAx);
       c[p + RELATIVE_VELOCITY] = dvx * nx + dvy * ny;
     }
+  }
+}
+
+/** Moves a body's pose in this step by a translation and a rotation (a bounce's catch-up). */
+function advancePose(s: Float64Array, k: number, dx: number, dy: number, angle: number): void {
+  s[k + DP_X] += dx;
+  s[k + DP_Y] += dy;
+  if (angle !== 0) {
+    s[k + DELTA_ANGLE] += angle;
+    const qc = s[k + Q_C]!;
+    const qs = s[k + Q_S]!;
+    const c = qc - angle * qs;
+    const sn = qs + angle * qc;
+    const inverseLength = 1 / Math.sqrt(c * c + sn * sn);
+    s[k + Q_C] = c * inverseLength;
+    s[k + Q_S] = sn * inverseLength;
+  }
+}
+
+/** Radius of a circle shape centred on its body's centre of mass, else 0. */
+function centredCircleRadius(shape: Shape): number {
+  const g = shape.geometry;
+  const body = shape.body;
+  if (g.kind !== 'circle' || g.centerX !== body.localCenterX || g.centerY !== body.localCenterY) {
+    return 0;
+  }
+  return g.radius;
+}
+
+/**
+ * Points the normal of every circle pair along the line through the two centres as they are now,
+ * with lever arms along it and the separation measured exactly (|cB - cA| - rA - rB). Called at
+ * each sub-step and before the relax and restitution passes: two particles then push each other
+ * only through their centres, so frictionless particles never spin and the impulse's line of
+ * action is the same for both (angular momentum is kept).
+ */
+export function refreshCirclePairs(constraints: ContactConstraints, s: Float64Array): void {
+  const c = constraints.data;
+  const indices = constraints.bodies;
+  const list = constraints.circlePairs;
+  for (let k = 0; k < constraints.circlePairCount; k++) {
+    const i = list[k]!;
+    const base = i * STRIDE;
+    const a = indices[2 * i]!;
+    const b = indices[2 * i + 1]!;
+    const dpAx = s[a + DP_X]!;
+    const dpAy = s[a + DP_Y]!;
+    const dpBx = s[b + DP_X]!;
+    const dpBy = s[b + DP_Y]!;
+    const dx = c[base + CENTER_DX]! + dpBx - dpAx;
+    const dy = c[base + CENTER_DY]! + dpBy - dpAy;
+    const length = Math.sqrt(dx * dx + dy * dy);
+    if (!(length > 1e-12)) continue; // coincident centres: keep the last normal
+    const nx = dx / length;
+    const ny = dy / length;
+    const radiusA = c[base + RADIUS_A]!;
+    const radiusB = c[base + RADIUS_B]!;
+    // Both arms end at the same point, midway across the gap (or overlap), so that a friction
+    // impulse too acts on one line for both particles.
+    const halfGap = 0.5 * (length - radiusA - radiusB);
+    const armA = radiusA + halfGap;
+    const armB = radiusB + halfGap;
+    const rAx = nx * armA;
+    const rAy = ny * armA;
+    const rBx = -nx * armB;
+    const rBy = -ny * armB;
+    c[base + NORMAL_X] = nx;
+    c[base + NORMAL_Y] = ny;
+    c[base + REF_DP_AX] = dpAx;
+    c[base + REF_DP_AY] = dpAy;
+    c[base + REF_DP_BX] = dpBx;
+    c[base + REF_DP_BY] = dpBy;
+    const p = base + POINTS;
+    c[p + R_AX] = rAx;
+    c[p + R_AY] = rAy;
+    c[p + R_BX] = rBx;
+    c[p + R_BY] = rBy;
+    // Baseline such that the solver's separation formula gives the exact gap now.
+    const qAc = s[a + Q_C]!;
+    const qAs = s[a + Q_S]!;
+    const qBc = s[b + Q_C]!;
+    const qBs = s[b + Q_S]!;
+    const gx = dpBx - dpAx + (qBc * rBx - qBs * rBy) - (qAc * rAx - qAs * rAy);
+    const gy = dpBy - dpAy + (qBs * rBx + qBc * rBy) - (qAs * rAx + qAc * rAy);
+    c[p + BASE_SEPARATION] = length - radiusA - radiusB - (gx * nx + gy * ny);
+    const mA = c[base + INV_MASS_A]!;
+    const mB = c[base + INV_MASS_B]!;
+    const kNormal = mA + mB;
+    c[p + NORMAL_MASS] = kNormal > 0 ? 1 / kNormal : 0;
+    const kTangent = kNormal + c[base + INV_I_A]! * armA * armA + c[base + INV_I_B]! * armB * armB;
+    c[p + TANGENT_MASS] = kTangent > 0 ? 1 / kTangent : 0;
   }
 }
 
@@ -175,28 +313,35 @@ export function warmStartContacts(constraints: ContactConstraints, s: Float64Arr
     let vBy = s[b + V_Y]!;
     let wB = s[b + W]!;
     const pointCount = c[base + POINT_COUNT]!;
-    // Lever arms reach the contact point where it is now: it moves with the bodies (weighted by
-    // inverse mass, so it stays on a body pushed against a static one). Both bodies then get
-    // the impulse at the same world point, and angular momentum is conserved exactly.
-    const shiftTotal = mA + mB;
-    const shiftA = shiftTotal > 0 ? mA / shiftTotal : 0;
-    const shiftB = shiftTotal > 0 ? mB / shiftTotal : 0;
+    // Lever arms to the common point of application (see prepareContacts).
+    const shiftA = c[base + SHIFT_WEIGHT_A]!;
+    const shiftB = c[base + SHIFT_WEIGHT_B]!;
     const dpAx = s[a + DP_X]!;
     const dpAy = s[a + DP_Y]!;
     const dpBx = s[b + DP_X]!;
     const dpBy = s[b + DP_Y]!;
-    const shiftX = shiftA * dpAx + shiftB * dpBx;
-    const shiftY = shiftA * dpAy + shiftB * dpBy;
-    const shiftAx = shiftX - dpAx;
-    const shiftAy = shiftY - dpAy;
-    const shiftBx = shiftX - dpBx;
-    const shiftBy = shiftY - dpBy;
+    // Motion since the lever arms were set: the step's start, or a circle pair's refresh.
+    const eAx = dpAx - c[base + REF_DP_AX]!;
+    const eAy = dpAy - c[base + REF_DP_AY]!;
+    const eBx = dpBx - c[base + REF_DP_BX]!;
+    const eBy = dpBy - c[base + REF_DP_BY]!;
+    const shiftX = shiftA * eAx + shiftB * eBx;
+    const shiftY = shiftA * eAy + shiftB * eBy;
+    const shiftAx = shiftX - eAx;
+    const shiftAy = shiftY - eAy;
+    const shiftBx = shiftX - eBx;
+    const shiftBy = shiftY - eBy;
     for (let j = 0; j < pointCount; j++) {
       const p = base + POINTS + j * POINT_STRIDE;
       const rAx = c[p + R_AX]! + shiftAx;
       const rAy = c[p + R_AY]! + shiftAy;
       const rBx = c[p + R_BX]! + shiftBx;
       const rBy = c[p + R_BY]! + shiftBy;
+      // A bounce is a one-off impulse, not a contact force to carry into the next sub-step.
+      if (c[p + IMPACT]! === 2) {
+        c[p + IMPACT] = 0;
+        c[p + NORMAL_IMPULSE] = 0;
+      }
       const pn = c[p + NORMAL_IMPULSE]!;
       const pt = c[p + TANGENT_IMPULSE]!;
       const px = pn * nx + pt * tx;
@@ -231,6 +376,7 @@ export function solveContacts(
   s: Float64Array,
   inverseH: number,
   maxPushSpeed: number,
+  restitutionThreshold: number,
   useBias: boolean,
 ): void {
   const c = constraints.data;
@@ -246,6 +392,7 @@ export function solveContacts(
     const nx = c[base + NORMAL_X]!;
     const ny = c[base + NORMAL_Y]!;
     const friction = c[base + FRICTION]!;
+    const restitution = c[base + RESTITUTION]!;
     const biasRate = c[base + BIAS_RATE]!;
     const softMassScale = c[base + MASS_SCALE]!;
     const softImpulseScale = c[base + IMPULSE_SCALE]!;
@@ -261,20 +408,21 @@ export function solveContacts(
     const dpBy = s[b + DP_Y]!;
     const dpx = dpBx - dpAx;
     const dpy = dpBy - dpAy;
-    // Lever arms reach the contact point where it is now: it moves with the bodies (weighted by
-    // inverse mass, so it stays on a body pushed against a static one). Both bodies then get each
-    // impulse at the same world point, and angular momentum is conserved exactly. (Arms fixed at
-    // the step's start, as in Box2D v3, drift 1e-3 of the angular momentum of 100 colliding
-    // bodies in 10 s.)
-    const shiftTotal = mA + mB;
-    const shiftA = shiftTotal > 0 ? mA / shiftTotal : 0;
-    const shiftB = shiftTotal > 0 ? mB / shiftTotal : 0;
-    const shiftX = shiftA * dpAx + shiftB * dpBx;
-    const shiftY = shiftA * dpAy + shiftB * dpBy;
-    const shiftAx = shiftX - dpAx;
-    const shiftAy = shiftY - dpAy;
-    const shiftBx = shiftX - dpBx;
-    const shiftBy = shiftY - dpBy;
+    // Lever arms to the common point of application (see prepareContacts).
+    const shiftA = c[base + SHIFT_WEIGHT_A]!;
+    const shiftB = c[base + SHIFT_WEIGHT_B]!;
+    // Motion since the lever arms were set: the step's start, or a circle pair's refresh.
+    const eAx = dpAx - c[base + REF_DP_AX]!;
+    const eAy = dpAy - c[base + REF_DP_AY]!;
+    const eBx = dpBx - c[base + REF_DP_BX]!;
+    const eBy = dpBy - c[base + REF_DP_BY]!;
+    const shiftX = shiftA * eAx + shiftB * eBx;
+    const shiftY = shiftA * eAy + shiftB * eBy;
+    let shiftAx = shiftX - eAx;
+    let shiftAy = shiftY - eAy;
+    let shiftBx = shiftX - eBx;
+    let shiftBy = shiftY - eBy;
+    let bounced = false;
     const qAc = s[a + Q_C]!;
     const qAs = s[a + Q_S]!;
     const qBc = s[b + Q_C]!;
@@ -310,18 +458,106 @@ export function solveContacts(
       const dvy = vBy + wB * lBx - (vAy + wA * lAx);
       const vn = dvx * nx + dvy * ny;
       const accumulated = c[p + NORMAL_IMPULSE]!;
+      // Restitution (Newton's law) at the moment of impact. An impact is an approach faster than
+      // the threshold on a point not already pushing (a resting contact is always warm-started,
+      // so it never counts, and never jitters). The solve pass lets it go; the relax pass, once
+      // the shapes touch, applies the whole collision impulse -(1 + e) m vn along the normal of
+      // that instant, and moves both bodies on by their velocity change for the part of the
+      // sub-step left after the moment of contact: the exact trajectory of two colliding
+      // bodies, so momentum, angular momentum and (for e = 1) energy are kept. A bounce after all
+      // the sub-steps (Box2D v3) comes after the normal of sliding particles has turned and after
+      // gravity has changed the approach, and cannot bounce a particle twice in one step.
+      const impactState = c[p + IMPACT]!;
+      if (
+        restitution > 0 &&
+        accumulated === 0 &&
+        impactState !== 2 &&
+        vn < -restitutionThreshold &&
+        (impactState === 1 || vn + bias < 0)
+      ) {
+        if (useBias || separation > 0) {
+          // Not touching yet: the impact happens when the positions get there.
+          c[p + IMPACT] = useBias ? 1 : 0;
+          continue;
+        }
+        // Back to the moment of contact: the overlap divided by the approach speed ago.
+        const back = Math.min(separation / vn, 1 / inverseH);
+        const tAx = dpAx - vAx * back;
+        const tAy = dpAy - vAy * back;
+        const tBx = dpBx - vBx * back;
+        const tBy = dpBy - vBy * back;
+        let bnx = nx;
+        let bny = ny;
+        let bAx: number;
+        let bAy: number;
+        let bBx: number;
+        let bBy: number;
+        const radiusA = c[base + RADIUS_A]!;
+        const radiusB = c[base + RADIUS_B]!;
+        if (radiusA > 0 && radiusB > 0) {
+          // Two particles meet along the line through their centres at that moment.
+          const cx = c[base + CENTER_DX]! + tBx - tAx;
+          const cy = c[base + CENTER_DY]! + tBy - tAy;
+          const length = Math.sqrt(cx * cx + cy * cy);
+          if (length > 1e-12) {
+            bnx = cx / length;
+            bny = cy / length;
+          }
+          bAx = bnx * radiusA;
+          bAy = bny * radiusA;
+          bBx = -bnx * radiusB;
+          bBy = -bny * radiusB;
+        } else {
+          // The common point of application, where it was at that moment.
+          const eAx = tAx - c[base + REF_DP_AX]!;
+          const eAy = tAy - c[base + REF_DP_AY]!;
+          const eBx = tBx - c[base + REF_DP_BX]!;
+          const eBy = tBy - c[base + REF_DP_BY]!;
+          const sx = shiftA * eAx + shiftB * eBx;
+          const sy = shiftA * eAy + shiftB * eBy;
+          bAx = rAx + sx - eAx;
+          bAy = rAy + sy - eAy;
+          bBx = rBx + sx - eBx;
+          bBy = rBy + sy - eBy;
+        }
+        const approach =
+          (vBx - wB * bBy - (vAx - wA * bAy)) * bnx + (vBy + wB * bBx - (vAy + wA * bAx)) * bny;
+        const rnA = bAx * bny - bAy * bnx;
+        const rnB = bBx * bny - bBy * bnx;
+        const k = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+        const bounce = approach < 0 && k > 0 ? (-(1 + restitution) * approach) / k : 0;
+        c[p + NORMAL_IMPULSE] = bounce;
+        c[p + TOTAL_NORMAL_IMPULSE] += bounce;
+        c[p + RELATIVE_VELOCITY] = approach;
+        c[p + IMPACT] = 2;
+        if (bounce > c[p + MAX_NORMAL_IMPULSE]!) c[p + MAX_NORMAL_IMPULSE] = bounce;
+        const px = bounce * bnx;
+        const py = bounce * bny;
+        const dvAx = -mA * px;
+        const dvAy = -mA * py;
+        const dwA = -iA * (bAx * py - bAy * px);
+        const dvBx = mB * px;
+        const dvBy = mB * py;
+        const dwB = iB * (bBx * py - bBy * px);
+        vAx += dvAx;
+        vAy += dvAy;
+        wA += dwA;
+        vBx += dvBx;
+        vBy += dvBy;
+        wB += dwB;
+        // And forward again with the new velocities: the exact path of the collision.
+        if (a !== 0) advancePose(s, a, dvAx * back, dvAy * back, dwA * back);
+        if (b !== 0) advancePose(s, b, dvBx * back, dvBy * back, dwB * back);
+        bounced = true;
+        continue;
+      }
+      if (impactState === 1) c[p + IMPACT] = 0;
       let impulse = -c[p + NORMAL_MASS]! * massScale * (vn + bias) - impulseScale * accumulated;
       const newImpulse = Math.max(accumulated + impulse, 0);
       impulse = newImpulse - accumulated;
       c[p + NORMAL_IMPULSE] = newImpulse;
       // The relax pass ends the sub-step: the accumulated impulse is what acted in it.
       if (!useBias) c[p + TOTAL_NORMAL_IMPULSE] += newImpulse;
-      // Restitution must reverse the approach speed at the moment of impact, not at the start of
-      // the step: a speculative contact is often first pushed in a later sub-step, after gravity
-      // (or another contact) has changed the velocity. Record the normal velocity just before the
-      // first push of the step. (With the step-start value a ball dropped 1 m onto the floor lost
-      // the gravity of the bounce step: 8 % of the rebound height at e = 1.)
-      if (impulse > 0 && c[p + MAX_NORMAL_IMPULSE]! === 0) c[p + RELATIVE_VELOCITY] = vn;
       if (impulse > c[p + MAX_NORMAL_IMPULSE]!) c[p + MAX_NORMAL_IMPULSE] = impulse;
       const px = impulse * nx;
       const py = impulse * ny;
@@ -333,6 +569,19 @@ export function solveContacts(
       wB += iB * (lBx * py - lBy * px);
     }
 
+    if (bounced) {
+      // The bounce moved the bodies on: friction acts at the common point where it is now.
+      const eAx = s[a + DP_X]! - c[base + REF_DP_AX]!;
+      const eAy = s[a + DP_Y]! - c[base + REF_DP_AY]!;
+      const eBx = s[b + DP_X]! - c[base + REF_DP_BX]!;
+      const eBy = s[b + DP_Y]! - c[base + REF_DP_BY]!;
+      const sx = shiftA * eAx + shiftB * eBx;
+      const sy = shiftA * eAy + shiftB * eBy;
+      shiftAx = sx - eAx;
+      shiftAy = sy - eAy;
+      shiftBx = sx - eBx;
+      shiftBy = sy - eBy;
+    }
     const tx = ny;
     const ty = -nx;
     for (let j = 0; j < pointCount; j++) {
@@ -376,228 +625,6 @@ export function solveContacts(
 }
 
 /**
- * Restitution, after the sub-steps: for each point that was approaching faster than `threshold`
- * when it was first pushed, set the normal velocity to -e times that approach velocity (Newton's
- * law of restitution). Done once per step on final velocities, so the soft contact's damping never
- * eats into the bounce.
- *
- * Fixes over Box2D v3's single pass, which lost about half the kinetic energy of 20 elastic balls
- * in a box in a minute:
- * - The bounce impulse is a one-off: it counts in the step's total but is not added to the
- *   accumulated impulse used for warm starting. (Box2D adds it, so the next step re-applies the
- *   bounce at every sub-step until the solver takes it back, and neighbouring contacts respond to
- *   that phantom velocity in the meantime.)
- * - Bounces propagate. A single pass cannot handle a ball bounced into another body that rests
- *   against it (or against a wall): that contact just stops it and the energy is gone. After the
- *   bounces, further passes find contacts that the bounces made approach, and bounce them too
- *   with their own restitution (or stop them, below the threshold), at the velocity they approach
- *   with now: a sequence of two-body collisions, each of which keeps the energy when e = 1. (Solving
- *   all the bounce targets at once instead, as Box2D v2 does, creates energy when a ball is
- *   squeezed between another and a wall.)
- */
-export function applyRestitution(
-  constraints: ContactConstraints,
-  s: Float64Array,
-  threshold: number,
-): void {
-  const c = constraints.data;
-  const indices = constraints.bodies;
-  const count = constraints.count;
-  let bounces = false;
-  for (let i = 0; i < count; i++) {
-    const base = i * STRIDE;
-    const restitution = c[base + RESTITUTION]!;
-    const pointCount = c[base + POINT_COUNT]!;
-    for (let j = 0; j < pointCount; j++) {
-      const p = base + POINTS + j * POINT_STRIDE;
-      c[p + RESTITUTION_IMPULSE] = 0;
-      if (
-        restitution > 0 &&
-        c[p + RELATIVE_VELOCITY]! < -threshold &&
-        c[p + MAX_NORMAL_IMPULSE]! > 0
-      ) {
-        bounces = true;
-      }
-    }
-  }
-  if (!bounces) return;
-
-  // Baselines: a point pushed this step may not approach faster than it does now (or than 0).
-  for (let i = 0; i < count; i++) {
-    const base = i * STRIDE;
-    const a = indices[2 * i]!;
-    const b = indices[2 * i + 1]!;
-    const nx = c[base + NORMAL_X]!;
-    const ny = c[base + NORMAL_Y]!;
-    const mA = c[base + INV_MASS_A]!;
-    const mB = c[base + INV_MASS_B]!;
-    const pointCount = c[base + POINT_COUNT]!;
-    const shiftTotal = mA + mB;
-    const shiftA = shiftTotal > 0 ? mA / shiftTotal : 0;
-    const shiftB = shiftTotal > 0 ? mB / shiftTotal : 0;
-    const dpAx = s[a + DP_X]!;
-    const dpAy = s[a + DP_Y]!;
-    const dpBx = s[b + DP_X]!;
-    const dpBy = s[b + DP_Y]!;
-    const shiftX = shiftA * dpAx + shiftB * dpBx;
-    const shiftY = shiftA * dpAy + shiftB * dpBy;
-    const shiftAx = shiftX - dpAx;
-    const shiftAy = shiftY - dpAy;
-    const shiftBx = shiftX - dpBx;
-    const shiftBy = shiftY - dpBy;
-    for (let j = 0; j < pointCount; j++) {
-      const p = base + POINTS + j * POINT_STRIDE;
-      if (c[p + MAX_NORMAL_IMPULSE]! === 0) {
-        c[p + BASELINE_VELOCITY] = -Infinity; // not pushed this step: not in contact
-        continue;
-      }
-      const rAx = c[p + R_AX]! + shiftAx;
-      const rAy = c[p + R_AY]! + shiftAy;
-      const rBx = c[p + R_BX]! + shiftBx;
-      const rBy = c[p + R_BY]! + shiftBy;
-      const dvx = s[b + V_X]! - s[b + W]! * rBy - (s[a + V_X]! - s[a + W]! * rAy);
-      const dvy = s[b + V_Y]! + s[b + W]! * rBx - (s[a + V_Y]! + s[a + W]! * rAx);
-      c[p + BASELINE_VELOCITY] = Math.min(dvx * nx + dvy * ny, 0);
-    }
-  }
-
-  // The bounces of this step's impacts.
-  restitutionPass(constraints, s, threshold, true);
-  // Their consequences, until nothing approaches (or the pass budget is spent: what is left is
-  // the next step's contact to solve).
-  for (let pass = 0; pass < PROPAGATION_PASSES; pass++) {
-    if (!restitutionPass(constraints, s, threshold, false)) break;
-  }
-
-  for (let i = 0; i < count; i++) {
-    const base = i * STRIDE;
-    const pointCount = c[base + POINT_COUNT]!;
-    for (let j = 0; j < pointCount; j++) {
-      const p = base + POINTS + j * POINT_STRIDE;
-      c[p + TOTAL_NORMAL_IMPULSE] += c[p + RESTITUTION_IMPULSE]!;
-    }
-  }
-}
-
-/** Most propagation passes per step (a chain of n touching bodies needs about n). */
-const PROPAGATION_PASSES = 32;
-/** Approach speed (m/s) below which a propagated contact is left alone. */
-const PROPAGATION_TOLERANCE = 1e-9;
-
-/**
- * One pass over the contacts. The first pass (`impacts`) bounces each point at -e times its
- * recorded impact velocity; it may also take back the last sub-step's push. Later passes bounce
- * (or stop) the points that approach faster than their baseline. Returns whether any impulse was
- * applied.
- */
-function restitutionPass(
-  constraints: ContactConstraints,
-  s: Float64Array,
-  threshold: number,
-  impacts: boolean,
-): boolean {
-  const c = constraints.data;
-  const indices = constraints.bodies;
-  let applied = false;
-  for (let i = 0; i < constraints.count; i++) {
-    const base = i * STRIDE;
-    const restitution = c[base + RESTITUTION]!;
-    if (impacts && restitution === 0) continue;
-    const a = indices[2 * i]!;
-    const b = indices[2 * i + 1]!;
-    const mA = c[base + INV_MASS_A]!;
-    const iA = c[base + INV_I_A]!;
-    const mB = c[base + INV_MASS_B]!;
-    const iB = c[base + INV_I_B]!;
-    const nx = c[base + NORMAL_X]!;
-    const ny = c[base + NORMAL_Y]!;
-    let vAx = s[a + V_X]!;
-    let vAy = s[a + V_Y]!;
-    let wA = s[a + W]!;
-    let vBx = s[b + V_X]!;
-    let vBy = s[b + V_Y]!;
-    let wB = s[b + W]!;
-    const pointCount = c[base + POINT_COUNT]!;
-    // Lever arms reach the contact point where it is now: it moves with the bodies (weighted by
-    // inverse mass, so it stays on a body pushed against a static one). Both bodies then get
-    // the impulse at the same world point, and angular momentum is conserved exactly.
-    const shiftTotal = mA + mB;
-    const shiftA = shiftTotal > 0 ? mA / shiftTotal : 0;
-    const shiftB = shiftTotal > 0 ? mB / shiftTotal : 0;
-    const dpAx = s[a + DP_X]!;
-    const dpAy = s[a + DP_Y]!;
-    const dpBx = s[b + DP_X]!;
-    const dpBy = s[b + DP_Y]!;
-    const shiftX = shiftA * dpAx + shiftB * dpBx;
-    const shiftY = shiftA * dpAy + shiftB * dpBy;
-    const shiftAx = shiftX - dpAx;
-    const shiftAy = shiftY - dpAy;
-    const shiftBx = shiftX - dpBx;
-    const shiftBy = shiftY - dpBy;
-    let changed = false;
-    for (let j = 0; j < pointCount; j++) {
-      const p = base + POINTS + j * POINT_STRIDE;
-      const baseline = c[p + BASELINE_VELOCITY]!;
-      if (baseline === -Infinity) continue;
-      const relativeVelocity = c[p + RELATIVE_VELOCITY]!;
-      if (impacts && relativeVelocity >= -threshold) continue;
-      const rAx = c[p + R_AX]! + shiftAx;
-      const rAy = c[p + R_AY]! + shiftAy;
-      const rBx = c[p + R_BX]! + shiftBx;
-      const rBy = c[p + R_BY]! + shiftBy;
-      const dvx = vBx - wB * rBy - (vAx - wA * rAy);
-      const dvy = vBy + wB * rBx - (vAy + wA * rAx);
-      const vn = dvx * nx + dvy * ny;
-      // Effective mass at the current lever arms, so that a bounce sets vn exactly.
-      const rnA = rAx * ny - rAy * nx;
-      const rnB = rBx * ny - rBy * nx;
-      const k = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
-      const normalMass = k > 0 ? 1 / k : 0;
-      let impulse: number;
-      if (impacts) {
-        // The solver stopped the approach; give back e times it. A bounce may also take back the
-        // last sub-step's push, as long as the step's push stays >= 0.
-        impulse = Math.max(
-          -normalMass * (vn + restitution * relativeVelocity),
-          -c[p + NORMAL_IMPULSE]!,
-        );
-        // It is now a separating contact: any later approach counts from 0.
-        c[p + BASELINE_VELOCITY] = 0;
-      } else {
-        const approach = baseline - vn;
-        if (!(approach > PROPAGATION_TOLERANCE)) continue;
-        const e = approach > threshold ? restitution : 0;
-        impulse = normalMass * (1 + e) * approach;
-      }
-      if (impulse === 0) continue;
-      c[p + RESTITUTION_IMPULSE] += impulse;
-      changed = true;
-      const px = impulse * nx;
-      const py = impulse * ny;
-      vAx -= mA * px;
-      vAy -= mA * py;
-      wA -= iA * (rAx * py - rAy * px);
-      vBx += mB * px;
-      vBy += mB * py;
-      wB += iB * (rBx * py - rBy * px);
-    }
-    if (!changed) continue;
-    applied = true;
-    if (a !== 0) {
-      s[a + V_X] = vAx;
-      s[a + V_Y] = vAy;
-      s[a + W] = wA;
-    }
-    if (b !== 0) {
-      s[b + V_X] = vBx;
-      s[b + V_Y] = vBy;
-      s[b + W] = wB;
-    }
-  }
-  return applied;
-}
-
-/**
  * Copies the accumulated impulses back to the manifolds for warm starting, and the impulses the
  * step delivered (sum over the sub-steps, plus restitution) to the contacts for events.
  */
@@ -610,7 +637,7 @@ export function storeImpulses(constraints: ContactConstraints): void {
     for (let j = 0; j < m.pointCount; j++) {
       const p = base + POINTS + j * POINT_STRIDE;
       const mp = m.points[j]!;
-      mp.normalImpulse = c[p + NORMAL_IMPULSE]!;
+      mp.normalImpulse = c[p + IMPACT]! === 2 ? 0 : c[p + NORMAL_IMPULSE]!;
       mp.tangentImpulse = c[p + TANGENT_IMPULSE]!;
       mp.maxNormalImpulse = c[p + MAX_NORMAL_IMPULSE]!;
       mp.relativeVelocity = c[p + RELATIVE_VELOCITY]!;

@@ -13,9 +13,9 @@ import {
 } from './body-state.ts';
 import type { Contact } from './contact.ts';
 import {
-  applyRestitution,
   ContactConstraints,
   prepareContacts,
+  refreshCirclePairs,
   solveContacts,
   storeImpulses,
   warmStartContacts,
@@ -100,6 +100,7 @@ export class Solver {
     const subSteps = settings.subSteps;
     const h = dt / subSteps;
     const inverseH = 1 / h;
+    const threshold = settings.restitutionThreshold;
 
     // Contacts that matter this step: touching, with something that can move.
     const list = constraints.contacts;
@@ -122,12 +123,13 @@ export class Solver {
 
     for (let step = 0; step < subSteps; step++) {
       integrateVelocities(awake, s, settings, h);
+      refreshCirclePairs(constraints, s);
       warmStartContacts(constraints, s);
-      solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, true);
+      solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, true);
       integratePositions(awake, s, h);
-      solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, false);
+      refreshCirclePairs(constraints, s);
+      solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, false);
     }
-    applyRestitution(constraints, s, settings.restitutionThreshold);
     storeImpulses(constraints);
     this.finalizeBodies(dt);
   }
