@@ -7,6 +7,8 @@ export default defineConfig({
   resolve: {
     alias: {
       '@physical/engine': fileURLToPath(new URL('./packages/engine/src/index.ts', import.meta.url)),
+      '@physical/canvas': fileURLToPath(new URL('./packages/canvas/src/index.ts', import.meta.url)),
+      '@physical/react': fileURLToPath(new URL('./packages/react/src/index.ts', import.meta.url)),
     },
   },
   test: {

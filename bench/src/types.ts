@@ -1,0 +1,178 @@
+// Engine-agnostic scene descriptions, in Box2D's frame (y up, gravity (0, -10)). Each engine adapter
+// turns a description into its own world; y-down engines (Physical, matter-js) mirror y.
+
+export type ShapeDesc =
+  | {
+      readonly kind: 'box';
+      /** Half-widths (m), as Box2D's b2MakeOffsetBox takes them. */
+      readonly hw: number;
+      readonly hh: number;
+      readonly cx: number;
+      readonly cy: number;
+      readonly angle: number;
+      readonly material?: MaterialDesc;
+    }
+  | {
+      readonly kind: 'polygon';
+      /** Convex hull, counter-clockwise in the y-up frame, body-local (m). */
+      readonly vertices: readonly (readonly [number, number])[];
+      readonly material?: MaterialDesc;
+    }
+  | {
+      readonly kind: 'segment';
+      readonly x1: number;
+      readonly y1: number;
+      readonly x2: number;
+      readonly y2: number;
+      readonly material?: MaterialDesc;
+    }
+  | {
+      readonly kind: 'circle';
+      readonly radius: number;
+      readonly cx: number;
+      readonly cy: number;
+      readonly material?: MaterialDesc;
+    };
+
+export interface MaterialDesc {
+  readonly density?: number;
+  readonly friction?: number;
+  readonly restitution?: number;
+}
+
+export type BodyKind = 'static' | 'dynamic' | 'kinematic';
+
+export interface BodyDesc {
+  readonly type: BodyKind;
+  readonly x: number;
+  readonly y: number;
+  readonly angle?: number;
+  readonly vx?: number;
+  readonly vy?: number;
+  readonly w?: number;
+  readonly asleep?: boolean;
+  readonly shapes: readonly ShapeDesc[];
+  /**
+   * A revolute joint to the static ground at the body origin with a motor (rad/s, N m). Engines
+   * without motors make the body kinematic with angular velocity `speed` instead (and say so).
+   */
+  readonly motor?: { readonly speed: number; readonly maxTorque: number };
+  /** Box2D's enableHitEvents on the body's shapes (only Box2D v3 has them). */
+  readonly hitEvents?: boolean;
+}
+
+/** Sent to a scene's per-step callback: moves a kinematic body towards a target pose in one step. */
+export interface StepApi {
+  moveKinematicTo(index: number, x: number, y: number, angle: number): void;
+}
+
+export type QualitySpec =
+  | { readonly kind: 'none' }
+  | {
+      readonly kind: 'pyramid';
+      /** Indices of every pyramid box and its full width (m). */
+      readonly boxes: readonly number[];
+      readonly boxWidth: number;
+      /** Index of each pyramid's top box. */
+      readonly tops: readonly number[];
+    }
+  | {
+      readonly kind: 'tumbler';
+      readonly container: number;
+      readonly boxes: readonly number[];
+      /** Half-size of the container's inner square (m). */
+      readonly innerHalf: number;
+    };
+
+export interface SceneDesc {
+  readonly name: string;
+  /** Total steps; step 0 is not timed, so steps - 1 are. */
+  readonly steps: number;
+  readonly gravity: { readonly x: number; readonly y: number };
+  readonly sleep: boolean;
+  /** Scene defaults for shapes without their own material (Box2D: density 1, friction 0.6). */
+  readonly material: Required<MaterialDesc>;
+  readonly bodies: readonly BodyDesc[];
+  readonly onStep?: (step: number, api: StepApi) => void;
+  readonly quality: QualitySpec;
+  /** What differs from Box2D's scene, if anything (printed). */
+  readonly notes?: string;
+}
+
+export interface Pose {
+  x: number;
+  y: number;
+  angle: number;
+}
+
+/** One engine's world for one scene. */
+export interface World {
+  step(): void;
+  /** Pose of scene.bodies[index] in Box2D's frame (origin of the body, or its centre where noted). */
+  pose(index: number): Pose;
+  moveKinematicTo(index: number, x: number, y: number, angle: number): void;
+  /** Approximations this engine made for this scene, printed beside its settings. */
+  readonly notes: readonly string[];
+}
+
+export interface Engine {
+  readonly id: string;
+  /** Settings used, written out in the results. */
+  readonly settings: string;
+  /** JavaScript engines can report gc events; for WASM engines gc covers only the JS glue. */
+  readonly kind: 'js' | 'wasm';
+  create(scene: SceneDesc): World;
+}
+
+export const DT = 1 / 60;
+export const SUB_STEPS = 4;
+
+/** Material of a shape with the scene's defaults filled in. */
+export function materialOf(scene: SceneDesc, shape: ShapeDesc): Required<MaterialDesc> {
+  const m = shape.material ?? {};
+  return {
+    density: m.density ?? scene.material.density,
+    friction: m.friction ?? scene.material.friction,
+    restitution: m.restitution ?? scene.material.restitution,
+  };
+}
+
+/** Centroid of a convex polygon. */
+export function centroid(vertices: readonly (readonly [number, number])[]): [number, number] {
+  let area = 0;
+  let cx = 0;
+  let cy = 0;
+  const [ox, oy] = vertices[0]!;
+  for (let i = 1; i + 1 < vertices.length; i++) {
+    const [ax, ay] = vertices[i]!;
+    const [bx, by] = vertices[i + 1]!;
+    const a = 0.5 * ((ax - ox) * (by - oy) - (ay - oy) * (bx - ox));
+    area += a;
+    cx += (a * (ox + ax + bx)) / 3;
+    cy += (a * (oy + ay + by)) / 3;
+  }
+  return [cx / area, cy / area];
+}
+
+/** Convex hull (Andrew's monotone chain), counter-clockwise in the y-up frame. */
+export function hull(points: readonly (readonly [number, number])[]): [number, number][] {
+  const p = [...points].sort((a, b) => a[0] - b[0] || a[1] - b[1]);
+  const cross = (o: readonly number[], a: readonly number[], b: readonly number[]): number =>
+    (a[0]! - o[0]!) * (b[1]! - o[1]!) - (a[1]! - o[1]!) * (b[0]! - o[0]!);
+  const lower: [number, number][] = [];
+  for (const q of p) {
+    while (lower.length >= 2 && cross(lower[lower.length - 2]!, lower[lower.length - 1]!, q) <= 0)
+      lower.pop();
+    lower.push([q[0], q[1]]);
+  }
+  const upper: [number, number][] = [];
+  for (let i = p.length - 1; i >= 0; i--) {
+    const q = p[i]!;
+    while (upper.length >= 2 && cross(upper[upper.length - 2]!, upper[upper.length - 1]!, q) <= 0)
+      upper.pop();
+    upper.push([q[0], q[1]]);
+  }
+  lower.pop();
+  upper.pop();
+  return lower.concat(upper);
+}

@@ -1,0 +1,156 @@
+// One engine, one scene, one fresh process: builds the world (not timed), steps once (not timed),
+// then times steps 1..N-1 with the scene's step callback inside the loop, and reports JSON over IPC
+// (or stdout when run by hand).
+import { PerformanceObserver, performance } from 'node:perf_hooks';
+import { parseArgs } from 'node:util';
+import { ENGINES } from './engines/index.ts';
+import { measure, type Metrics } from './metrics.ts';
+import { buildScene } from './scenes/index.ts';
+
+export interface GcStats {
+  /** gc events during the timed loop, by kind. */
+  count: number;
+  minor: number;
+  major: number;
+  other: number;
+  /** Total gc pause (ms) during the timed loop. */
+  totalMs: number;
+  /** heapUsed after the loop minus before it, both after a forced gc (bytes): retained growth. */
+  retainedBytes: number | null;
+  /** heapUsed right after the loop minus right before it, no gc in between (bytes). */
+  rawDeltaBytes: number;
+}
+
+export type WorkerResult =
+  | {
+      ok: true;
+      engine: string;
+      scene: string;
+      settings: string;
+      notes: string[];
+      bodies: number;
+      /** Steps timed (steps - 1 unless the time budget stopped the run). */
+      timedSteps: number;
+      plannedSteps: number;
+      totalMs: number;
+      msPerStep: number;
+      setupMs: number;
+      metrics: Metrics;
+      gc: GcStats;
+    }
+  | { ok: false; engine: string; scene: string; error: string };
+
+const { values } = parseArgs({
+  options: {
+    engine: { type: 'string' },
+    scene: { type: 'string' },
+    small: { type: 'boolean', default: false },
+    steps: { type: 'string' },
+    budget: { type: 'string', default: '120' },
+  },
+});
+
+function send(result: WorkerResult): void {
+  if (process.send) process.send(result, () => process.exit(0));
+  else {
+    process.stdout.write(`${JSON.stringify(result)}\n`);
+    process.exit(0);
+  }
+}
+
+const gc = (globalThis as { gc?: () => void }).gc;
+
+async function main(): Promise<void> {
+  const engineId = values.engine ?? 'physical';
+  const sceneName = values.scene ?? 'large_pyramid';
+  const load = ENGINES[engineId];
+  if (!load) throw new Error(`unknown engine ${engineId}`);
+  const engine = await load();
+  const scene = buildScene(sceneName, {
+    small: values.small,
+    ...(values.steps === undefined ? {} : { steps: Number(values.steps) }),
+  });
+  const budgetMs = Number(values.budget) * 1000;
+
+  const t0 = performance.now();
+  const world = engine.create(scene);
+  const api = { moveKinematicTo: world.moveKinematicTo.bind(world) };
+  scene.onStep?.(0, api);
+  world.step();
+  const setupMs = performance.now() - t0;
+
+  gc?.();
+  const heapBefore = process.memoryUsage().heapUsed;
+  const gcStats: GcStats = {
+    count: 0,
+    minor: 0,
+    major: 0,
+    other: 0,
+    totalMs: 0,
+    retainedBytes: null,
+    rawDeltaBytes: 0,
+  };
+  let timing = false;
+  const observer = new PerformanceObserver((list) => {
+    if (!timing) return;
+    for (const entry of list.getEntries()) {
+      gcStats.count++;
+      gcStats.totalMs += entry.duration;
+      const kind = (entry as { detail?: { kind?: number } }).detail?.kind;
+      // perf_hooks constants: NODE_PERFORMANCE_GC_MINOR = 1, MAJOR = 4, INCREMENTAL = 8, WEAKCB = 16.
+      if (kind === 1) gcStats.minor++;
+      else if (kind === 4) gcStats.major++;
+      else gcStats.other++;
+    }
+  });
+  observer.observe({ entryTypes: ['gc'] });
+
+  const onStep = scene.onStep;
+  let steps = 1;
+  timing = true;
+  const start = performance.now();
+  for (; steps < scene.steps; steps++) {
+    onStep?.(steps, api);
+    world.step();
+    if (performance.now() - start > budgetMs) {
+      steps++;
+      break;
+    }
+  }
+  const totalMs = performance.now() - start;
+  const heapAfterRaw = process.memoryUsage().heapUsed;
+  // Let the observer deliver the loop's entries before we stop counting.
+  await new Promise((resolve) => setTimeout(resolve, 0));
+  timing = false;
+  observer.disconnect();
+  gcStats.rawDeltaBytes = heapAfterRaw - heapBefore;
+  if (gc) {
+    gc();
+    gcStats.retainedBytes = process.memoryUsage().heapUsed - heapBefore;
+  }
+  const timedSteps = steps - 1;
+  send({
+    ok: true,
+    engine: engineId,
+    scene: sceneName,
+    settings: engine.settings,
+    notes: [...world.notes],
+    bodies: scene.bodies.length,
+    timedSteps,
+    plannedSteps: scene.steps - 1,
+    totalMs,
+    msPerStep: totalMs / Math.max(1, timedSteps),
+    setupMs,
+    metrics: measure(scene, world),
+    gc: gcStats,
+  });
+}
+
+main().catch((error: unknown) => {
+  send({
+    ok: false,
+    engine: values.engine ?? '?',
+    scene: values.scene ?? '?',
+    error: error instanceof Error ? error.message : String(error),
+  });
+});

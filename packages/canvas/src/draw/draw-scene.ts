@@ -1,0 +1,53 @@
+import { drawBodies, drawLabels, type BodyBatches } from './draw-bodies.ts';
+import { drawCollisionArrows } from './draw-collision-arrows.ts';
+import { drawDebugOverlays } from './draw-debug.ts';
+import type { Scene } from './scene.ts';
+
+/**
+ * Sets the context's transform to world metres for a viewport: device px = (world - origin) *
+ * scale * devicePixelRatio.
+ */
+export function setWorldTransform(
+  context: CanvasRenderingContext2D,
+  scene: Pick<Scene, 'viewport'>,
+): void {
+  const { scale, originX, originY, devicePixelRatio } = scene.viewport;
+  const k = scale * devicePixelRatio;
+  context.setTransform(k, 0, 0, k, -originX * k, -originY * k);
+}
+
+/**
+ * Draws a whole frame: background, bodies, collision arrows, debug overlays, then `overlay` (in
+ * world metres, for app drawings such as force arrows), then labels. The canvas's backing store
+ * must be `viewport.width * devicePixelRatio` by `viewport.height * devicePixelRatio` pixels.
+ */
+export function drawScene(
+  context: CanvasRenderingContext2D,
+  scene: Scene,
+  batches: BodyBatches,
+  overlay: ((context: CanvasRenderingContext2D) => void) | null = null,
+): void {
+  const canvas = context.canvas;
+  context.setTransform(1, 0, 0, 1, 0, 0);
+  context.globalAlpha = 1;
+  context.clearRect(0, 0, canvas.width, canvas.height);
+  if (scene.background !== 'transparent') {
+    context.fillStyle = scene.background;
+    context.fillRect(0, 0, canvas.width, canvas.height);
+  }
+  if (scene.world === null) return;
+  setWorldTransform(context, scene);
+  drawBodies(context, scene, batches);
+  if (scene.collisionArrows.length > 0) {
+    drawCollisionArrows(context, scene.viewport.scale, scene.collisionArrows, scene.forceScale);
+  }
+  drawDebugOverlays(context, scene);
+  if (overlay !== null) {
+    context.save();
+    overlay(context);
+    context.restore();
+    setWorldTransform(context, scene);
+  }
+  context.setTransform(1, 0, 0, 1, 0, 0);
+  drawLabels(context, scene, batches);
+}

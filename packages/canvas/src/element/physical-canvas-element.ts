@@ -1,0 +1,787 @@
+import type { Body, CollisionEvent, Vec2, Vec2Like, World } from '@physical/engine';
+import type { BodyStyle } from '../draw/body-style.ts';
+import { DEFAULT_BACKGROUND } from '../draw/body-style.ts';
+import { noDebugOverlays, type DebugOverlays } from '../draw/debug-overlays.ts';
+import { BodyBatches } from '../draw/draw-bodies.ts';
+import { drawScene } from '../draw/draw-scene.ts';
+import type { Pose } from '../draw/pose.ts';
+import type { Scene } from '../draw/scene.ts';
+import {
+  computeViewport,
+  screenToWorld,
+  worldToScreen,
+  type FitMode,
+  type ViewBox,
+  type Viewport,
+} from '../draw/viewport.ts';
+import {
+  CanvasSettingError,
+  formatDebug,
+  parseDebug,
+  parseFit,
+  parseNonNegative,
+  parsePoint,
+  parsePositive,
+  parsePositiveInteger,
+  parseViewBox,
+} from './attribute-parsers.ts';
+import { BodyStyles, type StyleResolver } from './body-styles.ts';
+import { CollisionArrows } from './collision-arrows.ts';
+import { FrameLoop, type FrameLoopTarget } from './frame-loop.ts';
+import { animationFrameScheduler, type FrameScheduler } from './frame-scheduler.ts';
+import { PointerInput, type PointerEventDetail } from './pointer-input.ts';
+import { PoseHistory } from './pose-history.ts';
+import { watchEnvironment } from './environment-watch.ts';
+
+/** Detail of an `attributeerror` event: the rejected setting; the previous value stays. */
+export interface AttributeErrorDetail {
+  readonly error: CanvasSettingError;
+}
+
+/** Detail of a `pausechange` event (the keyboard toggled `paused`). */
+export interface PauseChangeDetail {
+  readonly paused: boolean;
+}
+
+/** Draws app overlays after the bodies, on a context in world metres. */
+export type OverlayDrawer = (
+  context: CanvasRenderingContext2D,
+  canvas: PhysicalCanvasElement,
+) => void;
+
+/** The events of `<physical-canvas>` (besides those of every element), by name. */
+export interface PhysicalCanvasEventMap extends HTMLElementEventMap {
+  /** A pointer pressed on a body. */
+  bodypress: CustomEvent<PointerEventDetail>;
+  /** A pointer that pressed a body was released (or cancelled). */
+  bodyrelease: CustomEvent<PointerEventDetail>;
+  /** A body was tapped (pressed and released without moving). */
+  bodytap: CustomEvent<PointerEventDetail>;
+  /** Empty space was tapped; `detail.body` is null. */
+  backgroundtap: CustomEvent<PointerEventDetail>;
+  /** An attribute had a value the element cannot use. */
+  attributeerror: CustomEvent<AttributeErrorDetail>;
+  /** The keyboard (Space) paused or resumed the simulation. */
+  pausechange: CustomEvent<PauseChangeDetail>;
+}
+
+const ATTRIBUTES = [
+  'pixels-per-meter',
+  'origin',
+  'fit',
+  'view-box',
+  'paused',
+  'time-scale',
+  'background',
+  'debug',
+  'collision-arrows',
+  'collision-arrow-duration',
+  'force-scale',
+  'velocity-scale',
+  'steps-per-second',
+  'max-steps-per-frame',
+] as const;
+
+type AttributeName = (typeof ATTRIBUTES)[number];
+
+/** Properties an app may set before the element is defined; re-applied on upgrade. */
+const UPGRADED_PROPERTIES = [
+  'world',
+  'styleFor',
+  'drawOverlay',
+  'frameScheduler',
+  'pixelsPerMeter',
+  'origin',
+  'fit',
+  'viewBox',
+  'paused',
+  'timeScale',
+  'background',
+  'debug',
+  'collisionArrows',
+] as const;
+
+const DEFAULTS = {
+  pixelsPerMeter: 50,
+  timeScale: 1,
+  collisionArrowDuration: 1,
+  forceScale: 0.01,
+  velocityScale: 0.25,
+  stepsPerSecond: 60,
+  maxStepsPerFrame: 4,
+};
+
+const TEMPLATE = `<style>
+:host { display: block; position: relative; height: 300px; contain: layout paint; outline: none; }
+:host([hidden]) { display: none; }
+:host(:focus-visible) { box-shadow: 0 0 0 2px #82b1ff; }
+canvas { display: block; width: 100%; height: 100%; touch-action: manipulation; }
+</style><canvas part="canvas"></canvas>`;
+
+// Server rendering and Node tests import this module without a DOM: the class then extends a
+// stand-in and is only defined (customElements.define) in a browser.
+const ElementBase: typeof HTMLElement =
+  typeof HTMLElement === 'undefined' ? (Object as unknown as typeof HTMLElement) : HTMLElement;
+
+/**
+ * `<physical-canvas>`: runs a Physical world at a fixed step and draws it, sharp at any size and
+ * pixel density. Register it with `define()` (or import `@physical/canvas/define`), give it a
+ * `world`, and add or remove bodies whenever you like.
+ *
+ * Attributes (each also a property): `pixels-per-meter`, `origin`, `fit`, `view-box`, `paused`,
+ * `time-scale`, `background`, `debug`, `collision-arrows`, `collision-arrow-duration`,
+ * `force-scale`, `velocity-scale`, `steps-per-second`, `max-steps-per-frame`. Properties only:
+ * `world`, `styleFor`, `drawOverlay`, `frameScheduler`. Events: see {@link PhysicalCanvasEventMap}.
+ */
+// The interface of the same name below adds typed addEventListener overloads (the usual pattern
+// for custom elements' events); it declares no members the class would have to initialise.
+// eslint-disable-next-line @typescript-eslint/no-unsafe-declaration-merging
+export class PhysicalCanvasElement extends ElementBase {
+  /** The attributes the element reacts to. */
+  static readonly observedAttributes: readonly string[] = ATTRIBUTES;
+
+  private worldValue: World | null = null;
+  private pixelsPerMeterValue = DEFAULTS.pixelsPerMeter;
+  private originValue: Vec2 = { x: 0, y: 0 };
+  private fitValue: FitMode = 'none';
+  private viewBoxValue: ViewBox | null = null;
+  private backgroundValue = DEFAULT_BACKGROUND;
+  private debugValue: DebugOverlays = noDebugOverlays();
+  private collisionArrowsValue = false;
+  private forceScaleValue = DEFAULTS.forceScale;
+  private velocityScaleValue = DEFAULTS.velocityScale;
+  private drawOverlayValue: OverlayDrawer | null = null;
+  private schedulerValue: FrameScheduler | null = null;
+
+  private readonly loop = new FrameLoop(
+    {
+      step: (dt) => this.stepWorld(dt),
+      render: (alpha, elapsed) => this.render(alpha, elapsed),
+      isSettled: () => this.isSettled(),
+    } satisfies FrameLoopTarget,
+    animationFrameScheduler,
+  );
+  private readonly poses = new PoseHistory();
+  private readonly styles = new BodyStyles();
+  private readonly arrows = new CollisionArrows();
+  private readonly batches = new BodyBatches();
+  private readonly input = new PointerInput({
+    clientToWorld: (x, y) => this.clientToWorld(x, y),
+    bodyAt: (point) => this.worldValue?.bodyAt(point) ?? null,
+    emit: (type, detail) => {
+      this.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
+    },
+    wake: () => this.invalidate(),
+  });
+  private canvasElement: HTMLCanvasElement | null = null;
+  private context: CanvasRenderingContext2D | null = null;
+  private cssWidth = 0;
+  private cssHeight = 0;
+  private alpha = 1;
+  private viewportInputsUnchanged = false;
+  private stepDuration = 1 / 60;
+  private reducedMotion = false;
+  private isConnectedValue = false;
+  private unsubscribeWorld: (() => void)[] = [];
+  private teardown: (() => void)[] = [];
+  private readonly scene: { -readonly [K in keyof Scene]: Scene[K] };
+  private readonly onCollision = (event: CollisionEvent): void => {
+    this.arrows.record(event, this.stepDuration);
+  };
+  private readonly onWorldChange = (): void => {
+    this.invalidate();
+  };
+
+  constructor() {
+    super();
+    this.loop.suspend('detached');
+    this.scene = {
+      viewport: computeViewport({
+        width: 0,
+        height: 0,
+        devicePixelRatio: 1,
+        fit: 'none',
+        pixelsPerMeter: DEFAULTS.pixelsPerMeter,
+        origin: { x: 0, y: 0 },
+        viewBox: null,
+      }),
+      world: null,
+      bodies: [],
+      poseOf: (body: Body, index: number, out: Pose): Pose =>
+        this.poses.interpolate(body, index, this.alpha, out),
+      styleOf: (body: Body) => this.styles.resolve(body),
+      background: DEFAULT_BACKGROUND,
+      debug: this.debugValue,
+      collisionArrows: this.arrows.arrows,
+      forceScale: DEFAULTS.forceScale,
+      velocityScale: DEFAULTS.velocityScale,
+      reducedMotion: false,
+    };
+    if (typeof document === 'undefined' || typeof this.attachShadow !== 'function') return;
+    const root = this.attachShadow({ mode: 'open' });
+    root.innerHTML = TEMPLATE;
+    this.canvasElement = root.querySelector('canvas')!;
+    this.context = this.canvasElement.getContext('2d', { alpha: true });
+  }
+
+  // ------------------------------------------------------------------ world and styles
+
+  /**
+   * The world to run and draw, or null. The element steps it (do not also call `world.step`),
+   * subscribes to its events while connected, and drops them when disconnected or replaced.
+   */
+  get world(): World | null {
+    return this.worldValue;
+  }
+
+  set world(value: World | null) {
+    if (value !== null && (typeof value !== 'object' || !('step' in value))) {
+      throw new CanvasSettingError('world', value, 'a World from @physical/engine, or null');
+    }
+    if (value === this.worldValue) return;
+    this.unsubscribe();
+    this.worldValue = value;
+    this.poses.clear();
+    this.arrows.clear();
+    this.loop.reset();
+    if (this.isConnectedValue) this.subscribe();
+    this.invalidate();
+  }
+
+  /**
+   * Gives a body its own style (or with null, back to `styleFor` or the default). The body need
+   * not be in the world yet; the style is forgotten with the body.
+   */
+  setStyle(body: Body, style: BodyStyle | null): void {
+    this.styles.set(body, style);
+    this.invalidate();
+  }
+
+  /** The style set with {@link setStyle}, if any. */
+  getStyle(body: Body): BodyStyle | undefined {
+    return this.styles.get(body);
+  }
+
+  /**
+   * Styles every body without an explicit style. Called each frame for each body: return the
+   * same object for the same look (for example from a table by `body.userData`), not a new one.
+   */
+  get styleFor(): StyleResolver | null {
+    return this.styles.styleFor;
+  }
+
+  set styleFor(value: StyleResolver | null) {
+    if (value !== null && typeof value !== 'function') {
+      throw new CanvasSettingError('styleFor', value, 'a function (body) => style, or null');
+    }
+    this.styles.styleFor = value;
+    this.styles.invalidate();
+    this.invalidate();
+  }
+
+  /**
+   * Draws app overlays (force arrows with `drawArrow`, trails, targets) after the bodies, each
+   * frame, on a context in world metres.
+   */
+  get drawOverlay(): OverlayDrawer | null {
+    return this.drawOverlayValue;
+  }
+
+  set drawOverlay(value: OverlayDrawer | null) {
+    if (value !== null && typeof value !== 'function') {
+      throw new CanvasSettingError('drawOverlay', value, 'a function (context, canvas), or null');
+    }
+    this.drawOverlayValue = value;
+    this.invalidate();
+  }
+
+  /**
+   * Where frames come from: `requestAnimationFrame` by default (null). Set a
+   * `ManualFrameScheduler` to drive the element by hand (tests, offline rendering).
+   */
+  get frameScheduler(): FrameScheduler | null {
+    return this.schedulerValue;
+  }
+
+  set frameScheduler(value: FrameScheduler | null) {
+    this.schedulerValue = value;
+    this.loop.reset();
+    this.loop.setScheduler(value ?? animationFrameScheduler);
+  }
+
+  // ------------------------------------------------------------------ view
+
+  /** CSS px per metre when `fit` is `"none"` (attribute `pixels-per-meter`). Default 50. */
+  get pixelsPerMeter(): number {
+    return this.pixelsPerMeterValue;
+  }
+
+  set pixelsPerMeter(value: number) {
+    this.reflect('pixels-per-meter', String(parsePositive('pixels-per-meter', value)));
+  }
+
+  /**
+   * The world point (m) at the element's top-left corner when `fit` is `"none"` (attribute
+   * `origin="x y"`): the camera. Default (0, 0). Resizing keeps it, and the scale.
+   */
+  get origin(): Readonly<Vec2> {
+    return { x: this.originValue.x, y: this.originValue.y };
+  }
+
+  set origin(value: Vec2Like) {
+    const point = parsePoint('origin', value);
+    this.reflect('origin', `${point.x} ${point.y}`);
+  }
+
+  /** `"none"` (default), `"contain"` or `"cover"`: how `viewBox` fits the element. */
+  get fit(): FitMode {
+    return this.fitValue;
+  }
+
+  set fit(value: FitMode) {
+    this.reflect('fit', parseFit('fit', value));
+  }
+
+  /**
+   * The world rectangle (m) that `fit="contain"` or `"cover"` keeps in view, centred, at any
+   * element size (attribute `view-box="x y width height"`). Null by default.
+   */
+  get viewBox(): ViewBox | null {
+    return this.viewBoxValue;
+  }
+
+  set viewBox(value: ViewBox | null) {
+    const box = parseViewBox('view-box', value);
+    if (box === null) this.removeAttribute('view-box');
+    else this.reflect('view-box', `${box.x} ${box.y} ${box.width} ${box.height}`);
+  }
+
+  /** The mapping in use: element size, scale (CSS px per metre) and origin. */
+  get viewport(): Viewport {
+    this.updateViewport();
+    return this.scene.viewport;
+  }
+
+  /** Element point (CSS px from its top-left corner) to world point (m). */
+  screenToWorld(point: Vec2Like): Vec2 {
+    return screenToWorld(this.viewport, point);
+  }
+
+  /** World point (m) to element point (CSS px from its top-left corner). */
+  worldToScreen(point: Vec2Like): Vec2 {
+    return worldToScreen(this.viewport, point);
+  }
+
+  /** Viewport point (`clientX`, `clientY` of a mouse event) to world point (m). */
+  clientToWorld(clientX: number, clientY: number): Vec2 {
+    const rect = this.getBoundingClientRect();
+    return screenToWorld(this.viewport, { x: clientX - rect.left, y: clientY - rect.top });
+  }
+
+  // ------------------------------------------------------------------ time
+
+  /** True stops time (frames are still drawn when something changes). Attribute `paused`. */
+  get paused(): boolean {
+    return this.loop.paused;
+  }
+
+  set paused(value: boolean) {
+    this.toggleAttribute('paused', Boolean(value));
+  }
+
+  /** Simulated seconds per real second: 0.25 is slow motion (attribute `time-scale`). Default 1. */
+  get timeScale(): number {
+    return this.loop.timeScale;
+  }
+
+  set timeScale(value: number) {
+    this.reflect('time-scale', String(parseNonNegative('time-scale', value)));
+  }
+
+  /** Fixed steps per simulated second (attribute `steps-per-second`). Default 60. */
+  get stepsPerSecond(): number {
+    return 1 / this.loop.fixedStep;
+  }
+
+  set stepsPerSecond(value: number) {
+    this.reflect('steps-per-second', String(parsePositive('steps-per-second', value)));
+  }
+
+  /**
+   * Most steps per frame when catching up after a stall (attribute `max-steps-per-frame`).
+   * Default 4; beyond it the backlog is dropped and the simulation slows down instead.
+   */
+  get maxStepsPerFrame(): number {
+    return this.loop.maxStepsPerFrame;
+  }
+
+  set maxStepsPerFrame(value: number) {
+    this.reflect('max-steps-per-frame', String(parsePositiveInteger('max-steps-per-frame', value)));
+  }
+
+  /** Steps taken by this element so far. */
+  get stepCount(): number {
+    return this.loop.stepCount;
+  }
+
+  /** Frames drawn by this element so far. */
+  get frameCount(): number {
+    return this.loop.frameCount;
+  }
+
+  /** True while the element has a frame scheduled (false when idle, hidden or detached). */
+  get isRunning(): boolean {
+    return this.loop.isRunning;
+  }
+
+  /**
+   * Asks for a frame: call it after changing the world by hand while paused (teleporting a body),
+   * or after changing a style object in place. Other changes wake the element by themselves.
+   */
+  invalidate(): void {
+    this.loop.invalidate();
+  }
+
+  // ------------------------------------------------------------------ look
+
+  /** Background colour (any CSS colour, or `"transparent"`). Default Material dark `#121212`. */
+  get background(): string {
+    return this.backgroundValue;
+  }
+
+  set background(value: string) {
+    this.reflect('background', this.parseColor('background', value));
+  }
+
+  /**
+   * Debug overlays that are on. The attribute is a list: `debug="contacts normals aabbs centers
+   * velocities sleep"` (or `"all"`); the property also takes an array or an object of flags.
+   */
+  get debug(): Readonly<DebugOverlays> {
+    return { ...this.debugValue };
+  }
+
+  set debug(value: string | readonly string[] | Partial<DebugOverlays>) {
+    const overlays = parseDebug('debug', value);
+    const text = formatDebug(overlays);
+    if (text === '') this.removeAttribute('debug');
+    else this.reflect('debug', text);
+  }
+
+  /**
+   * Collision-force arrows (attribute `collision-arrows`): at each impact, two equal and
+   * opposite arrows of the average contact force, fading over `collisionArrowDuration`.
+   */
+  get collisionArrows(): boolean {
+    return this.collisionArrowsValue;
+  }
+
+  set collisionArrows(value: boolean) {
+    this.toggleAttribute('collision-arrows', Boolean(value));
+  }
+
+  /** Seconds a collision arrow takes to fade (attribute `collision-arrow-duration`). Default 1. */
+  get collisionArrowDuration(): number {
+    return this.arrows.duration;
+  }
+
+  set collisionArrowDuration(value: number) {
+    this.reflect(
+      'collision-arrow-duration',
+      String(parsePositive('collision-arrow-duration', value)),
+    );
+  }
+
+  /** Metres of collision arrow per newton (attribute `force-scale`). Default 0.01. */
+  get forceScale(): number {
+    return this.forceScaleValue;
+  }
+
+  set forceScale(value: number) {
+    this.reflect('force-scale', String(parsePositive('force-scale', value)));
+  }
+
+  /**
+   * Seconds of motion a velocity arrow shows: its length is speed times this (attribute
+   * `velocity-scale`). Default 0.25.
+   */
+  get velocityScale(): number {
+    return this.velocityScaleValue;
+  }
+
+  set velocityScale(value: number) {
+    this.reflect('velocity-scale', String(parsePositive('velocity-scale', value)));
+  }
+
+  // ------------------------------------------------------------------ lifecycle
+
+  /** @internal */
+  connectedCallback(): void {
+    for (const name of UPGRADED_PROPERTIES) this.upgradeProperty(name);
+    if (!this.hasAttribute('tabindex')) this.tabIndex = 0;
+    if (!this.hasAttribute('role')) this.setAttribute('role', 'img');
+    if (!this.hasAttribute('aria-label')) this.setAttribute('aria-label', 'Physics simulation');
+    this.isConnectedValue = true;
+    this.subscribe();
+    const canvas = this.canvasElement!;
+    this.input.attach(canvas);
+    this.watch();
+    this.loop.resume('detached');
+  }
+
+  /** @internal */
+  disconnectedCallback(): void {
+    this.isConnectedValue = false;
+    this.loop.suspend('detached');
+    this.unsubscribe();
+    this.input.detach();
+    for (const undo of this.teardown) undo();
+    this.teardown = [];
+  }
+
+  /** @internal */
+  attributeChangedCallback(name: string, _old: string | null, value: string | null): void {
+    try {
+      this.applyAttribute(name as AttributeName, value);
+    } catch (error) {
+      if (!(error instanceof CanvasSettingError)) throw error;
+      // eslint-disable-next-line no-console -- a bad attribute in markup has no caller to throw to
+      console.error(error.message);
+      this.dispatchEvent(
+        new CustomEvent('attributeerror', { detail: { error }, bubbles: true, composed: true }),
+      );
+    }
+    this.invalidate();
+  }
+
+  // ------------------------------------------------------------------ frame loop
+
+  /** Snapshots the poses, then takes one fixed step. */
+  private stepWorld(dt: number): void {
+    const world = this.worldValue;
+    if (world === null) return;
+    this.poses.snapshot(world.bodies);
+    this.stepDuration = dt;
+    world.step(dt);
+  }
+
+  /** Draws the frame at `alpha` between the last two steps. */
+  private render(alpha: number, elapsed: number): void {
+    this.alpha = alpha;
+    this.arrows.advance(elapsed);
+    this.draw();
+  }
+
+  /** Nothing moves and nothing fades: stop requesting frames. */
+  private isSettled(): boolean {
+    const world = this.worldValue;
+    if (world === null || this.loop.paused || this.loop.timeScale === 0) return true;
+    return world.awakeBodyCount === 0 && this.arrows.isEmpty;
+  }
+
+  // ------------------------------------------------------------------ internals
+
+  private draw(): void {
+    const context = this.context;
+    if (context === null) return;
+    this.updateViewport();
+    const viewport = this.scene.viewport;
+    const canvas = context.canvas;
+    const width = Math.max(1, Math.round(viewport.width * viewport.devicePixelRatio));
+    const height = Math.max(1, Math.round(viewport.height * viewport.devicePixelRatio));
+    if (canvas.width !== width || canvas.height !== height) {
+      canvas.width = width;
+      canvas.height = height;
+    }
+    const world = this.worldValue;
+    const scene = this.scene;
+    scene.world = world;
+    scene.bodies = world === null ? [] : world.bodies;
+    scene.background = this.backgroundValue;
+    scene.debug = this.debugValue;
+    scene.forceScale = this.forceScaleValue;
+    scene.velocityScale = this.velocityScaleValue;
+    scene.reducedMotion = this.reducedMotion;
+    const overlay = this.drawOverlayValue;
+    drawScene(
+      context,
+      this.scene,
+      this.batches,
+      overlay === null ? null : (drawing) => overlay(drawing, this),
+    );
+  }
+
+  private updateViewport(): void {
+    if (this.cssWidth === 0 && this.cssHeight === 0 && this.isConnectedValue) {
+      this.cssWidth = this.clientWidth;
+      this.cssHeight = this.clientHeight;
+    }
+    const current = this.scene.viewport;
+    const devicePixelRatio = typeof window === 'undefined' ? 1 : window.devicePixelRatio || 1;
+    if (
+      current.width === this.cssWidth &&
+      current.height === this.cssHeight &&
+      current.devicePixelRatio === devicePixelRatio &&
+      this.viewportInputsUnchanged
+    ) {
+      return;
+    }
+    this.viewportInputsUnchanged = true;
+    this.scene.viewport = computeViewport({
+      width: this.cssWidth,
+      height: this.cssHeight,
+      devicePixelRatio,
+      fit: this.fitValue,
+      pixelsPerMeter: this.pixelsPerMeterValue,
+      origin: this.originValue,
+      viewBox: this.viewBoxValue,
+    });
+  }
+
+  private applyAttribute(name: AttributeName, value: string | null): void {
+    const present = value !== null;
+    switch (name) {
+      case 'pixels-per-meter':
+        this.pixelsPerMeterValue = present ? parsePositive(name, value) : DEFAULTS.pixelsPerMeter;
+        break;
+      case 'origin':
+        this.originValue = present ? parsePoint(name, value) : { x: 0, y: 0 };
+        break;
+      case 'fit':
+        this.fitValue = present ? parseFit(name, value) : 'none';
+        break;
+      case 'view-box':
+        this.viewBoxValue = parseViewBox(name, value);
+        break;
+      case 'paused':
+        this.loop.paused = present;
+        break;
+      case 'time-scale':
+        this.loop.timeScale = present ? parseNonNegative(name, value) : DEFAULTS.timeScale;
+        break;
+      case 'background':
+        this.backgroundValue = present ? this.parseColor(name, value) : DEFAULT_BACKGROUND;
+        break;
+      case 'debug':
+        this.debugValue = parseDebug(name, value);
+        break;
+      case 'collision-arrows':
+        this.collisionArrowsValue = present;
+        this.unsubscribe();
+        if (this.isConnectedValue) this.subscribe();
+        if (!present) this.arrows.clear();
+        break;
+      case 'collision-arrow-duration':
+        this.arrows.duration = present
+          ? parsePositive(name, value)
+          : DEFAULTS.collisionArrowDuration;
+        break;
+      case 'force-scale':
+        this.forceScaleValue = present ? parsePositive(name, value) : DEFAULTS.forceScale;
+        break;
+      case 'velocity-scale':
+        this.velocityScaleValue = present ? parsePositive(name, value) : DEFAULTS.velocityScale;
+        break;
+      case 'steps-per-second':
+        this.loop.fixedStep = 1 / (present ? parsePositive(name, value) : DEFAULTS.stepsPerSecond);
+        break;
+      case 'max-steps-per-frame':
+        this.loop.maxStepsPerFrame = present
+          ? parsePositiveInteger(name, value)
+          : DEFAULTS.maxStepsPerFrame;
+        break;
+    }
+    this.viewportInputsUnchanged = false;
+  }
+
+  private parseColor(setting: string, value: unknown): string {
+    const text = typeof value === 'string' ? value.trim() : '';
+    const supported = text !== '' && (typeof CSS === 'undefined' || CSS.supports('color', text));
+    if (!supported) throw new CanvasSettingError(setting, value, 'a CSS colour');
+    return text;
+  }
+
+  /** Sets an attribute from a property setter (values are already validated). */
+  private reflect(name: AttributeName, value: string): void {
+    this.setAttribute(name, value);
+  }
+
+  private upgradeProperty(name: (typeof UPGRADED_PROPERTIES)[number]): void {
+    if (!Object.prototype.hasOwnProperty.call(this, name)) return;
+    const value = (this as Record<string, unknown>)[name];
+    Reflect.deleteProperty(this, name);
+    (this as Record<string, unknown>)[name] = value;
+  }
+
+  private subscribe(): void {
+    const world = this.worldValue;
+    if (world === null || this.unsubscribeWorld.length > 0) return;
+    this.unsubscribeWorld.push(
+      world.on('wake', this.onWorldChange),
+      world.on('bodyAdded', this.onWorldChange),
+      world.on('bodyRemoved', this.onWorldChange),
+    );
+    if (this.collisionArrowsValue)
+      this.unsubscribeWorld.push(world.on('collision', this.onCollision));
+  }
+
+  private unsubscribe(): void {
+    for (const off of this.unsubscribeWorld) off();
+    this.unsubscribeWorld = [];
+  }
+
+  private watch(): void {
+    this.teardown.push(
+      watchEnvironment(this, this.loop, {
+        resized: (width, height) => {
+          this.cssWidth = width;
+          this.cssHeight = height;
+          // Redraw now, before the browser paints the stretched old bitmap.
+          this.draw();
+          this.invalidate();
+        },
+        reducedMotionChanged: (reduce) => {
+          this.reducedMotion = reduce;
+          this.arrows.fade = !reduce;
+          this.invalidate();
+        },
+        densityChanged: () => this.invalidate(),
+        togglePause: () => {
+          this.paused = !this.paused;
+          this.dispatchEvent(
+            new CustomEvent('pausechange', {
+              detail: { paused: this.paused },
+              bubbles: true,
+              composed: true,
+            }),
+          );
+        },
+      }),
+    );
+  }
+}
+
+/** Typed `addEventListener` for the element's events. */
+// eslint-disable-next-line @typescript-eslint/no-unsafe-declaration-merging
+export interface PhysicalCanvasElement {
+  addEventListener<K extends keyof PhysicalCanvasEventMap>(
+    type: K,
+    listener: (this: PhysicalCanvasElement, event: PhysicalCanvasEventMap[K]) => void,
+    options?: boolean | AddEventListenerOptions,
+  ): void;
+  addEventListener(
+    type: string,
+    listener: EventListenerOrEventListenerObject,
+    options?: boolean | AddEventListenerOptions,
+  ): void;
+  removeEventListener<K extends keyof PhysicalCanvasEventMap>(
+    type: K,
+    listener: (this: PhysicalCanvasElement, event: PhysicalCanvasEventMap[K]) => void,
+    options?: boolean | EventListenerOptions,
+  ): void;
+  removeEventListener(
+    type: string,
+    listener: EventListenerOrEventListenerObject,
+    options?: boolean | EventListenerOptions,
+  ): void;
+}

@@ -1,0 +1,119 @@
+import type { Body, Vec2 } from '@physical/engine';
+
+/** Detail of the element's pointer events. */
+export interface PointerEventDetail {
+  /** The body under the pointer when it was pressed; null for `backgroundtap`. */
+  readonly body: Body | null;
+  /** The pointer's position in the world (m, y-down). */
+  readonly point: Readonly<Vec2>;
+  /** The pointer event behind it (pointer type, modifiers, buttons). */
+  readonly sourceEvent: PointerEvent;
+}
+
+/** The pointer may move this far (CSS px) between press and release and still make a tap. */
+export const TAP_SLOP = 10;
+
+interface Press {
+  readonly pointerId: number;
+  readonly body: Body | null;
+  readonly clientX: number;
+  readonly clientY: number;
+}
+
+/** What {@link PointerInput} needs from its element. */
+export interface PointerInputHost {
+  /** The world point (m) under a client point (CSS px), or null with no world. */
+  clientToWorld(clientX: number, clientY: number): Vec2 | null;
+  /** The body at a world point, or null. */
+  bodyAt(point: Vec2): Body | null;
+  /** Sends one of the element's events. */
+  emit(
+    type: 'bodypress' | 'bodyrelease' | 'bodytap' | 'backgroundtap',
+    detail: PointerEventDetail,
+  ): void;
+  /** Input arrived: the loop must run. */
+  wake(): void;
+}
+
+/**
+ * Turns pointer events on the canvas into body events, hit-tested against the world:
+ * `bodypress` on press over a body, `bodyrelease` when that pointer is released or cancelled,
+ * `bodytap` when it is released within {@link TAP_SLOP} of where it was pressed, and
+ * `backgroundtap` for such a tap that started over no body. Each pointer is tracked on its own
+ * (multi-touch), with pointer capture so a release outside the element still arrives.
+ */
+export class PointerInput {
+  private readonly host: PointerInputHost;
+  private readonly presses = new Map<number, Press>();
+  private target: HTMLElement | null = null;
+
+  constructor(host: PointerInputHost) {
+    this.host = host;
+  }
+
+  /** Starts listening on `target`. */
+  attach(target: HTMLElement): void {
+    this.detach();
+    this.target = target;
+    target.addEventListener('pointerdown', this.onDown);
+    target.addEventListener('pointerup', this.onUp);
+    target.addEventListener('pointercancel', this.onCancel);
+  }
+
+  /** Stops listening and forgets pressed pointers. */
+  detach(): void {
+    const target = this.target;
+    if (target === null) return;
+    target.removeEventListener('pointerdown', this.onDown);
+    target.removeEventListener('pointerup', this.onUp);
+    target.removeEventListener('pointercancel', this.onCancel);
+    this.presses.clear();
+    this.target = null;
+  }
+
+  private readonly onDown = (event: PointerEvent): void => {
+    if (event.pointerType === 'mouse' && event.button !== 0) return;
+    const point = this.host.clientToWorld(event.clientX, event.clientY);
+    if (point === null) return;
+    this.host.wake();
+    const body = this.host.bodyAt(point);
+    this.presses.set(event.pointerId, {
+      pointerId: event.pointerId,
+      body,
+      clientX: event.clientX,
+      clientY: event.clientY,
+    });
+    try {
+      (event.currentTarget as HTMLElement).setPointerCapture(event.pointerId);
+    } catch {
+      // Synthetic events have no active pointer to capture; the release still arrives here.
+    }
+    if (body !== null) this.host.emit('bodypress', { body, point, sourceEvent: event });
+  };
+
+  private readonly onUp = (event: PointerEvent): void => {
+    const press = this.presses.get(event.pointerId);
+    if (press === undefined) return;
+    this.presses.delete(event.pointerId);
+    const point = this.host.clientToWorld(event.clientX, event.clientY);
+    if (point === null) return;
+    const moved = Math.hypot(event.clientX - press.clientX, event.clientY - press.clientY);
+    const isTap = moved <= TAP_SLOP;
+    if (press.body !== null) {
+      this.host.emit('bodyrelease', { body: press.body, point, sourceEvent: event });
+      if (isTap) this.host.emit('bodytap', { body: press.body, point, sourceEvent: event });
+    } else if (isTap) {
+      this.host.emit('backgroundtap', { body: null, point, sourceEvent: event });
+    }
+  };
+
+  private readonly onCancel = (event: PointerEvent): void => {
+    const press = this.presses.get(event.pointerId);
+    if (press === undefined) return;
+    this.presses.delete(event.pointerId);
+    const point = this.host.clientToWorld(event.clientX, event.clientY);
+    if (press.body !== null && point !== null) {
+      this.host.emit('bodyrelease', { body: press.body, point, sourceEvent: event });
+    }
+  };
+}

@@ -1,0 +1,27 @@
+// @physical/canvas's public API. Everything not listed here is internal.
+
+export { PhysicalCanvasElement } from './element/physical-canvas-element.ts';
+export type {
+  AttributeErrorDetail,
+  OverlayDrawer,
+  PauseChangeDetail,
+  PhysicalCanvasEventMap,
+} from './element/physical-canvas-element.ts';
+export { define } from './element/define-physical-canvas.ts';
+export { CanvasSettingError } from './element/attribute-parsers.ts';
+export type { PointerEventDetail } from './element/pointer-input.ts';
+export { TAP_SLOP } from './element/pointer-input.ts';
+export type { StyleResolver } from './element/body-styles.ts';
+export { FrameLoop } from './element/frame-loop.ts';
+export type { FrameLoopTarget, SuspendReason } from './element/frame-loop.ts';
+export { ManualFrameScheduler, animationFrameScheduler } from './element/frame-scheduler.ts';
+export type { FrameScheduler } from './element/frame-scheduler.ts';
+
+export { DEFAULT_BACKGROUND, DYNAMIC_PALETTE } from './draw/body-style.ts';
+export type { BodyDrawInfo, BodyStyle, ResolvedBodyStyle } from './draw/body-style.ts';
+export { ARROW_COLORS, drawArrow } from './draw/draw-arrow.ts';
+export type { ArrowKind, ArrowStyle } from './draw/draw-arrow.ts';
+export type { DebugOverlays } from './draw/debug-overlays.ts';
+export type { Pose } from './draw/pose.ts';
+export { computeViewport, screenToWorld, worldToScreen } from './draw/viewport.ts';
+export type { FitMode, ViewBox, Viewport, ViewportInput } from './draw/viewport.ts';
