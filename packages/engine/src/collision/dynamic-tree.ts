@@ -67,7 +67,7 @@ export class DynamicTree {
   /** 0 for a leaf, 1 + the taller child's height for an internal node, -1 for a free node. */
   private heights: Int32Array;
   private userData: Int32Array;
-  private capacity: number;
+  private capacity = 0;
   private freeList = NULL_NODE;
   private root = NULL_NODE;
   private leafCount = 0;

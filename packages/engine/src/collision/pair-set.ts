@@ -27,7 +27,7 @@ function hashPair(low: number, high: number): number {
 export class PairSet {
   private lows: Int32Array;
   private highs: Int32Array;
-  private mask: number;
+  private mask = 0;
   private count = 0;
 
   constructor(initialCapacity: number = INITIAL_CAPACITY) {

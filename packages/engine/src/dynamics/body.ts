@@ -86,10 +86,13 @@ export class Body<UserData = unknown> {
   userData: UserData | undefined;
 
   // ---- Internal state. Fields marked @internal are stripped from the published types. ----
+  // Every numeric field starts as a number where it is declared: a field declared without a
+  // value starts as undefined, V8 then stores it as a generic value, and each later write of a
+  // fractional number allocates (the step must allocate nothing).
   /** @internal Transform of the body origin. */
   readonly transform: Transform = new Transform();
   /** @internal Unwrapped rotation (rad). */
-  angleValue: number;
+  angleValue = 0;
   /** @internal Centre of mass, world (m). */
   centerX = 0;
   centerY = 0;
@@ -115,14 +118,14 @@ export class Body<UserData = unknown> {
   forceX = 0;
   forceY = 0;
   torqueValue = 0;
-  gravityScaleValue: number;
-  linearDampingValue: number;
-  angularDampingValue: number;
-  dragValue: number;
-  fixedRotationValue: boolean;
-  allowSleepValue: boolean;
+  gravityScaleValue = 1;
+  linearDampingValue = 0;
+  angularDampingValue = 0;
+  dragValue = 0;
+  fixedRotationValue = false;
+  allowSleepValue = true;
   /** @internal */
-  awake: boolean;
+  awake = true;
   sleepTime = 0;
   /** @internal Largest and smallest distance from the centre of mass to the surface (m). */
   maxExtent = 0;

@@ -13,8 +13,9 @@ import type { Shape } from './shape.ts';
 export class ContactManager {
   /** Every contact, in creation order (removal swaps the last one in). */
   readonly contacts: Contact[] = [];
-  /** Contacts that started touching during the last narrow phase. */
+  /** Contacts that started touching during the last narrow phase (the first `beganCount`). */
   readonly began: Contact[] = [];
+  beganCount = 0;
   /** Shape pairs that stopped touching during the last narrow phase (or were destroyed touching). */
   readonly endedA: Shape[] = [];
   readonly endedB: Shape[] = [];
@@ -50,7 +51,7 @@ export class ContactManager {
    * sleeping body that something started touching.
    */
   collide(dt: number): void {
-    this.began.length = 0;
+    this.beganCount = 0;
     this.endedCount = 0;
     const contacts = this.contacts;
     let i = 0;
@@ -69,7 +70,7 @@ export class ContactManager {
       const wasTouching = contact.touching;
       const touching = contact.update(dt);
       if (touching && !wasTouching) {
-        this.began.push(contact);
+        this.began[this.beganCount++] = contact;
         if (!bodyA.awake) this.islands.wake(bodyA);
         if (!bodyB.awake) this.islands.wake(bodyB);
       } else if (!touching && wasTouching) {

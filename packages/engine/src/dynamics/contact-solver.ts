@@ -67,7 +67,7 @@ export class ContactConstraints {
   /** Constraints between two circles centred on their bodies: their normal follows the centres. */
   circlePairs: Int32Array = new Int32Array(64);
   circlePairCount = 0;
-  /** The contact each constraint came from, to store impulses back. */
+  /** The contact each constraint came from, to store impulses back (the first `count`). */
   readonly contacts: Contact[] = [];
 
   reserve(count: number): void {
@@ -91,8 +91,7 @@ export function prepareContacts(
   contactSoftness: Softness,
   staticSoftness: Softness,
 ): void {
-  const count = constraints.contacts.length;
-  constraints.count = count;
+  const count = constraints.count;
   constraints.circlePairCount = 0;
   constraints.reserve(count);
   const c = constraints.data;

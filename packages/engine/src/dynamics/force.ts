@@ -40,10 +40,10 @@ const DURATION_EPSILON = 1e-9;
  */
 export class Force {
   /** Force in world coordinates (N). */
-  x: number;
-  y: number;
+  x = 0;
+  y = 0;
   /** Torque (N m), positive turns +x towards +y (clockwise on a y-down screen). */
-  torque: number;
+  torque = 0;
   /** Point of application in body-local coordinates (m); used only when `hasPoint` (else the centre of mass). */
   localPointX = 0;
   localPointY = 0;
@@ -51,7 +51,7 @@ export class Force {
   /** The duration it was created with. */
   readonly duration: Duration;
   /** Seconds left for a timed force; Infinity for `'constant'`; one step for `'instant'`. */
-  remaining: number;
+  remaining = 0;
   /** @internal Removal hook set by the owning body. */
   onRemove: ((force: Force) => void) | null = null;
   /** @internal Change hook set by the owning body (wakes it). */

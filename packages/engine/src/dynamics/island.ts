@@ -16,11 +16,11 @@ export class Islands {
   private readonly members: Body[] = [];
 
   /** Puts to sleep every island of `awake` bodies that has rested for `timeToSleep` seconds. */
-  sleepRestingIslands(awake: readonly Body[], timeToSleep: number): void {
+  sleepRestingIslands(awake: readonly Body[], count: number, timeToSleep: number): void {
     // Stamps above passStart mark bodies already searched in this pass: their island either slept
     // or cannot sleep, so they are not searched again.
     const passStart = this.stamp;
-    for (let i = 0; i < awake.length; i++) {
+    for (let i = 0; i < count; i++) {
       const body = awake[i]!;
       if (!body.awake || body.sleepTime < timeToSleep || body.islandStamp > passStart) continue;
       if (this.collect(body, timeToSleep, passStart)) {

@@ -86,11 +86,11 @@ export class Shape {
   /** Geometry in the body's frame (read-only: build a new shape to change it). */
   readonly geometry: Geometry;
   /** Mass per area (kg/m^2). Change it through {@link Body.setShapeDensity}-free rebuild: read-only here. */
-  readonly density: number;
+  readonly density: number = 1;
   /** Coulomb friction coefficient. */
-  friction: number;
+  friction = 0.6;
   /** Coefficient of restitution. */
-  restitution: number;
+  restitution = 0;
 
   /** @internal World-local id, -1 outside a world. */
   id = -1;

@@ -53,8 +53,13 @@ export interface SolverSettings {
 export class Solver {
   readonly states: BodyStates = new BodyStates();
   readonly constraints: ContactConstraints = new ContactConstraints();
-  /** Awake non-static bodies of this step, in world order; body.solverIndex = position + 1. */
+  /**
+   * Awake non-static bodies of this step, in world order (body.solverIndex = position + 1); only
+   * the first `awakeCount` entries are valid. Per-step lists keep a count instead of truncating,
+   * because `array.length = 0` frees the backing store and the next pushes would allocate again.
+   */
   readonly awake: Body[] = [];
+  awakeCount = 0;
   private readonly contactSoftness = new Softness();
   private readonly staticSoftness = new Softness();
 
@@ -64,17 +69,20 @@ export class Solver {
    */
   gatherBodies(bodies: readonly Body[], dt: number): void {
     const awake = this.awake;
-    awake.length = 0;
+    let count = 0;
     for (let i = 0; i < bodies.length; i++) {
       const body = bodies[i]!;
       body.solverIndex = 0;
       if (body.awake && body.type !== 'static') {
-        awake.push(body);
-        body.solverIndex = awake.length;
+        if (count < awake.length) awake[count] = body;
+        else awake.push(body);
+        count++;
+        body.solverIndex = count;
       }
     }
-    const s = this.states.reserve(awake.length);
-    for (let i = 0; i < awake.length; i++) {
+    this.awakeCount = count;
+    const s = this.states.reserve(count);
+    for (let i = 0; i < count; i++) {
       const body = awake[i]!;
       const k = (i + 1) * STATE_STRIDE;
       s[k + V_X] = body.velocityX;
@@ -104,7 +112,7 @@ export class Solver {
 
     // Contacts that matter this step: touching, with something that can move.
     const list = constraints.contacts;
-    list.length = 0;
+    let count = 0;
     for (let i = 0; i < contacts.length; i++) {
       const contact = contacts[i]!;
       if (!contact.touching) continue;
@@ -113,8 +121,11 @@ export class Solver {
       if ((a.solverIndex === 0 || a.invMass === 0) && (b.solverIndex === 0 || b.invMass === 0)) {
         continue;
       }
-      list.push(contact);
+      if (count < list.length) list[count] = contact;
+      else list.push(contact);
+      count++;
     }
+    constraints.count = count;
     // A contact spring stiffer than a quarter of the sub-step rate would be under-resolved.
     const contactHertz = Math.min(settings.contactHertz, (0.25 * subSteps) / dt);
     this.contactSoftness.set(contactHertz, settings.contactDampingRatio, h);
@@ -122,11 +133,11 @@ export class Solver {
     prepareContacts(constraints, s, this.contactSoftness, this.staticSoftness);
 
     for (let step = 0; step < subSteps; step++) {
-      integrateVelocities(awake, s, settings, h);
+      integrateVelocities(awake, this.awakeCount, s, settings, h);
       refreshCirclePairs(constraints, s);
       warmStartContacts(constraints, s);
       solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, true);
-      integratePositions(awake, s, h);
+      integratePositions(this.awakeCount, s, h);
       refreshCirclePairs(constraints, s);
       solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, false);
     }
@@ -138,7 +149,7 @@ export class Solver {
   private finalizeBodies(dt: number): void {
     const awake = this.awake;
     const s = this.states.data;
-    for (let i = 0; i < awake.length; i++) {
+    for (let i = 0; i < this.awakeCount; i++) {
       const body = awake[i]!;
       const k = (i + 1) * STATE_STRIDE;
       const vx = s[k + V_X]!;
@@ -224,6 +235,7 @@ function gatherForces(body: Body, dt: number): void {
  */
 function integrateVelocities(
   awake: readonly Body[],
+  count: number,
   s: Float64Array,
   settings: SolverSettings,
   h: number,
@@ -231,7 +243,7 @@ function integrateVelocities(
   const gx = settings.gravityX;
   const gy = settings.gravityY;
   const maxSpeedSquared = settings.maxLinearSpeed * settings.maxLinearSpeed;
-  for (let i = 0; i < awake.length; i++) {
+  for (let i = 0; i < count; i++) {
     const body = awake[i]!;
     const invMass = body.invMass;
     if (invMass === 0) continue; // kinematic: keeps the velocity it was given
@@ -267,8 +279,8 @@ function integrateVelocities(
 }
 
 /** Semi-implicit Euler, position half: x += h v with the velocity just solved. */
-function integratePositions(awake: readonly Body[], s: Float64Array, h: number): void {
-  for (let i = 0; i < awake.length; i++) {
+function integratePositions(count: number, s: Float64Array, h: number): void {
+  for (let i = 0; i < count; i++) {
     const k = (i + 1) * STATE_STRIDE;
     const w = s[k + W]!;
     s[k + DP_X] += h * s[k + V_X]!;

@@ -239,7 +239,11 @@ export class World {
       if (this.settings.enableContinuous) this.solveContinuous();
       this.updateBroadPhase();
       if (this.settings.enableSleep) {
-        this.islands.sleepRestingIslands(this.solver.awake, this.settings.timeToSleep);
+        this.islands.sleepRestingIslands(
+          this.solver.awake,
+          this.solver.awakeCount,
+          this.settings.timeToSleep,
+        );
       }
       this.lastStep = dt;
       this.stepCount++;
@@ -441,7 +445,7 @@ export class World {
 
   private solveContinuous(): void {
     const awake = this.solver.awake;
-    for (let i = 0; i < awake.length; i++) {
+    for (let i = 0; i < this.solver.awakeCount; i++) {
       const body = awake[i]!;
       if (body.type !== 'dynamic' || !ContinuousSolver.isFast(body)) continue;
       this.continuous.solve(body, this.broadPhase, this.shapesById);
@@ -450,7 +454,7 @@ export class World {
 
   private updateBroadPhase(): void {
     const awake = this.solver.awake;
-    for (let i = 0; i < awake.length; i++) this.refreshProxies(awake[i]!, false);
+    for (let i = 0; i < this.solver.awakeCount; i++) this.refreshProxies(awake[i]!, false);
   }
 
   private flushPending(): void {
@@ -469,9 +473,9 @@ export class World {
   private dispatchEvents(): void {
     const manager = this.contactManager;
     const began = manager.began;
-    if (began.length > 0) {
+    if (manager.beganCount > 0) {
       const event = this.contactEvent;
-      for (let i = 0; i < began.length; i++) {
+      for (let i = 0; i < manager.beganCount; i++) {
         const contact = began[i]!;
         this.emitContact('contactBegin', event, contact.shapeA, contact.shapeB);
       }
@@ -517,7 +521,7 @@ export class World {
     const contacts = this.solver.constraints.contacts;
     const worldListeners = this.listeners.get('collision');
     const event = this.collisionEvent;
-    for (let i = 0; i < contacts.length; i++) {
+    for (let i = 0; i < this.solver.constraints.count; i++) {
       const contact = contacts[i]!;
       const bodyA = contact.bodyA;
       const bodyB = contact.bodyB;
@@ -569,7 +573,7 @@ export class World {
   private dispatchMoves(): void {
     const awake = this.solver.awake;
     const worldListeners = this.listeners.get('move');
-    for (let i = 0; i < awake.length; i++) {
+    for (let i = 0; i < this.solver.awakeCount; i++) {
       const body = awake[i]!;
       const listeners = body.listeners.get('move');
       if ((worldListeners === undefined && listeners === undefined) || body.removalPending)
