@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { reportMeasured } from './measured.ts';
 import { World, box, particle, regularPolygon, wall } from '@physical/engine';
 import type { Body } from '@physical/engine';
 
@@ -63,6 +64,7 @@ describe('determinism', () => {
     const b = new BigUint64Array(snapshot(second.bodies).buffer);
     let differences = 0;
     for (let i = 0; i < a.length; i++) if (a[i] !== b[i]) differences++;
+    reportMeasured('14 determinism, differing state bits', differences, 0);
     expect(differences).toBe(0);
     // And the pile really moved (a frozen scene would be trivially deterministic).
     const start = snapshot(build().bodies);

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { reportMeasured } from './measured.ts';
 import { World, particle } from '@physical/engine';
 
 // Law 7: a head-on elastic collision (e = 1, no friction) conserves momentum and kinetic energy:
@@ -96,6 +97,11 @@ describe('elastic head-on collision', () => {
     const expected1 = ((m1 - m2) * c.v1 + 2 * m2 * c.v2) / (m1 + m2);
     const expected2 = ((m2 - m1) * c.v2 + 2 * m1 * c.v1) / (m1 + m2);
     const scale = Math.max(Math.abs(c.v1), Math.abs(c.v2));
+    reportMeasured(
+      '7 head-on elastic, velocity error / speed',
+      Math.max(Math.abs(result.v1 - expected1), Math.abs(result.v2 - expected2)) / scale,
+      TOLERANCE,
+    );
     expect(Math.abs(result.v1 - expected1) / scale).toBeLessThanOrEqual(TOLERANCE);
     expect(Math.abs(result.v2 - expected2) / scale).toBeLessThanOrEqual(TOLERANCE);
     // Head-on: no sideways motion, no spin.

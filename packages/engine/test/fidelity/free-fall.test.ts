@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { reportMeasured } from './measured.ts';
 import { World, particle } from '@physical/engine';
 
 // Law 4: free fall is semi-implicit Euler, exactly. With n sub-steps of h = dt / n, after k
@@ -36,6 +37,11 @@ describe('free fall', () => {
         worstExact = Math.max(worstExact, exact / (g * t * DT));
         expect(exact).toBeLessThanOrEqual(g * t * DT);
       }
+      reportMeasured(
+        `4 free fall (${subSteps} sub-steps), error vs semi-implicit Euler (m)`,
+        worstEuler,
+        TOLERANCE,
+      );
       expect(worstEuler).toBeLessThanOrEqual(TOLERANCE);
       expect(worstExact).toBeLessThanOrEqual(1);
     },

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { reportMeasured } from './measured.ts';
 import { World, box, particle, regularPolygon } from '@physical/engine';
 
 // Law 1 (Newton's first law): with no force and no gravity a body keeps its velocity, and after
@@ -46,6 +47,8 @@ describe('inertia', () => {
       expect(b.linearVelocity.y).toBe(s.vy);
       expect(b.angularVelocity).toBe(0);
       const error = Math.hypot(b.position.x - (s.x + s.vx * t), b.position.y - (s.y + s.vy * t));
+      if (i === 0)
+        reportMeasured('1 inertia, position error after 10 s (m)', error, POSITION_TOLERANCE);
       expect(error).toBeLessThanOrEqual(POSITION_TOLERANCE);
     });
   });

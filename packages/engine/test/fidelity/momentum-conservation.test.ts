@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { reportMeasured } from './measured.ts';
 import { World, particle, polygon, regularPolygon } from '@physical/engine';
 import type { Body } from '@physical/engine';
 
@@ -100,6 +101,8 @@ describe('momentum conservation', () => {
     }
     // They really collided: many collision events.
     expect(collisions).toBeGreaterThan(300);
+    reportMeasured('6 linear momentum, worst relative error', worstLinear, LINEAR_TOLERANCE);
+    reportMeasured('6 angular momentum, worst relative error', worstAngular, ANGULAR_TOLERANCE);
     expect(worstLinear).toBeLessThanOrEqual(LINEAR_TOLERANCE);
     expect(worstAngular).toBeLessThanOrEqual(ANGULAR_TOLERANCE);
   });

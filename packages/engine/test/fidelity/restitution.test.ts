@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { reportMeasured } from './measured.ts';
 import { World, particle, wall } from '@physical/engine';
 
 // Law 8: Newton's law of restitution. A ball dropped from 1 m onto a wall leaves it at e times the
@@ -67,6 +68,12 @@ describe('restitution', () => {
       expect(Math.abs(impactSpeed / Math.sqrt(2 * G * DROP) - 1)).toBeLessThan(RATIO_TOLERANCE);
       const ratioError = Math.abs(reboundSpeed / impactSpeed - e) / e;
       const apexError = Math.abs(apexHeight - e * e * DROP) / (e * e * DROP);
+      reportMeasured(
+        `8 restitution e = ${e}, rebound/impact relative error`,
+        ratioError,
+        RATIO_TOLERANCE,
+      );
+      reportMeasured(`8 restitution e = ${e}, apex relative error`, apexError, APEX_TOLERANCE);
       expect(ratioError).toBeLessThanOrEqual(RATIO_TOLERANCE);
       expect(apexError).toBeLessThanOrEqual(APEX_TOLERANCE);
     },

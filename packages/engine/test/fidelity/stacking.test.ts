@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { reportMeasured } from './measured.ts';
 import { World, box } from '@physical/engine';
 import type { Body } from '@physical/engine';
 
@@ -54,6 +55,8 @@ describe('stacking', () => {
       boxes.push(world.add(box({ position: { x: 0, y: -0.5 - i }, width: 1, height: 1 })));
     }
     const { sag, topMove, awakeAt12 } = run(world, boxes, boxes[9]!);
+    reportMeasured('11 column: top box movement after settling (m)', topMove, TOP_TOLERANCE);
+    reportMeasured('11 column: sag under load (m)', sag, SAG_TOLERANCE);
     expect(sag).toBeLessThan(SAG_TOLERANCE);
     expect(topMove).toBeLessThan(TOP_TOLERANCE);
     expect(awakeAt12).toBe(0);
@@ -73,6 +76,8 @@ describe('stacking', () => {
     }
     expect(boxes).toHaveLength(210);
     const { sag, topMove, awakeAt12 } = run(world, boxes, boxes[boxes.length - 1]!);
+    reportMeasured('11 pyramid: top box movement after settling (m)', topMove, TOP_TOLERANCE);
+    reportMeasured('11 pyramid: sag under load (m)', sag, SAG_TOLERANCE);
     expect(sag).toBeLessThan(SAG_TOLERANCE);
     expect(topMove).toBeLessThan(TOP_TOLERANCE);
     expect(awakeAt12).toBe(0);

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { reportMeasured } from './measured.ts';
 import { World, box, particle, wall } from '@physical/engine';
 import type { Body } from '@physical/engine';
 
@@ -52,6 +53,11 @@ describe('tunneling', () => {
         `a ${projectile} at 100 m/s stays in front of a ${barrier} (tilt %f rad)`,
         (tilt) => {
           const closest = scenario(projectile, barrier, tilt);
+          reportMeasured(
+            '12 tunneling, closest distance in front of the wall (m, must stay > 0)',
+            closest,
+            0,
+          );
           expect(closest).toBeGreaterThan(0);
         },
       );
