@@ -40,10 +40,12 @@ export interface SolverSettings {
  *   prepare contacts (once per step, anchors and masses fixed for the step)
  *   for each sub-step h = dt / n:
  *     integrate velocities (semi-implicit Euler: forces, gravity, damping, drag)
+ *     point particle pairs' normals along their centres
  *     warm start, solve contacts with soft position correction
  *     integrate positions (x += h v, using the new v: semi-implicit Euler)
- *     relax contacts (solve again without the position correction's bias)
- *   restitution, store impulses, write the new poses back to the bodies
+ *     relax contacts (solve again without the position correction's bias); impacts bounce here,
+ *       at the moment of contact (see contact-solver.ts)
+ *   store impulses, write the new poses back to the bodies
  *
  * Why this rather than Baumgarte or split impulses: sub-stepping makes the contact stiffness
  * independent of mass ratios and step size (Catto, "Solver2D", 2024), stacks come to rest without
