@@ -1,4 +1,3 @@
-import { SPECULATIVE_DISTANCE } from '../core/constants.ts';
 import type { Circle } from '../geometry/circle.ts';
 import type { Transform } from '../math/transform.ts';
 import { makeFeatureId, type Manifold } from './manifold.ts';
@@ -15,8 +14,8 @@ export function collideCircles(
   b: Circle,
   xfB: Transform,
   out: Manifold,
-  speculativeDistance: number = SPECULATIVE_DISTANCE,
 ): void {
+  const speculativeDistance = out.speculativeDistance;
   // Centres relative to A's origin, world orientation.
   const ax = xfA.c * a.centerX - xfA.s * a.centerY;
   const ay = xfA.s * a.centerX + xfA.c * a.centerY;

@@ -1,4 +1,4 @@
-import { LINEAR_SLOP, SPECULATIVE_DISTANCE } from '../core/constants.ts';
+import { LINEAR_SLOP } from '../core/constants.ts';
 import type { Circle } from '../geometry/circle.ts';
 import type { Polygon } from '../geometry/polygon.ts';
 import type { Transform } from '../math/transform.ts';
@@ -20,8 +20,8 @@ export function collidePolygonAndCircle(
   b: Circle,
   xfB: Transform,
   out: Manifold,
-  speculativeDistance: number = SPECULATIVE_DISTANCE,
 ): void {
+  const speculativeDistance = out.speculativeDistance;
   const vertices = a.vertices;
   const normals = a.normals;
   const count = a.count;

@@ -1,4 +1,4 @@
-import { LINEAR_SLOP, MAX_POLYGON_VERTICES, SPECULATIVE_DISTANCE } from '../core/constants.ts';
+import { LINEAR_SLOP, MAX_POLYGON_VERTICES } from '../core/constants.ts';
 import type { Polygon } from '../geometry/polygon.ts';
 import type { Transform } from '../math/transform.ts';
 import { makeFeatureId, type Manifold } from './manifold.ts';
@@ -49,8 +49,8 @@ export function collidePolygons(
   b: Polygon,
   xfB: Transform,
   out: Manifold,
-  speculativeDistance: number = SPECULATIVE_DISTANCE,
 ): void {
+  const speculativeDistance = out.speculativeDistance;
   const countA = a.count;
   const countB = b.count;
   const originX = a.vertices[0]!;

@@ -1,4 +1,3 @@
-import { SPECULATIVE_DISTANCE } from '../core/constants.ts';
 import type { Circle } from '../geometry/circle.ts';
 import type { Segment } from '../geometry/segment.ts';
 import type { Transform } from '../math/transform.ts';
@@ -21,8 +20,8 @@ export function collideSegmentAndCircle(
   b: Circle,
   xfB: Transform,
   out: Manifold,
-  speculativeDistance: number = SPECULATIVE_DISTANCE,
 ): void {
+  const speculativeDistance = out.speculativeDistance;
   // Everything in A's frame.
   const wx = xfB.c * b.centerX - xfB.s * b.centerY + xfB.x - xfA.x;
   const wy = xfB.s * b.centerX + xfB.c * b.centerY + xfB.y - xfA.y;

@@ -1,4 +1,3 @@
-import { SPECULATIVE_DISTANCE } from '../core/constants.ts';
 import { createEmptyPolygon } from '../geometry/polygon.ts';
 import type { Polygon } from '../geometry/polygon.ts';
 import type { Segment } from '../geometry/segment.ts';
@@ -27,8 +26,8 @@ export function collideSegmentAndPolygon(
   b: Polygon,
   xfB: Transform,
   out: Manifold,
-  speculativeDistance: number = SPECULATIVE_DISTANCE,
 ): void {
+  const speculativeDistance = out.speculativeDistance;
   const ex = a.x2 - a.x1;
   const ey = a.y2 - a.y1;
   const length = Math.hypot(ex, ey);
@@ -48,7 +47,7 @@ export function collideSegmentAndPolygon(
     polygon.normals[3] = -ny;
     polygon.centroidX = 0.5 * (a.x1 + a.x2);
     polygon.centroidY = 0.5 * (a.y1 + a.y2);
-    collidePolygons(polygon, xfA, b, xfB, out, speculativeDistance);
+    collidePolygons(polygon, xfA, b, xfB, out);
     return;
   }
 

@@ -1,3 +1,5 @@
+import { SPECULATIVE_DISTANCE } from '../core/constants.ts';
+
 /**
  * One contact point of a manifold. The narrow phase writes the geometric fields; the solver
  * reads them and keeps the impulses, which persist across steps for warm starting
@@ -34,6 +36,12 @@ export class Manifold {
   normalY = 0;
   /** Number of valid points, 0..2. */
   pointCount = 0;
+  /**
+   * Input: keep points closer than this (m). The caller sets it before a collide function runs;
+   * it travels in the manifold rather than as an argument because V8 boxes a fractional number
+   * passed to a call it does not inline, and the narrow phase must not allocate.
+   */
+  speculativeDistance: number = SPECULATIVE_DISTANCE;
   readonly points: readonly [ManifoldPoint, ManifoldPoint] = [
     new ManifoldPoint(),
     new ManifoldPoint(),

@@ -153,22 +153,22 @@ export class Contact {
       (Math.sqrt(dvx * dvx + dvy * dvy) +
         Math.abs(bodyA.angularVelocityValue) * bodyA.maxExtent +
         Math.abs(bodyB.angularVelocityValue) * bodyB.maxExtent);
-    const margin = SPECULATIVE_DISTANCE + reach;
+    m.speculativeDistance = SPECULATIVE_DISTANCE + reach;
     switch (this.pairKind) {
       case PAIR_CIRCLES:
-        collideCircles(a as Circle, xfA, b as Circle, xfB, m, margin);
+        collideCircles(a as Circle, xfA, b as Circle, xfB, m);
         break;
       case PAIR_POLYGON_CIRCLE:
-        collidePolygonAndCircle(a as Polygon, xfA, b as Circle, xfB, m, margin);
+        collidePolygonAndCircle(a as Polygon, xfA, b as Circle, xfB, m);
         break;
       case PAIR_POLYGONS:
-        collidePolygons(a as Polygon, xfA, b as Polygon, xfB, m, margin);
+        collidePolygons(a as Polygon, xfA, b as Polygon, xfB, m);
         break;
       case PAIR_SEGMENT_CIRCLE:
-        collideSegmentAndCircle(a as Segment, xfA, b as Circle, xfB, m, margin);
+        collideSegmentAndCircle(a as Segment, xfA, b as Circle, xfB, m);
         break;
       default:
-        collideSegmentAndPolygon(a as Segment, xfA, b as Polygon, xfB, m, margin);
+        collideSegmentAndPolygon(a as Segment, xfA, b as Polygon, xfB, m);
         break;
     }
     if (reach > 0 && m.pointCount > 0) this.dropPassingPoints(dt);
