@@ -111,21 +111,36 @@ export class Contact {
    * approach along that point's normal.
    */
   update(dt: number): boolean {
-    const m = this.manifold;
-    const p0 = m.points[0];
-    const p1 = m.points[1];
-    const oldCount = m.pointCount;
-    const id0 = p0.id;
-    const id1 = p1.id;
-    const normal0 = p0.normalImpulse;
-    const tangent0 = p0.tangentImpulse;
-    const normal1 = p1.normalImpulse;
-    const tangent1 = p1.tangentImpulse;
-
-    const a = this.shapeA.geometry;
-    const b = this.shapeB.geometry;
     const bodyA = this.bodyA;
     const bodyB = this.bodyB;
+    const m = this.manifold;
+    // Bound on how much the gap can close this step: relative speed plus rotation at the rim.
+    const dvx = bodyB.velocityX - bodyA.velocityX;
+    const dvy = bodyB.velocityY - bodyA.velocityY;
+    const reach =
+      dt *
+      (Math.sqrt(dvx * dvx + dvy * dvy) +
+        Math.abs(bodyA.angularVelocityValue) * bodyA.maxExtent +
+        Math.abs(bodyB.angularVelocityValue) * bodyB.maxExtent);
+    const margin = SPECULATIVE_DISTANCE + reach;
+    // Most pairs whose fat boxes overlap are nowhere near touching: their tight boxes, kept
+    // current by the world, settle that before anything else of the contact is read.
+    const boxA = this.shapeA.aabb;
+    const boxB = this.shapeB.aabb;
+    if (
+      boxA.minX - margin > boxB.maxX ||
+      boxB.minX - margin > boxA.maxX ||
+      boxA.minY - margin > boxB.maxY ||
+      boxB.minY - margin > boxA.maxY
+    ) {
+      if (this.touching || m.pointCount > 0) {
+        m.pointCount = 0;
+        this.hasCache = false;
+        this.touching = false;
+      }
+      return false;
+    }
+
     const xfA = bodyA.transform;
     const xfB = bodyB.transform;
     // B's pose in A's frame.
@@ -137,6 +152,8 @@ export class Contact {
     const oy = xfB.y - xfA.y;
     const relX = cA * ox + sA * oy;
     const relY = -sA * ox + cA * oy;
+    const p0 = m.points[0];
+    const p1 = m.points[1];
     if (this.hasCache && this.poseIsClose(relX, relY, relC, relS)) {
       this.refreshFromCache();
       p0.maxNormalImpulse = 0;
@@ -145,15 +162,16 @@ export class Contact {
       this.stepTangentImpulse[0] = this.stepTangentImpulse[1] = 0;
       return this.touching;
     }
-    // Bound on how much the gap can close this step: relative speed plus rotation at the rim.
-    const dvx = bodyB.velocityX - bodyA.velocityX;
-    const dvy = bodyB.velocityY - bodyA.velocityY;
-    const reach =
-      dt *
-      (Math.sqrt(dvx * dvx + dvy * dvy) +
-        Math.abs(bodyA.angularVelocityValue) * bodyA.maxExtent +
-        Math.abs(bodyB.angularVelocityValue) * bodyB.maxExtent);
-    m.speculativeDistance = SPECULATIVE_DISTANCE + reach;
+    const oldCount = m.pointCount;
+    const id0 = p0.id;
+    const id1 = p1.id;
+    const normal0 = p0.normalImpulse;
+    const tangent0 = p0.tangentImpulse;
+    const normal1 = p1.normalImpulse;
+    const tangent1 = p1.tangentImpulse;
+    const a = this.shapeA.geometry;
+    const b = this.shapeB.geometry;
+    m.speculativeDistance = margin;
     switch (this.pairKind) {
       case PAIR_CIRCLES:
         collideCircles(a as Circle, xfA, b as Circle, xfB, m);
