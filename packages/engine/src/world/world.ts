@@ -1,4 +1,4 @@
-import { SPECULATIVE_DISTANCE } from '../core/constants.ts';
+import { AABB_MARGIN, SPECULATIVE_DISTANCE } from '../core/constants.ts';
 import { PhysicalError } from '../core/errors.ts';
 import { Listeners } from '../core/listeners.ts';
 import { requireFinite, requireNonNegative, requireVector } from '../core/validate.ts';
@@ -415,18 +415,24 @@ export class World {
   }
 
   /**
-   * The shape's box at the body's pose, grown by the speculative distance and stretched along the
-   * body's velocity over one more step, so the pair exists (and its speculative contact can stop
-   * the motion) before a fast body reaches what it will hit.
+   * The shape's box at the body's pose, grown by the speculative distance. A body that moves
+   * farther in a step than the fat box's margin also gets its box stretched along its velocity, so
+   * the pair exists (and its speculative contact can stop the motion) before it reaches what it
+   * will hit; slower bodies need no stretch, and stretching them would only make idle pairs.
    */
   private speculativeBox(shape: Shape): AABB {
     const body = shape.body;
     const tight = shape.computeAABB(body.transform);
     const dt = this.lastStep;
     const spin = Math.abs(body.angularVelocityValue) * body.maxExtent * dt;
-    const grow = SPECULATIVE_DISTANCE + spin;
-    const dx = body.velocityX * dt;
-    const dy = body.velocityY * dt;
+    let grow = SPECULATIVE_DISTANCE;
+    if (spin > AABB_MARGIN) grow += spin;
+    let dx = body.velocityX * dt;
+    let dy = body.velocityY * dt;
+    if (dx * dx + dy * dy <= AABB_MARGIN * AABB_MARGIN) {
+      dx = 0;
+      dy = 0;
+    }
     return this.proxyBox.set(
       tight.minX - grow + Math.min(dx, 0),
       tight.minY - grow + Math.min(dy, 0),
