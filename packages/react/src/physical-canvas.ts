@@ -93,7 +93,14 @@ const EVENTS = {
 // Layout effects do not run in server rendering; this avoids React 18's warning there.
 const useClientLayoutEffect = typeof document === 'undefined' ? useEffect : useLayoutEffect;
 
-function attributes(props: PhysicalCanvasProps): Record<string, string | undefined> {
+// React 19 sets a custom element's prop as the property of the same name when the element has
+// one (paused, origin, fit, debug, background), and as an attribute otherwise (the dashed names).
+// So each value has the type its property takes: a boolean for `paused` (not the attribute's ''),
+// the vector itself for `origin`. On the server React writes primitives as attributes and skips
+// objects, so rendered HTML stays valid.
+function attributes(
+  props: PhysicalCanvasProps,
+): Record<string, string | boolean | Vec2Like | undefined> {
   const { origin, viewBox, debug } = props;
   const text = (value: number | string | undefined): string | undefined =>
     value === undefined ? undefined : String(value);
@@ -101,13 +108,13 @@ function attributes(props: PhysicalCanvasProps): Record<string, string | undefin
     id: props.id,
     'aria-label': props['aria-label'],
     'pixels-per-meter': text(props.pixelsPerMeter),
-    origin: origin === undefined ? undefined : `${origin.x} ${origin.y}`,
+    origin,
     fit: props.fit,
     'view-box':
       viewBox === undefined || viewBox === null
         ? undefined
         : `${viewBox.x} ${viewBox.y} ${viewBox.width} ${viewBox.height}`,
-    paused: props.paused === true ? '' : undefined,
+    paused: props.paused === true,
     'time-scale': text(props.timeScale),
     background: props.background,
     debug: debug === undefined ? undefined : typeof debug === 'string' ? debug : debug.join(' '),

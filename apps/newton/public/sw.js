@@ -1,0 +1,70 @@
+// Newton's service worker: precaches every built file on install (the list and its version come
+// from precache-manifest.js, written by the build), answers from the cache first, and falls back
+// to the cached page for navigations, so the app reloads with the network off after one visit.
+/* global self, caches, fetch, URL, Request, Response */
+self.importScripts('./precache-manifest.js');
+
+const { version, files } = self.__PRECACHE;
+const CACHE = `newton-${version}`;
+
+self.addEventListener('install', (event) => {
+  event.waitUntil(
+    caches
+      .open(CACHE)
+      .then((cache) => cache.addAll(files.map((file) => new Request(file, { cache: 'reload' }))))
+      .then(() => self.skipWaiting()),
+  );
+});
+
+self.addEventListener('activate', (event) => {
+  event.waitUntil(
+    caches
+      .keys()
+      .then((keys) =>
+        Promise.all(
+          keys
+            .filter((key) => key.startsWith('newton-') && key !== CACHE)
+            .map((key) => caches.delete(key)),
+        ),
+      )
+      .then(() => self.clients.claim()),
+  );
+});
+
+self.addEventListener('fetch', (event) => {
+  const request = event.request;
+  if (request.method !== 'GET' || new URL(request.url).origin !== self.location.origin) return;
+  if (request.mode === 'navigate') {
+    // The page: the network when there is one (updates), else the cached copy.
+    event.respondWith(
+      fetch(request)
+        .then((response) => {
+          if (response.ok) {
+            const copy = response.clone();
+            caches.open(CACHE).then((cache) => cache.put('./index.html', copy));
+          }
+          return response;
+        })
+        .catch(() =>
+          caches
+            .match('./index.html', { ignoreSearch: true })
+            .then((cached) => cached ?? Response.error()),
+        ),
+    );
+    return;
+  }
+  // Hashed assets and icons: the cache first, then the network (and keep a copy).
+  event.respondWith(
+    caches.match(request, { ignoreSearch: true }).then(
+      (cached) =>
+        cached ??
+        fetch(request).then((response) => {
+          if (response.ok) {
+            const copy = response.clone();
+            caches.open(CACHE).then((cache) => cache.put(request, copy));
+          }
+          return response;
+        }),
+    ),
+  );
+});

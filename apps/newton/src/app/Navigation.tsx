@@ -1,0 +1,112 @@
+import {
+  BottomNavigation,
+  BottomNavigationAction,
+  Box,
+  ButtonBase,
+  Typography,
+} from '@mui/material';
+import type { ReactElement } from 'react';
+import { useI18n } from '../i18n/i18n.tsx';
+import { ForceIcon, InertiaIcon, ReactionIcon } from './icons.tsx';
+import { SCREENS, type ScreenId } from './screens.ts';
+
+const ICONS: Record<ScreenId, ReactElement> = {
+  inertia: <InertiaIcon />,
+  forces: <ForceIcon />,
+  reactions: <ReactionIcon />,
+};
+
+export interface NavigationProps {
+  readonly current: ScreenId;
+  readonly onChange: (screen: ScreenId) => void;
+}
+
+/** Bottom navigation on phones. */
+export function BottomNav({ current, onChange }: NavigationProps) {
+  const { t } = useI18n();
+  return (
+    <Box component="nav" aria-label={t('app.navigation')}>
+      <BottomNavigation
+        showLabels
+        value={current}
+        onChange={(_event, value: ScreenId) => onChange(value)}
+        sx={{ bgcolor: '#1e1e1e', borderTop: '1px solid rgba(255, 255, 255, 0.08)', height: 60 }}
+      >
+        {SCREENS.map(({ id, label }) => (
+          <BottomNavigationAction
+            key={id}
+            value={id}
+            label={t(label)}
+            icon={ICONS[id]}
+            aria-current={current === id ? 'page' : undefined}
+            href={`#${id}`}
+            data-nav={id}
+            sx={{ '&.Mui-selected': { color: 'primary.main' } }}
+          />
+        ))}
+      </BottomNavigation>
+    </Box>
+  );
+}
+
+/** A Material navigation rail on wide screens. */
+export function NavRail({ current, onChange }: NavigationProps) {
+  const { t } = useI18n();
+  return (
+    <Box
+      component="nav"
+      aria-label={t('app.navigation')}
+      sx={{
+        width: 88,
+        flexShrink: 0,
+        bgcolor: '#1e1e1e',
+        borderRight: '1px solid rgba(255, 255, 255, 0.08)',
+        display: 'flex',
+        flexDirection: 'column',
+        alignItems: 'center',
+        gap: 1.5,
+        pt: 2,
+      }}
+    >
+      {SCREENS.map(({ id, label }) => {
+        const selected = current === id;
+        return (
+          <ButtonBase
+            key={id}
+            href={`#${id}`}
+            onClick={(event) => {
+              event.preventDefault();
+              onChange(id);
+            }}
+            aria-current={selected ? 'page' : undefined}
+            data-nav={id}
+            sx={{
+              flexDirection: 'column',
+              gap: 0.5,
+              width: 80,
+              py: 0.5,
+              borderRadius: 2,
+              color: selected ? 'primary.main' : 'text.secondary',
+            }}
+          >
+            <Box
+              sx={{
+                width: 56,
+                height: 32,
+                borderRadius: 4,
+                display: 'grid',
+                placeItems: 'center',
+                bgcolor: selected ? 'rgba(130, 177, 255, 0.16)' : 'transparent',
+              }}
+            >
+              {ICONS[id]}
+            </Box>
+            <Typography variant="caption" sx={{ fontWeight: selected ? 700 : 500 }}>
+              {t(label)}
+            </Typography>
+          </ButtonBase>
+        );
+      })}
+    </Box>
+  );
+}

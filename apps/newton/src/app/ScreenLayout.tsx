@@ -1,0 +1,85 @@
+import { Box, Typography } from '@mui/material';
+import type { ReactNode } from 'react';
+import { SimControls, type SimControlsProps } from './SimControls.tsx';
+
+export interface ScreenLayoutProps {
+  readonly id: string;
+  readonly active: boolean;
+  /** The law's statement, shown on top. */
+  readonly law: string;
+  /** The simulation: takes the room that is left. */
+  readonly stage: ReactNode;
+  /** Readouts, graphs and the screen's own buttons. */
+  readonly panel: ReactNode;
+  readonly controls: SimControlsProps;
+}
+
+/**
+ * A screen: the law on top, the canvas filling the rest, then readouts and controls within thumb
+ * reach. Side by side (canvas left, panel right) when the screen is wide and short.
+ */
+export function ScreenLayout({ id, active, law, stage, panel, controls }: ScreenLayoutProps) {
+  return (
+    <Box
+      component="section"
+      id={id}
+      aria-labelledby={`${id}-law`}
+      sx={{
+        display: active ? 'flex' : 'none',
+        flexDirection: 'column',
+        height: '100%',
+        minHeight: 0,
+      }}
+    >
+      <Typography
+        id={`${id}-law`}
+        component="p"
+        variant="body2"
+        sx={{
+          px: 2,
+          py: 1,
+          lineHeight: 1.4,
+          color: 'text.primary',
+          bgcolor: 'rgba(130, 177, 255, 0.08)',
+          borderBottom: '1px solid rgba(255, 255, 255, 0.08)',
+        }}
+      >
+        {law}
+      </Typography>
+      <Box
+        sx={{
+          flex: 1,
+          minHeight: 0,
+          display: 'flex',
+          flexDirection: 'column',
+          '@media (min-width: 960px), (orientation: landscape) and (min-width: 640px)': {
+            flexDirection: 'row',
+          },
+        }}
+      >
+        <Box sx={{ flex: 1, minHeight: 180, minWidth: 0, position: 'relative', display: 'flex' }}>
+          {stage}
+        </Box>
+        <Box
+          sx={{
+            display: 'flex',
+            flexDirection: 'column',
+            gap: 0.5,
+            px: 1,
+            pt: 0.5,
+            '@media (min-width: 960px), (orientation: landscape) and (min-width: 640px)': {
+              width: 360,
+              overflowY: 'auto',
+              borderLeft: '1px solid rgba(255, 255, 255, 0.08)',
+            },
+          }}
+        >
+          {panel}
+        </Box>
+      </Box>
+      <Box sx={{ borderTop: '1px solid rgba(255, 255, 255, 0.08)' }}>
+        <SimControls {...controls} />
+      </Box>
+    </Box>
+  );
+}

@@ -1,0 +1,84 @@
+import { Box, IconButton, ToggleButton, Tooltip, Typography } from '@mui/material';
+import { useI18n } from '../i18n/i18n.tsx';
+import { PauseIcon, PlayIcon, ResetIcon, SlowIcon, StepIcon } from './icons.tsx';
+
+export interface SimControlsProps {
+  readonly paused: boolean;
+  readonly slow: boolean;
+  /** Simulated time (s). */
+  readonly time: number;
+  readonly onTogglePlay: () => void;
+  readonly onStep: () => void;
+  readonly onToggleSlow: () => void;
+  readonly onReset: () => void;
+}
+
+/** Play / pause, single step, slow motion and reset, with the simulated time. */
+export function SimControls(props: SimControlsProps) {
+  const { t, unit } = useI18n();
+  const { paused, slow } = props;
+  const playLabel = paused ? t('controls.play') : t('controls.pause');
+  return (
+    <Box
+      role="toolbar"
+      aria-label={t('controls.label')}
+      sx={{ display: 'flex', alignItems: 'center', gap: 0.5, px: 1, minHeight: 52 }}
+    >
+      <Tooltip title={playLabel}>
+        <IconButton
+          aria-label={playLabel}
+          onClick={props.onTogglePlay}
+          color="primary"
+          size="large"
+          data-action="play"
+        >
+          {paused ? <PlayIcon /> : <PauseIcon />}
+        </IconButton>
+      </Tooltip>
+      <Tooltip title={t('controls.step')}>
+        <span>
+          <IconButton
+            aria-label={t('controls.step')}
+            onClick={props.onStep}
+            disabled={!paused}
+            size="large"
+            data-action="step"
+          >
+            <StepIcon />
+          </IconButton>
+        </span>
+      </Tooltip>
+      <Tooltip title={t('controls.slow')}>
+        <ToggleButton
+          value="slow"
+          selected={slow}
+          onChange={props.onToggleSlow}
+          aria-label={t('controls.slow')}
+          size="small"
+          color="primary"
+          sx={{ border: 0, borderRadius: '50%', p: 1.25 }}
+          data-action="slow"
+        >
+          <SlowIcon />
+        </ToggleButton>
+      </Tooltip>
+      <Tooltip title={t('controls.reset')}>
+        <IconButton
+          aria-label={t('controls.reset')}
+          onClick={props.onReset}
+          size="large"
+          data-action="reset"
+        >
+          <ResetIcon />
+        </IconButton>
+      </Tooltip>
+      <Typography
+        variant="body2"
+        sx={{ ml: 'auto', fontVariantNumeric: 'tabular-nums', color: 'text.secondary', pr: 1 }}
+        data-readout="time"
+      >
+        {t('controls.time', { value: unit(props.time, 's', 2, 2) })}
+      </Typography>
+    </Box>
+  );
+}

@@ -1,0 +1,22 @@
+import { createTheme } from '@mui/material';
+
+/** Material Design's dark theme, as the thesis chose; system fonts keep the download small. */
+export const theme = createTheme({
+  palette: {
+    mode: 'dark',
+    primary: { main: '#82b1ff' },
+    secondary: { main: '#ffb74d' },
+    background: { default: '#121212', paper: '#1e1e1e' },
+  },
+  typography: {
+    fontFamily: 'Roboto, system-ui, -apple-system, "Segoe UI", "Helvetica Neue", Arial, sans-serif',
+    button: { textTransform: 'none', fontWeight: 600 },
+  },
+  shape: { borderRadius: 12 },
+  components: {
+    MuiButton: { defaultProps: { disableElevation: true } },
+  },
+});
+
+/** Colours of the two squares on the Forces screen (and of their graph lines). */
+export const SQUARE_COLORS = ['#4fc3f7', '#ffb74d'] as const;

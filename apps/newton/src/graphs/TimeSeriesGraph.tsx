@@ -1,0 +1,197 @@
+import { Box, Typography } from '@mui/material';
+import { useEffect, useRef } from 'react';
+import { useI18n } from '../i18n/i18n.tsx';
+import { niceStep, type TimeSeries } from './time-series.ts';
+
+/** One line of a graph. */
+export interface GraphLine {
+  readonly series: TimeSeries;
+  readonly color: string;
+  readonly label: string;
+  /** Dashed, so a line lying exactly on another stays visible. */
+  readonly dashed?: boolean;
+}
+
+export interface TimeSeriesGraphProps {
+  readonly title: string;
+  /** Unit of the vertical axis, e.g. "m/s". */
+  readonly unit: string;
+  readonly lines: readonly GraphLine[];
+  /** Seconds shown (the graph scrolls once time passes it). */
+  readonly window?: number;
+  /** The vertical axis always includes [0, minSpan]. */
+  readonly minSpan?: number;
+  readonly height?: number;
+}
+
+const AXIS = 'rgba(255, 255, 255, 0.6)';
+const GRID = 'rgba(255, 255, 255, 0.1)';
+const TEXT = 'rgba(255, 255, 255, 0.7)';
+
+/**
+ * A small live time-series graph on a canvas: each line's samples against simulated time, with
+ * a grid, ticks and a legend. Redraws on animation frames only when a series changed.
+ */
+export function TimeSeriesGraph({
+  title,
+  unit,
+  lines,
+  window = 10,
+  minSpan = 1,
+  height = 120,
+}: TimeSeriesGraphProps) {
+  const canvasRef = useRef<HTMLCanvasElement | null>(null);
+  const { number } = useI18n();
+  const latest = useRef({ lines, window, minSpan, number, unit });
+  latest.current = { lines, window, minSpan, number, unit };
+
+  useEffect(() => {
+    const canvas = canvasRef.current!;
+    let frame = 0;
+    let drawn = '';
+    const draw = (): void => {
+      frame = requestAnimationFrame(draw);
+      const { lines, window, minSpan, number, unit } = latest.current;
+      const width = canvas.clientWidth;
+      const heightPx = canvas.clientHeight;
+      const ratio = globalThis.devicePixelRatio || 1;
+      const key = `${lines.map((line) => line.series.version).join(',')}|${width}x${heightPx}@${ratio}|${unit}|${number(1.5)}`;
+      if (key === drawn || width === 0 || heightPx === 0) return;
+      drawn = key;
+      canvas.width = Math.round(width * ratio);
+      canvas.height = Math.round(heightPx * ratio);
+      const context = canvas.getContext('2d')!;
+      context.setTransform(ratio, 0, 0, ratio, 0, 0);
+      context.clearRect(0, 0, width, heightPx);
+      const left = 44;
+      const right = 8;
+      const top = 8;
+      const bottom = 20;
+      const plotW = Math.max(10, width - left - right);
+      const plotH = Math.max(10, heightPx - top - bottom);
+
+      let tEnd = 0;
+      let low = 0;
+      let high = minSpan;
+      for (const { series } of lines) {
+        tEnd = Math.max(tEnd, series.lastTime);
+      }
+      const tStart = Math.max(0, tEnd - window);
+      for (const { series } of lines) {
+        for (let i = 0; i < series.times.length; i++) {
+          if (series.times[i]! < tStart) continue;
+          low = Math.min(low, series.values[i]!);
+          high = Math.max(high, series.values[i]!);
+        }
+      }
+      const pad = (high - low) * 0.08;
+      high += pad;
+      if (low < 0) low -= pad;
+      const xOf = (t: number): number => left + ((t - tStart) / window) * plotW;
+      const yOf = (v: number): number => top + (1 - (v - low) / (high - low)) * plotH;
+
+      context.font = '11px system-ui, sans-serif';
+      context.lineWidth = 1;
+      // Horizontal grid and value ticks.
+      const vStep = niceStep(high - low, 4);
+      context.textAlign = 'right';
+      context.textBaseline = 'middle';
+      for (let v = Math.ceil(low / vStep) * vStep; v <= high; v += vStep) {
+        const y = Math.round(yOf(v)) + 0.5;
+        context.strokeStyle = Math.abs(v) < vStep * 1e-6 ? AXIS : GRID;
+        context.beginPath();
+        context.moveTo(left, y);
+        context.lineTo(left + plotW, y);
+        context.stroke();
+        context.fillStyle = TEXT;
+        context.fillText(number(v, 2), left - 4, y);
+      }
+      // Time ticks.
+      const tStep = niceStep(window, 5);
+      context.textAlign = 'center';
+      context.textBaseline = 'top';
+      for (let t = Math.ceil(tStart / tStep) * tStep; t <= tStart + window + 1e-9; t += tStep) {
+        const x = Math.round(xOf(t)) + 0.5;
+        context.strokeStyle = GRID;
+        context.beginPath();
+        context.moveTo(x, top);
+        context.lineTo(x, top + plotH);
+        context.stroke();
+        context.fillStyle = TEXT;
+        context.fillText(`${number(t, 1)} s`, Math.min(x, left + plotW - 12), top + plotH + 4);
+      }
+      context.strokeStyle = AXIS;
+      context.strokeRect(left + 0.5, top + 0.5, plotW, plotH);
+      context.fillStyle = TEXT;
+      context.textAlign = 'left';
+      context.textBaseline = 'top';
+      context.fillText(unit, 2, 2);
+      // Lines.
+      context.save();
+      context.beginPath();
+      context.rect(left, top, plotW, plotH);
+      context.clip();
+      context.lineWidth = 2;
+      context.lineJoin = 'round';
+      for (const { series, color, dashed } of lines) {
+        context.strokeStyle = color;
+        context.setLineDash(dashed === true ? [6, 5] : []);
+        context.beginPath();
+        let started = false;
+        for (let i = 0; i < series.times.length; i++) {
+          if (series.times[i]! < tStart - 0.1) continue;
+          const x = xOf(series.times[i]!);
+          const y = yOf(series.values[i]!);
+          if (started) context.lineTo(x, y);
+          else context.moveTo(x, y);
+          started = true;
+        }
+        context.stroke();
+      }
+      context.restore();
+    };
+    frame = requestAnimationFrame(draw);
+    return () => cancelAnimationFrame(frame);
+  }, []);
+
+  const summary = lines
+    .map((line) =>
+      line.series.last === null
+        ? line.label
+        : `${line.label}: ${number(line.series.last, 2)} ${unit}`,
+    )
+    .join(', ');
+
+  return (
+    <Box component="figure" sx={{ m: 0, minWidth: 0, flex: 1 }}>
+      <Box
+        component="figcaption"
+        sx={{ display: 'flex', columnGap: 1, alignItems: 'center', flexWrap: 'wrap', px: 0.5 }}
+      >
+        <Typography variant="caption" sx={{ color: 'text.secondary', mr: 'auto' }}>
+          {title}
+        </Typography>
+        {lines.length > 1 &&
+          lines.map((line) => (
+            <Typography
+              key={line.label}
+              variant="caption"
+              sx={{ display: 'inline-flex', alignItems: 'center', gap: 0.5 }}
+            >
+              <Box
+                component="span"
+                sx={{ width: 12, height: 3, borderRadius: 1, bgcolor: line.color }}
+              />
+              {line.label}
+            </Typography>
+          ))}
+      </Box>
+      <canvas
+        ref={canvasRef}
+        role="img"
+        aria-label={`${title}. ${summary}`}
+        style={{ display: 'block', width: '100%', height }}
+      />
+    </Box>
+  );
+}

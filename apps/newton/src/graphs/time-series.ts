@@ -1,0 +1,54 @@
+/** Samples of one quantity over simulated time, oldest first, limited to a window. */
+export class TimeSeries {
+  readonly times: number[] = [];
+  readonly values: number[] = [];
+  /** Changes whenever a sample is added or the series is cleared (graphs redraw on change). */
+  version = 0;
+
+  constructor(
+    /** Seconds of history kept. */
+    readonly window = 10,
+  ) {}
+
+  /** Adds a sample; a time at or before the last one replaces the history after it. */
+  push(time: number, value: number): void {
+    while (this.times.length > 0 && this.times[this.times.length - 1]! >= time) {
+      this.times.pop();
+      this.values.pop();
+    }
+    this.times.push(time);
+    this.values.push(value);
+    const oldest = time - this.window * 1.5;
+    let drop = 0;
+    while (drop < this.times.length && this.times[drop]! < oldest) drop++;
+    if (drop > 0) {
+      this.times.splice(0, drop);
+      this.values.splice(0, drop);
+    }
+    this.version++;
+  }
+
+  clear(): void {
+    this.times.length = 0;
+    this.values.length = 0;
+    this.version++;
+  }
+
+  get last(): number | null {
+    return this.values.length === 0 ? null : this.values[this.values.length - 1]!;
+  }
+
+  get lastTime(): number {
+    return this.times.length === 0 ? 0 : this.times[this.times.length - 1]!;
+  }
+}
+
+/** "Nice" tick spacing (1, 2 or 5 times a power of ten) for about `count` ticks over `span`. */
+export function niceStep(span: number, count: number): number {
+  if (!(span > 0)) return 1;
+  const raw = span / Math.max(1, count);
+  const power = 10 ** Math.floor(Math.log10(raw));
+  const fraction = raw / power;
+  const nice = fraction <= 1 ? 1 : fraction <= 2 ? 2 : fraction <= 5 ? 5 : 10;
+  return nice * power;
+}

@@ -1,0 +1,166 @@
+import { Box, ButtonBase, Typography } from '@mui/material';
+import { drawArrow, type OverlayDrawer, type PhysicalCanvasElement } from '@physical/canvas';
+import { PhysicalCanvas } from '@physical/react';
+import { forwardRef, useCallback, useEffect, useImperativeHandle, useRef } from 'react';
+import { EditIcon } from '../../app/icons.tsx';
+import { simulatedTime } from '../../app/use-simulation.ts';
+import type { TimeSeries } from '../../graphs/time-series.ts';
+import { useI18n } from '../../i18n/i18n.tsx';
+import {
+  SQUARE_SIZE,
+  START_X,
+  TRACK_HEIGHT,
+  TRACK_LENGTH,
+  arrowLength,
+  displacement,
+  opacityFor,
+  type ForcesTrack,
+} from './forces-scene.ts';
+
+export interface TrackViewProps {
+  readonly name: string;
+  readonly track: ForcesTrack;
+  readonly color: string;
+  readonly paused: boolean;
+  readonly timeScale: number;
+  readonly position: TimeSeries;
+  readonly velocity: TimeSeries;
+  readonly onEdit: () => void;
+  readonly onPauseChange: (paused: boolean) => void;
+}
+
+const VIEW_BOX = { x: -0.15, y: 0, width: TRACK_LENGTH + 0.3, height: TRACK_HEIGHT };
+
+/** One track of the Forces screen: the canvas, its ruler and force arrow, its label and readouts. */
+export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps>(
+  function TrackView(props, ref) {
+    const { name, track, color, paused, timeScale, position, velocity, onEdit } = props;
+    const { t, unit } = useI18n();
+    const canvasRef = useRef<PhysicalCanvasElement | null>(null);
+    useImperativeHandle(ref, () => canvasRef.current!, []);
+    const trackRef = useRef(track);
+    trackRef.current = track;
+
+    useEffect(() => {
+      canvasRef.current?.setStyle(track.square, {
+        fill: color,
+        stroke: '#ffffff',
+        lineWidth: 1.5,
+        opacity: opacityFor(track.settings.mass),
+        label: name,
+        labelColor: '#ffffff',
+      });
+    }, [track, color, name]);
+
+    const drawOverlay = useCallback<OverlayDrawer>(
+      (context, canvas) => {
+        const current = trackRef.current;
+        const time = simulatedTime(current.world);
+        if (position.times.length === 0 || time > position.lastTime) {
+          position.push(time, displacement(current));
+          velocity.push(time, current.square.linearVelocity.x);
+        }
+        const scale = canvas.viewport.scale;
+        // Ruler: a tick every metre from the start, labelled every two.
+        context.save();
+        context.strokeStyle = 'rgba(255, 255, 255, 0.35)';
+        context.lineWidth = 1 / scale;
+        context.beginPath();
+        const base = TRACK_HEIGHT - 0.02;
+        context.moveTo(START_X, base);
+        context.lineTo(TRACK_LENGTH, base);
+        for (let metre = 0; START_X + metre <= TRACK_LENGTH; metre++) {
+          const x = START_X + metre;
+          context.moveTo(x, base);
+          context.lineTo(x, base - (metre % 2 === 0 ? 0.22 : 0.12));
+        }
+        context.stroke();
+        const ratio = canvas.viewport.devicePixelRatio;
+        context.setTransform(ratio, 0, 0, ratio, 0, 0);
+        context.fillStyle = 'rgba(255, 255, 255, 0.7)';
+        context.font = '11px system-ui, sans-serif';
+        context.textAlign = 'center';
+        context.textBaseline = 'bottom';
+        for (let metre = 2; START_X + metre <= TRACK_LENGTH - 0.5; metre += 2) {
+          const point = canvas.worldToScreen({ x: START_X + metre, y: base - 0.24 });
+          context.fillText(`${metre} m`, point.x, point.y);
+        }
+        context.restore();
+        const square = current.square.position;
+        drawArrow(
+          context,
+          scale,
+          { x: square.x + SQUARE_SIZE / 2, y: square.y },
+          { x: arrowLength(current.force), y: 0 },
+          { kind: 'force', width: 4 },
+        );
+      },
+      [position, velocity],
+    );
+
+    const settings = track.settings;
+    const forceText = unit(track.force, 'N', 2);
+    return (
+      <Box sx={{ position: 'relative', flex: 1, minHeight: 96, maxHeight: 180, display: 'flex' }}>
+        <PhysicalCanvas
+          ref={canvasRef}
+          paused={paused}
+          world={track.world}
+          fit="contain"
+          viewBox={VIEW_BOX}
+          timeScale={timeScale}
+          drawOverlay={drawOverlay}
+          onBodyTap={onEdit}
+          onBackgroundTap={onEdit}
+          onPauseChange={({ paused: value }) => props.onPauseChange(value)}
+          aria-label={t('forces.canvas', {
+            name,
+            mass: unit(settings.mass, 'kg', 2),
+            force: forceText,
+          })}
+          style={{ flex: 1, height: 'auto' }}
+        />
+        <ButtonBase
+          onClick={onEdit}
+          data-action={`edit-${name}`}
+          sx={{
+            position: 'absolute',
+            top: 4,
+            left: 4,
+            px: 1,
+            py: 0.25,
+            gap: 0.75,
+            borderRadius: 2,
+            bgcolor: 'rgba(0, 0, 0, 0.55)',
+            border: `1px solid ${color}`,
+            typography: 'body2',
+          }}
+        >
+          <Box component="span" sx={{ color, fontWeight: 700 }}>
+            {name}
+          </Box>
+          <span>
+            {unit(settings.mass, 'kg', 2)} · {unit(settings.acceleration, 'm/s²', 2)} · F ={' '}
+            <b data-readout={`force-${name}`}>{forceText}</b>
+          </span>
+          <EditIcon sx={{ fontSize: 16 }} />
+        </ButtonBase>
+        <Typography
+          variant="caption"
+          sx={{
+            position: 'absolute',
+            right: 6,
+            top: 6,
+            px: 0.75,
+            borderRadius: 1,
+            bgcolor: 'rgba(0, 0, 0, 0.55)',
+            fontVariantNumeric: 'tabular-nums',
+          }}
+        >
+          x = <span data-readout={`x-${name}`}>{unit(displacement(track), 'm', 3, 3)}</span>
+          {'  '}v = {unit(track.square.linearVelocity.x, 'm/s', 2, 2)}
+        </Typography>
+      </Box>
+    );
+  },
+);

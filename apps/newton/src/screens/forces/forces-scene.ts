@@ -1,0 +1,83 @@
+import { type Body, type Force, World, box, wall } from '@physical/engine';
+
+/** Track length (m): the ruler runs from 0 at the square's start. */
+export const TRACK_LENGTH = 12;
+export const TRACK_HEIGHT = 2;
+/** Side of the square (m). */
+export const SQUARE_SIZE = 1;
+/** Where the square's centre starts (m from the track's left end). */
+export const START_X = 0.7;
+export const MIN_MASS = 0.5;
+export const MAX_MASS = 5;
+export const MIN_ACCELERATION = 0;
+export const MAX_ACCELERATION = 5;
+
+/** What the learner sets for one square. */
+export interface SquareSettings {
+  /** kg */
+  readonly mass: number;
+  /** m/s^2 */
+  readonly acceleration: number;
+}
+
+/** One of the Forces screen's two tracks: a world with a square at the left end. */
+export interface ForcesTrack {
+  readonly world: World;
+  readonly square: Body;
+  readonly settings: SquareSettings;
+  /** The force that gives the square the desired acceleration: F = m a (N). */
+  readonly force: number;
+}
+
+/** Newton's second law solved for the force (N) from a mass (kg) and an acceleration (m/s^2). */
+export function forceFor(mass: number, acceleration: number): number {
+  return mass * acceleration;
+}
+
+/** The square's opacity: the heavier, the more opaque (0.25 at the lightest, 1 at the heaviest). */
+export function opacityFor(mass: number): number {
+  const t = (mass - MIN_MASS) / (MAX_MASS - MIN_MASS);
+  return 0.25 + 0.75 * Math.min(1, Math.max(0, t));
+}
+
+/** Length (m) of the force arrow: it grows in proportion to the force. */
+export function arrowLength(force: number): number {
+  return 0.3 * force;
+}
+
+/** Builds a frictionless, gravity-free track with the square at rest at the left. */
+export function createForcesTrack(settings: SquareSettings): ForcesTrack {
+  const world = new World({ gravity: { x: 0, y: 0 }, enableSleep: false });
+  // A stop at the right end so the square stays in view.
+  world.add(
+    wall({
+      from: { x: TRACK_LENGTH, y: 0 },
+      to: { x: TRACK_LENGTH, y: TRACK_HEIGHT },
+      friction: 0,
+      restitution: 0,
+    }),
+  );
+  const square = world.add(
+    box({
+      position: { x: START_X, y: TRACK_HEIGHT / 2 },
+      width: SQUARE_SIZE,
+      height: SQUARE_SIZE,
+      density: settings.mass / (SQUARE_SIZE * SQUARE_SIZE),
+      friction: 0,
+      restitution: 0,
+      fixedRotation: true,
+    }),
+  );
+  square.mass = settings.mass;
+  return { world, square, settings, force: forceFor(settings.mass, settings.acceleration) };
+}
+
+/** Applies the constant force F = m a to the square, to the right. */
+export function startTrack(track: ForcesTrack): Force {
+  return track.square.applyForce({ x: track.force, y: 0 }, { duration: 'constant' });
+}
+
+/** The square's displacement from its start (m), as the ruler shows it. */
+export function displacement(track: ForcesTrack): number {
+  return track.square.position.x - START_X;
+}

@@ -1,0 +1,100 @@
+import { type Body, type Force, World, particle, wall } from '@physical/engine';
+import type { Tilt } from '../../sensors/device-tilt.ts';
+
+/** Force (N) on every particle when the device is tilted fully (|tilt| = 1). */
+export const PUSH_FORCE = 1;
+export const MIN_RADIUS = 0.15;
+export const MAX_RADIUS = 0.45;
+/** kg/m^2: one density for all, so a particle's size shows its mass. */
+export const PARTICLE_DENSITY = 1;
+
+/** What the app keeps about a particle besides the body. */
+export interface ParticleInfo {
+  readonly push: Force;
+  /** Normal impulse (N s) of the particle's last collision, or null before the first. */
+  lastImpulse: number | null;
+}
+
+/** The Reactions screen's world: walls around and inside, particles the learner adds. */
+export interface ReactionsScene {
+  readonly world: World;
+  readonly width: number;
+  readonly height: number;
+  readonly particles: Map<Body, ParticleInfo>;
+  tilt: Tilt;
+}
+
+/** Builds the walls of a `width` x `height` metre box (y-down), with two slanted walls inside. */
+export function createReactionsScene(width: number, height: number): ReactionsScene {
+  const world = new World({ gravity: { x: 0, y: 0 }, restitutionThreshold: 0.05 });
+  const corners = [
+    { x: 0, y: 0 },
+    { x: width, y: 0 },
+    { x: width, y: height },
+    { x: 0, y: height },
+  ];
+  for (let i = 0; i < 4; i++) {
+    world.add(wall({ from: corners[i]!, to: corners[(i + 1) % 4]!, friction: 0.3 }));
+  }
+  // Two shelves inside: something else to bounce off.
+  world.add(
+    wall({
+      from: { x: width * 0.15, y: height * 0.3 },
+      to: { x: width * 0.45, y: height * 0.38 },
+      friction: 0.3,
+    }),
+  );
+  world.add(
+    wall({
+      from: { x: width * 0.55, y: height * 0.68 },
+      to: { x: width * 0.85, y: height * 0.6 },
+      friction: 0.3,
+    }),
+  );
+  return { world, width, height, particles: new Map(), tilt: { x: 0, y: 0 } };
+}
+
+/** The push (N) on each particle for a tilt: the same force for every mass. */
+export function pushFor(tilt: Tilt): { x: number; y: number } {
+  return { x: PUSH_FORCE * tilt.x, y: PUSH_FORCE * tilt.y };
+}
+
+/**
+ * Adds a particle at `point` (moved inside the box if needed) with a random radius (so a random
+ * mass) and a random restitution, pushed by the current tilt.
+ */
+export function spawnParticle(
+  scene: ReactionsScene,
+  point: { x: number; y: number },
+  random: () => number = Math.random,
+): Body {
+  const radius = MIN_RADIUS + (MAX_RADIUS - MIN_RADIUS) * random();
+  const restitution = random();
+  const x = Math.min(Math.max(point.x, radius + 0.01), scene.width - radius - 0.01);
+  const y = Math.min(Math.max(point.y, radius + 0.01), scene.height - radius - 0.01);
+  const body = scene.world.add(
+    particle({
+      position: { x, y },
+      radius,
+      density: PARTICLE_DENSITY,
+      restitution,
+      friction: 0.3,
+    }),
+  );
+  const push = body.applyForce(pushFor(scene.tilt), { duration: 'constant' });
+  scene.particles.set(body, { push, lastImpulse: null });
+  return body;
+}
+
+/** Sets the tilt: every particle's push changes to the same new force. */
+export function setTilt(scene: ReactionsScene, tilt: Tilt): void {
+  scene.tilt = tilt;
+  const push = pushFor(tilt);
+  for (const info of scene.particles.values()) info.push.setVector(push);
+}
+
+/** Removes every particle. */
+export function clearParticles(scene: ReactionsScene): void {
+  for (const body of scene.particles.keys()) scene.world.remove(body);
+  scene.particles.clear();
+}

@@ -1,0 +1,70 @@
+import { describe, expect, it } from 'vitest';
+import type { CollisionEvent } from '@physical/engine';
+import { CollisionArrows, ARROW_LIFETIME } from '../src/screens/reactions/collision-arrows.ts';
+import {
+  PUSH_FORCE,
+  clearParticles,
+  createReactionsScene,
+  setTilt,
+  spawnParticle,
+} from '../src/screens/reactions/reactions-scene.ts';
+import { tiltFromOrientation } from '../src/sensors/device-tilt.ts';
+
+describe('Reactions scene', () => {
+  it('spawns a particle where tapped; size shows mass', () => {
+    const scene = createReactionsScene(6, 9);
+    const small = spawnParticle(scene, { x: 2, y: 3 }, () => 0);
+    const big = spawnParticle(scene, { x: 4, y: 6 }, () => 1);
+    expect(small.position).toMatchObject({ x: 2, y: 3 });
+    expect(big.mass).toBeGreaterThan(small.mass);
+    expect(scene.particles.size).toBe(2);
+    clearParticles(scene);
+    expect(scene.particles.size).toBe(0);
+  });
+
+  it('pushes every particle with the same force: the lighter one accelerates more', () => {
+    const scene = createReactionsScene(6, 9);
+    const small = spawnParticle(scene, { x: 3, y: 1.5 }, () => 0);
+    const big = spawnParticle(scene, { x: 3, y: 7.5 }, () => 1);
+    setTilt(scene, { x: 1, y: 0 });
+    scene.world.step(1 / 60);
+    const impulseSmall = small.mass * small.linearVelocity.x;
+    const impulseBig = big.mass * big.linearVelocity.x;
+    expect(impulseSmall).toBeCloseTo(PUSH_FORCE / 60, 9);
+    expect(impulseBig).toBeCloseTo(PUSH_FORCE / 60, 9);
+    expect(small.linearVelocity.x).toBeGreaterThan(big.linearVelocity.x);
+  });
+
+  it('records equal and opposite arrows at each collision, fading out', () => {
+    const scene = createReactionsScene(6, 9);
+    const arrows = new CollisionArrows();
+    let time = 0;
+    scene.world.on('collision', (event: CollisionEvent) => arrows.record(event, 1 / 60, time));
+    const a = spawnParticle(scene, { x: 2, y: 8 }, () => 0.5);
+    spawnParticle(scene, { x: 4, y: 8 }, () => 0.5);
+    a.linearVelocity = { x: 3, y: 0 };
+    for (let i = 0; i < 60 && arrows.visible(time).length === 0; i++) {
+      scene.world.step(1 / 60);
+      time += 1 / 60;
+    }
+    const [first] = arrows.visible(time);
+    expect(first).toBeDefined();
+    expect(first!.arrow.force).toBeGreaterThan(0);
+    expect(Math.hypot(first!.arrow.nx, first!.arrow.ny)).toBeCloseTo(1, 9);
+    expect(arrows.visible(time + ARROW_LIFETIME + 0.01)).toEqual([]);
+  });
+});
+
+describe('device tilt', () => {
+  it('leaning right pushes right, leaning the top up pushes down the screen', () => {
+    expect(tiltFromOrientation(0, 90)).toEqual({ x: 1, y: 0 });
+    expect(tiltFromOrientation(90, 0)).toEqual({ x: 0, y: 1 });
+    expect(tiltFromOrientation(0, -30)).toEqual({ x: -0.5, y: 0 });
+  });
+
+  it('follows the screen rotation in landscape', () => {
+    const tilt = tiltFromOrientation(0, 90, 90);
+    expect(tilt.x).toBeCloseTo(0, 9);
+    expect(tilt.y).toBeCloseTo(-1, 9);
+  });
+});

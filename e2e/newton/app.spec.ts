@@ -1,0 +1,153 @@
+import assert from 'node:assert/strict';
+import { test } from '../harness.ts';
+import {
+  PHONE,
+  assertQuiet,
+  axeViolations,
+  closeApp,
+  openApp,
+  paintedPixels,
+  screenshot,
+  waitReady,
+} from './phone.ts';
+
+const sleep = (ms: number): Promise<void> => new Promise((resolve) => setTimeout(resolve, ms));
+
+test('newton: the language switch changes the texts (English, German)', async ({ browser }) => {
+  const app = await openApp(browser, '#inertia');
+  const { page } = app;
+  try {
+    const law = page.locator('#inertia-law');
+    assert.match((await law.textContent())!, /^First law/);
+    await page.locator('[data-locale="de"]').click();
+    assert.match((await law.textContent())!, /^Erstes Gesetz/);
+    assert.equal(await page.evaluate(() => document.documentElement.lang), 'de');
+    assert.equal((await page.locator('[data-nav="inertia"]').textContent())!.trim(), 'Trägheit');
+    assert.equal(
+      (await page.locator('#inertia [data-action="change-force"]').textContent())!.trim(),
+      'Kraft ändern',
+    );
+    await screenshot(page, 'inertia-german');
+    // The choice survives a reload.
+    await page.reload();
+    await waitReady(page);
+    assert.match((await law.textContent())!, /^Erstes Gesetz/);
+    await page.locator('[data-locale="en"]').click();
+    assert.match((await law.textContent())!, /^First law/);
+    assertQuiet(app);
+  } finally {
+    await closeApp(app);
+  }
+});
+
+test('newton: after one visit the app reloads with the network off', async ({ browser }) => {
+  const app = await openApp(browser, '#forces');
+  const { page, context } = app;
+  try {
+    await page.evaluate(async () => {
+      await navigator.serviceWorker.ready;
+      if (navigator.serviceWorker.controller === null) {
+        await new Promise((resolve) =>
+          navigator.serviceWorker.addEventListener('controllerchange', resolve, { once: true }),
+        );
+      }
+    });
+    await context.setOffline(true);
+    await page.reload();
+    await waitReady(page);
+    assert.match((await page.locator('#forces-law').textContent())!, /^Second law/);
+    await sleep(300);
+    assert.ok(
+      (await paintedPixels(page, '#forces physical-canvas')) > 1000,
+      'canvas drawn offline',
+    );
+    const manifest = await page.evaluate(async () =>
+      (await fetch('./manifest.webmanifest')).json(),
+    );
+    assert.equal((manifest as { short_name: string }).short_name, 'Newton');
+    await screenshot(page, 'forces-offline');
+    assertQuiet(app);
+  } finally {
+    await closeApp(app);
+  }
+});
+
+test('newton: axe-core finds no serious or critical violations on any screen', async ({
+  browser,
+}) => {
+  const app = await openApp(browser);
+  const { page } = app;
+  try {
+    const found: string[] = [];
+    for (const screen of ['inertia', 'forces', 'reactions']) {
+      await page.locator(`[data-nav="${screen}"]`).click();
+      await sleep(200);
+      found.push(...(await axeViolations(page)).map((v) => `${screen}: ${v}`));
+    }
+    // The dialogs too.
+    await page.locator('[data-nav="inertia"]').click();
+    await page.locator('#inertia [data-action="change-force"]').click();
+    await page.getByRole('dialog').waitFor();
+    await sleep(500); // past the fade-in: mid-transition colours are not the real contrast
+    found.push(...(await axeViolations(page)).map((v) => `force dialog: ${v}`));
+    await page.keyboard.press('Escape');
+    await page.getByRole('dialog').waitFor({ state: 'detached' });
+    await page.locator('[data-nav="forces"]').click();
+    await page.locator('[data-action="edit-A"]').click();
+    await page.getByRole('dialog').waitFor();
+    await sleep(500);
+    found.push(...(await axeViolations(page)).map((v) => `square dialog: ${v}`));
+    assert.deepEqual(found, []);
+    assertQuiet(app);
+  } finally {
+    await closeApp(app);
+  }
+});
+
+test('newton: keyboard only, and a navigation rail on a wide screen', async ({ browser }) => {
+  const app = await openApp(browser, '#reactions', {
+    ...PHONE,
+    viewport: { width: 1280, height: 800 },
+    deviceScaleFactor: 1,
+    isMobile: false,
+    hasTouch: false,
+  });
+  const { page } = app;
+  try {
+    assert.equal(await page.locator('nav [data-nav]').count(), 3);
+    assert.equal(
+      await page.locator('.MuiBottomNavigation-root').count(),
+      0,
+      'rail, not bottom bar',
+    );
+    // Arrow keys tilt (the desktop's stand-in for the phone).
+    await page.locator('body').press('ArrowRight');
+    await page.keyboard.press('ArrowRight');
+    assert.equal(
+      (await page.locator('[data-readout="push"]').textContent())!.replace(/\u00a0/g, ' '),
+      '0.5 N, 0°',
+    );
+    // Spawn particles with the mouse, pause with the keyboard.
+    const box = (await page.locator('#reactions physical-canvas').boundingBox())!;
+    for (const [fx, fy] of [
+      [0.3, 0.5],
+      [0.5, 0.2],
+      [0.6, 0.85],
+    ] as const) {
+      await page.mouse.click(box.x + box.width * fx, box.y + box.height * fy);
+    }
+    await page.locator('#reactions [data-action="play"]').focus();
+    await page.keyboard.press('Enter');
+    assert.equal(await page.locator('#reactions [data-action="step"]').isDisabled(), false);
+    await page.keyboard.press('Tab');
+    await page.keyboard.press('Enter'); // one step
+    await page.locator('[data-nav="inertia"]').focus();
+    await page.keyboard.press('Enter');
+    await page.locator('#inertia').waitFor({ state: 'visible' });
+    await sleep(300);
+    await screenshot(page, 'desktop-inertia');
+    assertQuiet(app);
+  } finally {
+    await closeApp(app);
+  }
+});

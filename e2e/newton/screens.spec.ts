@@ -1,0 +1,219 @@
+import assert from 'node:assert/strict';
+import { test } from '../harness.ts';
+import {
+  assertQuiet,
+  closeApp,
+  numberIn,
+  openApp,
+  paintedPixels,
+  readout,
+  screenshot,
+} from './phone.ts';
+
+const sleep = (ms: number): Promise<void> => new Promise((resolve) => setTimeout(resolve, ms));
+
+test('newton: each screen renders a non-blank canvas on a phone', async ({ browser }) => {
+  const app = await openApp(browser);
+  try {
+    for (const screen of ['inertia', 'forces', 'reactions']) {
+      await app.page.locator(`[data-nav="${screen}"]`).click();
+      await app.page.waitForSelector(`#${screen} physical-canvas`, { state: 'visible' });
+      await sleep(300);
+      const canvases = await app.page.locator(`#${screen} physical-canvas`).count();
+      for (let i = 0; i < canvases; i++) {
+        const painted = await paintedPixels(
+          app.page,
+          `#${screen} physical-canvas:nth-of-type(1), #${screen} physical-canvas`,
+        );
+        assert.ok(painted > 1000, `${screen} canvas ${i} is blank (${painted} painted pixels)`);
+      }
+      await screenshot(app.page, screen);
+    }
+    assertQuiet(app);
+  } finally {
+    await closeApp(app);
+  }
+});
+
+test('newton: inertia, a force to the right moves the body right; stopped, it glides at constant speed', async ({
+  browser,
+}) => {
+  const app = await openApp(browser, '#inertia');
+  const { page } = app;
+  try {
+    await page.locator('#inertia [data-action="change-force"]').click();
+    const dial = page.getByTestId('angle-dial');
+    await dial.focus();
+    await page.keyboard.press('ArrowUp');
+    await page.keyboard.press('Home');
+    assert.match(await readout(page, 'dialog-angle'), /^0° \(right\)$/);
+    await screenshot(page, 'inertia-force-dialog');
+    await page.getByRole('button', { name: 'OK' }).click();
+    await page.getByRole('dialog').waitFor({ state: 'detached' });
+
+    assert.equal(numberIn(await readout(page, 'speed', '#inertia')), 0, 'at rest before the force');
+    await page.locator('#inertia [data-action="toggle-force"]').click();
+    await sleep(700);
+    const accelerated = numberIn(await readout(page, 'speed', '#inertia'));
+    assert.ok(accelerated > 0.1, `the force sets it moving (speed ${accelerated})`);
+    assert.equal(await readout(page, 'direction', '#inertia'), '0°', 'it moves to the right');
+    await page.locator('#inertia [data-action="toggle-force"]').click();
+    await sleep(250);
+    const first = numberIn(await readout(page, 'speed', '#inertia'));
+    await sleep(800);
+    const second = numberIn(await readout(page, 'speed', '#inertia'));
+    assert.ok(first > 0.1, `still moving after the force stopped (${first})`);
+    assert.ok(
+      Math.abs(second - first) <= 0.01 * first,
+      `constant speed without a force: ${first} then ${second}`,
+    );
+    assert.equal(await readout(page, 'direction', '#inertia'), '0°');
+    await screenshot(page, 'inertia-gliding');
+    assertQuiet(app);
+  } finally {
+    await closeApp(app);
+  }
+});
+
+async function setSquare(
+  app: Awaited<ReturnType<typeof openApp>>,
+  open: () => Promise<void>,
+  mass: string,
+  acceleration: string,
+): Promise<string> {
+  const { page } = app;
+  await open();
+  const dialog = page.getByRole('dialog');
+  await dialog.waitFor();
+  await page.locator('#square-mass').fill(mass);
+  await page.locator('#square-acceleration').fill(acceleration);
+  const shown = await readout(page, 'dialog-force');
+  await page.getByRole('button', { name: 'OK' }).click();
+  await dialog.waitFor({ state: 'detached' });
+  return shown;
+}
+
+test('newton: forces, F = m a and both squares move together', async ({ browser }) => {
+  const app = await openApp(browser, '#forces');
+  const { page } = app;
+  try {
+    await page.locator('#forces [data-action="play"]').click(); // pause
+    // Tapping the first track opens its dialog.
+    const box = (await page.locator('#forces physical-canvas').first().boundingBox())!;
+    const shownA = await setSquare(
+      app,
+      () => page.touchscreen.tap(box.x + box.width * 0.6, box.y + box.height * 0.6),
+      '1',
+      '2',
+    );
+    assert.match(shownA, /= 2 N$/);
+    const shownB = await setSquare(
+      app,
+      () => page.locator('[data-action="edit-B"]').click(),
+      '2',
+      '2',
+    );
+    assert.match(shownB, /= 4 N$/);
+    assert.equal(await readout(page, 'force-A'), '2 N');
+    assert.equal(await readout(page, 'force-B'), '4 N');
+
+    await page.locator('#forces [data-action="start"]').click();
+    const step = page.locator('#forces [data-action="step"]');
+    for (let i = 0; i < 60; i++) await step.click();
+    await sleep(200);
+    assert.equal(await readout(page, 'time', '#forces'), 't = 1.00 s');
+    const xA = numberIn(await readout(page, 'x-A'));
+    const xB = numberIn(await readout(page, 'x-B'));
+    assert.ok(xA > 0.9 && xA < 1.1, `x = a t^2 / 2 = 1 m after 1 s (got ${xA})`);
+    assert.ok(Math.abs(xA - xB) <= 0.001, `same x within 1 mm: ${xA} and ${xB}`);
+    await page.locator('#forces [data-action="play"]').click(); // run on
+    await sleep(1200);
+    await screenshot(page, 'forces-running');
+    assertQuiet(app);
+  } finally {
+    await closeApp(app);
+  }
+});
+
+test('newton: reactions, taps spawn particles, tilt pushes them, collisions show two arrows', async ({
+  browser,
+}) => {
+  const app = await openApp(browser, '#reactions');
+  const { page } = app;
+  try {
+    const canvas = page.locator('#reactions physical-canvas');
+    await sleep(200);
+    const box = (await canvas.boundingBox())!;
+    const tap = { x: box.x + box.width * 0.5, y: box.y + box.height * 0.5 };
+    await page.touchscreen.tap(tap.x, tap.y);
+    await sleep(150);
+    assert.equal(await readout(page, 'count'), '1');
+    const tapped = await canvas.evaluate(
+      (element, point) =>
+        (
+          element as unknown as { clientToWorld(x: number, y: number): { x: number; y: number } }
+        ).clientToWorld(point.x, point.y),
+      tap,
+    );
+    // Tapping the particle selects it and shows its mass, speed, last impulse and position.
+    await page.touchscreen.tap(tap.x, tap.y);
+    await page.waitForSelector('[data-readout="particle-position"]');
+    const [x0, y0] = (await readout(page, 'particle-position')).split(',').map(numberIn) as [
+      number,
+      number,
+    ];
+    assert.ok(
+      Math.hypot(x0 - tapped.x, y0 - tapped.y) < 0.05,
+      `spawned at the tap: ${x0}, ${y0} vs ${tapped.x}, ${tapped.y}`,
+    );
+    assert.match(await readout(page, 'particle-mass'), /kg$/);
+    assert.equal(await readout(page, 'particle-impulse'), 'none yet');
+
+    // Lean the phone to the right: every particle is pushed right.
+    await page.evaluate(() =>
+      window.dispatchEvent(
+        new DeviceOrientationEvent('deviceorientation', { alpha: 0, beta: 0, gamma: 45 }),
+      ),
+    );
+    await sleep(500);
+    assert.equal(await readout(page, 'push'), '0.71 N, 0°');
+    const [x1, y1] = (await readout(page, 'particle-position')).split(',').map(numberIn) as [
+      number,
+      number,
+    ];
+    assert.ok(x1 > x0 + 0.02, `moved right: ${x0} -> ${x1}`);
+    assert.ok(Math.abs(y1 - y0) < 0.02, `not up or down: ${y0} -> ${y1}`);
+
+    // It reaches the right wall: the collision draws two equal and opposite arrows.
+    await page.waitForFunction(
+      () =>
+        Number(
+          document.querySelector<HTMLElement>('#reactions [data-arrows]')!.dataset['arrows'],
+        ) >= 2,
+      undefined,
+      { timeout: 8000 },
+    );
+    await page.waitForFunction(
+      () =>
+        document
+          .querySelector('[data-readout="particle-impulse"]')
+          ?.textContent?.endsWith('N·s') === true,
+      undefined,
+      { timeout: 2000 },
+    );
+    // More particles for the picture.
+    for (const [fx, fy] of [
+      [0.3, 0.2],
+      [0.7, 0.45],
+      [0.25, 0.8],
+      [0.8, 0.85],
+    ] as const) {
+      await page.touchscreen.tap(box.x + box.width * fx, box.y + box.height * fy);
+    }
+    await sleep(1500);
+    await screenshot(page, 'reactions-collisions');
+    assertQuiet(app);
+  } finally {
+    await closeApp(app);
+  }
+});
