@@ -12,8 +12,6 @@ const normalsB = new Float64Array(2 * MAX_POLYGON_VERTICES);
 /** Edge index found by the last findMaxSeparation call (a second return value without allocation). */
 let maxSeparationEdge = 0;
 
-/** Feature-id flag: the reference face belongs to B. */
-const FLIPPED = 0x08;
 /** Feature-id flag: the point comes from two vertices, not a face. */
 const VERTEX_PAIR = 0x10;
 
@@ -100,7 +98,6 @@ export function collidePolygons(
   const normals2 = isFlipped ? a.normals : normalsB;
   const count2 = isFlipped ? countA : countB;
   const radius2 = isFlipped ? a.radius : b.radius;
-  const flag = isFlipped ? FLIPPED : 0;
 
   const nx = normals1[2 * edge1]!;
   const ny = normals1[2 * edge1 + 1]!;
@@ -183,7 +180,9 @@ export function collidePolygons(
           p1x + along * ux + originX,
           p1y + along * uy + originY,
           separation,
-          makeFeatureId(VERTEX_PAIR | flag | vertex1, vertex2),
+          isFlipped
+            ? makeFeatureId(VERTEX_PAIR | vertex2, vertex1)
+            : makeFeatureId(VERTEX_PAIR | vertex1, vertex2),
           xfA,
           xfB,
         );
@@ -249,7 +248,7 @@ export function collidePolygons(
       ax + shift * nx + originX,
       ay + shift * ny + originY,
       coreA - radius,
-      makeFeatureId(flag | i11, vertexA),
+      pointId(isFlipped, vertexA === i21 ? i12 : i11, vertexA),
       xfA,
       xfB,
     );
@@ -265,7 +264,7 @@ export function collidePolygons(
         bx + shift * nx + originX,
         by + shift * ny + originY,
         coreB - radius,
-        makeFeatureId(flag | i11, i22),
+        pointId(isFlipped, i11, i22),
         xfA,
         xfB,
       );
@@ -342,4 +341,17 @@ function writePoint(
   point.y = anchorY + xfA.y;
   point.separation = separation;
   point.id = id;
+}
+
+/**
+ * A point's id names the pair of vertices it lies between, A's then B's: a clipped point lies
+ * between an incident vertex and the reference vertex it faces (the edges run opposite ways, so
+ * the incident edge's first vertex faces the reference edge's second). Because the pair does not
+ * depend on which polygon owns the reference face, ids survive the reference face flipping between
+ * two nearly parallel faces, and warm starting with them (Box2D v3 names its points the same way).
+ */
+function pointId(isFlipped: boolean, referenceVertex: number, incidentVertex: number): number {
+  return isFlipped
+    ? makeFeatureId(incidentVertex, referenceVertex)
+    : makeFeatureId(referenceVertex, incidentVertex);
 }
