@@ -1,12 +1,12 @@
 // @physical/canvas's public API. Everything not listed here is internal.
 
 export { PhysicalCanvasElement } from './element/physical-canvas-element.ts';
+export type { OverlayDrawer } from './element/physical-canvas-element.ts';
 export type {
   AttributeErrorDetail,
-  OverlayDrawer,
   PauseChangeDetail,
   PhysicalCanvasEventMap,
-} from './element/physical-canvas-element.ts';
+} from './element/canvas-events.ts';
 export { define } from './element/define-physical-canvas.ts';
 export { CanvasSettingError } from './element/attribute-parsers.ts';
 export type { PointerEventDetail } from './element/pointer-input.ts';

@@ -42,7 +42,7 @@ export function drawArrow(
   const pixel = 1 / pixelsPerMeter;
   if (!(length >= 0.5 * pixel)) return;
   const width = (style.width ?? 2) * pixel;
-  const head = Math.min(length * 0.5, width * 4 + 4 * pixel);
+  const head = arrowHeadLength(length, width, pixel);
   const ux = vector.x / length;
   const uy = vector.y / length;
   const tipX = from.x + vector.x;
@@ -68,4 +68,13 @@ export function drawArrow(
   context.closePath();
   context.fill();
   context.globalAlpha = alpha;
+}
+
+/**
+ * Length (m) of the head of an arrow `length` metres long with a shaft `width` metres wide, where
+ * a CSS pixel is `pixel` metres: four shaft widths plus four pixels, at most half the arrow. The
+ * head is as wide as half its length.
+ */
+export function arrowHeadLength(length: number, width: number, pixel: number): number {
+  return Math.min(length * 0.5, width * 4 + 4 * pixel);
 }

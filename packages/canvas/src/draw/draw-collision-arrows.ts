@@ -1,4 +1,5 @@
-import { drawArrow } from './draw-arrow.ts';
+import { ArrowBatch } from './arrow-batch.ts';
+import { ARROW_COLORS } from './draw-arrow.ts';
 
 /** A collision-force arrow pair as drawn: at a contact point, the force on B and its opposite on A. */
 export interface CollisionArrowView {
@@ -12,9 +13,14 @@ export interface CollisionArrowView {
   readonly opacity: number;
 }
 
+const batch = new ArrowBatch();
+
 /**
  * Draws each collision as two equal and opposite force arrows from the contact point (Newton's
  * third law): `force * forceScale` metres long, on a context in world coordinates.
+ *
+ * Arrows recorded in the same step have the same age, hence the same opacity, and sit next to
+ * each other in `arrows`: each such run is drawn as one batch.
  */
 export function drawCollisionArrows(
   context: CanvasRenderingContext2D,
@@ -22,19 +28,23 @@ export function drawCollisionArrows(
   arrows: readonly CollisionArrowView[],
   forceScale: number,
 ): void {
-  const from = { x: 0, y: 0 };
-  const vector = { x: 0, y: 0 };
-  for (let i = 0; i < arrows.length; i++) {
-    const arrow = arrows[i]!;
-    if (arrow.opacity <= 0) continue;
-    from.x = arrow.x;
-    from.y = arrow.y;
-    vector.x = arrow.forceX * forceScale;
-    vector.y = arrow.forceY * forceScale;
-    const style = { kind: 'force', opacity: arrow.opacity } as const;
-    drawArrow(context, pixelsPerMeter, from, vector, style);
-    vector.x = -vector.x;
-    vector.y = -vector.y;
-    drawArrow(context, pixelsPerMeter, from, vector, style);
+  const pixel = 1 / pixelsPerMeter;
+  const color = ARROW_COLORS.force;
+  let i = 0;
+  while (i < arrows.length) {
+    const opacity = arrows[i]!.opacity;
+    if (opacity <= 0) {
+      i++;
+      continue;
+    }
+    batch.begin(context, 2, pixel, color, opacity);
+    for (; i < arrows.length && arrows[i]!.opacity === opacity; i++) {
+      const arrow = arrows[i]!;
+      const vectorX = arrow.forceX * forceScale;
+      const vectorY = arrow.forceY * forceScale;
+      batch.add(arrow.x, arrow.y, vectorX, vectorY);
+      batch.add(arrow.x, arrow.y, -vectorX, -vectorY);
+    }
+    batch.finish();
   }
 }

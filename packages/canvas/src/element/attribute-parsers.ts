@@ -150,3 +150,12 @@ function splitNumbers(text: string): number[] {
   if (trimmed === '') return [];
   return trimmed.split(/[\s,]+/).map((part) => (part === '' ? Number.NaN : Number(part)));
 }
+
+/** Any CSS colour the browser supports (or `"transparent"`); trimmed. */
+export function parseColor(setting: string, value: unknown): string {
+  const text = typeof value === 'string' ? value.trim() : '';
+  // Without CSS (Node, server rendering) any non-empty text passes; the browser checks it.
+  const supported = text !== '' && (typeof CSS === 'undefined' || CSS.supports('color', text));
+  if (!supported) throw new CanvasSettingError(setting, value, 'a CSS colour');
+  return text;
+}

@@ -41,7 +41,7 @@ const STEP_TOLERANCE = 1e-7;
  */
 export class FrameLoop {
   /** Simulation step (s). Default 1/60. */
-  fixedStep = 1 / 60;
+  fixedStep: number = 1 / 60;
   /** Most steps taken in one frame before the backlog is dropped. Default 4. */
   maxStepsPerFrame = 4;
   /** Simulated seconds per real second (0.25 for slow motion). Default 1. */

@@ -1,13 +1,7 @@
-import type { Body, CollisionEvent, Vec2, Vec2Like, World } from '@physical/engine';
+import type { Body, Vec2, Vec2Like, World } from '@physical/engine';
 import type { BodyStyle } from '../draw/body-style.ts';
-import { DEFAULT_BACKGROUND } from '../draw/body-style.ts';
-import { noDebugOverlays, type DebugOverlays } from '../draw/debug-overlays.ts';
-import { BodyBatches } from '../draw/draw-bodies.ts';
-import { drawScene } from '../draw/draw-scene.ts';
-import type { Pose } from '../draw/pose.ts';
-import type { Scene } from '../draw/scene.ts';
+import type { DebugOverlays } from '../draw/debug-overlays.ts';
 import {
-  computeViewport,
   screenToWorld,
   worldToScreen,
   type FitMode,
@@ -17,6 +11,7 @@ import {
 import {
   CanvasSettingError,
   formatDebug,
+  parseColor,
   parseDebug,
   parseFit,
   parseNonNegative,
@@ -26,63 +21,22 @@ import {
   parseViewBox,
 } from './attribute-parsers.ts';
 import { BodyStyles, type StyleResolver } from './body-styles.ts';
+import { emit, type PhysicalCanvasEventMap } from './canvas-events.ts';
+import { CanvasRenderer } from './canvas-renderer.ts';
+import { CanvasSettings, SETTING_ATTRIBUTES, type SettingAttribute } from './canvas-settings.ts';
 import { CollisionArrows } from './collision-arrows.ts';
 import { FrameLoop, type FrameLoopTarget } from './frame-loop.ts';
 import { animationFrameScheduler, type FrameScheduler } from './frame-scheduler.ts';
-import { PointerInput, type PointerEventDetail } from './pointer-input.ts';
+import { PointerInput } from './pointer-input.ts';
 import { PoseHistory } from './pose-history.ts';
 import { watchEnvironment } from './environment-watch.ts';
-
-/** Detail of an `attributeerror` event: the rejected setting; the previous value stays. */
-export interface AttributeErrorDetail {
-  readonly error: CanvasSettingError;
-}
-
-/** Detail of a `pausechange` event (the keyboard toggled `paused`). */
-export interface PauseChangeDetail {
-  readonly paused: boolean;
-}
+import { WorldSubscription } from './world-subscription.ts';
 
 /** Draws app overlays after the bodies, on a context in world metres. */
 export type OverlayDrawer = (
   context: CanvasRenderingContext2D,
   canvas: PhysicalCanvasElement,
 ) => void;
-
-/** The events of `<physical-canvas>` (besides those of every element), by name. */
-export interface PhysicalCanvasEventMap extends HTMLElementEventMap {
-  /** A pointer pressed on a body. */
-  bodypress: CustomEvent<PointerEventDetail>;
-  /** A pointer that pressed a body was released (or cancelled). */
-  bodyrelease: CustomEvent<PointerEventDetail>;
-  /** A body was tapped (pressed and released without moving). */
-  bodytap: CustomEvent<PointerEventDetail>;
-  /** Empty space was tapped; `detail.body` is null. */
-  backgroundtap: CustomEvent<PointerEventDetail>;
-  /** An attribute had a value the element cannot use. */
-  attributeerror: CustomEvent<AttributeErrorDetail>;
-  /** The keyboard (Space) paused or resumed the simulation. */
-  pausechange: CustomEvent<PauseChangeDetail>;
-}
-
-const ATTRIBUTES = [
-  'pixels-per-meter',
-  'origin',
-  'fit',
-  'view-box',
-  'paused',
-  'time-scale',
-  'background',
-  'debug',
-  'collision-arrows',
-  'collision-arrow-duration',
-  'force-scale',
-  'velocity-scale',
-  'steps-per-second',
-  'max-steps-per-frame',
-] as const;
-
-type AttributeName = (typeof ATTRIBUTES)[number];
 
 /** Properties an app may set before the element is defined; re-applied on upgrade. */
 const UPGRADED_PROPERTIES = [
@@ -100,16 +54,6 @@ const UPGRADED_PROPERTIES = [
   'debug',
   'collisionArrows',
 ] as const;
-
-const DEFAULTS = {
-  pixelsPerMeter: 50,
-  timeScale: 1,
-  collisionArrowDuration: 1,
-  forceScale: 0.01,
-  velocityScale: 0.25,
-  stepsPerSecond: 60,
-  maxStepsPerFrame: 4,
-};
 
 const TEMPLATE = `<style>
 :host { display: block; position: relative; height: 300px; contain: layout paint; outline: none; }
@@ -138,21 +82,12 @@ const ElementBase: typeof HTMLElement =
 // eslint-disable-next-line @typescript-eslint/no-unsafe-declaration-merging
 export class PhysicalCanvasElement extends ElementBase {
   /** The attributes the element reacts to. */
-  static readonly observedAttributes: readonly string[] = ATTRIBUTES;
+  static readonly observedAttributes: readonly string[] = SETTING_ATTRIBUTES;
 
   private worldValue: World | null = null;
-  private pixelsPerMeterValue = DEFAULTS.pixelsPerMeter;
-  private originValue: Vec2 = { x: 0, y: 0 };
-  private fitValue: FitMode = 'none';
-  private viewBoxValue: ViewBox | null = null;
-  private backgroundValue = DEFAULT_BACKGROUND;
-  private debugValue: DebugOverlays = noDebugOverlays();
-  private collisionArrowsValue = false;
-  private forceScaleValue = DEFAULTS.forceScale;
-  private velocityScaleValue = DEFAULTS.velocityScale;
   private drawOverlayValue: OverlayDrawer | null = null;
   private schedulerValue: FrameScheduler | null = null;
-
+  private readonly settings = new CanvasSettings();
   private readonly loop = new FrameLoop(
     {
       step: (dt) => this.stepWorld(dt),
@@ -164,64 +99,48 @@ export class PhysicalCanvasElement extends ElementBase {
   private readonly poses = new PoseHistory();
   private readonly styles = new BodyStyles();
   private readonly arrows = new CollisionArrows();
-  private readonly batches = new BodyBatches();
   private readonly input = new PointerInput({
     clientToWorld: (x, y) => this.clientToWorld(x, y),
     bodyAt: (point) => this.worldValue?.bodyAt(point) ?? null,
-    emit: (type, detail) => {
-      this.dispatchEvent(new CustomEvent(type, { detail, bubbles: true, composed: true }));
-    },
+    emit: (type, detail) => emit(this, type, detail),
     wake: () => this.invalidate(),
   });
+  private readonly renderer: CanvasRenderer;
   private canvasElement: HTMLCanvasElement | null = null;
-  private context: CanvasRenderingContext2D | null = null;
-  private cssWidth = 0;
-  private cssHeight = 0;
-  private alpha = 1;
-  private viewportInputsUnchanged = false;
   private stepDuration = 1 / 60;
-  private reducedMotion = false;
   private isConnectedValue = false;
-  private unsubscribeWorld: (() => void)[] = [];
   private teardown: (() => void)[] = [];
-  private readonly scene: { -readonly [K in keyof Scene]: Scene[K] };
-  private readonly onCollision = (event: CollisionEvent): void => {
-    this.arrows.record(event, this.stepDuration);
-  };
-  private readonly onWorldChange = (): void => {
-    this.invalidate();
+  private readonly subscription = new WorldSubscription({
+    changed: () => this.invalidate(),
+    collided: (event) => this.arrows.record(event, this.stepDuration),
+  });
+  // Made once: drawOverlay gets the element as its second argument.
+  private readonly drawAppOverlay = (context: CanvasRenderingContext2D): void => {
+    const overlay = this.drawOverlayValue;
+    if (overlay !== null) overlay(context, this);
   };
 
   constructor() {
     super();
     this.loop.suspend('detached');
-    this.scene = {
-      viewport: computeViewport({
-        width: 0,
-        height: 0,
-        devicePixelRatio: 1,
-        fit: 'none',
-        pixelsPerMeter: DEFAULTS.pixelsPerMeter,
-        origin: { x: 0, y: 0 },
-        viewBox: null,
-      }),
-      world: null,
-      bodies: [],
-      poseOf: (body: Body, index: number, out: Pose): Pose =>
-        this.poses.interpolate(body, index, this.alpha, out),
-      styleOf: (body: Body) => this.styles.resolve(body),
-      background: DEFAULT_BACKGROUND,
-      debug: this.debugValue,
-      collisionArrows: this.arrows.arrows,
-      forceScale: DEFAULTS.forceScale,
-      velocityScale: DEFAULTS.velocityScale,
-      reducedMotion: false,
-    };
-    if (typeof document === 'undefined' || typeof this.attachShadow !== 'function') return;
-    const root = this.attachShadow({ mode: 'open' });
-    root.innerHTML = TEMPLATE;
-    this.canvasElement = root.querySelector('canvas')!;
-    this.context = this.canvasElement.getContext('2d', { alpha: true });
+    let context: CanvasRenderingContext2D | null = null;
+    if (typeof document !== 'undefined' && typeof this.attachShadow === 'function') {
+      const root = this.attachShadow({ mode: 'open' });
+      root.innerHTML = TEMPLATE;
+      this.canvasElement = root.querySelector('canvas')!;
+      context = this.canvasElement.getContext('2d', { alpha: true });
+    }
+    this.renderer = new CanvasRenderer(
+      {
+        settings: this.settings,
+        poses: this.poses,
+        styles: this.styles,
+        arrows: this.arrows,
+        measure: () =>
+          this.isConnectedValue ? { width: this.clientWidth, height: this.clientHeight } : null,
+      },
+      context,
+    );
   }
 
   // ------------------------------------------------------------------ world and styles
@@ -313,7 +232,7 @@ export class PhysicalCanvasElement extends ElementBase {
 
   /** CSS px per metre when `fit` is `"none"` (attribute `pixels-per-meter`). Default 50. */
   get pixelsPerMeter(): number {
-    return this.pixelsPerMeterValue;
+    return this.settings.pixelsPerMeter;
   }
 
   set pixelsPerMeter(value: number) {
@@ -325,7 +244,7 @@ export class PhysicalCanvasElement extends ElementBase {
    * `origin="x y"`): the camera. Default (0, 0). Resizing keeps it, and the scale.
    */
   get origin(): Readonly<Vec2> {
-    return { x: this.originValue.x, y: this.originValue.y };
+    return { x: this.settings.origin.x, y: this.settings.origin.y };
   }
 
   set origin(value: Vec2Like) {
@@ -335,7 +254,7 @@ export class PhysicalCanvasElement extends ElementBase {
 
   /** `"none"` (default), `"contain"` or `"cover"`: how `viewBox` fits the element. */
   get fit(): FitMode {
-    return this.fitValue;
+    return this.settings.fit;
   }
 
   set fit(value: FitMode) {
@@ -347,7 +266,7 @@ export class PhysicalCanvasElement extends ElementBase {
    * element size (attribute `view-box="x y width height"`). Null by default.
    */
   get viewBox(): ViewBox | null {
-    return this.viewBoxValue;
+    return this.settings.viewBox;
   }
 
   set viewBox(value: ViewBox | null) {
@@ -358,8 +277,7 @@ export class PhysicalCanvasElement extends ElementBase {
 
   /** The mapping in use: element size, scale (CSS px per metre) and origin. */
   get viewport(): Viewport {
-    this.updateViewport();
-    return this.scene.viewport;
+    return this.renderer.viewport;
   }
 
   /** Element point (CSS px from its top-left corner) to world point (m). */
@@ -446,11 +364,11 @@ export class PhysicalCanvasElement extends ElementBase {
 
   /** Background colour (any CSS colour, or `"transparent"`). Default Material dark `#121212`. */
   get background(): string {
-    return this.backgroundValue;
+    return this.settings.background;
   }
 
   set background(value: string) {
-    this.reflect('background', this.parseColor('background', value));
+    this.reflect('background', parseColor('background', value));
   }
 
   /**
@@ -458,7 +376,7 @@ export class PhysicalCanvasElement extends ElementBase {
    * velocities sleep"` (or `"all"`); the property also takes an array or an object of flags.
    */
   get debug(): Readonly<DebugOverlays> {
-    return { ...this.debugValue };
+    return { ...this.settings.debug };
   }
 
   set debug(value: string | readonly string[] | Partial<DebugOverlays>) {
@@ -473,7 +391,7 @@ export class PhysicalCanvasElement extends ElementBase {
    * opposite arrows of the average contact force, fading over `collisionArrowDuration`.
    */
   get collisionArrows(): boolean {
-    return this.collisionArrowsValue;
+    return this.settings.collisionArrows;
   }
 
   set collisionArrows(value: boolean) {
@@ -494,7 +412,7 @@ export class PhysicalCanvasElement extends ElementBase {
 
   /** Metres of collision arrow per newton (attribute `force-scale`). Default 0.01. */
   get forceScale(): number {
-    return this.forceScaleValue;
+    return this.settings.forceScale;
   }
 
   set forceScale(value: number) {
@@ -506,7 +424,7 @@ export class PhysicalCanvasElement extends ElementBase {
    * `velocity-scale`). Default 0.25.
    */
   get velocityScale(): number {
-    return this.velocityScaleValue;
+    return this.settings.velocityScale;
   }
 
   set velocityScale(value: number) {
@@ -542,14 +460,12 @@ export class PhysicalCanvasElement extends ElementBase {
   /** @internal */
   attributeChangedCallback(name: string, _old: string | null, value: string | null): void {
     try {
-      this.applyAttribute(name as AttributeName, value);
+      this.applyAttribute(name as SettingAttribute, value);
     } catch (error) {
       if (!(error instanceof CanvasSettingError)) throw error;
       // eslint-disable-next-line no-console -- a bad attribute in markup has no caller to throw to
       console.error(error.message);
-      this.dispatchEvent(
-        new CustomEvent('attributeerror', { detail: { error }, bubbles: true, composed: true }),
-      );
+      emit(this, 'attributeerror', { error });
     }
     this.invalidate();
   }
@@ -567,7 +483,7 @@ export class PhysicalCanvasElement extends ElementBase {
 
   /** Draws the frame at `alpha` between the last two steps. */
   private render(alpha: number, elapsed: number): void {
-    this.alpha = alpha;
+    this.renderer.alpha = alpha;
     this.arrows.advance(elapsed);
     this.draw();
   }
@@ -582,127 +498,33 @@ export class PhysicalCanvasElement extends ElementBase {
   // ------------------------------------------------------------------ internals
 
   private draw(): void {
-    const context = this.context;
-    if (context === null) return;
-    this.updateViewport();
-    const viewport = this.scene.viewport;
-    const canvas = context.canvas;
-    const width = Math.max(1, Math.round(viewport.width * viewport.devicePixelRatio));
-    const height = Math.max(1, Math.round(viewport.height * viewport.devicePixelRatio));
-    if (canvas.width !== width || canvas.height !== height) {
-      canvas.width = width;
-      canvas.height = height;
-    }
-    const world = this.worldValue;
-    const scene = this.scene;
-    scene.world = world;
-    scene.bodies = world === null ? [] : world.bodies;
-    scene.background = this.backgroundValue;
-    scene.debug = this.debugValue;
-    scene.forceScale = this.forceScaleValue;
-    scene.velocityScale = this.velocityScaleValue;
-    scene.reducedMotion = this.reducedMotion;
-    const overlay = this.drawOverlayValue;
-    drawScene(
-      context,
-      this.scene,
-      this.batches,
-      overlay === null ? null : (drawing) => overlay(drawing, this),
+    this.renderer.draw(
+      this.worldValue,
+      this.drawOverlayValue === null ? null : this.drawAppOverlay,
     );
   }
 
-  private updateViewport(): void {
-    if (this.cssWidth === 0 && this.cssHeight === 0 && this.isConnectedValue) {
-      this.cssWidth = this.clientWidth;
-      this.cssHeight = this.clientHeight;
+  /** Parses an attribute into the settings and hands the result to the loop and the arrows. */
+  private applyAttribute(name: SettingAttribute, value: string | null): void {
+    const settings = this.settings;
+    settings.apply(name, value);
+    const loop = this.loop;
+    loop.paused = settings.paused;
+    loop.timeScale = settings.timeScale;
+    loop.fixedStep = 1 / settings.stepsPerSecond;
+    loop.maxStepsPerFrame = settings.maxStepsPerFrame;
+    this.arrows.duration = settings.collisionArrowDuration;
+    if (name === 'collision-arrows') {
+      // Listen to collisions only while arrows are on: the events cost the engine time.
+      this.unsubscribe();
+      if (this.isConnectedValue) this.subscribe();
+      if (!settings.collisionArrows) this.arrows.clear();
     }
-    const current = this.scene.viewport;
-    const devicePixelRatio = typeof window === 'undefined' ? 1 : window.devicePixelRatio || 1;
-    if (
-      current.width === this.cssWidth &&
-      current.height === this.cssHeight &&
-      current.devicePixelRatio === devicePixelRatio &&
-      this.viewportInputsUnchanged
-    ) {
-      return;
-    }
-    this.viewportInputsUnchanged = true;
-    this.scene.viewport = computeViewport({
-      width: this.cssWidth,
-      height: this.cssHeight,
-      devicePixelRatio,
-      fit: this.fitValue,
-      pixelsPerMeter: this.pixelsPerMeterValue,
-      origin: this.originValue,
-      viewBox: this.viewBoxValue,
-    });
-  }
-
-  private applyAttribute(name: AttributeName, value: string | null): void {
-    const present = value !== null;
-    switch (name) {
-      case 'pixels-per-meter':
-        this.pixelsPerMeterValue = present ? parsePositive(name, value) : DEFAULTS.pixelsPerMeter;
-        break;
-      case 'origin':
-        this.originValue = present ? parsePoint(name, value) : { x: 0, y: 0 };
-        break;
-      case 'fit':
-        this.fitValue = present ? parseFit(name, value) : 'none';
-        break;
-      case 'view-box':
-        this.viewBoxValue = parseViewBox(name, value);
-        break;
-      case 'paused':
-        this.loop.paused = present;
-        break;
-      case 'time-scale':
-        this.loop.timeScale = present ? parseNonNegative(name, value) : DEFAULTS.timeScale;
-        break;
-      case 'background':
-        this.backgroundValue = present ? this.parseColor(name, value) : DEFAULT_BACKGROUND;
-        break;
-      case 'debug':
-        this.debugValue = parseDebug(name, value);
-        break;
-      case 'collision-arrows':
-        this.collisionArrowsValue = present;
-        this.unsubscribe();
-        if (this.isConnectedValue) this.subscribe();
-        if (!present) this.arrows.clear();
-        break;
-      case 'collision-arrow-duration':
-        this.arrows.duration = present
-          ? parsePositive(name, value)
-          : DEFAULTS.collisionArrowDuration;
-        break;
-      case 'force-scale':
-        this.forceScaleValue = present ? parsePositive(name, value) : DEFAULTS.forceScale;
-        break;
-      case 'velocity-scale':
-        this.velocityScaleValue = present ? parsePositive(name, value) : DEFAULTS.velocityScale;
-        break;
-      case 'steps-per-second':
-        this.loop.fixedStep = 1 / (present ? parsePositive(name, value) : DEFAULTS.stepsPerSecond);
-        break;
-      case 'max-steps-per-frame':
-        this.loop.maxStepsPerFrame = present
-          ? parsePositiveInteger(name, value)
-          : DEFAULTS.maxStepsPerFrame;
-        break;
-    }
-    this.viewportInputsUnchanged = false;
-  }
-
-  private parseColor(setting: string, value: unknown): string {
-    const text = typeof value === 'string' ? value.trim() : '';
-    const supported = text !== '' && (typeof CSS === 'undefined' || CSS.supports('color', text));
-    if (!supported) throw new CanvasSettingError(setting, value, 'a CSS colour');
-    return text;
+    this.renderer.settingsChanged();
   }
 
   /** Sets an attribute from a property setter (values are already validated). */
-  private reflect(name: AttributeName, value: string): void {
+  private reflect(name: SettingAttribute, value: string): void {
     this.setAttribute(name, value);
   }
 
@@ -714,47 +536,31 @@ export class PhysicalCanvasElement extends ElementBase {
   }
 
   private subscribe(): void {
-    const world = this.worldValue;
-    if (world === null || this.unsubscribeWorld.length > 0) return;
-    this.unsubscribeWorld.push(
-      world.on('wake', this.onWorldChange),
-      world.on('bodyAdded', this.onWorldChange),
-      world.on('bodyRemoved', this.onWorldChange),
-    );
-    if (this.collisionArrowsValue)
-      this.unsubscribeWorld.push(world.on('collision', this.onCollision));
+    this.subscription.start(this.worldValue, this.settings.collisionArrows);
   }
 
   private unsubscribe(): void {
-    for (const off of this.unsubscribeWorld) off();
-    this.unsubscribeWorld = [];
+    this.subscription.stop();
   }
 
   private watch(): void {
     this.teardown.push(
       watchEnvironment(this, this.loop, {
         resized: (width, height) => {
-          this.cssWidth = width;
-          this.cssHeight = height;
+          this.renderer.resize(width, height);
           // Redraw now, before the browser paints the stretched old bitmap.
           this.draw();
           this.invalidate();
         },
         reducedMotionChanged: (reduce) => {
-          this.reducedMotion = reduce;
+          this.renderer.reducedMotion = reduce;
           this.arrows.fade = !reduce;
           this.invalidate();
         },
         densityChanged: () => this.invalidate(),
         togglePause: () => {
           this.paused = !this.paused;
-          this.dispatchEvent(
-            new CustomEvent('pausechange', {
-              detail: { paused: this.paused },
-              bubbles: true,
-              composed: true,
-            }),
-          );
+          emit(this, 'pausechange', { paused: this.paused });
         },
       }),
     );

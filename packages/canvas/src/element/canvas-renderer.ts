@@ -1,0 +1,142 @@
+import type { Body, World } from '@physical/engine';
+import { DEFAULT_BACKGROUND } from '../draw/body-style.ts';
+import { BodyBatches } from '../draw/draw-bodies.ts';
+import { drawScene } from '../draw/draw-scene.ts';
+import type { Pose } from '../draw/pose.ts';
+import type { Scene } from '../draw/scene.ts';
+import { computeViewport, type Viewport } from '../draw/viewport.ts';
+import type { BodyStyles } from './body-styles.ts';
+import type { CanvasSettings } from './canvas-settings.ts';
+import type { CollisionArrows } from './collision-arrows.ts';
+import type { PoseHistory } from './pose-history.ts';
+
+/** What a {@link CanvasRenderer} reads from its element. */
+export interface CanvasRendererHost {
+  readonly settings: CanvasSettings;
+  readonly poses: PoseHistory;
+  readonly styles: BodyStyles;
+  readonly arrows: CollisionArrows;
+  /** The element's CSS size before the first resize report, or null while detached. */
+  measure(): { width: number; height: number } | null;
+}
+
+/**
+ * Turns the element's state into frames: keeps the viewport in step with the element's size, the
+ * pixel density and the view settings, sizes the backing store, and draws the scene. One scene
+ * object is reused for every frame, so drawing allocates nothing.
+ */
+export class CanvasRenderer {
+  /** How far between the last two steps the next frame is drawn (1 = the current poses). */
+  alpha = 1;
+  /** prefers-reduced-motion: reduce. */
+  reducedMotion = false;
+  private readonly host: CanvasRendererHost;
+  private readonly context: CanvasRenderingContext2D | null;
+  private readonly batches = new BodyBatches();
+  private readonly scene: { -readonly [K in keyof Scene]: Scene[K] };
+  private cssWidth = 0;
+  private cssHeight = 0;
+  private viewportInputsUnchanged = false;
+
+  constructor(host: CanvasRendererHost, context: CanvasRenderingContext2D | null) {
+    this.host = host;
+    this.context = context;
+    const { settings, poses, styles, arrows } = host;
+    this.scene = {
+      viewport: computeViewport({
+        width: 0,
+        height: 0,
+        devicePixelRatio: 1,
+        fit: 'none',
+        pixelsPerMeter: settings.pixelsPerMeter,
+        origin: { x: 0, y: 0 },
+        viewBox: null,
+      }),
+      world: null,
+      bodies: [],
+      poseOf: (body: Body, index: number, out: Pose): Pose =>
+        poses.interpolate(body, index, this.alpha, out),
+      styleOf: (body: Body) => styles.resolve(body),
+      background: DEFAULT_BACKGROUND,
+      debug: settings.debug,
+      collisionArrows: arrows.arrows,
+      forceScale: settings.forceScale,
+      velocityScale: settings.velocityScale,
+      reducedMotion: false,
+    };
+  }
+
+  /** The element's content box is now `width` x `height` CSS px. */
+  resize(width: number, height: number): void {
+    this.cssWidth = width;
+    this.cssHeight = height;
+  }
+
+  /** A setting changed: compute the viewport again before the next use. */
+  settingsChanged(): void {
+    this.viewportInputsUnchanged = false;
+  }
+
+  /** The mapping in use, brought up to date. */
+  get viewport(): Viewport {
+    this.updateViewport();
+    return this.scene.viewport;
+  }
+
+  /** Draws a frame of `world`, then `overlay` (app drawings in world metres). */
+  draw(world: World | null, overlay: ((context: CanvasRenderingContext2D) => void) | null): void {
+    const context = this.context;
+    if (context === null) return;
+    this.updateViewport();
+    const viewport = this.scene.viewport;
+    const canvas = context.canvas;
+    const width = Math.max(1, Math.round(viewport.width * viewport.devicePixelRatio));
+    const height = Math.max(1, Math.round(viewport.height * viewport.devicePixelRatio));
+    if (canvas.width !== width || canvas.height !== height) {
+      canvas.width = width;
+      canvas.height = height;
+    }
+    const settings = this.host.settings;
+    const scene = this.scene;
+    scene.world = world;
+    scene.bodies = world === null ? [] : world.bodies;
+    scene.background = settings.background;
+    scene.debug = settings.debug;
+    scene.forceScale = settings.forceScale;
+    scene.velocityScale = settings.velocityScale;
+    scene.reducedMotion = this.reducedMotion;
+    drawScene(context, scene, this.batches, overlay);
+  }
+
+  private updateViewport(): void {
+    if (this.cssWidth === 0 && this.cssHeight === 0) {
+      // Before the first ResizeObserver report, read the size from layout.
+      const size = this.host.measure();
+      if (size !== null) {
+        this.cssWidth = size.width;
+        this.cssHeight = size.height;
+      }
+    }
+    const current = this.scene.viewport;
+    const devicePixelRatio = typeof window === 'undefined' ? 1 : window.devicePixelRatio || 1;
+    if (
+      current.width === this.cssWidth &&
+      current.height === this.cssHeight &&
+      current.devicePixelRatio === devicePixelRatio &&
+      this.viewportInputsUnchanged
+    ) {
+      return;
+    }
+    this.viewportInputsUnchanged = true;
+    const settings = this.host.settings;
+    this.scene.viewport = computeViewport({
+      width: this.cssWidth,
+      height: this.cssHeight,
+      devicePixelRatio,
+      fit: settings.fit,
+      pixelsPerMeter: settings.pixelsPerMeter,
+      origin: settings.origin,
+      viewBox: settings.viewBox,
+    });
+  }
+}
