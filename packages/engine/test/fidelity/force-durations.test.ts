@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { reportMeasured } from './measured.ts';
 import { World, particle } from '@physical/engine';
 
 // Law 3: the thesis's force durations. At 60 Hz a force of 0.5 s acts in exactly 30 steps (the
@@ -33,6 +34,11 @@ describe('force durations', () => {
     const force = body.applyForce({ x: FORCE, y: 0 }, { duration: 0.5 });
     const changes = velocityChanges(world, body, 40);
     const perStep = (FORCE * DT) / MASS;
+    reportMeasured(
+      '3 durations: steps in which a 0.5 s force acted at 60 Hz (exactly 30)',
+      changes.filter((change) => change !== 0).length,
+      30,
+    );
     for (let i = 0; i < 30; i++) expect(Math.abs(changes[i]! - perStep)).toBeLessThan(TOLERANCE);
     for (let i = 30; i < 40; i++) expect(changes[i]).toBe(0);
     expect(Math.abs(body.linearVelocity.x - (FORCE * 0.5) / MASS)).toBeLessThan(TOLERANCE);

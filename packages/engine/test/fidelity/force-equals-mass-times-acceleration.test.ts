@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { reportMeasured } from './measured.ts';
 import { World, box, particle } from '@physical/engine';
 
 // Law 2 (Newton's second law): a constant force F on a body of mass m for T seconds changes its
@@ -26,6 +27,11 @@ describe('F = m a', () => {
     handle.remove();
     const t = steps * DT;
     const m = body.mass;
+    reportMeasured(
+      '2 F = m a, relative velocity error',
+      relativeError(body.linearVelocity.x, (force.x * t) / m),
+      RELATIVE_TOLERANCE,
+    );
     expect(relativeError(body.linearVelocity.x, (force.x * t) / m)).toBeLessThanOrEqual(
       RELATIVE_TOLERANCE,
     );

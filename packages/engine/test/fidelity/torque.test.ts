@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { reportMeasured } from './measured.ts';
 import { World, box, particle, regularPolygon } from '@physical/engine';
 
 // Law 5: rotation. A torque tau gives alpha = tau / I, and an impulse J at a point r from the
@@ -54,6 +55,11 @@ describe('torque', () => {
     const body = world.add(regularPolygon({ position: center, sides: 6, radius: 0.8, angle: 0.4 }));
     body.applyImpulse(j, { x: center.x + r.x, y: center.y + r.y });
     const cross = r.x * j.y - r.y * j.x;
+    reportMeasured(
+      '5 off-centre impulse, omega vs (r x J) / I relative error',
+      relativeError(body.angularVelocity, cross / body.inertia),
+      TOLERANCE,
+    );
     expect(relativeError(body.angularVelocity, cross / body.inertia)).toBeLessThanOrEqual(
       TOLERANCE,
     );
