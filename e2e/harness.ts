@@ -17,8 +17,6 @@ export interface TestContext {
 export interface BrowserTest {
   readonly name: string;
   readonly run: (context: TestContext) => Promise<void>;
-  /** Why the test cannot run here (a missing dependency), or null. */
-  readonly skipReason: string | null;
 }
 
 /** Tests registered by the spec files, in order. */
@@ -26,10 +24,5 @@ export const tests: BrowserTest[] = [];
 
 /** Registers a browser test; spec files call it at import. */
 export function test(name: string, run: (context: TestContext) => Promise<void>): void {
-  tests.push({ name, run, skipReason: null });
-}
-
-/** Registers a test that cannot run here; the runner lists it as skipped, with the reason. */
-export function skip(name: string, reason: string): void {
-  tests.push({ name, run: async () => undefined, skipReason: reason });
+  tests.push({ name, run });
 }
