@@ -150,24 +150,32 @@ export class Solver {
   }
 
   /**
-   * Puts the step's contacts in a scrambled, deterministic order: position k takes the contact at
-   * (k * stride) mod n, with a stride near n / golden ratio that is coprime to n. Gauss-Seidel
-   * sweeps in creation order (left to right, row by row in a stack) push every row the same way
-   * and make a 100-row pyramid lean by half a metre; a scrambled sweep cancels that bias, as
-   * Box2D v3's graph colouring does.
+   * Puts the step's contacts in a scrambled, deterministic order. Gauss-Seidel sweeps in creation
+   * order (left to right, row by row in a stack) push every row the same way and made a 100-row
+   * pyramid lean by half a metre; a scrambled sweep cancels that bias, as Box2D v3's graph
+   * colouring does. Runs of SCRAMBLE_RUN neighbouring contacts stay together (they touch nearby
+   * bodies, which keeps the body states in cache: scrambling single contacts cost half the speed);
+   * the runs are visited in the order k * stride mod runs, with a stride near runs / golden ratio
+   * and coprime to it.
    */
   private scrambleOrder(list: Contact[], count: number): void {
-    if (count < 3) return;
-    let stride = Math.floor(count * 0.6180339887498949) | 1;
-    while (greatestCommonDivisor(stride, count) !== 1) stride += 2;
+    const runs = Math.ceil(count / SCRAMBLE_RUN);
+    if (runs < 3) return;
+    let stride = Math.floor(runs * 0.6180339887498949) | 1;
+    while (greatestCommonDivisor(stride, runs) !== 1) stride += 2;
     const ordered = this.ordered;
-    for (let k = 0, index = 0; k < count; k++) {
-      if (k < ordered.length) ordered[k] = list[index]!;
-      else ordered.push(list[index]!);
-      index += stride;
-      if (index >= count) index -= count;
+    let k = 0;
+    for (let visited = 0, run = 0; visited < runs; visited++) {
+      const end = Math.min(count, (run + 1) * SCRAMBLE_RUN);
+      for (let i = run * SCRAMBLE_RUN; i < end; i++) {
+        if (k < ordered.length) ordered[k] = list[i]!;
+        else ordered.push(list[i]!);
+        k++;
+      }
+      run += stride;
+      if (run >= runs) run -= runs;
     }
-    for (let k = 0; k < count; k++) list[k] = ordered[k]!;
+    for (let i = 0; i < count; i++) list[i] = ordered[i]!;
   }
 
   /** Writes velocities and poses back to the bodies and updates their sleep timers. */
@@ -216,6 +224,9 @@ export class Solver {
     }
   }
 }
+
+/** Contacts kept together when the sweep order is scrambled (see Solver.scrambleOrder). */
+const SCRAMBLE_RUN = 32;
 
 function greatestCommonDivisor(a: number, b: number): number {
   while (b !== 0) {
