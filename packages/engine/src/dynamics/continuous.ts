@@ -61,9 +61,13 @@ export class ContinuousSolver {
     sweep.c2Y = body.centerY;
     sweep.a1 = body.angle0;
     sweep.a2 = body.angleValue;
-    const xf0 = this.xf0.set(0, 0, body.angle0);
-    xf0.x = body.center0X - (xf0.c * body.localCenterX - xf0.s * body.localCenterY);
-    xf0.y = body.center0Y - (xf0.s * body.localCenterX + xf0.c * body.localCenterY);
+    const xf0 = this.xf0.setFromCenter(
+      body.center0X,
+      body.center0Y,
+      body.angle0,
+      body.localCenterX,
+      body.localCenterY,
+    );
 
     this.body = body;
     this.fraction = 1;
@@ -95,9 +99,13 @@ export class ContinuousSolver {
       body.centerX = sweep.c1X + t * (sweep.c2X - sweep.c1X);
       body.centerY = sweep.c1Y + t * (sweep.c2Y - sweep.c1Y);
       body.angleValue = angle;
-      const xf = body.transform.set(0, 0, angle);
-      xf.x = body.centerX - (xf.c * body.localCenterX - xf.s * body.localCenterY);
-      xf.y = body.centerY - (xf.s * body.localCenterX + xf.c * body.localCenterY);
+      body.transform.setFromCenter(
+        body.centerX,
+        body.centerY,
+        angle,
+        body.localCenterX,
+        body.localCenterY,
+      );
     }
   }
 

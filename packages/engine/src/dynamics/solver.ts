@@ -199,13 +199,13 @@ export class Solver {
       body.angleValue = angle;
       // The angle is the exact sum of h w; the transform follows it, so rotation never drifts
       // from the integrated angle.
-      const c = Math.cos(angle);
-      const sn = Math.sin(angle);
-      const xf = body.transform;
-      xf.c = c;
-      xf.s = sn;
-      xf.x = body.centerX - (c * body.localCenterX - sn * body.localCenterY);
-      xf.y = body.centerY - (sn * body.localCenterX + c * body.localCenterY);
+      body.transform.setFromCenter(
+        body.centerX,
+        body.centerY,
+        angle,
+        body.localCenterX,
+        body.localCenterY,
+      );
 
       // Sleep: the body must be slow, and not being moved by position correction either
       // (Box2D v3's rule, with its 0.5 weight on correction).

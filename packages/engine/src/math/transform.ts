@@ -17,6 +17,26 @@ export class Transform {
     return this;
   }
 
+  /**
+   * Places the transform so that the body-local point (localX, localY), the centre of mass, lands
+   * on the world point (centerX, centerY), turned by `angle` (rad).
+   */
+  setFromCenter(
+    centerX: number,
+    centerY: number,
+    angle: number,
+    localX: number,
+    localY: number,
+  ): this {
+    const c = Math.cos(angle);
+    const s = Math.sin(angle);
+    this.c = c;
+    this.s = s;
+    this.x = centerX - (c * localX - s * localY);
+    this.y = centerY - (s * localX + c * localY);
+    return this;
+  }
+
   copy(other: Transform): this {
     this.x = other.x;
     this.y = other.y;
