@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { PhysicalError } from '../../../src/core/errors.ts';
+import { catchError, ray } from './helpers.ts';
 import { AABB } from '../../../src/geometry/aabb.ts';
 import {
   circleContainsPoint,
@@ -10,28 +10,8 @@ import {
   type Circle,
 } from '../../../src/geometry/circle.ts';
 import { MassData } from '../../../src/geometry/mass-data.ts';
-import { RayHit, RayInput } from '../../../src/geometry/ray.ts';
+import { RayHit } from '../../../src/geometry/ray.ts';
 import { Transform } from '../../../src/math/transform.ts';
-
-function catchError(action: () => unknown): PhysicalError {
-  try {
-    action();
-  } catch (error) {
-    if (error instanceof PhysicalError) return error;
-    throw error;
-  }
-  throw new Error('expected a PhysicalError');
-}
-
-function ray(ox: number, oy: number, tx: number, ty: number, maxFraction = 1): RayInput {
-  const input = new RayInput();
-  input.originX = ox;
-  input.originY = oy;
-  input.translationX = tx;
-  input.translationY = ty;
-  input.maxFraction = maxFraction;
-  return input;
-}
 
 describe('makeCircle', () => {
   it('builds a circle from valid numbers', () => {

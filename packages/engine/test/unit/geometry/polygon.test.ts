@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
+import { catchError, ray } from './helpers.ts';
 import { MAX_POLYGON_VERTICES } from '../../../src/core/constants.ts';
-import { PhysicalError } from '../../../src/core/errors.ts';
 import { AABB } from '../../../src/geometry/aabb.ts';
 import { MassData } from '../../../src/geometry/mass-data.ts';
 import {
@@ -13,28 +13,8 @@ import {
   rayCastPolygon,
   type Polygon,
 } from '../../../src/geometry/polygon.ts';
-import { RayHit, RayInput } from '../../../src/geometry/ray.ts';
+import { RayHit } from '../../../src/geometry/ray.ts';
 import { Transform } from '../../../src/math/transform.ts';
-
-function catchError(action: () => unknown): PhysicalError {
-  try {
-    action();
-  } catch (error) {
-    if (error instanceof PhysicalError) return error;
-    throw error;
-  }
-  throw new Error('expected a PhysicalError');
-}
-
-function ray(ox: number, oy: number, tx: number, ty: number, maxFraction = 1): RayInput {
-  const input = new RayInput();
-  input.originX = ox;
-  input.originY = oy;
-  input.translationX = tx;
-  input.translationY = ty;
-  input.maxFraction = maxFraction;
-  return input;
-}
 
 function points(...coordinates: number[]): { x: number; y: number }[] {
   const list: { x: number; y: number }[] = [];
