@@ -2,6 +2,7 @@ import { PairSet } from '../collision/pair-set.ts';
 import { aabbOverlaps } from '../geometry/aabb.ts';
 import type { Body } from './body.ts';
 import { canCollide, Contact, shouldSwap } from './contact.ts';
+import { ContactData } from './contact-data.ts';
 import type { Islands } from './island.ts';
 import type { Shape } from './shape.ts';
 
@@ -13,6 +14,8 @@ import type { Shape } from './shape.ts';
 export class ContactManager {
   /** Every contact, in creation order (removal swaps the last one in). */
   readonly contacts: Contact[] = [];
+  /** The contacts' numbers: slot i belongs to contacts[i]. */
+  readonly slots: ContactData = new ContactData();
   /** Contacts that started touching during the last narrow phase (the first `beganCount`). */
   readonly began: Contact[] = [];
   beganCount = 0;
@@ -35,9 +38,10 @@ export class ContactManager {
     if (!canCollide(shapeA, shapeB)) return;
     if (!this.pairs.add(shapeA.id, shapeB.id)) return;
     const contact = this.pool.pop() ?? new Contact();
-    if (shouldSwap(shapeA, shapeB)) contact.init(shapeB, shapeA);
-    else contact.init(shapeA, shapeB);
     contact.index = this.contacts.length;
+    this.slots.reserve(contact.index + 1);
+    if (shouldSwap(shapeA, shapeB)) contact.init(shapeB, shapeA, this.slots.data);
+    else contact.init(shapeA, shapeB, this.slots.data);
     this.contacts.push(contact);
     contact.indexInA = contact.bodyA.contacts.length;
     contact.bodyA.contacts.push(contact);
@@ -54,6 +58,7 @@ export class ContactManager {
     this.beganCount = 0;
     this.endedCount = 0;
     const contacts = this.contacts;
+    const data = this.slots.data;
     let i = 0;
     while (i < contacts.length) {
       const contact = contacts[i]!;
@@ -68,7 +73,7 @@ export class ContactManager {
         continue; // the last contact now sits at index i
       }
       const wasTouching = contact.touching;
-      const touching = contact.update(dt);
+      const touching = contact.update(dt, data);
       if (touching && !wasTouching) {
         this.began[this.beganCount++] = contact;
         if (!bodyA.awake) this.islands.wake(bodyA);
@@ -110,11 +115,11 @@ export class ContactManager {
     const last = this.contacts.pop()!;
     if (last !== contact) {
       this.contacts[contact.index] = last;
+      this.slots.move(last.index, contact.index);
       last.index = contact.index;
     }
     contact.index = -1;
     contact.touching = false;
-    contact.manifold.pointCount = 0;
     this.pool.push(contact);
   }
 

@@ -1,5 +1,25 @@
 import type { Contact } from './contact.ts';
-import type { Shape } from './shape.ts';
+import {
+  CONTACT_STRIDE,
+  FRICTION as C_FRICTION,
+  NORMAL_X as C_NORMAL_X,
+  NORMAL_Y as C_NORMAL_Y,
+  POINT_COUNT as C_POINT_COUNT,
+  POINT_STRIDE as C_POINT_STRIDE,
+  POINTS as C_POINTS,
+  P_MAX_NORMAL_IMPULSE as C_MAX_NORMAL_IMPULSE,
+  P_NORMAL_IMPULSE as C_NORMAL_IMPULSE,
+  P_RELATIVE_VELOCITY as C_RELATIVE_VELOCITY,
+  P_SEPARATION as C_SEPARATION,
+  P_STEP_NORMAL_IMPULSE as C_STEP_NORMAL_IMPULSE,
+  P_STEP_TANGENT_IMPULSE as C_STEP_TANGENT_IMPULSE,
+  P_TANGENT_IMPULSE as C_TANGENT_IMPULSE,
+  P_X as C_X,
+  P_Y as C_Y,
+  RADIUS_A as C_RADIUS_A,
+  RADIUS_B as C_RADIUS_B,
+  RESTITUTION as C_RESTITUTION,
+} from './contact-data.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, STATE_STRIDE, V_X, V_Y, W } from './body-state.ts';
 import type { Softness } from './softness.ts';
 
@@ -64,75 +84,108 @@ export class ContactConstraints {
   data: Float64Array = new Float64Array(STRIDE * 256);
   /** State offsets (index * STATE_STRIDE) of body A and B per constraint. */
   bodies: Int32Array = new Int32Array(2 * 256);
+  /** The contact data slot each constraint came from, to store impulses back. */
+  slots: Int32Array = new Int32Array(256);
+  /** The order the sub-step passes visit the constraints in (see Solver.scrambleOrder). */
+  order: Int32Array = new Int32Array(256);
   /** Constraints between two circles centred on their bodies: their normal follows the centres. */
   circlePairs: Int32Array = new Int32Array(64);
   circlePairCount = 0;
-  /** The contact each constraint came from, to store impulses back (the first `count`). */
+  /** The contact each constraint came from, for events (the first `count`). */
   readonly contacts: Contact[] = [];
 
+  /** Makes room for `count` constraints; may drop the existing ones. */
   reserve(count: number): void {
-    if (this.bodies.length < 2 * count) {
-      let size = this.bodies.length / 2;
+    if (this.slots.length < count) {
+      let size = this.slots.length;
       while (size < count) size *= 2;
       this.data = new Float64Array(size * STRIDE);
       this.bodies = new Int32Array(size * 2);
+      this.slots = new Int32Array(size);
+      this.order = new Int32Array(size);
     }
   }
 }
 
 /**
- * Copies the manifolds of `contacts` into constraints, computing effective masses, the anchors
- * relative to each centre of mass and the separation baseline. Reads velocities from `states`
- * (already loaded with the bodies' velocities of this step's start) for restitution.
+ * Makes a constraint of every touching contact with something that can move, computing effective
+ * masses, the anchors relative to each centre of mass and the separation baseline from the
+ * contact's slot in `contactData`. Reads velocities from `states` (already loaded with the
+ * bodies' velocities of this step's start) for restitution. Visits the contacts in their own
+ * order, so the contact data streams through memory; the sub-step passes use `order`.
  */
 export function prepareContacts(
   constraints: ContactConstraints,
+  contacts: readonly Contact[],
+  contactData: Float64Array,
   states: Float64Array,
   contactSoftness: Softness,
   staticSoftness: Softness,
 ): void {
-  const count = constraints.count;
+  // Each contact is a constraint at most once: reserve for all of them.
+  constraints.reserve(contacts.length);
   constraints.circlePairCount = 0;
-  constraints.reserve(count);
   const c = constraints.data;
   const indices = constraints.bodies;
-  for (let i = 0; i < count; i++) {
-    const contact = constraints.contacts[i]!;
+  const slots = constraints.slots;
+  const list = constraints.contacts;
+  const contactBiasRate = contactSoftness.biasRate;
+  const contactMassScale = contactSoftness.massScale;
+  const contactImpulseScale = contactSoftness.impulseScale;
+  const staticBiasRate = staticSoftness.biasRate;
+  const staticMassScale = staticSoftness.massScale;
+  const staticImpulseScale = staticSoftness.impulseScale;
+  let i = 0;
+  for (let n = 0; n < contacts.length; n++) {
+    const contact = contacts[n]!;
+    if (!contact.touching) continue;
     const bodyA = contact.bodyA;
     const bodyB = contact.bodyB;
-    const m = contact.manifold;
+    // Sleeping or static bodies are solved as immovable (slot 0); awake kinematic ones too.
+    const indexA = bodyA.solverIndex;
+    const indexB = bodyB.solverIndex;
+    const mA = indexA === 0 ? 0 : bodyA.invMass;
+    const mB = indexB === 0 ? 0 : bodyB.invMass;
+    if (mA === 0 && mB === 0) continue;
+    const iA = indexA === 0 ? 0 : bodyA.invInertia;
+    const iB = indexB === 0 ? 0 : bodyB.invInertia;
+    if (i < list.length) list[i] = contact;
+    else list.push(contact);
+    const slot = contact.index;
+    slots[i] = slot;
+    const m = slot * CONTACT_STRIDE;
     const base = i * STRIDE;
-    const a = bodyA.solverIndex * STATE_STRIDE;
-    const b = bodyB.solverIndex * STATE_STRIDE;
+    const a = indexA * STATE_STRIDE;
+    const b = indexB * STATE_STRIDE;
     indices[2 * i] = a;
     indices[2 * i + 1] = b;
-    // Sleeping or static bodies are solved as immovable (slot 0); awake kinematic ones too.
-    const mA = bodyA.solverIndex === 0 ? 0 : bodyA.invMass;
-    const iA = bodyA.solverIndex === 0 ? 0 : bodyA.invInertia;
-    const mB = bodyB.solverIndex === 0 ? 0 : bodyB.invMass;
-    const iB = bodyB.solverIndex === 0 ? 0 : bodyB.invInertia;
     // Stiffer against immovable bodies: nothing on the other side gives way.
-    const soft = mA === 0 || mB === 0 ? staticSoftness : contactSoftness;
-    const nx = m.normalX;
-    const ny = m.normalY;
+    const immovable = mA === 0 || mB === 0;
+    const nx = contactData[m + C_NORMAL_X]!;
+    const ny = contactData[m + C_NORMAL_Y]!;
+    const pointCount = contactData[m + C_POINT_COUNT]!;
     c[base + NORMAL_X] = nx;
     c[base + NORMAL_Y] = ny;
-    c[base + FRICTION] = contact.friction;
-    c[base + RESTITUTION] = contact.restitution;
+    c[base + FRICTION] = contactData[m + C_FRICTION]!;
+    c[base + RESTITUTION] = contactData[m + C_RESTITUTION]!;
     c[base + INV_MASS_A] = mA;
     c[base + INV_I_A] = iA;
     c[base + INV_MASS_B] = mB;
     c[base + INV_I_B] = iB;
-    c[base + BIAS_RATE] = soft.biasRate;
-    c[base + MASS_SCALE] = soft.massScale;
-    c[base + IMPULSE_SCALE] = soft.impulseScale;
-    c[base + POINT_COUNT] = m.pointCount;
-    const radiusA = centredCircleRadius(contact.shapeA);
-    const radiusB = centredCircleRadius(contact.shapeB);
+    c[base + BIAS_RATE] = immovable ? staticBiasRate : contactBiasRate;
+    c[base + MASS_SCALE] = immovable ? staticMassScale : contactMassScale;
+    c[base + IMPULSE_SCALE] = immovable ? staticImpulseScale : contactImpulseScale;
+    c[base + POINT_COUNT] = pointCount;
+    const radiusA = contactData[m + C_RADIUS_A]!;
+    const radiusB = contactData[m + C_RADIUS_B]!;
+    const centerAX = bodyA.centerX;
+    const centerAY = bodyA.centerY;
+    const centerBX = bodyB.centerX;
+    const centerBY = bodyB.centerY;
     c[base + RADIUS_A] = radiusA;
     c[base + RADIUS_B] = radiusB;
-    c[base + CENTER_DX] = bodyB.centerX - bodyA.centerX;
-    c[base + CENTER_DY] = bodyB.centerY - bodyA.centerY;
+    c[base + CENTER_DX] = centerBX - centerAX;
+    c[base + CENTER_DY] = centerBY - centerAY;
     c[base + REF_DP_AX] = 0;
     c[base + REF_DP_AY] = 0;
     c[base + REF_DP_BX] = 0;
@@ -143,8 +196,8 @@ export function prepareContacts(
       c[base + SHIFT_WEIGHT_B] = 1;
     } else {
       const total = mA + mB;
-      c[base + SHIFT_WEIGHT_A] = total > 0 ? mA / total : 0;
-      c[base + SHIFT_WEIGHT_B] = total > 0 ? mB / total : 0;
+      c[base + SHIFT_WEIGHT_A] = mA / total;
+      c[base + SHIFT_WEIGHT_B] = mB / total;
     }
     if (radiusA > 0 && radiusB > 0) {
       if (constraints.circlePairs.length === constraints.circlePairCount) {
@@ -162,21 +215,24 @@ export function prepareContacts(
     const vBx = states[b + V_X]!;
     const vBy = states[b + V_Y]!;
     const wB = states[b + W]!;
-    for (let j = 0; j < m.pointCount; j++) {
-      const mp = m.points[j]!;
+    for (let j = 0; j < pointCount; j++) {
+      const mp = m + C_POINTS + j * C_POINT_STRIDE;
       const p = base + POINTS + j * POINT_STRIDE;
-      const rAx = mp.x - bodyA.centerX;
-      const rAy = mp.y - bodyA.centerY;
-      const rBx = mp.x - bodyB.centerX;
-      const rBy = mp.y - bodyB.centerY;
+      const x = contactData[mp + C_X]!;
+      const y = contactData[mp + C_Y]!;
+      const rAx = x - centerAX;
+      const rAy = y - centerAY;
+      const rBx = x - centerBX;
+      const rBy = y - centerBY;
       c[p + R_AX] = rAx;
       c[p + R_AY] = rAy;
       c[p + R_BX] = rBx;
       c[p + R_BY] = rBy;
       // Separation later = baseline + (change of the anchors' world positions) . n.
-      c[p + BASE_SEPARATION] = mp.separation - ((rBx - rAx) * nx + (rBy - rAy) * ny);
-      c[p + NORMAL_IMPULSE] = mp.normalImpulse;
-      c[p + TANGENT_IMPULSE] = mp.tangentImpulse;
+      c[p + BASE_SEPARATION] =
+        contactData[mp + C_SEPARATION]! - ((rBx - rAx) * nx + (rBy - rAy) * ny);
+      c[p + NORMAL_IMPULSE] = contactData[mp + C_NORMAL_IMPULSE]!;
+      c[p + TANGENT_IMPULSE] = contactData[mp + C_TANGENT_IMPULSE]!;
       c[p + MAX_NORMAL_IMPULSE] = 0;
       c[p + TOTAL_NORMAL_IMPULSE] = 0;
       c[p + TOTAL_TANGENT_IMPULSE] = 0;
@@ -195,7 +251,9 @@ export function prepareContacts(
       const dvy = vBy + wB * rBx - (vAy + wA * rAx);
       c[p + RELATIVE_VELOCITY] = dvx * nx + dvy * ny;
     }
+    i++;
   }
+  constraints.count = i;
 }
 
 /** Moves a body's pose in this step by a translation and a rotation (a bounce's catch-up). */
@@ -212,16 +270,6 @@ function advancePose(s: Float64Array, k: number, dx: number, dy: number, angle: 
     s[k + Q_C] = c * inverseLength;
     s[k + Q_S] = sn * inverseLength;
   }
-}
-
-/** Radius of a circle shape centred on its body's centre of mass, else 0. */
-function centredCircleRadius(shape: Shape): number {
-  const g = shape.geometry;
-  const body = shape.body;
-  if (g.kind !== 'circle' || g.centerX !== body.localCenterX || g.centerY !== body.localCenterY) {
-    return 0;
-  }
-  return g.radius;
 }
 
 /**
@@ -293,7 +341,9 @@ export function refreshCirclePairs(constraints: ContactConstraints, s: Float64Ar
 export function warmStartContacts(constraints: ContactConstraints, s: Float64Array): void {
   const c = constraints.data;
   const indices = constraints.bodies;
-  for (let i = 0; i < constraints.count; i++) {
+  const order = constraints.order;
+  for (let n = 0; n < constraints.count; n++) {
+    const i = order[n]!;
     const base = i * STRIDE;
     const a = indices[2 * i]!;
     const b = indices[2 * i + 1]!;
@@ -380,7 +430,9 @@ export function solveContacts(
 ): void {
   const c = constraints.data;
   const indices = constraints.bodies;
-  for (let i = 0; i < constraints.count; i++) {
+  const order = constraints.order;
+  for (let n = 0; n < constraints.count; n++) {
+    const i = order[n]!;
     const base = i * STRIDE;
     const a = indices[2 * i]!;
     const b = indices[2 * i + 1]!;
@@ -624,24 +676,25 @@ export function solveContacts(
 }
 
 /**
- * Copies the accumulated impulses back to the manifolds for warm starting, and the impulses the
- * step delivered (sum over the sub-steps, plus restitution) to the contacts for events.
+ * Copies the accumulated impulses back to the contacts' slots for warm starting, and the impulses
+ * the step delivered (sum over the sub-steps, plus restitution) for events.
  */
-export function storeImpulses(constraints: ContactConstraints): void {
+export function storeImpulses(constraints: ContactConstraints, contactData: Float64Array): void {
   const c = constraints.data;
+  const slots = constraints.slots;
   for (let i = 0; i < constraints.count; i++) {
     const base = i * STRIDE;
-    const contact = constraints.contacts[i]!;
-    const m = contact.manifold;
-    for (let j = 0; j < m.pointCount; j++) {
+    const m = slots[i]! * CONTACT_STRIDE;
+    const pointCount = c[base + POINT_COUNT]!;
+    for (let j = 0; j < pointCount; j++) {
       const p = base + POINTS + j * POINT_STRIDE;
-      const mp = m.points[j]!;
-      mp.normalImpulse = c[p + IMPACT]! === 2 ? 0 : c[p + NORMAL_IMPULSE]!;
-      mp.tangentImpulse = c[p + TANGENT_IMPULSE]!;
-      mp.maxNormalImpulse = c[p + MAX_NORMAL_IMPULSE]!;
-      mp.relativeVelocity = c[p + RELATIVE_VELOCITY]!;
-      contact.stepNormalImpulse[j] = c[p + TOTAL_NORMAL_IMPULSE]!;
-      contact.stepTangentImpulse[j] = c[p + TOTAL_TANGENT_IMPULSE]!;
+      const mp = m + C_POINTS + j * C_POINT_STRIDE;
+      contactData[mp + C_NORMAL_IMPULSE] = c[p + IMPACT]! === 2 ? 0 : c[p + NORMAL_IMPULSE]!;
+      contactData[mp + C_TANGENT_IMPULSE] = c[p + TANGENT_IMPULSE]!;
+      contactData[mp + C_MAX_NORMAL_IMPULSE] = c[p + MAX_NORMAL_IMPULSE]!;
+      contactData[mp + C_RELATIVE_VELOCITY] = c[p + RELATIVE_VELOCITY]!;
+      contactData[mp + C_STEP_NORMAL_IMPULSE] = c[p + TOTAL_NORMAL_IMPULSE]!;
+      contactData[mp + C_STEP_TANGENT_IMPULSE] = c[p + TOTAL_TANGENT_IMPULSE]!;
     }
   }
 }

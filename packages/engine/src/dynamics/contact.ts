@@ -9,6 +9,29 @@ import type { Circle } from '../geometry/circle.ts';
 import type { Polygon } from '../geometry/polygon.ts';
 import type { Segment } from '../geometry/segment.ts';
 import type { Body } from './body.ts';
+import {
+  CACHE,
+  CONTACT_STRIDE,
+  FRICTION,
+  HAS_CACHE,
+  NORMAL_X,
+  NORMAL_Y,
+  POINT_COUNT,
+  POINT_STRIDE,
+  POINTS,
+  P_ID,
+  P_MAX_NORMAL_IMPULSE,
+  P_NORMAL_IMPULSE,
+  P_SEPARATION,
+  P_STEP_NORMAL_IMPULSE,
+  P_STEP_TANGENT_IMPULSE,
+  P_TANGENT_IMPULSE,
+  P_X,
+  P_Y,
+  RADIUS_A,
+  RADIUS_B,
+  RESTITUTION,
+} from './contact-data.ts';
 import type { Shape } from './shape.ts';
 
 // Manifolds are reused while B moved less than this relative to A (m). Motion along the normal is
@@ -40,57 +63,41 @@ export function shouldSwap(a: Shape, b: Shape): boolean {
 
 /**
  * A potential or actual contact between two shapes whose fat boxes overlap. It lives from the
- * moment the broad phase finds the pair until the boxes separate, so its manifold's impulses carry
- * from step to step (warm starting).
+ * moment the broad phase finds the pair until the boxes separate, so its impulses carry from step
+ * to step (warm starting). Its numbers (manifold, impulses, reuse cache) live in the contact
+ * manager's flat {@link ContactData}, in slot {@link index}; the object keeps who touches whom.
  */
 export class Contact {
   shapeA!: Shape;
   shapeB!: Shape;
   bodyA!: Body;
   bodyB!: Body;
-  readonly manifold: Manifold = new Manifold();
-  /** Mixed material: sqrt(fA fB) and max(eA, eB), as Box2D mixes them. */
-  friction = 0;
-  restitution = 0;
   /** Which collide function applies. */
   pairKind = 0;
-  /**
-   * Normal and friction impulse each manifold point delivered during the last solved step (N s):
-   * the sum over the sub-steps plus restitution, for events. The manifold's own impulses are the
-   * per-sub-step values kept for warm starting.
-   */
-  readonly stepNormalImpulse: [number, number] = [0, 0];
-  readonly stepTangentImpulse: [number, number] = [0, 0];
   /** The manifold has at least one point (possibly speculative). */
   touching = false;
-  /**
-   * Manifold reuse: the relative pose of B in A's frame when the manifold was last computed in
-   * full (x, y, cosine, sine), then per point the surface point of A in A's frame and of B in B's
-   * frame (4 numbers each), then the normal in A's frame. `hasCache` says whether it is valid.
-   */
-  private readonly cache = new Float64Array(14);
-  private hasCache = false;
   /** Distance from body B's origin to its centre of mass (m), for the reuse bound. */
   private extentB = 0;
-  /** Index in the world's contact array, and in each body's contact list. */
+  /** Slot in the contact data and index in the world's contact array; and in each body's list. */
   index = -1;
   indexInA = -1;
   indexInB = -1;
 
-  /** Sets up a pooled contact for a new pair; a and b must already be ordered (see shouldSwap). */
-  init(a: Shape, b: Shape): void {
+  /**
+   * Sets up a pooled contact for a new pair in slot `index` of `data`; a and b must already be
+   * ordered (see shouldSwap).
+   */
+  init(a: Shape, b: Shape, data: Float64Array): void {
     this.shapeA = a;
     this.shapeB = b;
     this.bodyA = a.body;
     this.bodyB = b.body;
-    this.friction = Math.sqrt(a.friction * b.friction);
-    this.restitution = Math.max(a.restitution, b.restitution);
     this.touching = false;
-    this.hasCache = false;
     this.extentB = Math.hypot(b.body.localCenterX, b.body.localCenterY);
-    this.manifold.pointCount = 0;
-    this.stepNormalImpulse[0] = this.stepNormalImpulse[1] = 0;
-    this.stepTangentImpulse[0] = this.stepTangentImpulse[1] = 0;
+    const base = this.index * CONTACT_STRIDE;
+    data.fill(0, base, base + CONTACT_STRIDE);
+    data[base + FRICTION] = Math.sqrt(a.friction * b.friction);
+    data[base + RESTITUTION] = Math.max(a.restitution, b.restitution);
     const kindA = a.geometry.kind;
     const kindB = b.geometry.kind;
     if (kindA === 'circle') this.pairKind = PAIR_CIRCLES;
@@ -100,8 +107,9 @@ export class Contact {
   }
 
   /**
-   * Narrow phase: recomputes the manifold at the bodies' current transforms and carries the
-   * accumulated impulses over to points with the same feature id. Returns whether it touches.
+   * Narrow phase: recomputes the manifold at the bodies' current transforms into the contact's
+   * slot of `data` and carries the accumulated impulses over to points with the same feature id.
+   * Returns whether it touches.
    *
    * Speculative contacts (Catto, "Speculative contacts", 2013): a point is kept while the gap is
    * under SPECULATIVE_DISTANCE, or while the shapes approach fast enough to close the gap within
@@ -110,10 +118,10 @@ export class Contact {
    * body only passing by a corner gets no point (no "ghost" collision), because it does not
    * approach along that point's normal.
    */
-  update(dt: number): boolean {
+  update(dt: number, data: Float64Array): boolean {
     const bodyA = this.bodyA;
     const bodyB = this.bodyB;
-    const m = this.manifold;
+    const base = this.index * CONTACT_STRIDE;
     // Bound on how much the gap can close this step: relative speed plus rotation at the rim.
     const dvx = bodyB.velocityX - bodyA.velocityX;
     const dvy = bodyB.velocityY - bodyA.velocityY;
@@ -133,11 +141,9 @@ export class Contact {
       boxA.minY - margin > boxB.maxY ||
       boxB.minY - margin > boxA.maxY
     ) {
-      if (this.touching || m.pointCount > 0) {
-        m.pointCount = 0;
-        this.hasCache = false;
-        this.touching = false;
-      }
+      data[base + POINT_COUNT] = 0;
+      data[base + HAS_CACHE] = 0;
+      this.touching = false;
       return false;
     }
 
@@ -152,23 +158,19 @@ export class Contact {
     const oy = xfB.y - xfA.y;
     const relX = cA * ox + sA * oy;
     const relY = -sA * ox + cA * oy;
-    const p0 = m.points[0];
-    const p1 = m.points[1];
-    if (this.hasCache && this.poseIsClose(relX, relY, relC, relS)) {
-      this.refreshFromCache();
-      p0.maxNormalImpulse = 0;
-      p1.maxNormalImpulse = 0;
-      this.stepNormalImpulse[0] = this.stepNormalImpulse[1] = 0;
-      this.stepTangentImpulse[0] = this.stepTangentImpulse[1] = 0;
+    const p0 = base + POINTS;
+    const p1 = p0 + POINT_STRIDE;
+    if (data[base + HAS_CACHE] === 1 && this.poseIsClose(data, base, relX, relY, relC, relS)) {
+      this.refreshFromCache(data, base);
+      data[p0 + P_MAX_NORMAL_IMPULSE] = 0;
+      data[p1 + P_MAX_NORMAL_IMPULSE] = 0;
+      data[p0 + P_STEP_NORMAL_IMPULSE] = 0;
+      data[p1 + P_STEP_NORMAL_IMPULSE] = 0;
+      data[p0 + P_STEP_TANGENT_IMPULSE] = 0;
+      data[p1 + P_STEP_TANGENT_IMPULSE] = 0;
       return this.touching;
     }
-    const oldCount = m.pointCount;
-    const id0 = p0.id;
-    const id1 = p1.id;
-    const normal0 = p0.normalImpulse;
-    const tangent0 = p0.tangentImpulse;
-    const normal1 = p1.normalImpulse;
-    const tangent1 = p1.tangentImpulse;
+    const m = scratch;
     const a = this.shapeA.geometry;
     const b = this.shapeB.geometry;
     m.speculativeDistance = margin;
@@ -189,24 +191,53 @@ export class Contact {
         collideSegmentAndPolygon(a as Segment, xfA, b as Polygon, xfB, m);
         break;
     }
-    if (reach > 0 && m.pointCount > 0) this.dropPassingPoints(dt);
-    this.storeCache(relX, relY, relC, relS);
-
-    for (let i = 0; i < m.pointCount; i++) {
-      const p = i === 0 ? p0 : p1;
-      p.normalImpulse = 0;
-      p.tangentImpulse = 0;
-      p.maxNormalImpulse = 0;
-      if (oldCount > 0 && p.id === id0) {
-        p.normalImpulse = normal0;
-        p.tangentImpulse = tangent0;
-      } else if (oldCount > 1 && p.id === id1) {
-        p.normalImpulse = normal1;
-        p.tangentImpulse = tangent1;
-      }
+    if (reach > 0 && m.pointCount > 0) dropPassingPoints(m, bodyA, bodyB, dt);
+    // The solver pushes particles along their line of centres (see contact-solver.ts). Read
+    // here, not when the contact starts, because adding a shape can move a centre of mass.
+    const pairKind = this.pairKind;
+    if (pairKind === PAIR_CIRCLES) data[base + RADIUS_A] = centredCircleRadius(this.shapeA);
+    if (
+      pairKind === PAIR_CIRCLES ||
+      pairKind === PAIR_POLYGON_CIRCLE ||
+      pairKind === PAIR_SEGMENT_CIRCLE
+    ) {
+      data[base + RADIUS_B] = centredCircleRadius(this.shapeB);
     }
-    this.stepNormalImpulse[0] = this.stepNormalImpulse[1] = 0;
-    this.stepTangentImpulse[0] = this.stepTangentImpulse[1] = 0;
+
+    // Carry the impulses of last step's points over to the new points with the same feature.
+    const oldCount = data[base + POINT_COUNT]!;
+    const id0 = data[p0 + P_ID]!;
+    const id1 = data[p1 + P_ID]!;
+    const normal0 = data[p0 + P_NORMAL_IMPULSE]!;
+    const tangent0 = data[p0 + P_TANGENT_IMPULSE]!;
+    const normal1 = data[p1 + P_NORMAL_IMPULSE]!;
+    const tangent1 = data[p1 + P_TANGENT_IMPULSE]!;
+    data[base + NORMAL_X] = m.normalX;
+    data[base + NORMAL_Y] = m.normalY;
+    data[base + POINT_COUNT] = m.pointCount;
+    for (let i = 0; i < m.pointCount; i++) {
+      const mp = m.points[i]!;
+      const p = p0 + i * POINT_STRIDE;
+      data[p + P_X] = mp.x;
+      data[p + P_Y] = mp.y;
+      data[p + P_SEPARATION] = mp.separation;
+      data[p + P_ID] = mp.id;
+      let normal = 0;
+      let tangent = 0;
+      if (oldCount > 0 && mp.id === id0) {
+        normal = normal0;
+        tangent = tangent0;
+      } else if (oldCount > 1 && mp.id === id1) {
+        normal = normal1;
+        tangent = tangent1;
+      }
+      data[p + P_NORMAL_IMPULSE] = normal;
+      data[p + P_TANGENT_IMPULSE] = tangent;
+      data[p + P_MAX_NORMAL_IMPULSE] = 0;
+      data[p + P_STEP_NORMAL_IMPULSE] = 0;
+      data[p + P_STEP_TANGENT_IMPULSE] = 0;
+    }
+    this.storeCache(data, base, relX, relY, relC, relS);
     this.touching = m.pointCount > 0;
     return this.touching;
   }
@@ -217,115 +248,135 @@ export class Contact {
    * updating. Resting stacks (most contacts of a settled scene) skip the separating-axis test and
    * the clipping this way (the manifold reuse of Parry/Rapier).
    */
-  private poseIsClose(x: number, y: number, c: number, s: number): boolean {
-    const cache = this.cache;
-    const dx = x - cache[0]!;
-    const dy = y - cache[1]!;
+  private poseIsClose(
+    data: Float64Array,
+    base: number,
+    x: number,
+    y: number,
+    c: number,
+    s: number,
+  ): boolean {
+    const k = base + CACHE;
+    const dx = x - data[k]!;
+    const dy = y - data[k + 1]!;
     // |sin| of the rotation since then, times the farthest point of B from its own origin.
-    const turn = Math.abs(s * cache[2]! - c * cache[3]!);
+    const turn = Math.abs(s * data[k + 2]! - c * data[k + 3]!);
     const reachB = this.bodyB.maxExtent + this.extentB;
     return dx * dx + dy * dy + turn * reachB * turn * reachB < REUSE_TOLERANCE_SQUARED;
   }
 
-  private storeCache(x: number, y: number, c: number, s: number): void {
-    const m = this.manifold;
-    const cache = this.cache;
+  private storeCache(
+    data: Float64Array,
+    base: number,
+    x: number,
+    y: number,
+    c: number,
+    s: number,
+  ): void {
+    const count = data[base + POINT_COUNT]!;
     // Only polygon pairs are worth it: the circle kernels cost less than the bookkeeping.
     if (
-      m.pointCount === 0 ||
+      count === 0 ||
       (this.pairKind !== PAIR_POLYGONS && this.pairKind !== PAIR_SEGMENT_POLYGON)
     ) {
-      this.hasCache = false;
+      data[base + HAS_CACHE] = 0;
       return;
     }
-    cache[0] = x;
-    cache[1] = y;
-    cache[2] = c;
-    cache[3] = s;
+    const k = base + CACHE;
+    data[k] = x;
+    data[k + 1] = y;
+    data[k + 2] = c;
+    data[k + 3] = s;
     const xfA = this.bodyA.transform;
     const xfB = this.bodyB.transform;
-    const nx = m.normalX;
-    const ny = m.normalY;
-    for (let i = 0; i < m.pointCount; i++) {
-      const p = m.points[i]!;
-      const half = 0.5 * p.separation;
+    const nx = data[base + NORMAL_X]!;
+    const ny = data[base + NORMAL_Y]!;
+    for (let i = 0; i < count; i++) {
+      const p = base + POINTS + i * POINT_STRIDE;
+      const half = 0.5 * data[p + P_SEPARATION]!;
       // Surface points: the manifold point is midway between them along the normal.
-      const ax = p.x - half * nx - xfA.x;
-      const ay = p.y - half * ny - xfA.y;
-      const bx = p.x + half * nx - xfB.x;
-      const by = p.y + half * ny - xfB.y;
-      const k = 4 + 4 * i;
-      cache[k] = xfA.c * ax + xfA.s * ay;
-      cache[k + 1] = -xfA.s * ax + xfA.c * ay;
-      cache[k + 2] = xfB.c * bx + xfB.s * by;
-      cache[k + 3] = -xfB.s * bx + xfB.c * by;
+      const ax = data[p + P_X]! - half * nx - xfA.x;
+      const ay = data[p + P_Y]! - half * ny - xfA.y;
+      const bx = data[p + P_X]! + half * nx - xfB.x;
+      const by = data[p + P_Y]! + half * ny - xfB.y;
+      const q = k + 4 + 4 * i;
+      data[q] = xfA.c * ax + xfA.s * ay;
+      data[q + 1] = -xfA.s * ax + xfA.c * ay;
+      data[q + 2] = xfB.c * bx + xfB.s * by;
+      data[q + 3] = -xfB.s * bx + xfB.c * by;
     }
-    cache[12] = xfA.c * nx + xfA.s * ny;
-    cache[13] = -xfA.s * nx + xfA.c * ny;
-    this.hasCache = true;
+    data[k + 12] = xfA.c * nx + xfA.s * ny;
+    data[k + 13] = -xfA.s * nx + xfA.c * ny;
+    data[base + HAS_CACHE] = 1;
   }
 
   /** Moves the cached surface points with their bodies and measures the gap along the normal again. */
-  private refreshFromCache(): void {
-    const m = this.manifold;
-    const cache = this.cache;
+  private refreshFromCache(data: Float64Array, base: number): void {
+    const k = base + CACHE;
     const xfA = this.bodyA.transform;
     const xfB = this.bodyB.transform;
-    const nx = xfA.c * cache[12]! - xfA.s * cache[13]!;
-    const ny = xfA.s * cache[12]! + xfA.c * cache[13]!;
-    m.normalX = nx;
-    m.normalY = ny;
-    for (let i = 0; i < m.pointCount; i++) {
-      const k = 4 + 4 * i;
-      const ax = xfA.c * cache[k]! - xfA.s * cache[k + 1]! + xfA.x;
-      const ay = xfA.s * cache[k]! + xfA.c * cache[k + 1]! + xfA.y;
-      const bx = xfB.c * cache[k + 2]! - xfB.s * cache[k + 3]! + xfB.x;
-      const by = xfB.s * cache[k + 2]! + xfB.c * cache[k + 3]! + xfB.y;
-      const p = m.points[i]!;
-      p.separation = (bx - ax) * nx + (by - ay) * ny;
-      p.x = 0.5 * (ax + bx);
-      p.y = 0.5 * (ay + by);
-      p.anchorAX = p.x - xfA.x;
-      p.anchorAY = p.y - xfA.y;
-      p.anchorBX = p.x - xfB.x;
-      p.anchorBY = p.y - xfB.y;
+    const nx = xfA.c * data[k + 12]! - xfA.s * data[k + 13]!;
+    const ny = xfA.s * data[k + 12]! + xfA.c * data[k + 13]!;
+    data[base + NORMAL_X] = nx;
+    data[base + NORMAL_Y] = ny;
+    const count = data[base + POINT_COUNT]!;
+    for (let i = 0; i < count; i++) {
+      const q = k + 4 + 4 * i;
+      const ax = xfA.c * data[q]! - xfA.s * data[q + 1]! + xfA.x;
+      const ay = xfA.s * data[q]! + xfA.c * data[q + 1]! + xfA.y;
+      const bx = xfB.c * data[q + 2]! - xfB.s * data[q + 3]! + xfB.x;
+      const by = xfB.s * data[q + 2]! + xfB.c * data[q + 3]! + xfB.y;
+      const p = base + POINTS + i * POINT_STRIDE;
+      data[p + P_SEPARATION] = (bx - ax) * nx + (by - ay) * ny;
+      data[p + P_X] = 0.5 * (ax + bx);
+      data[p + P_Y] = 0.5 * (ay + by);
     }
-  }
-
-  /** Keeps far speculative points only where the bodies approach along the normal fast enough. */
-  private dropPassingPoints(dt: number): void {
-    const m = this.manifold;
-    const bodyA = this.bodyA;
-    const bodyB = this.bodyB;
-    const nx = m.normalX;
-    const ny = m.normalY;
-    let kept = 0;
-    for (let i = 0; i < m.pointCount; i++) {
-      const p = m.points[i]!;
-      if (p.separation >= SPECULATIVE_DISTANCE) {
-        const wA = bodyA.angularVelocityValue;
-        const wB = bodyB.angularVelocityValue;
-        const vx =
-          bodyB.velocityX -
-          wB * (p.y - bodyB.centerY) -
-          (bodyA.velocityX - wA * (p.y - bodyA.centerY));
-        const vy =
-          bodyB.velocityY +
-          wB * (p.x - bodyB.centerX) -
-          (bodyA.velocityY + wA * (p.x - bodyA.centerX));
-        const approach = -(vx * nx + vy * ny) * dt;
-        if (p.separation >= SPECULATIVE_DISTANCE + 1.5 * approach) continue;
-      }
-      if (kept !== i) copyGeometry(m.points[kept]!, p);
-      kept++;
-    }
-    m.pointCount = kept;
   }
 
   /** The body on the other side of the contact. */
   other(body: Body): Body {
     return body === this.bodyA ? this.bodyB : this.bodyA;
   }
+}
+
+/** Radius of a circle shape centred on its body's centre of mass, else 0. */
+function centredCircleRadius(shape: Shape): number {
+  const g = shape.geometry;
+  const body = shape.body;
+  if (g.kind !== 'circle' || g.centerX !== body.localCenterX || g.centerY !== body.localCenterY) {
+    return 0;
+  }
+  return g.radius;
+}
+
+/** The narrow phase's output before it is copied into a contact's slot (one step at a time). */
+const scratch = new Manifold();
+
+/** Keeps far speculative points only where the bodies approach along the normal fast enough. */
+function dropPassingPoints(m: Manifold, bodyA: Body, bodyB: Body, dt: number): void {
+  const nx = m.normalX;
+  const ny = m.normalY;
+  let kept = 0;
+  for (let i = 0; i < m.pointCount; i++) {
+    const p = m.points[i]!;
+    if (p.separation >= SPECULATIVE_DISTANCE) {
+      const wA = bodyA.angularVelocityValue;
+      const wB = bodyB.angularVelocityValue;
+      const vx =
+        bodyB.velocityX -
+        wB * (p.y - bodyB.centerY) -
+        (bodyA.velocityX - wA * (p.y - bodyA.centerY));
+      const vy =
+        bodyB.velocityY +
+        wB * (p.x - bodyB.centerX) -
+        (bodyA.velocityY + wA * (p.x - bodyA.centerX));
+      const approach = -(vx * nx + vy * ny) * dt;
+      if (p.separation >= SPECULATIVE_DISTANCE + 1.5 * approach) continue;
+    }
+    if (kept !== i) copyGeometry(m.points[kept]!, p);
+    kept++;
+  }
+  m.pointCount = kept;
 }
 
 function copyGeometry(to: ManifoldPoint, from: ManifoldPoint): void {

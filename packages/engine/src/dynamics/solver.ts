@@ -62,7 +62,6 @@ export class Solver {
    */
   readonly awake: Body[] = [];
   awakeCount = 0;
-  private readonly ordered: Contact[] = [];
   private readonly contactSoftness = new Softness();
   private readonly staticSoftness = new Softness();
 
@@ -103,8 +102,16 @@ export class Solver {
     }
   }
 
-  /** Solves the step for the gathered bodies and the given touching contacts. */
-  solve(contacts: readonly Contact[], settings: SolverSettings, dt: number): void {
+  /**
+   * Solves the step for the gathered bodies and the given contacts (the touching ones become
+   * constraints); `contactData` holds the contacts' numbers (see contact-data.ts).
+   */
+  solve(
+    contacts: readonly Contact[],
+    contactData: Float64Array,
+    settings: SolverSettings,
+    dt: number,
+  ): void {
     const awake = this.awake;
     const s = this.states.data;
     const constraints = this.constraints;
@@ -113,28 +120,19 @@ export class Solver {
     const inverseH = 1 / h;
     const threshold = settings.restitutionThreshold;
 
-    // Contacts that matter this step: touching, with something that can move.
-    const list = constraints.contacts;
-    let count = 0;
-    for (let i = 0; i < contacts.length; i++) {
-      const contact = contacts[i]!;
-      if (!contact.touching) continue;
-      const a = contact.bodyA;
-      const b = contact.bodyB;
-      if ((a.solverIndex === 0 || a.invMass === 0) && (b.solverIndex === 0 || b.invMass === 0)) {
-        continue;
-      }
-      if (count < list.length) list[count] = contact;
-      else list.push(contact);
-      count++;
-    }
-    constraints.count = count;
-    this.scrambleOrder(list, count);
     // A contact spring stiffer than a quarter of the sub-step rate would be under-resolved.
     const contactHertz = Math.min(settings.contactHertz, (0.25 * subSteps) / dt);
     this.contactSoftness.set(contactHertz, settings.contactDampingRatio, h);
     this.staticSoftness.set(2 * contactHertz, settings.contactDampingRatio, h);
-    prepareContacts(constraints, s, this.contactSoftness, this.staticSoftness);
+    prepareContacts(
+      constraints,
+      contacts,
+      contactData,
+      s,
+      this.contactSoftness,
+      this.staticSoftness,
+    );
+    scrambleOrder(constraints.order, constraints.count);
 
     for (let step = 0; step < subSteps; step++) {
       integrateVelocities(awake, this.awakeCount, s, settings, h);
@@ -145,37 +143,8 @@ export class Solver {
       refreshCirclePairs(constraints, s);
       solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, false);
     }
-    storeImpulses(constraints);
+    storeImpulses(constraints, contactData);
     this.finalizeBodies(dt);
-  }
-
-  /**
-   * Puts the step's contacts in a scrambled, deterministic order. Gauss-Seidel sweeps in creation
-   * order (left to right, row by row in a stack) push every row the same way and made a 100-row
-   * pyramid lean by half a metre; a scrambled sweep cancels that bias, as Box2D v3's graph
-   * colouring does. Runs of SCRAMBLE_RUN neighbouring contacts stay together (they touch nearby
-   * bodies, which keeps the body states in cache: scrambling single contacts cost half the speed);
-   * the runs are visited in the order k * stride mod runs, with a stride near runs / golden ratio
-   * and coprime to it.
-   */
-  private scrambleOrder(list: Contact[], count: number): void {
-    const runs = Math.ceil(count / SCRAMBLE_RUN);
-    if (runs < 3) return;
-    let stride = Math.floor(runs * 0.6180339887498949) | 1;
-    while (greatestCommonDivisor(stride, runs) !== 1) stride += 2;
-    const ordered = this.ordered;
-    let k = 0;
-    for (let visited = 0, run = 0; visited < runs; visited++) {
-      const end = Math.min(count, (run + 1) * SCRAMBLE_RUN);
-      for (let i = run * SCRAMBLE_RUN; i < end; i++) {
-        if (k < ordered.length) ordered[k] = list[i]!;
-        else ordered.push(list[i]!);
-        k++;
-      }
-      run += stride;
-      if (run >= runs) run -= runs;
-    }
-    for (let i = 0; i < count; i++) list[i] = ordered[i]!;
   }
 
   /** Writes velocities and poses back to the bodies and updates their sleep timers. */
@@ -225,8 +194,34 @@ export class Solver {
   }
 }
 
-/** Contacts kept together when the sweep order is scrambled (see Solver.scrambleOrder). */
+/** Contacts kept together when the sweep order is scrambled (see scrambleOrder). */
 const SCRAMBLE_RUN = 32;
+
+/**
+ * Writes a scrambled, deterministic visiting order of `count` constraints into `order`.
+ * Gauss-Seidel sweeps in creation order (left to right, row by row in a stack) push every row the
+ * same way and made a 100-row pyramid lean by half a metre; a scrambled sweep cancels that bias,
+ * as Box2D v3's graph colouring does. Runs of SCRAMBLE_RUN neighbouring constraints stay together
+ * (they touch nearby bodies and sit together in memory, which keeps both in cache: scrambling
+ * single contacts cost half the speed); the runs are visited in the order k * stride mod runs,
+ * with a stride near runs / golden ratio and coprime to it.
+ */
+function scrambleOrder(order: Int32Array, count: number): void {
+  const runs = Math.ceil(count / SCRAMBLE_RUN);
+  if (runs < 3) {
+    for (let i = 0; i < count; i++) order[i] = i;
+    return;
+  }
+  let stride = Math.floor(runs * 0.6180339887498949) | 1;
+  while (greatestCommonDivisor(stride, runs) !== 1) stride += 2;
+  let k = 0;
+  for (let visited = 0, run = 0; visited < runs; visited++) {
+    const end = Math.min(count, (run + 1) * SCRAMBLE_RUN);
+    for (let i = run * SCRAMBLE_RUN; i < end; i++) order[k++] = i;
+    run += stride;
+    if (run >= runs) run -= runs;
+  }
+}
 
 function greatestCommonDivisor(a: number, b: number): number {
   while (b !== 0) {

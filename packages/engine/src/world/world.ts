@@ -7,6 +7,20 @@ import { AABB } from '../geometry/aabb.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
 import type { Contact } from '../dynamics/contact.ts';
+import {
+  CONTACT_STRIDE,
+  NORMAL_X,
+  NORMAL_Y,
+  POINT_COUNT,
+  POINT_STRIDE,
+  POINTS,
+  P_RELATIVE_VELOCITY,
+  P_SEPARATION,
+  P_STEP_NORMAL_IMPULSE,
+  P_STEP_TANGENT_IMPULSE,
+  P_X,
+  P_Y,
+} from '../dynamics/contact-data.ts';
 import { ContactManager } from '../dynamics/contact-manager.ts';
 import { ContinuousSolver } from '../dynamics/continuous.ts';
 import {
@@ -235,7 +249,12 @@ export class World {
       this.broadPhase.updatePairs(this.onPair);
       this.contactManager.collide(dt);
       this.solver.gatherBodies(this.bodyList, dt);
-      this.solver.solve(this.contactManager.contacts, this.settings, dt);
+      this.solver.solve(
+        this.contactManager.contacts,
+        this.contactManager.slots.data,
+        this.settings,
+        dt,
+      );
       if (this.settings.enableContinuous) this.solveContinuous();
       this.updateBroadPhase();
       if (this.settings.enableSleep) {
@@ -545,22 +564,24 @@ export class World {
   }
 
   private fillCollisionEvent(contact: Contact, event: CollisionEventData): void {
-    const m = contact.manifold;
+    const data = this.contactManager.slots.data;
+    const base = contact.index * CONTACT_STRIDE;
+    const pointCount = data[base + POINT_COUNT]!;
     let normalImpulse = 0;
     let tangentImpulse = 0;
     let approach = 0;
-    for (let j = 0; j < m.pointCount; j++) {
-      const mp = m.points[j]!;
+    for (let j = 0; j < pointCount; j++) {
+      const p = base + POINTS + j * POINT_STRIDE;
       // What the step delivered (all sub-steps plus restitution), not the per-sub-step warm start.
-      const pointNormal = contact.stepNormalImpulse[j]!;
-      const pointTangent = contact.stepTangentImpulse[j]!;
+      const pointNormal = data[p + P_STEP_NORMAL_IMPULSE]!;
+      const pointTangent = data[p + P_STEP_TANGENT_IMPULSE]!;
       normalImpulse += pointNormal;
       tangentImpulse += pointTangent;
-      approach = Math.max(approach, -mp.relativeVelocity);
+      approach = Math.max(approach, -data[p + P_RELATIVE_VELOCITY]!);
       const point = event.points[j]!;
-      point.x = mp.x;
-      point.y = mp.y;
-      point.separation = mp.separation;
+      point.x = data[p + P_X]!;
+      point.y = data[p + P_Y]!;
+      point.separation = data[p + P_SEPARATION]!;
       point.normalImpulse = pointNormal;
       point.tangentImpulse = pointTangent;
     }
@@ -568,9 +589,9 @@ export class World {
     event.bodyB = contact.bodyB;
     event.shapeA = contact.shapeA;
     event.shapeB = contact.shapeB;
-    event.normalX = m.normalX;
-    event.normalY = m.normalY;
-    event.pointCount = m.pointCount;
+    event.normalX = data[base + NORMAL_X]!;
+    event.normalY = data[base + NORMAL_Y]!;
+    event.pointCount = pointCount;
     event.normalImpulse = normalImpulse;
     event.tangentImpulse = tangentImpulse;
     event.approachSpeed = approach;

@@ -1,0 +1,73 @@
+// The numbers of every contact in one flat array, one slot per contact (slot = the contact's
+// index in the contact manager). The narrow phase writes a slot, the solver prepares its
+// constraints from it and stores the impulses back, and events read it. Keeping them out of the
+// Contact object graph (manifold, point objects, cache) makes those passes stream through memory
+// instead of chasing a dozen objects per contact: Box2D v3 keeps its b2ContactSim in arrays for the
+// same reason.
+
+/** Unit normal from shape A to shape B (world frame). */
+export const NORMAL_X = 0;
+export const NORMAL_Y = 1;
+/** Number of manifold points, 0..2. */
+export const POINT_COUNT = 2;
+/** Mixed material: sqrt(fA fB) and max(eA, eB). */
+export const FRICTION = 3;
+export const RESTITUTION = 4;
+/** Radius of a circle shape centred on its body's centre of mass, else 0 (see contact-solver). */
+export const RADIUS_A = 5;
+export const RADIUS_B = 6;
+/** 1 when the manifold-reuse cache below is valid. */
+export const HAS_CACHE = 7;
+/**
+ * Manifold reuse cache: B's pose in A's frame when the manifold was last computed in full
+ * (x, y, cosine, sine), then per point the surface point of A in A's frame and of B in B's frame
+ * (4 numbers each), then the normal in A's frame (2): 14 numbers.
+ */
+export const CACHE = 8;
+/** First point; point j starts at POINTS + j * POINT_STRIDE. */
+export const POINTS = 22;
+
+// Per point, relative to its start.
+/** World position (m), midway between the surfaces. */
+export const P_X = 0;
+export const P_Y = 1;
+/** Signed distance along the normal (m), negative when overlapping. */
+export const P_SEPARATION = 2;
+/** Feature id, to carry impulses over to the same point next step. */
+export const P_ID = 3;
+/** Accumulated impulses of the last sub-step (N s), for warm starting. */
+export const P_NORMAL_IMPULSE = 4;
+export const P_TANGENT_IMPULSE = 5;
+/** Largest normal impulse of any sub-step of the last step (N s). */
+export const P_MAX_NORMAL_IMPULSE = 6;
+/** Normal relative velocity before the solve (m/s); negative when approaching. */
+export const P_RELATIVE_VELOCITY = 7;
+/** What the last step delivered (sum over the sub-steps plus restitution, N s), for events. */
+export const P_STEP_NORMAL_IMPULSE = 8;
+export const P_STEP_TANGENT_IMPULSE = 9;
+export const POINT_STRIDE = 10;
+
+/** Doubles per contact slot. */
+export const CONTACT_STRIDE = POINTS + 2 * POINT_STRIDE;
+
+/** Growable flat storage of contact slots. */
+export class ContactData {
+  data: Float64Array = new Float64Array(CONTACT_STRIDE * 256);
+
+  /** Makes room for `count` slots, keeping the existing ones. */
+  reserve(count: number): void {
+    const needed = count * CONTACT_STRIDE;
+    if (this.data.length >= needed) return;
+    let size = this.data.length;
+    while (size < needed) size *= 2;
+    const grown = new Float64Array(size);
+    grown.set(this.data);
+    this.data = grown;
+  }
+
+  /** Copies slot `from` over slot `to` (swap-removal keeps the slots dense). */
+  move(from: number, to: number): void {
+    const d = this.data;
+    d.copyWithin(to * CONTACT_STRIDE, from * CONTACT_STRIDE, (from + 1) * CONTACT_STRIDE);
+  }
+}
