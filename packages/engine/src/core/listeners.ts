@@ -5,6 +5,8 @@
  */
 export class Listeners<Events extends { [K in keyof Events]: (event: never) => void }> {
   private readonly lists = new Map<keyof Events, readonly ((event: never) => void)[]>();
+  /** Listeners of every type together: 0 lets hot loops skip an object without a map lookup. */
+  total = 0;
 
   on<K extends keyof Events>(type: K, listener: Events[K]): () => void {
     if (typeof listener !== 'function') {
@@ -12,6 +14,7 @@ export class Listeners<Events extends { [K in keyof Events]: (event: never) => v
     }
     const list = this.lists.get(type);
     this.lists.set(type, list === undefined ? [listener] : [...list, listener]);
+    this.total++;
     return () => this.off(type, listener);
   }
 
@@ -22,6 +25,7 @@ export class Listeners<Events extends { [K in keyof Events]: (event: never) => v
     if (index < 0) return;
     const next = list.slice();
     next.splice(index, 1);
+    this.total--;
     if (next.length === 0) this.lists.delete(type);
     else this.lists.set(type, next);
   }

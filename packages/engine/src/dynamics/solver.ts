@@ -54,6 +54,11 @@ export interface SolverSettings {
  */
 export class Solver {
   readonly states: BodyStates = new BodyStates();
+  /**
+   * What the velocity integration needs of each awake body, copied once per step so the sub-step
+   * loops read numbers instead of body objects; entry i belongs to awake[i] (see PARAM_*).
+   */
+  private params: Float64Array = new Float64Array(PARAM_STRIDE * 64);
   readonly constraints: ContactConstraints = new ContactConstraints();
   /**
    * Awake non-static bodies of this step, in world order (body.solverIndex = position + 1); only
@@ -84,6 +89,12 @@ export class Solver {
     }
     this.awakeCount = count;
     const s = this.states.reserve(count);
+    if (this.params.length < count * PARAM_STRIDE) {
+      let size = this.params.length;
+      while (size < count * PARAM_STRIDE) size *= 2;
+      this.params = new Float64Array(size);
+    }
+    const params = this.params;
     for (let i = 0; i < count; i++) {
       const body = awake[i]!;
       const k = (i + 1) * STATE_STRIDE;
@@ -99,6 +110,16 @@ export class Solver {
       body.center0Y = body.centerY;
       body.angle0 = body.angleValue;
       gatherForces(body, dt);
+      const q = i * PARAM_STRIDE;
+      params[q + INV_MASS] = body.invMass;
+      params[q + INV_INERTIA] = body.invInertia;
+      params[q + GRAVITY_SCALE] = body.gravityScaleValue;
+      params[q + DRAG] = body.dragValue;
+      params[q + FORCE_X] = body.forceX;
+      params[q + FORCE_Y] = body.forceY;
+      params[q + TORQUE] = body.torqueValue;
+      params[q + LINEAR_DAMPING] = body.linearDampingValue;
+      params[q + ANGULAR_DAMPING] = body.angularDampingValue;
     }
   }
 
@@ -112,7 +133,6 @@ export class Solver {
     settings: SolverSettings,
     dt: number,
   ): void {
-    const awake = this.awake;
     const s = this.states.data;
     const constraints = this.constraints;
     const subSteps = settings.subSteps;
@@ -135,7 +155,7 @@ export class Solver {
     scrambleOrder(constraints.order, constraints.count);
 
     for (let step = 0; step < subSteps; step++) {
-      integrateVelocities(awake, this.awakeCount, s, settings, h);
+      integrateVelocities(this.params, this.awakeCount, s, settings, h);
       refreshCirclePairs(constraints, s);
       warmStartContacts(constraints, s);
       solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, true);
@@ -193,6 +213,18 @@ export class Solver {
     }
   }
 }
+
+// Per awake body in Solver.params.
+const INV_MASS = 0;
+const INV_INERTIA = 1;
+const GRAVITY_SCALE = 2;
+const DRAG = 3;
+const FORCE_X = 4;
+const FORCE_Y = 5;
+const TORQUE = 6;
+const LINEAR_DAMPING = 7;
+const ANGULAR_DAMPING = 8;
+const PARAM_STRIDE = 9;
 
 /** Contacts kept together when the sweep order is scrambled (see scrambleOrder). */
 const SCRAMBLE_RUN = 32;
@@ -274,7 +306,7 @@ function gatherForces(body: Body, dt: number): void {
  * applied implicitly (v / (1 + h c)) so that no damping value can reverse a velocity.
  */
 function integrateVelocities(
-  awake: readonly Body[],
+  params: Float64Array,
   count: number,
   s: Float64Array,
   settings: SolverSettings,
@@ -284,28 +316,29 @@ function integrateVelocities(
   const gy = settings.gravityY;
   const maxSpeedSquared = settings.maxLinearSpeed * settings.maxLinearSpeed;
   for (let i = 0; i < count; i++) {
-    const body = awake[i]!;
-    const invMass = body.invMass;
+    const q = i * PARAM_STRIDE;
+    const invMass = params[q + INV_MASS]!;
     if (invMass === 0) continue; // kinematic: keeps the velocity it was given
     const k = (i + 1) * STATE_STRIDE;
-    const scale = body.gravityScaleValue;
+    const scale = params[q + GRAVITY_SCALE]!;
     let vx = s[k + V_X]!;
     let vy = s[k + V_Y]!;
     // The thesis's drag, F = -drag |v| v, with |v| taken at the start of the sub-step: then the
     // discrete motion has the exact terminal speed sqrt(m g / drag) and coasts exactly as
     // 1/v = 1/v0 + (drag/m) t.
-    const drag = body.dragValue;
+    const drag = params[q + DRAG]!;
     const dragFactor = drag > 0 ? 1 / (1 + h * invMass * drag * Math.sqrt(vx * vx + vy * vy)) : 1;
-    vx = (vx + h * (invMass * body.forceX + scale * gx)) * dragFactor;
-    vy = (vy + h * (invMass * body.forceY + scale * gy)) * dragFactor;
-    let w = s[k + W]! + h * body.invInertia * body.torqueValue;
-    const linearDamping = body.linearDampingValue;
+    vx = (vx + h * (invMass * params[q + FORCE_X]! + scale * gx)) * dragFactor;
+    vy = (vy + h * (invMass * params[q + FORCE_Y]! + scale * gy)) * dragFactor;
+    let w = s[k + W]! + h * params[q + INV_INERTIA]! * params[q + TORQUE]!;
+    const linearDamping = params[q + LINEAR_DAMPING]!;
     if (linearDamping > 0) {
       const factor = 1 / (1 + h * linearDamping);
       vx *= factor;
       vy *= factor;
     }
-    if (body.angularDampingValue > 0) w /= 1 + h * body.angularDampingValue;
+    const angularDamping = params[q + ANGULAR_DAMPING]!;
+    if (angularDamping > 0) w /= 1 + h * angularDamping;
     const speedSquared = vx * vx + vy * vy;
     if (speedSquared > maxSpeedSquared) {
       const ratio = settings.maxLinearSpeed / Math.sqrt(speedSquared);

@@ -550,6 +550,13 @@ export class World {
       const contact = contacts[i]!;
       const bodyA = contact.bodyA;
       const bodyB = contact.bodyB;
+      if (
+        worldListeners === undefined &&
+        bodyA.listeners.total === 0 &&
+        bodyB.listeners.total === 0
+      ) {
+        continue;
+      }
       const listenersA = bodyA.listeners.get('collision');
       const listenersB = bodyB.listeners.get('collision');
       if (worldListeners === undefined && listenersA === undefined && listenersB === undefined)
@@ -602,6 +609,7 @@ export class World {
     const worldListeners = this.listeners.get('move');
     for (let i = 0; i < this.solver.awakeCount; i++) {
       const body = awake[i]!;
+      if (worldListeners === undefined && body.listeners.total === 0) continue;
       const listeners = body.listeners.get('move');
       if ((worldListeners === undefined && listeners === undefined) || body.removalPending)
         continue;
