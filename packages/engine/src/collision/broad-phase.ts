@@ -190,8 +190,18 @@ export class BroadPhase {
    * contact are reported too: filtering them is the caller's job.
    */
   updatePairs(onPair: PairCallback): void {
-    const trees = this.trees;
     this.onPair = onPair;
+    this.queryMovedProxies();
+    this.onPair = null;
+    this.queryProxyKey = NULL_KEY;
+    this.clearMoveBuffer();
+  }
+
+  // The loops live in methods of their own, with nothing after them: V8 compiles a long loop on
+  // stack replacement before the code after it has run, and that code then lacked type feedback
+  // and deoptimised on every step.
+  private queryMovedProxies(): void {
+    const trees = this.trees;
     const box = this.scratchBox;
     for (let i = 0; i < this.moveCount; i++) {
       const proxyKey = this.moveBuffer[i]!;
@@ -213,6 +223,9 @@ export class BroadPhase {
       this.currentType = DYNAMIC;
       trees[2].query(box, this.pairQueryCallback);
     }
+  }
+
+  private clearMoveBuffer(): void {
     for (let i = 0; i < this.moveCount; i++) {
       const proxyKey = this.moveBuffer[i]!;
       if (proxyKey !== NULL_KEY) {
@@ -220,8 +233,6 @@ export class BroadPhase {
       }
     }
     this.moveCount = 0;
-    this.onPair = null;
-    this.queryProxyKey = NULL_KEY;
   }
 
   /**

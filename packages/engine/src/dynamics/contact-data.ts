@@ -48,7 +48,7 @@ export const P_STEP_TANGENT_IMPULSE = 9;
 export const POINT_STRIDE = 10;
 
 /** Doubles per contact slot. */
-export const CONTACT_STRIDE = POINTS + 2 * POINT_STRIDE;
+export const CONTACT_STRIDE: number = POINTS + 2 * POINT_STRIDE;
 
 /** Growable flat storage of contact slots. */
 export class ContactData {

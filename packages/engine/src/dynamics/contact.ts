@@ -160,7 +160,18 @@ export class Contact {
     const relY = -sA * ox + cA * oy;
     const p0 = base + POINTS;
     const p1 = p0 + POINT_STRIDE;
-    if (data[base + HAS_CACHE] === 1 && this.poseIsClose(data, base, relX, relY, relC, relS)) {
+    // Reuse: B moved relative to A by less than REUSE_TOLERANCE at any of its points since the
+    // manifold was computed in full, so the same features touch and only the separations need
+    // updating. Resting stacks (most contacts of a settled scene) skip the separating-axis test
+    // and the clipping this way (the manifold reuse of Parry/Rapier). Inline, not a method:
+    // V8 boxes fractional arguments of calls it does not inline, and this runs per contact.
+    const k = base + CACHE;
+    const dx = relX - data[k]!;
+    const dy = relY - data[k + 1]!;
+    // |sin| of the rotation since then, times the farthest point of B from its own origin.
+    const turn =
+      Math.abs(relS * data[k + 2]! - relC * data[k + 3]!) * (bodyB.maxExtent + this.extentB);
+    if (data[base + HAS_CACHE] === 1 && dx * dx + dy * dy + turn * turn < REUSE_TOLERANCE_SQUARED) {
       this.refreshFromCache(data, base);
       data[p0 + P_MAX_NORMAL_IMPULSE] = 0;
       data[p1 + P_MAX_NORMAL_IMPULSE] = 0;
@@ -237,42 +248,17 @@ export class Contact {
       data[p + P_STEP_NORMAL_IMPULSE] = 0;
       data[p + P_STEP_TANGENT_IMPULSE] = 0;
     }
-    this.storeCache(data, base, relX, relY, relC, relS);
+    data[k] = relX;
+    data[k + 1] = relY;
+    data[k + 2] = relC;
+    data[k + 3] = relS;
+    this.storeCache(data, base);
     this.touching = m.pointCount > 0;
     return this.touching;
   }
 
-  /**
-   * True if B moved relative to A by less than REUSE_TOLERANCE at any of its points since the
-   * manifold was computed in full: then the same features touch, and only the separations need
-   * updating. Resting stacks (most contacts of a settled scene) skip the separating-axis test and
-   * the clipping this way (the manifold reuse of Parry/Rapier).
-   */
-  private poseIsClose(
-    data: Float64Array,
-    base: number,
-    x: number,
-    y: number,
-    c: number,
-    s: number,
-  ): boolean {
-    const k = base + CACHE;
-    const dx = x - data[k]!;
-    const dy = y - data[k + 1]!;
-    // |sin| of the rotation since then, times the farthest point of B from its own origin.
-    const turn = Math.abs(s * data[k + 2]! - c * data[k + 3]!);
-    const reachB = this.bodyB.maxExtent + this.extentB;
-    return dx * dx + dy * dy + turn * reachB * turn * reachB < REUSE_TOLERANCE_SQUARED;
-  }
-
-  private storeCache(
-    data: Float64Array,
-    base: number,
-    x: number,
-    y: number,
-    c: number,
-    s: number,
-  ): void {
+  /** Keeps the manifold for reuse; B's pose in A's frame is already in the cache's first 4 slots. */
+  private storeCache(data: Float64Array, base: number): void {
     const count = data[base + POINT_COUNT]!;
     // Only polygon pairs are worth it: the circle kernels cost less than the bookkeeping.
     if (
@@ -283,10 +269,6 @@ export class Contact {
       return;
     }
     const k = base + CACHE;
-    data[k] = x;
-    data[k + 1] = y;
-    data[k + 2] = c;
-    data[k + 3] = s;
     const xfA = this.bodyA.transform;
     const xfB = this.bodyB.transform;
     const nx = data[base + NORMAL_X]!;
