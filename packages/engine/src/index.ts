@@ -39,5 +39,13 @@ export type {
   WorldOnlyEvents,
 } from './dynamics/events.ts';
 
+export { Joint } from './dynamics/joints/joint.ts';
+export type { JointOptions, JointType } from './dynamics/joints/joint.ts';
+export { mouseJoint, revoluteJoint } from './dynamics/joints/joint-factories.ts';
+export { MouseJoint } from './dynamics/joints/mouse-joint.ts';
+export type { MouseJointOptions } from './dynamics/joints/mouse-joint.ts';
+export { RevoluteJoint } from './dynamics/joints/revolute-joint.ts';
+export type { RevoluteJointOptions } from './dynamics/joints/revolute-joint.ts';
+
 export { PhysicalError } from './core/errors.ts';
 export type { Vec2, Vec2Like } from './math/vec2.ts';
