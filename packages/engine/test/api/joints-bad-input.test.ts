@@ -4,8 +4,11 @@ import {
   World,
   box,
   mouseJoint,
+  distanceJoint,
   particle,
+  prismaticJoint,
   revoluteJoint,
+  weldJoint,
   type Body,
 } from '@physical/engine';
 
@@ -109,6 +112,66 @@ describe('bad joint input', () => {
     expectField(
       () => world.addJoint(revoluteJoint({ bodyA: a, bodyB: b, anchor: { x: 0, y: 0 } })),
       'bodyB',
+    );
+  });
+
+  it('rejects bad distance, weld and prismatic options', () => {
+    const { a, b } = pair();
+    const anchorA = { x: 0, y: 0 };
+    const anchorB = { x: 2, y: 0 };
+    expectField(
+      () => distanceJoint({ bodyA: a, bodyB: b, anchorA: { x: NaN, y: 0 }, anchorB }),
+      'anchorA.x',
+    );
+    expectField(
+      () => distanceJoint({ bodyA: a, bodyB: b, anchorA, anchorB: undefined as never }),
+      'anchorB',
+    );
+    expectField(
+      () => distanceJoint({ bodyA: a, bodyB: b, anchorA, anchorB, length: -1 }),
+      'length',
+    );
+    expectField(
+      () => distanceJoint({ bodyA: a, bodyB: b, anchorA, anchorB, minLength: 3, maxLength: 1 }),
+      'minLength',
+    );
+    expectField(
+      () => distanceJoint({ bodyA: a, bodyB: b, anchorA, anchorB, maxLength: 1 }),
+      'length',
+    );
+    expectField(() => distanceJoint({ bodyA: a, bodyB: b, anchorA, anchorB, hertz: -1 }), 'hertz');
+    const rope = distanceJoint({ bodyA: a, bodyB: b, anchorA, anchorB, enableSpring: true });
+    expectField(() => (rope.length = Infinity), 'length');
+    expectField(() => rope.setLengthRange(3, 4), 'length');
+    expectField(
+      () => weldJoint({ bodyA: a, bodyB: b, anchor: { x: 0, y: -Infinity } }),
+      'anchor.y',
+    );
+    expectField(
+      () => weldJoint({ bodyA: a, bodyB: b, anchor: anchorA, linearHertz: -1 }),
+      'linearHertz',
+    );
+    expectField(
+      () => weldJoint({ bodyA: a, bodyB: b, anchor: anchorA, angularHertz: NaN }),
+      'angularHertz',
+    );
+    expectField(() => weldJoint({ bodyA: a, bodyB: a, anchor: anchorA }), 'bodyB');
+    const axis = { x: 1, y: 0 };
+    expectField(
+      () => prismaticJoint({ bodyA: a, bodyB: b, anchor: anchorA, axis: { x: 0, y: 0 } }),
+      'axis',
+    );
+    expectField(
+      () => prismaticJoint({ bodyA: a, bodyB: b, anchor: anchorA, axis: { x: NaN, y: 1 } }),
+      'axis.x',
+    );
+    expectField(
+      () => prismaticJoint({ bodyA: a, bodyB: b, anchor: anchorA, axis, lower: 2, upper: 1 }),
+      'lower',
+    );
+    expectField(
+      () => prismaticJoint({ bodyA: a, bodyB: b, anchor: anchorA, axis, maxMotorForce: -5 }),
+      'maxMotorForce',
     );
   });
 });
