@@ -157,13 +157,14 @@ function mergeConvex(outline: Outline, triangles: number[][]): number[][] {
         const a = part[e]!;
         const b = part[e + 1 === part.length ? 0 : e + 1]!;
         const q = owner[b * count + a]!;
-        if (q < 0 || q === p) continue;
-        const merged = mergeAcross(xs, ys, part, parts[q]!, a, b, flat);
+        const other = q < 0 || q === p ? null : parts[q];
+        if (other === null || other === undefined) continue;
+        const merged = mergeAcross(xs, ys, part, other, a, b, flat);
         if (merged === null) continue;
+        setOwner(owner, count, part, -1);
+        setOwner(owner, count, other, -1);
         parts[p] = merged;
         parts[q] = null;
-        owner[a * count + b] = -1;
-        owner[b * count + a] = -1;
         setOwner(owner, count, merged, p);
         isChanged = true;
         break;
