@@ -3,6 +3,12 @@ import type { Capsule } from '../geometry/capsule.ts';
 import type { Transform } from '../math/transform.ts';
 import { makeFeatureId, type Manifold } from './manifold.ts';
 
+// Two clipped face points for writeFacePoints, in A's frame relative to A's first centre:
+// normal x, y, then per point core x, y and core distance from the reference segment. Passed
+// through a scratch array rather than as arguments: V8 boxes fractional numbers passed to a call
+// it does not inline, and the narrow phase must not allocate.
+const face = new Float64Array(8);
+
 /**
  * Contact between two capsules: up to two points. A two-sided wall collides as a capsule of
  * radius 0 (see collide-segment-capsule.ts).
@@ -146,7 +152,8 @@ export function collideCapsules(
       const sa = nAx * ax + nAy * ay;
       const sb = nAx * bx + nAy * by;
       if (sa <= distance + LINEAR_SLOP || sb <= distance + LINEAR_SLOP) {
-        writeFacePoints(out, nAx, nAy, ax, ay, sa, bx, by, sb, rA - rB, radius, 0, a, xfA, xfB);
+        setFace(nAx, nAy, ax, ay, sa, bx, by, sb);
+        writeFacePoints(out, 0, a, b, xfA, xfB);
         return;
       }
     } else {
@@ -178,7 +185,8 @@ export function collideCapsules(
       const sb = nBx * (bx - p2x) + nBy * (by - p2y);
       if (sa <= distance + LINEAR_SLOP || sb <= distance + LINEAR_SLOP) {
         // A's clipped points are on A's core; the normal from A to B is -nB.
-        writeFacePoints(out, -nBx, -nBy, ax, ay, sa, bx, by, sb, rA - rB, radius, 1, a, xfA, xfB);
+        setFace(-nBx, -nBy, ax, ay, sa, bx, by, sb);
+        writeFacePoints(out, 1, a, b, xfA, xfB);
         return;
       }
     }
@@ -207,13 +215,7 @@ export function collideCapsules(
   out.pointCount = 1;
 }
 
-/**
- * Writes up to two face points and the normal n (A to B, A's frame). The core points (ax, ay),
- * (bx, by) lie on the incident segment, at core distances sa, sb from the reference segment:
- * on B when A's face is the reference (`reference` 0), on A when B's is (1).
- */
-function writeFacePoints(
-  out: Manifold,
+function setFace(
   nx: number,
   ny: number,
   ax: number,
@@ -222,24 +224,45 @@ function writeFacePoints(
   bx: number,
   by: number,
   sb: number,
-  radiusDifference: number,
-  radius: number,
+): void {
+  face[0] = nx;
+  face[1] = ny;
+  face[2] = ax;
+  face[3] = ay;
+  face[4] = sa;
+  face[5] = bx;
+  face[6] = by;
+  face[7] = sb;
+}
+
+/**
+ * Writes up to two face points (from `face`) and the normal (A to B). The core points lie on the
+ * incident segment at core distances from the reference segment: on B when A's face is the
+ * reference (`reference` 0), on A when B's is (1).
+ */
+function writeFacePoints(
+  out: Manifold,
   reference: number,
   a: Capsule,
+  b: Capsule,
   xfA: Transform,
   xfB: Transform,
 ): void {
   const speculativeDistance = out.speculativeDistance;
+  const nx = face[0]!;
+  const ny = face[1]!;
+  const radius = a.radius + b.radius;
+  const radiusDifference = a.radius - b.radius;
   let count = 0;
   for (let k = 0; k < 2; k++) {
-    const x = k === 0 ? ax : bx;
-    const y = k === 0 ? ay : by;
-    const offset = k === 0 ? sa : sb;
+    const x = face[2 + 3 * k]!;
+    const y = face[3 + 3 * k]!;
+    const offset = face[4 + 3 * k]!;
     const separation = offset - radius;
     if (separation >= speculativeDistance) continue;
-    // A's face as reference: x is on B's core, A's surface is at rA along n from A's line, so
-    // the midpoint is x + (rA - rB - offset) / 2 n. B's face: x is on A's core, B's surface lies
-    // at x + offset n - rB n, A's at x + rA n: midpoint x + (rA + offset - rB) / 2 n.
+    // A's face as reference: x is on B's core and A's surface lies at (rA - offset) along n from
+    // it, B's at -rB: midway is x + (rA - rB - offset) / 2 n. B's face: x is on A's core, A's
+    // surface at +rA, B's at offset - rB: midway is x + (rA - rB + offset) / 2 n.
     const shift =
       reference === 0 ? 0.5 * (radiusDifference - offset) : 0.5 * (radiusDifference + offset);
     writePoint(
