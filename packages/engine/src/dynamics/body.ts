@@ -76,7 +76,8 @@ const scratchMass = new MassData();
 
 /**
  * A rigid body: the thesis's RigidBody2D. Build one, then `world.add(body)`; or use the helpers
- * {@link particle}, {@link box}, {@link regularPolygon}, {@link polygon} and {@link wall}.
+ * {@link particle}, {@link box}, {@link capsule}, {@link regularPolygon}, {@link polygon} and
+ * {@link wall}.
  *
  * Coordinates are SI in a y-down world by default (x right, y down, like the screen).
  */
@@ -436,7 +437,7 @@ export class Body<UserData = unknown> {
 
   // ---------------------------------------------------------------- shapes
 
-  /** The body's shapes. */
+  /** The body's shapes; a concave polygon shows as its convex parts, one shape each. */
   get shapes(): readonly Shape[] {
     return this.shapeList;
   }

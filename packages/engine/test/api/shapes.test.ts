@@ -165,6 +165,24 @@ describe('polygon outlines', () => {
     expect(compound.mass).toBeCloseTo(5, 12);
   });
 
+  it("splits the README's U bucket into three parts", () => {
+    const bucket = polygon({
+      position: { x: 0, y: 5 },
+      vertices: [
+        { x: -1, y: -0.5 },
+        { x: -0.9, y: -0.5 },
+        { x: -0.9, y: 0.4 },
+        { x: 0.9, y: 0.4 },
+        { x: 0.9, y: -0.5 },
+        { x: 1, y: -0.5 },
+        { x: 1, y: 0.5 },
+        { x: -1, y: 0.5 },
+      ],
+    });
+    expect(bucket.shapes.length).toBe(3);
+    expect(bucket.mass).toBeCloseTo(2 * 0.1 * 0.9 + 2 * 0.1, 12);
+  });
+
   it('rounds a convex polygon body, but not one it splits', () => {
     expect(polygon({ vertices: square, radius: 0.1 }).mass).toBeCloseTo(
       1 + 4 * 0.1 + Math.PI * 0.01,
