@@ -1,6 +1,7 @@
 import { PairSet } from '../collision/pair-set.ts';
 import { aabbOverlaps } from '../geometry/aabb.ts';
 import type { Body } from './body.ts';
+import { filtersCollide } from './filter.ts';
 import { canCollide, Contact, shouldSwap } from './contact.ts';
 import type { Islands } from './island.ts';
 import type { Shape } from './shape.ts';
@@ -33,6 +34,8 @@ export class ContactManager {
     // Only pairs where something can be pushed matter.
     if (bodyA.type !== 'dynamic' && bodyB.type !== 'dynamic') return;
     if (!canCollide(shapeA, shapeB)) return;
+    // Sensors never make contacts; filters may forbid the pair (see filter.ts).
+    if (shapeA.sensor || shapeB.sensor || !filtersCollide(shapeA, shapeB)) return;
     if (!this.pairs.add(shapeA.id, shapeB.id)) return;
     const contact = this.pool.pop() ?? new Contact();
     if (shouldSwap(shapeA, shapeB)) contact.init(shapeB, shapeA);
@@ -94,6 +97,11 @@ export class ContactManager {
       const contact = contacts[i]!;
       if (contact.shapeA === shape || contact.shapeB === shape) this.destroy(contact, true);
     }
+  }
+
+  /** Destroys one contact (its filter now forbids it), waking its bodies if it touched. */
+  destroyContact(contact: Contact): void {
+    this.destroy(contact, true);
   }
 
   private destroy(contact: Contact, wakeBodies: boolean): void {

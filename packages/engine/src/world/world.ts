@@ -12,11 +12,13 @@ import { ContinuousSolver } from '../dynamics/continuous.ts';
 import {
   CollisionEventData,
   ContactEventData,
+  SensorEventData,
   type BodyEvents,
   type ContactView,
   type WorldOnlyEvents,
 } from '../dynamics/events.ts';
 import { Islands } from '../dynamics/island.ts';
+import { Sensors } from '../dynamics/sensor.ts';
 import type { Shape } from '../dynamics/shape.ts';
 import { Solver } from '../dynamics/solver.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
@@ -50,6 +52,8 @@ export class World {
   private readonly contactManager = new ContactManager(this.islands);
   private readonly solver = new Solver();
   private readonly continuous = new ContinuousSolver();
+  private readonly sensors = new Sensors();
+  private readonly sensorEvent = new SensorEventData();
   private readonly queries: WorldQueries;
   private readonly shapesById: (Shape | null)[] = [];
   private readonly freeShapeIds: number[] = [];
@@ -238,6 +242,8 @@ export class World {
       this.solver.solve(this.contactManager.contacts, this.settings, dt);
       if (this.settings.enableContinuous) this.solveContinuous();
       this.updateBroadPhase();
+      if (this.settings.enableContinuous) this.solveBullets();
+      if (this.sensors.shapes.length > 0) this.sensors.update(this.broadPhase, this.shapesById);
       if (this.settings.enableSleep) {
         this.islands.sleepRestingIslands(
           this.solver.awake,
@@ -363,6 +369,24 @@ export class World {
     if (this.bodyList[shape.body.worldIndex] === shape.body) this.createProxy(shape);
   }
 
+  /**
+   * @internal A shape's filter changed: contacts it now forbids end (and wake their bodies), and
+   * the shape looks for pairs again at the next step.
+   */
+  shapeFilterChanged(shape: Shape): void {
+    this.requireUnlocked('filter');
+    if (shape.proxyKey < 0) return;
+    const contacts = shape.body.contacts;
+    for (let i = contacts.length - 1; i >= 0; i--) {
+      const contact = contacts[i]!;
+      if (contact.shapeA !== shape && contact.shapeB !== shape) continue;
+      if (!contact.shapeA.collidesWith(contact.shapeB)) this.contactManager.destroyContact(contact);
+    }
+    this.broadPhase.bufferMove(shape.proxyKey);
+    this.wakeBody(shape.body);
+    this.dispatchContactEnds();
+  }
+
   /** @internal */
   shapeRemoved(shape: Shape): void {
     if (shape.proxyKey < 0) return;
@@ -404,9 +428,11 @@ export class World {
     const box = this.speculativeBox(shape);
     shape.proxyKey = this.broadPhase.createProxy(box, PROXY_TYPE[shape.body.type], id, false);
     this.broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
+    if (shape.sensor) this.sensors.add(shape);
   }
 
   private destroyProxy(shape: Shape): void {
+    this.sensors.remove(shape);
     this.broadPhase.destroyProxy(shape.proxyKey);
     this.shapesById[shape.id] = null;
     this.freeShapeIds.push(shape.id);
@@ -453,8 +479,24 @@ export class World {
     const awake = this.solver.awake;
     for (let i = 0; i < this.solver.awakeCount; i++) {
       const body = awake[i]!;
-      if (body.type !== 'dynamic' || !ContinuousSolver.isFast(body)) continue;
+      if (body.type !== 'dynamic' || body.bulletValue || !ContinuousSolver.isFast(body)) continue;
       this.continuous.solve(body, this.broadPhase, this.shapesById);
+    }
+  }
+
+  /**
+   * Bullets sweep last, against static shapes and the final poses of every other body (Box2D
+   * v3's order), so the broad phase already holds those poses; a bullet moved back to its first
+   * impact gets its boxes refreshed again.
+   */
+  private solveBullets(): void {
+    const awake = this.solver.awake;
+    for (let i = 0; i < this.solver.awakeCount; i++) {
+      const body = awake[i]!;
+      if (body.type !== 'dynamic' || !body.bulletValue || !ContinuousSolver.isFast(body)) continue;
+      if (this.continuous.solve(body, this.broadPhase, this.shapesById, true)) {
+        this.refreshProxies(body, false);
+      }
     }
   }
 
@@ -487,6 +529,7 @@ export class World {
       }
     }
     this.dispatchContactEnds();
+    this.dispatchSensorBegins();
     this.dispatchCollisions();
     this.dispatchMoves();
   }
@@ -498,6 +541,44 @@ export class World {
     for (let i = 0; i < count; i++) {
       this.emitContact('contactEnd', this.contactEvent, manager.endedA[i]!, manager.endedB[i]!);
     }
+    const sensors = this.sensors;
+    const ended = sensors.endedCount;
+    sensors.endedCount = 0;
+    for (let i = 0; i < ended; i++) {
+      this.emitSensor('sensorEnd', sensors.endedSensor[i]!, sensors.endedVisitor[i]!);
+    }
+  }
+
+  private dispatchSensorBegins(): void {
+    const sensors = this.sensors;
+    const count = sensors.beganCount;
+    sensors.beganCount = 0;
+    for (let i = 0; i < count; i++) {
+      this.emitSensor('sensorBegin', sensors.beganSensor[i]!, sensors.beganVisitor[i]!);
+    }
+  }
+
+  private emitSensor(type: 'sensorBegin' | 'sensorEnd', sensor: Shape, visitor: Shape): void {
+    const sensorBody = sensor.body;
+    const visitorBody = visitor.body;
+    const worldListeners = this.listeners.get(type);
+    const sensorListeners = sensorBody.listeners.get(type);
+    const visitorListeners = visitorBody.listeners.get(type);
+    if (
+      worldListeners === undefined &&
+      sensorListeners === undefined &&
+      visitorListeners === undefined
+    )
+      return;
+    if (type === 'sensorBegin' && (sensorBody.removalPending || visitorBody.removalPending)) return;
+    const event = this.sensorEvent;
+    event.sensorShape = sensor;
+    event.sensorBody = sensorBody;
+    event.visitorShape = visitor;
+    event.visitorBody = visitorBody;
+    callAll(worldListeners, event);
+    callAll(sensorListeners, event);
+    callAll(visitorListeners, event);
   }
 
   private emitContact(
