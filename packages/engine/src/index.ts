@@ -19,6 +19,7 @@ export { Shape } from './dynamics/shape.ts';
 export type {
   BoxShapeOptions,
   CircleShapeOptions,
+  CollisionOptions,
   Geometry,
   MaterialOptions,
   PolygonShapeOptions,
@@ -36,8 +37,10 @@ export type {
   ContactEvent,
   ContactPoint,
   ContactView,
+  SensorEvent,
   WorldOnlyEvents,
 } from './dynamics/events.ts';
+export type { Filter, FilterOptions } from './dynamics/filter.ts';
 
 export { PhysicalError } from './core/errors.ts';
 export type { Vec2, Vec2Like } from './math/vec2.ts';
