@@ -19,9 +19,10 @@ import {
 } from '../dynamics/events.ts';
 import { Islands } from '../dynamics/island.ts';
 import { Sensors } from '../dynamics/sensor.ts';
-import type { Shape } from '../dynamics/shape.ts';
+import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
 import { Solver } from '../dynamics/solver.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
+import { ShapeQueries, type QueryPose, type ShapeCastHit } from './shape-queries.ts';
 import {
   resolveWorldOptions,
   validateSubSteps,
@@ -55,6 +56,7 @@ export class World {
   private readonly sensors = new Sensors();
   private readonly sensorEvent = new SensorEventData();
   private readonly queries: WorldQueries;
+  private readonly shapeQueries: ShapeQueries;
   private readonly shapesById: (Shape | null)[] = [];
   private readonly freeShapeIds: number[] = [];
   private nextBodyId = 0;
@@ -75,6 +77,7 @@ export class World {
   constructor(options: WorldOptions = {}) {
     this.settings = resolveWorldOptions(options);
     this.queries = new WorldQueries(this.broadPhase, this.shapesById);
+    this.shapeQueries = new ShapeQueries(this.broadPhase, this.shapesById);
     this.islands.onWake = (body) => {
       const listeners = this.listeners.get('wake');
       if (listeners !== undefined) callAll(listeners, body);
@@ -290,6 +293,37 @@ export class World {
     requireVector('from', from);
     requireVector('to', to);
     return this.queries.rayCast(from.x, from.y, to.x, to.y);
+  }
+
+  /**
+   * Every shape hit by the ray from `from` to `to` (m), sorted by fraction along the ray (ties in
+   * world order), one hit per shape. Sensors are not hit. A new array each call.
+   */
+  rayCastAll(from: Vec2Like, to: Vec2Like): RayCastHit[] {
+    requireVector('from', from);
+    requireVector('to', to);
+    return this.queries.rayCastAll(from.x, from.y, to.x, to.y);
+  }
+
+  /**
+   * Sweeps a shape (described as for a body: circle, box, polygon or segment; material ignored)
+   * from `pose` along `translation` (m) and returns the first shape it would hit, or null.
+   * Sensors are not hit.
+   *
+   * @example
+   * // Will a 0.25 m ball thrown right from (0, 0) hit something within 10 m?
+   * const hit = world.shapeCast({ type: 'circle', radius: 0.25 }, { position: { x: 0, y: 0 } }, { x: 10, y: 0 });
+   */
+  shapeCast(shape: ShapeOptions, pose: QueryPose, translation: Vec2Like): ShapeCastHit | null {
+    return this.shapeQueries.shapeCast(shape, pose, translation);
+  }
+
+  /**
+   * Bodies with a shape overlapping (or touching) the given shape placed at `pose`, each once, in
+   * world order. Sensors are not reported.
+   */
+  overlapShape(shape: ShapeOptions, pose: QueryPose): Body[] {
+    return this.shapeQueries.overlapShape(shape, pose);
   }
 
   /** Number of bodies that are awake and not static: 0 means the world is at rest. */
