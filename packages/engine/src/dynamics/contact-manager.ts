@@ -99,6 +99,19 @@ export class ContactManager {
     }
   }
 
+  /**
+   * Recreates a contact from a snapshot: shapes already ordered, appended to the contact list.
+   * The caller fills its state and the bodies' contact lists.
+   */
+  restoreContact(shapeA: Shape, shapeB: Shape): Contact {
+    this.pairs.add(shapeA.id, shapeB.id);
+    const contact = new Contact();
+    contact.init(shapeA, shapeB);
+    contact.index = this.contacts.length;
+    this.contacts.push(contact);
+    return contact;
+  }
+
   /** Destroys one contact (its filter now forbids it), waking its bodies if it touched. */
   destroyContact(contact: Contact): void {
     this.destroy(contact, true);

@@ -68,8 +68,10 @@ export class Contact {
    * full (x, y, cosine, sine), then per point the surface point of A in A's frame and of B in B's
    * frame (4 numbers each), then the normal in A's frame. `hasCache` says whether it is valid.
    */
-  private readonly cache = new Float64Array(14);
-  private hasCache = false;
+  /** @internal (read and written by world snapshots) */
+  readonly cache = new Float64Array(14);
+  /** @internal */
+  hasCache = false;
   /** Distance from body B's origin to its centre of mass (m), for the reuse bound. */
   private extentB = 0;
   /** Index in the world's contact array, and in each body's contact list. */

@@ -22,6 +22,7 @@ import { Sensors } from '../dynamics/sensor.ts';
 import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
 import { Solver } from '../dynamics/solver.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
+import { loadWorld, saveWorld, type WorldInternals, type WorldSnapshot } from './snapshot.ts';
 import { ShapeQueries, type QueryPose, type ShapeCastHit } from './shape-queries.ts';
 import {
   resolveWorldOptions,
@@ -345,6 +346,40 @@ export class World {
       this.fillCollisionEvent(contact, event);
       visitor(event);
     }
+  }
+
+  // ---------------------------------------------------------------- snapshots
+
+  /**
+   * Saves everything that decides the world's future as plain, JSON-compatible data: restoring it
+   * with {@link World.fromSnapshot} and stepping gives bit-for-bit the states this world reaches.
+   * Listeners, `userData` and the app's Force objects are not saved. Not allowed during a step.
+   *
+   * @example
+   * const saved = JSON.stringify(world.snapshot());
+   * // later, or elsewhere
+   * const copy = World.fromSnapshot(JSON.parse(saved));
+   */
+  snapshot(): WorldSnapshot {
+    if (this.locked) {
+      throw new PhysicalError(
+        'snapshot',
+        'cannot be taken while the world is stepping (from a listener); take it after step().',
+      );
+    }
+    return saveWorld(this.internals());
+  }
+
+  /**
+   * A new world from a {@link snapshot} (a parsed JSON copy is fine), its bodies in the saved
+   * order. Checks the whole snapshot first: a wrong format or version, a missing or non-numeric
+   * field or a broken reference throws a PhysicalError naming the field (`snapshot.bodies[2].angle`),
+   * and no world is returned.
+   */
+  static fromSnapshot(snapshot: WorldSnapshot): World {
+    const world = new World();
+    loadWorld(world.internals(), snapshot);
+    return world;
   }
 
   // ---------------------------------------------------------------- events
@@ -707,6 +742,41 @@ export class World {
       callAll(worldListeners, body);
       callAll(listeners, body);
     }
+  }
+
+  /** @internal The parts of the world a snapshot reads and writes. */
+  internals(): WorldInternals {
+    // eslint-disable-next-line @typescript-eslint/no-this-alias
+    const world = this;
+    return {
+      world,
+      settings: this.settings,
+      bodies: this.bodyList,
+      broadPhase: this.broadPhase,
+      islands: this.islands,
+      contactManager: this.contactManager,
+      sensors: this.sensors,
+      shapesById: this.shapesById,
+      freeShapeIds: this.freeShapeIds,
+      get nextBodyId(): number {
+        return world.nextBodyId;
+      },
+      set nextBodyId(value: number) {
+        world.nextBodyId = value;
+      },
+      get stepCount(): number {
+        return world.stepCount;
+      },
+      set stepCount(value: number) {
+        world.stepCount = value;
+      },
+      get lastStep(): number {
+        return world.lastStep;
+      },
+      set lastStep(value: number) {
+        world.lastStep = value;
+      },
+    };
   }
 
   /** @internal Duration of the last step (s), for tools that turn impulses into forces. */
