@@ -15,8 +15,7 @@ import type { Shape } from './shape.ts';
  * over a static floor reports the floor once), passing the sensor's filter. Sensors do not detect
  * other sensors, as in Box2D v3.
  *
- * Each sensor's overlap list keeps broad-phase order; the lists are reused, so a scene whose
- * overlaps do not change allocates nothing.
+ * Each sensor's overlap list is in broad-phase order as of its last change.
  */
 export class Sensors {
   /** Sensor shapes in the world, in the order they joined. */
@@ -89,9 +88,12 @@ export class Sensors {
       this.box.set(tight.minX, tight.minY, tight.maxX, tight.maxY);
       broadPhase.query(this.box, this.queryCallback);
       const list = this.overlaps[i]!;
+      let changed = list.length !== this.foundCount;
       // Ends: in the old list, not found now.
       for (let j = 0; j < list.length; j++) {
-        if (!this.wasFound(list[j]!)) this.recordEnd(sensor, list[j]!);
+        if (this.wasFound(list[j]!)) continue;
+        this.recordEnd(sensor, list[j]!);
+        changed = true;
       }
       // Begins: found now, not in the old list.
       for (let j = 0; j < this.foundCount; j++) {
@@ -100,9 +102,14 @@ export class Sensors {
         const n = this.beganCount++;
         this.beganSensor[n] = sensor;
         this.beganVisitor[n] = visitor;
+        changed = true;
       }
-      list.length = 0;
-      for (let j = 0; j < this.foundCount; j++) list.push(this.found[j]!);
+      // Rewritten only when the set changed (then in broad-phase order): a sensor whose
+      // overlaps stay the same touches nothing, so a steady scene allocates nothing.
+      if (changed) {
+        list.length = 0;
+        for (let j = 0; j < this.foundCount; j++) list.push(this.found[j]!);
+      }
     }
     this.current = null;
   }

@@ -1,6 +1,6 @@
 import { describe, expect, it } from 'vitest';
-import { Body, PhysicalError, World, box, particle, wall } from '@physical/engine';
-import type { SensorEvent } from '@physical/engine';
+import { PhysicalError, World, box, particle, wall } from '@physical/engine';
+import type { SensorEvent, Body } from '@physical/engine';
 
 interface Record {
   type: string;
@@ -157,5 +157,17 @@ describe('collision filters', () => {
     const body = box({ width: 1, height: 1 });
     expect(() => (body.shapes[0]!.filter = { mask: Number.NaN })).toThrow(PhysicalError);
     expect(() => (body.shapes[0]!.filter = null as unknown as object)).toThrow(/filter/);
+  });
+});
+
+describe('bullet flag', () => {
+  it('is an option and a property, and rejects non-booleans', () => {
+    const shot = particle({ radius: 0.1, bullet: true });
+    expect(shot.bullet).toBe(true);
+    shot.bullet = false;
+    expect(shot.bullet).toBe(false);
+    expect(particle({ radius: 0.1 }).bullet).toBe(false);
+    expect(() => particle({ radius: 0.1, bullet: 1 as unknown as boolean })).toThrow(/^bullet: /);
+    expect(() => (shot.bullet = 'yes' as unknown as boolean)).toThrow(PhysicalError);
   });
 });

@@ -89,7 +89,7 @@ describe('snapshots', () => {
     expect(sameBits(state(restored), state(original))).toBe(true);
     // Every internal the snapshot holds agrees too (contacts, trees, timers).
     expect(JSON.stringify(restored.snapshot())).toBe(JSON.stringify(original.snapshot()));
-  });
+  }, 30_000);
 
   it('keeps -0, infinite force durations and a JSON round trip exact', () => {
     const world = new World({ gravity: { x: 0, y: 0 } });

@@ -34,7 +34,8 @@ function passThroughs(bullet: boolean, angle: number, offset: number, boxSpeed: 
     }),
   );
   let crossings = 0;
-  for (let i = 0; i < 30; i++) {
+  // The shot reaches the box in its first step; 15 steps cover the fast phase with margin.
+  for (let i = 0; i < 15; i++) {
     const before = { x: shot.position.x, y: shot.position.y };
     const fast = Math.hypot(shot.linearVelocity.x, shot.linearVelocity.y) > 100;
     world.step(DT);
@@ -78,6 +79,6 @@ describe('bullets', () => {
       expect(bullets.passes).toBe(0);
       // The scene is hard enough that the flag matters: without it some shots tunnel.
       expect(plain.passes).toBeGreaterThan(0);
-    });
+    }, 30_000);
   }
 });
