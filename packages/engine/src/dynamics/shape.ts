@@ -151,7 +151,9 @@ export class Shape {
   }
 
   set filter(value: FilterOptions) {
-    this.setFilter(resolveFilter('filter', value));
+    const filter = resolveFilter('filter', value);
+    this.body.worldRef?.requireUnlocked('filter');
+    this.setFilter(filter);
     this.body.worldRef?.shapeFilterChanged(this);
   }
 

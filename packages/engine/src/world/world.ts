@@ -443,7 +443,6 @@ export class World {
    * the shape looks for pairs again at the next step.
    */
   shapeFilterChanged(shape: Shape): void {
-    this.requireUnlocked('filter');
     if (shape.proxyKey < 0) return;
     const contacts = shape.body.contacts;
     for (let i = contacts.length - 1; i >= 0; i--) {

@@ -91,6 +91,34 @@ describe('snapshots', () => {
     expect(JSON.stringify(restored.snapshot())).toBe(JSON.stringify(original.snapshot()));
   }, 30_000);
 
+  it('restores a world saved before its first step, and sensor overlaps without repeating begins', () => {
+    const early = new World();
+    early.add(particle({ radius: 0.5, position: { x: 0, y: -3 } }));
+    early.add(box({ type: 'static', position: { x: 0, y: 0 }, width: 4, height: 4, sensor: true }));
+    const copyEarly = World.fromSnapshot(
+      JSON.parse(JSON.stringify(early.snapshot())) as WorldSnapshot,
+    );
+    const begins = [0, 0];
+    early.on('sensorBegin', () => begins[0]!++);
+    copyEarly.on('sensorBegin', () => begins[1]!++);
+    for (let i = 0; i < 60; i++) {
+      early.step(1 / 60);
+      copyEarly.step(1 / 60);
+      if (i === 30) {
+        // Saved while the ball is inside the sensor: the copy must not report it entering again.
+        const mid = World.fromSnapshot(
+          JSON.parse(JSON.stringify(early.snapshot())) as WorldSnapshot,
+        );
+        let again = 0;
+        mid.on('sensorBegin', () => again++);
+        mid.step(1 / 60);
+        expect(again).toBe(0);
+      }
+    }
+    expect(begins).toEqual([1, 1]);
+    expect(sameBits(state(copyEarly), state(early))).toBe(true);
+  });
+
   it('keeps -0, infinite force durations and a JSON round trip exact', () => {
     const world = new World({ gravity: { x: 0, y: 0 } });
     const ball = world.add(particle({ radius: 0.5, linearVelocity: { x: -0, y: 0 } }));
