@@ -4,6 +4,8 @@ export { World } from './world/world.ts';
 export type { WorldEvents } from './world/world.ts';
 export type { WorldOptions } from './world/world-options.ts';
 export type { RayCastHit } from './world/queries.ts';
+export type { SnapshotNumber, SnapshotValue, WorldSnapshot } from './world/snapshot.ts';
+export type { QueryPose, ShapeCastHit } from './world/shape-queries.ts';
 
 export { Body } from './dynamics/body.ts';
 export type { BodyOptions, BodyType } from './dynamics/body.ts';
@@ -28,6 +30,7 @@ export type {
   BoxShapeOptions,
   CapsuleShapeOptions,
   CircleShapeOptions,
+  CollisionOptions,
   Geometry,
   MaterialOptions,
   PolygonShapeOptions,
@@ -46,8 +49,10 @@ export type {
   ContactEvent,
   ContactPoint,
   ContactView,
+  SensorEvent,
   WorldOnlyEvents,
 } from './dynamics/events.ts';
+export type { Filter, FilterOptions } from './dynamics/filter.ts';
 
 export { Joint } from './dynamics/joints/joint.ts';
 export type { JointOptions, JointType } from './dynamics/joints/joint.ts';

@@ -2,7 +2,7 @@ import { AABB_MARGIN } from '../core/constants.ts';
 import { AABB } from '../geometry/aabb.ts';
 import type { RayInput } from '../geometry/ray.ts';
 import { DynamicTree } from './dynamic-tree.ts';
-import type { TreeQueryCallback, TreeRayCastCallback } from './dynamic-tree.ts';
+import type { TreeQueryCallback, TreeRayCastCallback, TreeState } from './dynamic-tree.ts';
 
 // The broad phase finds candidate shape pairs from fattened boxes, one DynamicTree per body
 // type as in Box2D v3: static shapes never need to find each other, so a moved dynamic proxy
@@ -12,6 +12,12 @@ import type { TreeQueryCallback, TreeRayCastCallback } from './dynamic-tree.ts';
 // Fat boxes (tight box + AABB_MARGIN) let a shape move a little without touching the tree;
 // only shapes that leave their fat box are reinserted and buffered as moved, and only moved
 // proxies look for new pairs.
+
+/** A broad phase's state as plain data: the static, kinematic and dynamic trees, and moved keys. */
+export interface BroadPhaseState {
+  readonly trees: readonly [TreeState, TreeState, TreeState];
+  readonly moved: readonly number[];
+}
 
 /** Body type of a proxy: 0 static, 1 kinematic, 2 dynamic. */
 export type ProxyType = 0 | 1 | 2;
@@ -148,6 +154,33 @@ export class BroadPhase {
     }
     this.movedIndex[proxyKey] = this.moveCount;
     this.moveBuffer[this.moveCount++] = proxyKey;
+  }
+
+  /** The trees and the move buffer as plain data (for world snapshots). */
+  exportState(): BroadPhaseState {
+    return {
+      trees: [
+        this.trees[0].exportState(),
+        this.trees[1].exportState(),
+        this.trees[2].exportState(),
+      ],
+      moved: Array.from(this.moveBuffer.subarray(0, this.moveCount)),
+    };
+  }
+
+  /** Replaces every tree and the move buffer; the states must have passed checkTreeState. */
+  importState(state: BroadPhaseState): void {
+    for (let type = 0; type < 3; type++) this.trees[type]!.importState(state.trees[type]!);
+    this.moveBuffer = new Int32Array(Math.max(64, state.moved.length));
+    this.movedIndex = new Int32Array(64).fill(-1);
+    this.moveCount = 0;
+    for (const key of state.moved) {
+      if (key === NULL_KEY) {
+        this.moveBuffer[this.moveCount++] = NULL_KEY;
+        continue;
+      }
+      this.bufferMove(key);
+    }
   }
 
   /** Copies the proxy's stored (fat) box (m, world frame) into `out` and returns `out`. */

@@ -36,6 +36,76 @@ export type TreeQueryCallback = (proxyId: number, userData: number) => boolean;
  */
 export type TreeRayCastCallback = (input: RayInput, proxyId: number, userData: number) => number;
 
+/** A tree's state as plain arrays: per node 4 box numbers (m) and 5 integers. */
+export interface TreeState {
+  readonly capacity: number;
+  readonly root: number;
+  readonly freeList: number;
+  readonly leafCount: number;
+  readonly boxes: readonly number[];
+  readonly child1: readonly number[];
+  readonly child2: readonly number[];
+  readonly parent: readonly number[];
+  readonly heights: readonly number[];
+  readonly userData: readonly number[];
+}
+
+/**
+ * Checks that a tree state is well formed (lengths, links in range, parents matching children,
+ * every live node reached once from the root, the free list covering the rest), so a corrupt
+ * snapshot cannot make queries loop or read out of range. Returns what is wrong, or null.
+ */
+export function checkTreeState(state: TreeState): string | null {
+  const n = state.capacity;
+  if (!Number.isInteger(n) || n < 2 || n > 1 << 26) return 'capacity must be a whole number >= 2';
+  if (state.boxes.length !== 4 * n) return `boxes must hold ${4 * n} numbers`;
+  for (const key of ['child1', 'child2', 'parent', 'heights', 'userData'] as const) {
+    const list = state[key];
+    if (list.length !== n) return `${key} must hold ${n} integers`;
+    for (const v of list)
+      if (!Number.isInteger(v) || v < -1 || v > 0x7fffffff) return `${key} holds ${v}`;
+  }
+  const inRange = (node: number): boolean => node >= 0 && node < n;
+  const seen = new Uint8Array(n);
+  let leaves = 0;
+  if (state.root !== NULL_NODE) {
+    if (!inRange(state.root) || state.parent[state.root] !== NULL_NODE)
+      return 'root is not a live node';
+    const stack = [state.root];
+    while (stack.length > 0) {
+      const node = stack.pop()!;
+      if (seen[node] === 1) return `node ${node} is reached twice`;
+      seen[node] = 1;
+      const a = state.child1[node]!;
+      const b = state.child2[node]!;
+      if (a === NULL_NODE) {
+        if (b !== NULL_NODE || state.heights[node] !== 0) return `leaf ${node} is malformed`;
+        leaves++;
+        continue;
+      }
+      if (!inRange(a) || !inRange(b) || state.parent[a] !== node || state.parent[b] !== node) {
+        return `node ${node} has bad children`;
+      }
+      stack.push(a, b);
+    }
+  } else if (state.leafCount !== 0) {
+    return 'an empty tree has no leaves';
+  }
+  if (leaves !== state.leafCount)
+    return `leafCount is ${state.leafCount} but ${leaves} leaves hang from the root`;
+  let free = state.freeList;
+  let freeCount = 0;
+  while (free !== NULL_NODE) {
+    if (!inRange(free) || seen[free] !== 0) return `free list reaches node ${free}`;
+    seen[free] = 2;
+    freeCount++;
+    free = state.parent[free]!;
+  }
+  const live = seen.reduce((sum, v) => sum + (v === 1 ? 1 : 0), 0);
+  if (live + freeCount !== n) return 'some nodes are neither in the tree nor free';
+  return null;
+}
+
 /** Perimeter of the union of two boxes (m): the SAH cost of a node holding both. */
 function unionPerimeter(
   aMinX: number,
@@ -132,6 +202,39 @@ export class DynamicTree {
     boxes[4 * proxyId + 2] = aabb.maxX;
     boxes[4 * proxyId + 3] = aabb.maxY;
     this.insertLeaf(proxyId);
+  }
+
+  /** The tree's whole state as plain arrays (for world snapshots); `importState` restores it. */
+  exportState(): TreeState {
+    const n = this.capacity;
+    return {
+      capacity: n,
+      root: this.root,
+      freeList: this.freeList,
+      leafCount: this.leafCount,
+      boxes: Array.from(this.boxes.subarray(0, 4 * n)),
+      child1: Array.from(this.child1.subarray(0, n)),
+      child2: Array.from(this.child2.subarray(0, n)),
+      parent: Array.from(this.parent.subarray(0, n)),
+      heights: Array.from(this.heights.subarray(0, n)),
+      userData: Array.from(this.userData.subarray(0, n)),
+    };
+  }
+
+  /** Replaces the tree's state with one that {@link checkTreeState} accepted. */
+  importState(state: TreeState): void {
+    const n = state.capacity;
+    this.capacity = n;
+    this.root = state.root;
+    this.freeList = state.freeList;
+    this.leafCount = state.leafCount;
+    this.boxes = Float64Array.from(state.boxes);
+    this.child1 = Int32Array.from(state.child1);
+    this.child2 = Int32Array.from(state.child2);
+    this.parent = Int32Array.from(state.parent);
+    this.heights = Int32Array.from(state.heights);
+    this.userData = Int32Array.from(state.userData);
+    this.stackTop = 0;
   }
 
   /** The int32 stored with the proxy at creation. */

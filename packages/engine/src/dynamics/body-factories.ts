@@ -3,6 +3,7 @@ import { requireFinite, requirePositive } from '../core/validate.ts';
 import { LINEAR_SLOP, MAX_POLYGON_VERTICES } from '../core/constants.ts';
 import type { Vec2Like } from '../math/vec2.ts';
 import { Body, type BodyOptions } from './body.ts';
+import type { FilterOptions } from './filter.ts';
 import type { MaterialOptions } from './shape.ts';
 
 // The bodies the thesis's users reach for, one call each. Each takes the body options plus the
@@ -73,10 +74,18 @@ export interface WallOptions<UserData = unknown> extends Omit<
 }
 
 function material(options: MaterialOptions): MaterialOptions {
-  const result: { density?: number; friction?: number; restitution?: number } = {};
+  const result: {
+    density?: number;
+    friction?: number;
+    restitution?: number;
+    sensor?: boolean;
+    filter?: FilterOptions;
+  } = {};
   if (options.density !== undefined) result.density = options.density;
   if (options.friction !== undefined) result.friction = options.friction;
   if (options.restitution !== undefined) result.restitution = options.restitution;
+  if (options.sensor !== undefined) result.sensor = options.sensor;
+  if (options.filter !== undefined) result.filter = options.filter;
   return result;
 }
 

@@ -60,6 +60,12 @@ export interface BodyOptions<UserData = unknown> {
   readonly drag?: number;
   /** Prevents rotation (infinite moment of inertia). Default false. */
   readonly fixedRotation?: boolean;
+  /**
+   * A bullet: continuous collision also against moving (dynamic and kinematic) bodies, not only
+   * static ones, so a fast projectile cannot pass through a thin moving body. Costs a sweep test
+   * per step while fast. Default false.
+   */
+  readonly bullet?: boolean;
   /** Lets the body fall asleep when it comes to rest. Default true. */
   readonly allowSleep?: boolean;
   /** Starts asleep (it wakes on contact, force or any change). Default false. */
@@ -127,6 +133,7 @@ export class Body<UserData = unknown> {
   dragValue = 0;
   fixedRotationValue = false;
   allowSleepValue = true;
+  bulletValue = false;
   /** @internal */
   awake = true;
   sleepTime = 0;
@@ -187,6 +194,10 @@ export class Body<UserData = unknown> {
     this.dragValue = requireNonNegative('drag', options.drag ?? 0);
     this.fixedRotationValue = options.fixedRotation ?? false;
     this.allowSleepValue = options.allowSleep ?? true;
+    if (options.bullet !== undefined && typeof options.bullet !== 'boolean') {
+      throw new PhysicalError('bullet', `must be true or false, got ${String(options.bullet)}.`);
+    }
+    this.bulletValue = options.bullet === true;
     this.awake = type !== 'static' && !(options.asleep ?? false);
     if (options.mass !== undefined) this.massOverride = requirePositive('mass', options.mass);
     if (options.inertia !== undefined)
@@ -404,6 +415,18 @@ export class Body<UserData = unknown> {
     if (value) this.angularVelocityValue = 0;
     this.updateMassData();
     this.wake();
+  }
+
+  /** A bullet sweeps against moving bodies too (see {@link BodyOptions.bullet}). */
+  get bullet(): boolean {
+    return this.bulletValue;
+  }
+
+  set bullet(value: boolean) {
+    if (typeof value !== 'boolean') {
+      throw new PhysicalError('bullet', `must be true or false, got ${String(value)}.`);
+    }
+    this.bulletValue = value;
   }
 
   /** Whether the body may fall asleep when it rests. Turning it off wakes the body. */

@@ -1,6 +1,7 @@
 import { PairSet } from '../collision/pair-set.ts';
 import { aabbOverlaps } from '../geometry/aabb.ts';
 import type { Body } from './body.ts';
+import { filtersCollide } from './filter.ts';
 import { canCollide, Contact, shouldSwap } from './contact.ts';
 import { ContactData } from './contact-data.ts';
 import type { Islands } from './island.ts';
@@ -37,6 +38,8 @@ export class ContactManager {
     // Only pairs where something can be pushed matter.
     if (bodyA.type !== 'dynamic' && bodyB.type !== 'dynamic') return;
     if (!canCollide(shapeA, shapeB)) return;
+    // Sensors never make contacts; filters may forbid the pair (see filter.ts).
+    if (shapeA.sensor || shapeB.sensor || !filtersCollide(shapeA, shapeB)) return;
     if (jointPreventsCollision(bodyA, bodyB)) return;
     if (!this.pairs.add(shapeA.id, shapeB.id)) return;
     const contact = this.pool.pop() ?? new Contact();
@@ -110,6 +113,25 @@ export class ContactManager {
       const contact = contacts[i]!;
       if (contact.other(bodyA) === bodyB) this.destroy(contact, false);
     }
+  }
+
+  /**
+   * Recreates a contact from a snapshot: shapes already ordered, appended to the contact list.
+   * The caller fills its slot of the contact data and the bodies' contact lists.
+   */
+  restoreContact(shapeA: Shape, shapeB: Shape): Contact {
+    this.pairs.add(shapeA.id, shapeB.id);
+    const contact = new Contact();
+    contact.index = this.contacts.length;
+    this.slots.reserve(contact.index + 1);
+    contact.init(shapeA, shapeB, this.slots.data);
+    this.contacts.push(contact);
+    return contact;
+  }
+
+  /** Destroys one contact (its filter now forbids it), waking its bodies if it touched. */
+  destroyContact(contact: Contact): void {
+    this.destroy(contact, true);
   }
 
   private destroy(contact: Contact, wakeBodies: boolean): void {

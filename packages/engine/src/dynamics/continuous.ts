@@ -1,18 +1,14 @@
 import type { BroadPhase } from '../collision/broad-phase.ts';
-import {
-  setProxyFromCapsule,
-  DistanceProxy,
-  setProxyFromCircle,
-  setProxyFromPolygon,
-  setProxyFromSegment,
-} from '../collision/distance.ts';
+import { DistanceProxy } from '../collision/distance.ts';
 import { Sweep, TimeOfImpactOutput, timeOfImpact } from '../collision/time-of-impact.ts';
 import { AABB } from '../geometry/aabb.ts';
 import { Transform } from '../math/transform.ts';
 import type { Body } from './body.ts';
 import type { Shape } from './shape.ts';
+import { setShapeProxy } from './shape-proxy.ts';
 
 const STATIC_PROXY = 0;
+const KINEMATIC_PROXY = 1;
 
 /**
  * Continuous collision of fast bodies against static shapes (the tunneling the thesis names as
@@ -25,6 +21,11 @@ const STATIC_PROXY = 0;
  * A body touching a surface at the start of the step gives a time of impact of zero against it
  * (sliding along the ground); as Box2D v3 does, that case retries with a small core circle at the
  * shape's centroid, which still catches a real pass-through but not sliding contact.
+ *
+ * Bullets (`body.bullet`) also sweep against kinematic and non-bullet dynamic bodies, as in Box2D
+ * v3: the world runs them after every other body has its final pose, and each obstacle is held
+ * still at that pose (its own motion this step is already done). Bullets ignore other bullets.
+ * Sensors and filtered-out pairs never stop a sweep.
  */
 export class ContinuousSolver {
   private readonly sweep = new Sweep();
@@ -38,6 +39,7 @@ export class ContinuousSolver {
   private body: Body | null = null;
   private shape: Shape | null = null;
   private fraction = 1;
+  private bullet = false;
   private shapes: readonly (Shape | null)[] = [];
   private readonly queryCallback = (proxyKey: number, shapeId: number): boolean =>
     this.testStaticShape(proxyKey, shapeId);
@@ -51,8 +53,17 @@ export class ContinuousSolver {
     return motion > 0.5 * body.minExtent;
   }
 
-  /** Sweeps a fast body against static shapes; moves it back to the first impact, if any. */
-  solve(body: Body, broadPhase: BroadPhase, shapes: readonly (Shape | null)[]): void {
+  /**
+   * Sweeps a fast body against static shapes (and, for a bullet, against non-bullet moving ones);
+   * moves it back to the first impact, if any. Returns true if it moved the body.
+   */
+  solve(
+    body: Body,
+    broadPhase: BroadPhase,
+    shapes: readonly (Shape | null)[],
+    bullet: boolean = false,
+  ): boolean {
+    this.bullet = bullet;
     const sweep = this.sweep;
     sweep.localCenterX = body.localCenterX;
     sweep.localCenterY = body.localCenterY;
@@ -74,6 +85,7 @@ export class ContinuousSolver {
     this.fraction = 1;
     this.shapes = shapes;
     for (const shape of body.shapeList) {
+      if (shape.sensor) continue;
       this.shape = shape;
       // Swept box: the union of the boxes at the start and the end of the step.
       const box = this.box;
@@ -107,15 +119,20 @@ export class ContinuousSolver {
         body.localCenterX,
         body.localCenterY,
       );
+      return true;
     }
+    return false;
   }
 
   private testStaticShape(proxyKey: number, shapeId: number): boolean {
-    if ((proxyKey & 3) !== STATIC_PROXY) return true;
+    const type = proxyKey & 3;
+    if (type !== STATIC_PROXY && !this.bullet) return true;
     const other = this.shapes[shapeId];
     const body = this.body!;
     const shape = this.shape!;
     if (other === null || other === undefined || other.body === body) return true;
+    if (other.sensor || !shape.collidesWith(other)) return true;
+    if (type > KINEMATIC_PROXY && other.body.bulletValue) return true;
     const g = other.geometry;
     if (g.kind === 'segment' && g.oneSided) {
       // A one-sided wall stops only what comes from its positive side.
@@ -150,14 +167,6 @@ export class ContinuousSolver {
     }
     return true;
   }
-}
-
-function setShapeProxy(proxy: DistanceProxy, shape: Shape): void {
-  const g = shape.geometry;
-  if (g.kind === 'circle') setProxyFromCircle(proxy, g);
-  else if (g.kind === 'polygon') setProxyFromPolygon(proxy, g);
-  else if (g.kind === 'capsule') setProxyFromCapsule(proxy, g);
-  else setProxyFromSegment(proxy, g);
 }
 
 /** A small circle at the shape's centroid: a quarter of its smallest extent. */

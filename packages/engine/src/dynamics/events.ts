@@ -54,6 +54,19 @@ export interface ContactEvent {
   readonly shapeB: Shape;
 }
 
+/**
+ * A shape started or stopped overlapping a sensor. Sent to the world and to both bodies. Reused
+ * like {@link CollisionEvent}.
+ */
+export interface SensorEvent {
+  /** The sensor shape and its body. */
+  readonly sensorShape: Shape;
+  readonly sensorBody: Body;
+  /** The shape that entered or left the sensor, and its body. */
+  readonly visitorShape: Shape;
+  readonly visitorBody: Body;
+}
+
 /** Events of a body (and, for every body, of the world): name to listener. */
 export interface BodyEvents {
   /** The body moved during the step (the thesis's `onMove`). */
@@ -64,6 +77,10 @@ export interface BodyEvents {
   contactBegin: (event: ContactEvent) => void;
   /** One of the body's shapes stopped touching another shape (or one of them was removed). */
   contactEnd: (event: ContactEvent) => void;
+  /** A shape started overlapping a sensor shape (the body is the sensor's or the visitor's). */
+  sensorBegin: (event: SensorEvent) => void;
+  /** A shape stopped overlapping a sensor shape, or one of them left the world. */
+  sensorEnd: (event: SensorEvent) => void;
 }
 
 /** Events only a world has. */
@@ -111,4 +128,12 @@ export class ContactEventData implements ContactEvent {
   bodyB!: Body;
   shapeA!: Shape;
   shapeB!: Shape;
+}
+
+/** Mutable, reused event object behind {@link SensorEvent}. */
+export class SensorEventData implements SensorEvent {
+  sensorShape!: Shape;
+  sensorBody!: Body;
+  visitorShape!: Shape;
+  visitorBody!: Body;
 }

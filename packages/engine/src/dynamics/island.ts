@@ -10,7 +10,8 @@ import type { Body } from './body.ts';
 export class Islands {
   /** Called for every body that wakes up (the world turns it into its 'wake' event). */
   onWake: ((body: Body) => void) | null = null;
-  private stamp = 0;
+  /** @internal Last island-search stamp (saved by world snapshots). */
+  stamp = 0;
   private readonly stack: Body[] = [];
   private readonly woken: Body[] = [];
   private readonly members: Body[] = [];

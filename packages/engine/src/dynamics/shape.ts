@@ -14,9 +14,22 @@ import { computeSegmentAABB, makeSegment, type Segment } from '../geometry/segme
 import type { Transform } from '../math/transform.ts';
 import type { Vec2Like } from '../math/vec2.ts';
 import type { Body } from './body.ts';
+import { filtersCollide, resolveFilter, type Filter, type FilterOptions } from './filter.ts';
+
+/** Sensor flag and collision filter, shared by every shape kind (and the body factories). */
+export interface CollisionOptions {
+  /**
+   * A sensor reports `'sensorBegin'` and `'sensorEnd'` when another shape starts or stops
+   * overlapping it, and never pushes or wakes anything. Default false. Sensors detect the
+   * non-sensor shapes of other bodies of every type (static ones too); not other sensors.
+   */
+  readonly sensor?: boolean;
+  /** Which shapes this one collides with (category and mask bits, group). Default: everything. */
+  readonly filter?: FilterOptions;
+}
 
 /** Surface and mass properties shared by every shape kind. */
-export interface MaterialOptions {
+export interface MaterialOptions extends CollisionOptions {
   /** Mass per area (kg/m^2). Default 1. Must be > 0 on a dynamic body. */
   readonly density?: number;
   /** Coulomb friction coefficient, >= 0. Default 0.6. Two shapes mix as sqrt(fA * fB). */
@@ -120,6 +133,14 @@ export class Shape {
   friction = 0.6;
   /** Coefficient of restitution. */
   restitution = 0;
+  /** True for a sensor: it reports overlaps and never collides. Fixed at creation. */
+  readonly sensor: boolean = false;
+  /** @internal Filter bits (see {@link filter}). */
+  categoryBits = 1;
+  maskBits = 0xffffffff;
+  groupIndex = 0;
+  /** @internal Index in the world's sensor list, -1 when not a sensor in a world. */
+  sensorIndex = -1;
 
   /** @internal World-local id, -1 outside a world. */
   id = -1;
@@ -140,6 +161,41 @@ export class Shape {
     this.friction = requireNonNegative(`${field}.friction`, options.friction ?? 0.6);
     this.restitution = requireNonNegative(`${field}.restitution`, options.restitution ?? 0);
     this.geometry = geometry ?? createGeometries(options, field)[0]!;
+    if (options.sensor !== undefined && typeof options.sensor !== 'boolean') {
+      throw new PhysicalError(
+        `${field}.sensor`,
+        `must be true or false, got ${String(options.sensor)}.`,
+      );
+    }
+    this.sensor = options.sensor === true;
+    this.setFilter(resolveFilter(`${field}.filter`, options.filter));
+  }
+
+  /**
+   * The collision filter: category and mask bits, and group (see {@link FilterOptions}). Setting
+   * it applies from the next step: contacts the new filter forbids end now, and newly allowed
+   * pairs are found by the next step.
+   */
+  get filter(): Filter {
+    return { category: this.categoryBits, mask: this.maskBits, group: this.groupIndex };
+  }
+
+  set filter(value: FilterOptions) {
+    const filter = resolveFilter('filter', value);
+    this.body.worldRef?.requireUnlocked('filter');
+    this.setFilter(filter);
+    this.body.worldRef?.shapeFilterChanged(this);
+  }
+
+  /** Whether this shape and `other` pass each other's filters (sensors aside). */
+  collidesWith(other: Shape): boolean {
+    return filtersCollide(this, other);
+  }
+
+  private setFilter(filter: Filter): void {
+    this.categoryBits = filter.category;
+    this.maskBits = filter.mask;
+    this.groupIndex = filter.group;
   }
 
   /** The shape's bounding box in world coordinates (m), at the body's current pose. */
@@ -190,7 +246,8 @@ export function createGeometries(options: ShapeOptions, field: string): Geometry
   return [createGeometry(options, field)];
 }
 
-function createGeometry(options: ShapeOptions, field: string): Geometry {
+/** @internal Validates a shape description and builds its geometry (body frame). */
+export function createGeometry(options: ShapeOptions, field: string): Geometry {
   switch (options.type) {
     case 'circle': {
       const offset = options.offset ?? ORIGIN;

@@ -32,6 +32,7 @@ export class WorldQueries {
   private bestFraction = 1;
   private readonly bestHit = new RayHit();
   private readonly found: Body[] = [];
+  private allHits: RayCastHit[] | null = null;
 
   constructor(
     private readonly broadPhase: BroadPhase,
@@ -52,6 +53,22 @@ export class WorldQueries {
     const result = this.found.slice();
     result.sort((a, b) => a.worldIndex - b.worldIndex);
     return result;
+  }
+
+  /** Every shape the ray crosses, sorted by fraction (then world order), one hit per shape. */
+  rayCastAll(fromX: number, fromY: number, toX: number, toY: number): RayCastHit[] {
+    const input = this.input;
+    input.originX = fromX;
+    input.originY = fromY;
+    input.translationX = toX - fromX;
+    input.translationY = toY - fromY;
+    input.maxFraction = 1;
+    const hits: RayCastHit[] = [];
+    this.allHits = hits;
+    this.broadPhase.rayCast(input, this.rayAllCallback);
+    this.allHits = null;
+    hits.sort((a, b) => a.fraction - b.fraction || a.body.worldIndex - b.body.worldIndex);
+    return hits;
   }
 
   rayCast(fromX: number, fromY: number, toX: number, toY: number): RayCastHit | null {
@@ -103,21 +120,44 @@ export class WorldQueries {
     return true;
   };
 
-  private readonly rayCallback = (input: RayInput, _proxyKey: number, shapeId: number): number => {
-    const shape = this.shapes[shapeId];
-    if (shape === null || shape === undefined) return -1;
+  /** Ray against one shape into `this.hit`; sensors are not surfaces and are never hit. */
+  private castShape(input: RayInput, shape: Shape | null | undefined): shape is Shape {
+    if (shape === null || shape === undefined || shape.sensor) return false;
     const g = shape.geometry;
     const xf = shape.body.transform;
     const hit = this.hit;
-    const didHit =
-      g.kind === 'circle'
-        ? rayCastCircle(g, xf, input, hit)
-        : g.kind === 'polygon'
-          ? rayCastPolygon(g, xf, input, hit)
-          : g.kind === 'capsule'
-            ? rayCastCapsule(g, xf, input, hit)
-            : rayCastSegment(g, xf, input, hit);
-    if (!didHit || hit.fraction > this.bestFraction) return -1;
+    return g.kind === 'circle'
+      ? rayCastCircle(g, xf, input, hit)
+      : g.kind === 'polygon'
+        ? rayCastPolygon(g, xf, input, hit)
+        : g.kind === 'capsule'
+          ? rayCastCapsule(g, xf, input, hit)
+          : rayCastSegment(g, xf, input, hit);
+  }
+
+  private readonly rayAllCallback = (
+    input: RayInput,
+    _proxyKey: number,
+    shapeId: number,
+  ): number => {
+    const shape = this.shapes[shapeId];
+    if (!this.castShape(input, shape)) return -1;
+    const hit = this.hit;
+    this.allHits!.push({
+      body: shape.body,
+      shape,
+      point: { x: hit.x, y: hit.y },
+      normal: { x: hit.normalX, y: hit.normalY },
+      fraction: hit.fraction,
+    });
+    return -1;
+  };
+
+  private readonly rayCallback = (input: RayInput, _proxyKey: number, shapeId: number): number => {
+    const shape = this.shapes[shapeId];
+    if (!this.castShape(input, shape)) return -1;
+    const hit = this.hit;
+    if (hit.fraction > this.bestFraction) return -1;
     this.best = shape;
     this.bestFraction = hit.fraction;
     const best = this.bestHit;

@@ -26,15 +26,19 @@ import { ContinuousSolver } from '../dynamics/continuous.ts';
 import {
   CollisionEventData,
   ContactEventData,
+  SensorEventData,
   type BodyEvents,
   type ContactView,
   type WorldOnlyEvents,
 } from '../dynamics/events.ts';
 import { Islands } from '../dynamics/island.ts';
 import { Joint } from '../dynamics/joints/joint.ts';
-import type { Shape } from '../dynamics/shape.ts';
+import { Sensors } from '../dynamics/sensor.ts';
+import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
 import { Solver } from '../dynamics/solver.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
+import { loadWorld, saveWorld, type WorldInternals, type WorldSnapshot } from './snapshot.ts';
+import { ShapeQueries, type QueryPose, type ShapeCastHit } from './shape-queries.ts';
 import {
   resolveWorldOptions,
   validateSubSteps,
@@ -65,7 +69,10 @@ export class World {
   private readonly contactManager = new ContactManager(this.islands);
   private readonly solver = new Solver();
   private readonly continuous = new ContinuousSolver();
+  private readonly sensors = new Sensors();
+  private readonly sensorEvent = new SensorEventData();
   private readonly queries: WorldQueries;
+  private readonly shapeQueries: ShapeQueries;
   private readonly shapesById: (Shape | null)[] = [];
   private readonly freeShapeIds: number[] = [];
   private nextBodyId = 0;
@@ -90,6 +97,7 @@ export class World {
     this.settings = resolveWorldOptions(options);
     this.queries = new WorldQueries(this.broadPhase, this.shapesById);
     this.solver.joints.list = this.jointList;
+    this.shapeQueries = new ShapeQueries(this.broadPhase, this.shapesById);
     this.islands.onWake = (body) => {
       const listeners = this.listeners.get('wake');
       if (listeners !== undefined) callAll(listeners, body);
@@ -344,6 +352,8 @@ export class World {
       );
       if (this.settings.enableContinuous) this.solveContinuous();
       this.updateBroadPhase();
+      if (this.settings.enableContinuous) this.solveBullets();
+      if (this.sensors.shapes.length > 0) this.sensors.update(this.broadPhase, this.shapesById);
       if (this.settings.enableSleep) {
         this.islands.sleepRestingIslands(
           this.solver.awake,
@@ -392,6 +402,37 @@ export class World {
     return this.queries.rayCast(from.x, from.y, to.x, to.y);
   }
 
+  /**
+   * Every shape hit by the ray from `from` to `to` (m), sorted by fraction along the ray (ties in
+   * world order), one hit per shape. Sensors are not hit. A new array each call.
+   */
+  rayCastAll(from: Vec2Like, to: Vec2Like): RayCastHit[] {
+    requireVector('from', from);
+    requireVector('to', to);
+    return this.queries.rayCastAll(from.x, from.y, to.x, to.y);
+  }
+
+  /**
+   * Sweeps a shape (described as for a body: circle, box, polygon or segment; material ignored)
+   * from `pose` along `translation` (m) and returns the first shape it would hit, or null.
+   * Sensors are not hit.
+   *
+   * @example
+   * // Will a 0.25 m ball thrown right from (0, 0) hit something within 10 m?
+   * const hit = world.shapeCast({ type: 'circle', radius: 0.25 }, { position: { x: 0, y: 0 } }, { x: 10, y: 0 });
+   */
+  shapeCast(shape: ShapeOptions, pose: QueryPose, translation: Vec2Like): ShapeCastHit | null {
+    return this.shapeQueries.shapeCast(shape, pose, translation);
+  }
+
+  /**
+   * Bodies with a shape overlapping (or touching) the given shape placed at `pose`, each once, in
+   * world order. Sensors are not reported.
+   */
+  overlapShape(shape: ShapeOptions, pose: QueryPose): Body[] {
+    return this.shapeQueries.overlapShape(shape, pose);
+  }
+
   /** Number of bodies that are awake and not static: 0 means the world is at rest. */
   get awakeBodyCount(): number {
     let count = 0;
@@ -411,6 +452,40 @@ export class World {
       this.fillCollisionEvent(contact, event);
       visitor(event);
     }
+  }
+
+  // ---------------------------------------------------------------- snapshots
+
+  /**
+   * Saves everything that decides the world's future as plain, JSON-compatible data: restoring it
+   * with {@link World.fromSnapshot} and stepping gives bit-for-bit the states this world reaches.
+   * Listeners, `userData` and the app's Force objects are not saved. Not allowed during a step.
+   *
+   * @example
+   * const saved = JSON.stringify(world.snapshot());
+   * // later, or elsewhere
+   * const copy = World.fromSnapshot(JSON.parse(saved));
+   */
+  snapshot(): WorldSnapshot {
+    if (this.locked) {
+      throw new PhysicalError(
+        'snapshot',
+        'cannot be taken while the world is stepping (from a listener); take it after step().',
+      );
+    }
+    return saveWorld(this.internals());
+  }
+
+  /**
+   * A new world from a {@link snapshot} (a parsed JSON copy is fine), its bodies in the saved
+   * order. Checks the whole snapshot first: a wrong format or version, a missing or non-numeric
+   * field or a broken reference throws a PhysicalError naming the field (`snapshot.bodies[2].angle`),
+   * and no world is returned.
+   */
+  static fromSnapshot(snapshot: WorldSnapshot): World {
+    const world = new World();
+    loadWorld(world.internals(), snapshot);
+    return world;
   }
 
   // ---------------------------------------------------------------- events
@@ -467,6 +542,23 @@ export class World {
   /** @internal */
   shapeAdded(shape: Shape): void {
     if (this.bodyList[shape.body.worldIndex] === shape.body) this.createProxy(shape);
+  }
+
+  /**
+   * @internal A shape's filter changed: contacts it now forbids end (and wake their bodies), and
+   * the shape looks for pairs again at the next step.
+   */
+  shapeFilterChanged(shape: Shape): void {
+    if (shape.proxyKey < 0) return;
+    const contacts = shape.body.contacts;
+    for (let i = contacts.length - 1; i >= 0; i--) {
+      const contact = contacts[i]!;
+      if (contact.shapeA !== shape && contact.shapeB !== shape) continue;
+      if (!contact.shapeA.collidesWith(contact.shapeB)) this.contactManager.destroyContact(contact);
+    }
+    this.broadPhase.bufferMove(shape.proxyKey);
+    this.wakeBody(shape.body);
+    this.dispatchContactEnds();
   }
 
   /** @internal */
@@ -556,9 +648,11 @@ export class World {
     const box = this.speculativeBox(shape);
     shape.proxyKey = this.broadPhase.createProxy(box, PROXY_TYPE[shape.body.type], id, false);
     this.broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
+    if (shape.sensor) this.sensors.add(shape);
   }
 
   private destroyProxy(shape: Shape): void {
+    this.sensors.remove(shape);
     this.broadPhase.destroyProxy(shape.proxyKey);
     this.shapesById[shape.id] = null;
     this.freeShapeIds.push(shape.id);
@@ -605,8 +699,24 @@ export class World {
     const awake = this.solver.awake;
     for (let i = 0; i < this.solver.awakeCount; i++) {
       const body = awake[i]!;
-      if (body.type !== 'dynamic' || !ContinuousSolver.isFast(body)) continue;
+      if (body.type !== 'dynamic' || body.bulletValue || !ContinuousSolver.isFast(body)) continue;
       this.continuous.solve(body, this.broadPhase, this.shapesById);
+    }
+  }
+
+  /**
+   * Bullets sweep last, against static shapes and the final poses of every other body (Box2D
+   * v3's order), so the broad phase already holds those poses; a bullet moved back to its first
+   * impact gets its boxes refreshed again.
+   */
+  private solveBullets(): void {
+    const awake = this.solver.awake;
+    for (let i = 0; i < this.solver.awakeCount; i++) {
+      const body = awake[i]!;
+      if (body.type !== 'dynamic' || !body.bulletValue || !ContinuousSolver.isFast(body)) continue;
+      if (this.continuous.solve(body, this.broadPhase, this.shapesById, true)) {
+        this.refreshProxies(body, false);
+      }
     }
   }
 
@@ -649,6 +759,7 @@ export class World {
       }
     }
     this.dispatchContactEnds();
+    this.dispatchSensorBegins();
     this.dispatchCollisions();
     this.dispatchMoves();
   }
@@ -660,6 +771,44 @@ export class World {
     for (let i = 0; i < count; i++) {
       this.emitContact('contactEnd', this.contactEvent, manager.endedA[i]!, manager.endedB[i]!);
     }
+    const sensors = this.sensors;
+    const ended = sensors.endedCount;
+    sensors.endedCount = 0;
+    for (let i = 0; i < ended; i++) {
+      this.emitSensor('sensorEnd', sensors.endedSensor[i]!, sensors.endedVisitor[i]!);
+    }
+  }
+
+  private dispatchSensorBegins(): void {
+    const sensors = this.sensors;
+    const count = sensors.beganCount;
+    sensors.beganCount = 0;
+    for (let i = 0; i < count; i++) {
+      this.emitSensor('sensorBegin', sensors.beganSensor[i]!, sensors.beganVisitor[i]!);
+    }
+  }
+
+  private emitSensor(type: 'sensorBegin' | 'sensorEnd', sensor: Shape, visitor: Shape): void {
+    const sensorBody = sensor.body;
+    const visitorBody = visitor.body;
+    const worldListeners = this.listeners.get(type);
+    const sensorListeners = sensorBody.listeners.get(type);
+    const visitorListeners = visitorBody.listeners.get(type);
+    if (
+      worldListeners === undefined &&
+      sensorListeners === undefined &&
+      visitorListeners === undefined
+    )
+      return;
+    if (type === 'sensorBegin' && (sensorBody.removalPending || visitorBody.removalPending)) return;
+    const event = this.sensorEvent;
+    event.sensorShape = sensor;
+    event.sensorBody = sensorBody;
+    event.visitorShape = visitor;
+    event.visitorBody = visitorBody;
+    callAll(worldListeners, event);
+    callAll(sensorListeners, event);
+    callAll(visitorListeners, event);
   }
 
   private emitContact(
@@ -764,6 +913,41 @@ export class World {
       callAll(worldListeners, body);
       callAll(listeners, body);
     }
+  }
+
+  /** @internal The parts of the world a snapshot reads and writes. */
+  internals(): WorldInternals {
+    // eslint-disable-next-line @typescript-eslint/no-this-alias
+    const world = this;
+    return {
+      world,
+      settings: this.settings,
+      bodies: this.bodyList,
+      broadPhase: this.broadPhase,
+      islands: this.islands,
+      contactManager: this.contactManager,
+      sensors: this.sensors,
+      shapesById: this.shapesById,
+      freeShapeIds: this.freeShapeIds,
+      get nextBodyId(): number {
+        return world.nextBodyId;
+      },
+      set nextBodyId(value: number) {
+        world.nextBodyId = value;
+      },
+      get stepCount(): number {
+        return world.stepCount;
+      },
+      set stepCount(value: number) {
+        world.stepCount = value;
+      },
+      get lastStep(): number {
+        return world.lastStep;
+      },
+      set lastStep(value: number) {
+        world.lastStep = value;
+      },
+    };
   }
 
   /** @internal Duration of the last step (s), for tools that turn impulses into forces. */

@@ -1,0 +1,220 @@
+import { describe, expect, it } from 'vitest';
+import { PhysicalError, World, box, particle, wall } from '@physical/engine';
+import type { WorldSnapshot } from '@physical/engine';
+
+/** A pyramid, falling particles, a sleeping stack, timed forces, a sensor, a bullet, a removal. */
+function busyWorld(): World {
+  const world = new World();
+  world.add(wall({ from: { x: -20, y: 0 }, to: { x: 20, y: 0 } }));
+  const rows = 8;
+  for (let row = 0; row < rows; row++) {
+    for (let i = 0; i < rows - row; i++) {
+      world.add(
+        box({
+          position: { x: -4 + i * 1.02 + row * 0.51, y: -0.5 - row * 1.0 },
+          width: 1,
+          height: 1,
+        }),
+      );
+    }
+  }
+  for (let i = 0; i < 3; i++) {
+    world.add(
+      box({ position: { x: 12, y: -0.25 - 0.5 * i }, width: 0.5, height: 0.5, asleep: true }),
+    );
+  }
+  for (let i = 0; i < 12; i++) {
+    const ball = world.add(
+      particle({
+        position: { x: -8 + 1.3 * i, y: -12 - (i % 3) },
+        radius: 0.2 + 0.02 * i,
+        restitution: 0.3,
+        angularVelocity: i - 6,
+        filter: i % 4 === 0 ? { group: -1 } : {},
+      }),
+    );
+    if (i % 3 === 0)
+      ball.applyForce({ x: 3, y: -1 }, { duration: 1.5, point: { x: -8 + 1.3 * i + 0.1, y: -12 } });
+  }
+  world.add(box({ type: 'static', position: { x: 8, y: -1 }, width: 2, height: 2, sensor: true }));
+  world.add(
+    particle({
+      position: { x: -15, y: -3 },
+      radius: 0.05,
+      bullet: true,
+      linearVelocity: { x: 80, y: 0 },
+    }),
+  );
+  const doomed = world.add(particle({ position: { x: 15, y: -3 }, radius: 0.3 }));
+  world.step();
+  world.remove(doomed);
+  return world;
+}
+
+function state(world: World): number[] {
+  const out: number[] = [];
+  for (const body of world.bodies) {
+    out.push(
+      body.position.x,
+      body.position.y,
+      body.angle,
+      body.linearVelocity.x,
+      body.linearVelocity.y,
+    );
+    out.push(body.angularVelocity, body.isAwake ? 1 : 0);
+  }
+  return out;
+}
+
+function sameBits(a: number[], b: number[]): boolean {
+  return a.length === b.length && a.every((x, i) => Object.is(x, b[i]));
+}
+
+describe('snapshots', () => {
+  it('restoring through JSON and stepping 1,000 times gives bit-for-bit the same states', () => {
+    const original = busyWorld();
+    for (let i = 0; i < 120; i++) original.step(1 / 60);
+    const saved = JSON.stringify(original.snapshot());
+    const restored = World.fromSnapshot(JSON.parse(saved) as WorldSnapshot);
+    expect(restored.bodies.length).toBe(original.bodies.length);
+    expect(restored.steps).toBe(original.steps);
+    let sleepingSeen = false;
+    for (let i = 0; i < 1000; i++) {
+      original.step(1 / 60);
+      restored.step(1 / 60);
+      if (i % 50 === 0) expect(sameBits(state(restored), state(original))).toBe(true);
+      if (original.bodies.some((b) => b.type === 'dynamic' && !b.isAwake)) sleepingSeen = true;
+    }
+    expect(sleepingSeen).toBe(true);
+    expect(sameBits(state(restored), state(original))).toBe(true);
+    // Every internal the snapshot holds agrees too (contacts, trees, timers).
+    expect(JSON.stringify(restored.snapshot())).toBe(JSON.stringify(original.snapshot()));
+  }, 30_000);
+
+  it('restores a world saved before its first step, and sensor overlaps without repeating begins', () => {
+    const early = new World();
+    early.add(particle({ radius: 0.5, position: { x: 0, y: -3 } }));
+    early.add(box({ type: 'static', position: { x: 0, y: 0 }, width: 4, height: 4, sensor: true }));
+    const copyEarly = World.fromSnapshot(
+      JSON.parse(JSON.stringify(early.snapshot())) as WorldSnapshot,
+    );
+    const begins = [0, 0];
+    early.on('sensorBegin', () => begins[0]!++);
+    copyEarly.on('sensorBegin', () => begins[1]!++);
+    for (let i = 0; i < 60; i++) {
+      early.step(1 / 60);
+      copyEarly.step(1 / 60);
+      if (i === 30) {
+        // Saved while the ball is inside the sensor: the copy must not report it entering again.
+        const mid = World.fromSnapshot(
+          JSON.parse(JSON.stringify(early.snapshot())) as WorldSnapshot,
+        );
+        let again = 0;
+        mid.on('sensorBegin', () => again++);
+        mid.step(1 / 60);
+        expect(again).toBe(0);
+      }
+    }
+    expect(begins).toEqual([1, 1]);
+    expect(sameBits(state(copyEarly), state(early))).toBe(true);
+  });
+
+  it('keeps -0, infinite force durations and a JSON round trip exact', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const ball = world.add(particle({ radius: 0.5, linearVelocity: { x: -0, y: 0 } }));
+    ball.applyForce({ x: 1, y: 0 }, { duration: 'constant' });
+    world.step();
+    ball.linearVelocity = { x: -0, y: 0 };
+    const snap = JSON.parse(JSON.stringify(world.snapshot())) as WorldSnapshot;
+    const copy = World.fromSnapshot(snap);
+    expect(Object.is(copy.bodies[0]!.linearVelocity.x, -0)).toBe(true);
+    expect(copy.bodies[0]!.forces[0]!.remaining).toBe(Infinity);
+    copy.step();
+    world.step();
+    expect(copy.bodies[0]!.linearVelocity.x).toBe(ball.linearVelocity.x);
+  });
+
+  it('takes no snapshot while stepping', () => {
+    const world = new World();
+    world.add(particle({ radius: 0.5 }));
+    let error: unknown = null;
+    world.on('move', () => {
+      try {
+        world.snapshot();
+      } catch (e) {
+        error = e;
+      }
+    });
+    world.step();
+    expect(error).toBeInstanceOf(PhysicalError);
+  });
+});
+
+describe('bad snapshots', () => {
+  function good(): Record<string, unknown> {
+    return JSON.parse(JSON.stringify(busyWorld().snapshot())) as Record<string, unknown>;
+  }
+  function load(snap: unknown): () => World {
+    return () => World.fromSnapshot(snap as WorldSnapshot);
+  }
+  type Mutable = Record<string, unknown> & {
+    bodies: Record<string, unknown>[];
+    contacts: Record<string, unknown>[];
+  };
+
+  it('names a wrong format or version', () => {
+    expect(load({ ...good(), format: 'box2d' })).toThrow(/snapshot\.format.*'box2d'/);
+    expect(load({ ...good(), version: 2 })).toThrow(/snapshot\.version.*got 2/);
+    expect(load(null)).toThrow(/snapshot/);
+    expect(load('physical-world')).toThrow(PhysicalError);
+  });
+
+  it('names a missing field, a NaN, a wrong type', () => {
+    const missing = good() as Mutable;
+    delete missing.bodies[3]!['velocity'];
+    expect(load(missing)).toThrow(/snapshot\.bodies\[3\]\.velocity: is missing/);
+    const nan = good() as Mutable;
+    (nan.bodies[2]!['transform'] as unknown[])[1] = Number.NaN;
+    expect(load(nan)).toThrow(/snapshot\.bodies\[2\]\.transform\[1\]: must be a number, got NaN/);
+    const viaJson = good() as Mutable;
+    viaJson.bodies[2]!['angle'] = null; // what JSON makes of NaN
+    expect(load(viaJson)).toThrow(/snapshot\.bodies\[2\]\.angle: must be a number, got null/);
+    const settings = good();
+    (settings['settings'] as Record<string, unknown>)['subSteps'] = 0;
+    expect(load(settings)).toThrow(/snapshot\.settings\.subSteps/);
+    const shape = good() as Mutable;
+    (
+      (shape.bodies[5]!['shapes'] as Record<string, unknown>[])[0]!['geometry'] as Record<
+        string,
+        unknown
+      >
+    )['kind'] = 'star';
+    expect(load(shape)).toThrow(/snapshot\.bodies\[5\]\.shapes\[0\]\.geometry\.kind/);
+  });
+
+  it('names bad references', () => {
+    const contact = good() as Mutable;
+    contact.contacts[0]!['shapes'] = [0, 9999];
+    expect(load(contact)).toThrow(/snapshot\.contacts\[0\]\.shapes/);
+    const list = good() as Mutable;
+    const withContacts = list.bodies.findIndex((b) => (b['contacts'] as unknown[]).length > 0);
+    list.bodies[withContacts]!['contacts'] = [];
+    expect(load(list)).toThrow(/snapshot\.contacts\[\d+\]: is missing from the contact list/);
+    const tree = good();
+    const trees = (tree['broadPhase'] as Record<string, unknown>)['trees'] as Record<
+      string,
+      unknown
+    >[];
+    trees[2]!['root'] = 0;
+    expect(load(tree)).toThrow(/snapshot\.broadPhase\.trees\[2\]/);
+    const ids = good() as Mutable;
+    ids.bodies[4]!['id'] = ids.bodies[3]!['id'];
+    expect(load(ids)).toThrow(/snapshot\.bodies\[4\]\.id/);
+  });
+
+  it('rejects joints this version cannot load', () => {
+    expect(load({ ...good(), joints: [{ type: 'revolute' }] })).toThrow(
+      /snapshot\.joints.*no joints/,
+    );
+  });
+});
