@@ -6,7 +6,10 @@ import type { Body } from '@physical/engine';
 // Stability of the new shapes in a y-down world with g = 9.81 m/s^2:
 // - a concave U bucket (one body, several convex parts) catches a ball and holds it;
 // - a pill lying on a 30 degree incline does not roll: with mu = 0.7 > tan 30 it stays, with
-//   mu = 0.2 it slides with a = g (sin - mu cos) within 2 %, as a box does (law 10);
+//   mu = 0.2 it slides with a = g (sin - mu cos) within 2 %, as a box does (law 10); a pill that
+//   is nearly a disc rolls instead, with a = g sin / (1 + I / (m r^2)) within 3 % and v = w r;
+// - rounded shapes rest at the exact height their rounding gives, in every pair;
+// - a pill at 100 m/s does not pass through a 5 cm plate;
 // - a pill resting flat on the ground, on a rounded box and on another pill settles without
 //   jitter: its speed stays below 1e-3 m/s once settled (sleep off, so it cannot hide jitter).
 
@@ -211,5 +214,40 @@ describe('concave and capsule stability', () => {
     // The solver lets resting shapes overlap by up to the linear slop (0.005 m).
     reportMeasured('rounded shapes at rest: worst height error (m)', worst, 0.006);
     expect(worst).toBeLessThan(0.006);
+  });
+
+  it('a pill that is nearly a disc rolls down the incline instead: a = g sin / (1 + I / (m r^2))', () => {
+    const angle = Math.PI / 6;
+    const c = Math.cos(angle);
+    const s = Math.sin(angle);
+    const world = new World({ gravity: { x: 0, y: G }, enableSleep: false });
+    world.add(
+      wall({ from: { x: -40 * c, y: -40 * s }, to: { x: 40 * c, y: 40 * s }, friction: 0.7 }),
+    );
+    const r = 0.3;
+    const pill = world.add(
+      capsule({
+        position: { x: -2 * c + r * s, y: -2 * s - r * c },
+        angle,
+        length: 0.01,
+        radius: r,
+        friction: 0.7,
+      }),
+    );
+    for (let i = 0; i < 30; i++) world.step(DT);
+    const along = (): number => pill.position.x * c + pill.position.y * s;
+    const speed = (): number => pill.linearVelocity.x * c + pill.linearVelocity.y * s;
+    const v0 = speed();
+    const x0 = along();
+    const steps = 60;
+    for (let i = 0; i < steps; i++) world.step(DT);
+    const t = steps * DT;
+    const measured = (2 * (along() - x0 - v0 * t)) / (t * t);
+    const expected = (G * s) / (1 + pill.inertia / (pill.mass * r * r));
+    const error = Math.abs(measured - expected) / expected;
+    reportMeasured('nearly round pill rolls on incline, acceleration relative error', error, 0.03);
+    expect(error).toBeLessThan(0.03);
+    // Rolling without slipping: v = w r.
+    expect(Math.abs(speed() - pill.angularVelocity * r) / speed()).toBeLessThan(0.03);
   });
 });
