@@ -152,3 +152,53 @@ test('gallery: pause, single step, slow motion, reset and overlays', async ({ br
     await closeGallery(gallery);
   }
 });
+
+test('gallery: a body dragged with the pointer follows it, and is let go', async ({ browser }) => {
+  const gallery = await openGallery(browser, '#/vertical-stack');
+  const { page } = gallery;
+  try {
+    await sleep(300);
+    const stage = page.locator('.stage physical-canvas');
+    // The top box of the stack, in page coordinates.
+    const start = await stage.evaluate((element) => {
+      const canvas = element as unknown as {
+        world: { bodies: { position: { x: number; y: number } }[] };
+        worldToScreen(p: { x: number; y: number }): { x: number; y: number };
+      };
+      const bodies = canvas.world.bodies;
+      const top = bodies[bodies.length - 1]!.position;
+      const screen = canvas.worldToScreen(top);
+      const rect = element.getBoundingClientRect();
+      return { x: rect.left + screen.x, y: rect.top + screen.y, worldX: top.x };
+    });
+    await page.mouse.move(start.x, start.y);
+    await page.mouse.down();
+    for (let i = 1; i <= 10; i++) {
+      await page.mouse.move(start.x + 12 * i, start.y + 3 * i);
+      await sleep(30);
+    }
+    await sleep(400);
+    const held = await stage.evaluate((element) => {
+      const world = (
+        element as unknown as {
+          world: { joints: unknown[]; bodies: { position: { x: number } }[] };
+        }
+      ).world;
+      return { joints: world.joints.length, x: world.bodies[world.bodies.length - 1]!.position.x };
+    });
+    assert.equal(held.joints, 1, 'a mouse joint holds the box');
+    assert.ok(held.x > start.worldX + 1, `the box followed the pointer (x ${held.x.toFixed(2)} m)`);
+    await page.mouse.up();
+    await sleep(100);
+    assert.equal(
+      await stage.evaluate(
+        (element) => (element as unknown as { world: { joints: unknown[] } }).world.joints.length,
+      ),
+      0,
+      'released',
+    );
+    assertQuiet(gallery);
+  } finally {
+    await closeGallery(gallery);
+  }
+});

@@ -1,6 +1,6 @@
 import type { PointerEventDetail } from '@physical/canvas';
-import type { Body, World } from '@physical/engine';
-import { STEP, type Scene, dragToward, sceneValues } from '@physical/scenes';
+import type { MouseJoint, World } from '@physical/engine';
+import { STEP, type Scene, grab, sceneValues } from '@physical/scenes';
 import { h } from './dom.ts';
 import { icon } from './icons.ts';
 import { cameraAttribute } from './list-page.ts';
@@ -82,43 +82,33 @@ export function renderSample(root: HTMLElement, scene: Scene): () => void {
   };
   reset.addEventListener('click', rebuild);
 
-  // ---- drag and throw any dynamic body; a tap kicks it
-  let dragged: { body: Body; offsetX: number; offsetY: number; x: number; y: number } | null = null;
+  // ---- drag and throw any dynamic body with a mouse joint; a tap kicks it
+  let dragged: MouseJoint | null = null;
+  const release = (): void => {
+    if (dragged !== null && dragged.world !== null) world.removeJoint(dragged);
+    dragged = null;
+  };
   canvas.addEventListener('bodypress', ({ detail }: CustomEvent<PointerEventDetail>) => {
     const body = detail.body;
-    if (body === null || body.type !== 'dynamic') return;
-    const center = body.centerOfMass;
-    dragged = {
-      body,
-      offsetX: detail.point.x - center.x,
-      offsetY: detail.point.y - center.y,
-      x: detail.point.x,
-      y: detail.point.y,
-    };
+    if (body === null || body.type !== 'dynamic' || body.world !== world) return;
+    release();
+    dragged = grab(body, detail.point);
   });
   canvas.addEventListener('pointermove', (event) => {
     if (dragged === null) return;
     const point = canvas.clientToWorld(event.clientX, event.clientY);
-    if (point !== null) {
-      dragged.x = point.x;
-      dragged.y = point.y;
-    }
+    if (point !== null) dragged.target = point;
   });
-  canvas.addEventListener('bodyrelease', () => {
-    dragged = null;
-  });
+  canvas.addEventListener('bodyrelease', release);
   canvas.addEventListener('bodytap', ({ detail }: CustomEvent<PointerEventDetail>) => {
     const body = detail.body;
     if (body === null || body.type !== 'dynamic') return;
     body.applyImpulse({ x: 0, y: -4 * body.mass }, detail.point);
   });
 
-  // Once per frame: follow the pointer with the dragged body, show the simulated time.
+  // Once per frame: show the simulated time.
   let frame = 0;
   const tick = (): void => {
-    if (dragged !== null && !canvas.paused) {
-      dragToward(dragged.body, { x: dragged.x - dragged.offsetX, y: dragged.y - dragged.offsetY });
-    }
     time.textContent = `t = ${(world.steps * STEP).toFixed(2)} s`;
     frame = requestAnimationFrame(tick);
   };

@@ -1,5 +1,9 @@
 import type { Scene } from './scene.ts';
+import bridge from './samples/bridge.ts';
 import bullets from './samples/bullets.ts';
+import capsulesAndRoundedBoxes from './samples/capsules-and-rounded-boxes.ts';
+import car from './samples/car.ts';
+import concaveShapes from './samples/concave-shapes.ts';
 import compoundShapes from './samples/compound-shapes.ts';
 import dominoes from './samples/dominoes.ts';
 import dragAndThrow from './samples/drag-and-throw.ts';
@@ -11,8 +15,8 @@ import newtonInertia from './samples/newton-inertia.ts';
 import newtonReactions from './samples/newton-reactions.ts';
 import newtonsCradle from './samples/newtons-cradle.ts';
 import pyramid from './samples/pyramid.ts';
+import ragdoll from './samples/ragdoll.ts';
 import restitutionRow from './samples/restitution-row.ts';
-import roundedShapes from './samples/rounded-shapes.ts';
 import tumbler from './samples/tumbler.ts';
 import verticalStack from './samples/vertical-stack.ts';
 
@@ -25,10 +29,14 @@ export const scenes: readonly Scene[] = [
   frictionRamps,
   newtonsCradle,
   dominoes,
+  bridge,
+  car,
+  ragdoll,
   tumbler,
   bullets,
   compoundShapes,
-  roundedShapes,
+  concaveShapes,
+  capsulesAndRoundedBoxes,
   dragAndThrow,
   forcesWithDurations,
   newtonInertia,

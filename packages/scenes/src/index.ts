@@ -5,4 +5,4 @@ export type { Scene, SceneCamera, SceneParameter, SceneValues } from './scene.ts
 export { findScene, scenes } from './catalog.ts';
 export { bodyStates, hashWorld } from './state-hash.ts';
 export { seededRandom } from './random.ts';
-export { dragToward } from './samples/drag-and-throw.ts';
+export { grab } from './samples/drag-and-throw.ts';

@@ -16,7 +16,7 @@ describe('regression: every sample reproduces its committed state hash', () => {
   });
 
   for (const scene of scenes) {
-    it(`${scene.id}: same hash twice in a row, equal to the baseline, and its physical check holds`, () => {
+    it(`${scene.id}: same hash twice in a row, equal to the baseline, and its physical check holds`, { timeout: 60_000 }, () => {
       const values = sceneValues(scene);
       const world = runScene(scene, values);
       const hash = hashWorld(world);

@@ -1,18 +1,28 @@
-import { type Body, type Vec2Like, World, box, particle, wall } from '@physical/engine';
+import {
+  type Body,
+  type MouseJoint,
+  type Vec2Like,
+  World,
+  box,
+  mouseJoint,
+  particle,
+  wall,
+} from '@physical/engine';
 import { defineScene } from '../scene.ts';
 
 const WIDTH = 10;
 const HEIGHT = 8;
 
 /**
- * Moves a dragged body toward the pointer by setting its velocity: it arrives in `reach` seconds,
- * still collides on the way, and when let go keeps the velocity it had, so a quick flick throws it.
- * Call it once per frame while the pointer is down.
+ * Grabs `body` at `point` (m) with a mouse joint: a soft, bounded pull toward a target you move
+ * with the pointer (`joint.target = point`). Remove the joint to let go: the body keeps the
+ * velocity it had, so a quick flick throws it.
  */
-export function dragToward(body: Body, target: Vec2Like, reach = 0.08): void {
-  const center = body.centerOfMass;
-  body.linearVelocity = { x: (target.x - center.x) / reach, y: (target.y - center.y) / reach };
-  body.angularVelocity *= 0.9; // tame the spin while held
+export function grab(body: Body, point: Vec2Like): MouseJoint {
+  const world = body.world!;
+  return world.addJoint(
+    mouseJoint({ body, target: point, maxForce: 1000 * body.mass, hertz: 8, dampingRatio: 0.7 }),
+  );
 }
 
 /** A walled room of crates and balls to pick up and throw (press, drag, release). */
@@ -45,8 +55,15 @@ export default defineScene({
           : particle({ position, radius: 0.4, restitution: 0.5 }),
       );
     }
-    // The demonstration throw: up and to the right, as a flick of the pointer would.
-    world.bodies[4]!.linearVelocity = { x: speed * 0.6, y: -speed * 0.8 };
+    // The demonstration: grab the first crate, pull it up and to the right for a quarter of a
+    // second, let go (the joint removes itself when the time is up).
+    const crate = world.bodies[4]!;
+    const joint = grab(crate, crate.position);
+    joint.target = { x: crate.position.x + speed * 0.15, y: crate.position.y - speed * 0.2 };
+    let steps = 0;
+    world.on('move', (body) => {
+      if (body === crate && ++steps === 15) world.removeJoint(joint);
+    });
     return world;
   },
   check(world) {

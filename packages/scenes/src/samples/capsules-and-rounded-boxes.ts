@@ -1,16 +1,17 @@
-import { Body, World, wall } from '@physical/engine';
+import { Body, World, capsule, wall } from '@physical/engine';
 import { seededRandom } from '../random.ts';
 import { defineScene } from '../scene.ts';
 
 /**
- * Rounded boxes and polygons: any convex polygon can take a rounding radius, which makes it
- * roll over edges and stack softly. Mass and inertia include the rounded rim.
+ * Capsules (pills: every point within a radius of a segment) beside rounded boxes and triangles:
+ * any convex polygon can take a rounding radius, which makes it roll over edges and stack
+ * softly. Mass and inertia include the rounded rim.
  */
 export default defineScene({
-  id: 'rounded-shapes',
-  title: 'Rounded boxes',
+  id: 'capsules-and-rounded-boxes',
+  title: 'Capsules and rounded boxes',
   description:
-    'Boxes and triangles with rounded corners pile up on a slope. Turn the rounding up and they roll like pebbles.',
+    'Capsules, and boxes and triangles with rounded corners, pile up on a slope. Turn the rounding up and the polygons roll like pebbles.',
   parameters: [
     { name: 'rounding', label: 'Rounding (m)', min: 0, max: 0.3, step: 0.02, default: 0.1 },
     { name: 'count', label: 'Pieces', min: 5, max: 80, step: 5, default: 30 },
@@ -28,8 +29,13 @@ export default defineScene({
     for (let i = 0; i < count; i++) {
       const size = 0.3 + 0.3 * random();
       const position = { x: -4 + 1.6 * (i % 6), y: -4 - 1.2 * Math.floor(i / 6) };
+      const angle = random() * Math.PI;
+      if (i % 4 === 3) {
+        world.add(capsule({ position, angle, length: 2 * size, radius: 0.2 }));
+        continue;
+      }
       const shape =
-        i % 3 === 2
+        i % 4 === 2
           ? {
               type: 'polygon' as const,
               vertices: [
@@ -40,7 +46,7 @@ export default defineScene({
               radius: rounding,
             }
           : { type: 'box' as const, width: 2 * size, height: 1.4 * size, radius: rounding };
-      world.add(new Body({ position, angle: random() * Math.PI, shapes: [shape] }));
+      world.add(new Body({ position, angle, shapes: [shape] }));
     }
     return world;
   },
