@@ -19,6 +19,9 @@ const OVERLAYS = [
 /** The stage's colour: Material's raised dark surface, so the canvas reads as a panel. */
 export const SURFACE = '#1e1e1e';
 
+const LINK_COLOR = 'rgba(255, 255, 255, 0.6)';
+const DRAG_COLOR = '#82b1ff';
+
 /** Time scale of slow motion. */
 const SLOW_MOTION = 0.25;
 
@@ -39,14 +42,39 @@ export function renderSample(root: HTMLElement, scene: Scene): () => void {
   document.title = `${scene.title} \u2013 Physical samples`;
   const values: Record<string, number> = { ...sceneValues(scene) };
   let world: World = scene.build(values);
+  /** The mouse joint of the body being dragged, if any. */
+  let dragged: MouseJoint | null = null;
 
   const canvas = h('physical-canvas', {
     fit: 'contain',
     'view-box': cameraAttribute(scene),
     background: SURFACE,
     'aria-label': `${scene.title}: live simulation`,
+    // The stage takes the camera's shape (CSS caps its height), so no space is wasted on a phone.
+    style: `aspect-ratio: ${scene.camera.width} / ${scene.camera.height}`,
   });
   canvas.world = world;
+  // Rods and ropes the scene declares, and the drag line from the grabbed body to the pointer.
+  canvas.drawOverlay = (context, element) => {
+    const links = scene.links?.(world) ?? [];
+    if (links.length === 0 && dragged === null) return;
+    context.lineWidth = 1.5 / element.viewport.scale;
+    context.strokeStyle = LINK_COLOR;
+    context.beginPath();
+    for (const [from, to] of links) {
+      context.moveTo(from.x, from.y);
+      context.lineTo(to.x, to.y);
+    }
+    context.stroke();
+    if (dragged !== null && dragged.world !== null) {
+      const from = dragged.body.position;
+      context.strokeStyle = DRAG_COLOR;
+      context.beginPath();
+      context.moveTo(from.x, from.y);
+      context.lineTo(dragged.target.x, dragged.target.y);
+      context.stroke();
+    }
+  };
 
   // ---- toolbar: play/pause, step, slow motion, reset, time
   const play = iconButton('pause', 'Pause', 'play');
@@ -83,7 +111,6 @@ export function renderSample(root: HTMLElement, scene: Scene): () => void {
   reset.addEventListener('click', rebuild);
 
   // ---- drag and throw any dynamic body with a mouse joint; a tap kicks it
-  let dragged: MouseJoint | null = null;
   const release = (): void => {
     if (dragged !== null && dragged.world !== null) world.removeJoint(dragged);
     dragged = null;

@@ -1,4 +1,4 @@
-import type { World } from '@physical/engine';
+import type { Vec2Like, World } from '@physical/engine';
 
 /** One slider of a sample: a number the scene is built from. */
 export interface SceneParameter {
@@ -40,6 +40,11 @@ export interface Scene {
   readonly pixelsPerMeter: number;
   /** Fixed steps of 1/60 s the regression suite runs (and the thumbnail shows). */
   readonly steps: number;
+  /**
+   * Lines the gallery draws over the bodies (rods, ropes: joints the canvas does not draw),
+   * as pairs of world points (m). Optional.
+   */
+  links?(world: World): readonly (readonly [Vec2Like, Vec2Like])[];
   /** Builds a fresh world from the parameter values. */
   build(values: SceneValues): World;
   /**

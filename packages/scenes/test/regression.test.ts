@@ -16,19 +16,23 @@ describe('regression: every sample reproduces its committed state hash', () => {
   });
 
   for (const scene of scenes) {
-    it(`${scene.id}: same hash twice in a row, equal to the baseline, and its physical check holds`, { timeout: 60_000 }, () => {
-      const values = sceneValues(scene);
-      const world = runScene(scene, values);
-      const hash = hashWorld(world);
-      expect(hashWorld(runScene(scene, values)), 'a second run must hash the same').toBe(hash);
-      const baseline = baselines[scene.id];
-      expect(
-        baseline === undefined ? 'missing' : `${baseline.steps} steps, ${baseline.hash}`,
-        `sample "${scene.id}" changed its outcome after ${scene.steps} steps. If the change is ` +
-          `intended (an engine change you can explain), run ${UPDATE_COMMAND} and commit ` +
-          `packages/scenes/baselines.json with the explanation.`,
-      ).toBe(`${scene.steps} steps, ${hash}`);
-      expect(scene.check(world, values)).toBeNull();
-    });
+    it(
+      `${scene.id}: same hash twice in a row, equal to the baseline, and its physical check holds`,
+      { timeout: 60_000 },
+      () => {
+        const values = sceneValues(scene);
+        const world = runScene(scene, values);
+        const hash = hashWorld(world);
+        expect(hashWorld(runScene(scene, values)), 'a second run must hash the same').toBe(hash);
+        const baseline = baselines[scene.id];
+        expect(
+          baseline === undefined ? 'missing' : `${baseline.steps} steps, ${baseline.hash}`,
+          `sample "${scene.id}" changed its outcome after ${scene.steps} steps. If the change is ` +
+            `intended (an engine change you can explain), run ${UPDATE_COMMAND} and commit ` +
+            `packages/scenes/baselines.json with the explanation.`,
+        ).toBe(`${scene.steps} steps, ${hash}`);
+        expect(scene.check(world, values)).toBeNull();
+      },
+    );
   }
 });
