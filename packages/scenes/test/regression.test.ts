@@ -25,13 +25,16 @@ describe('regression: every sample reproduces its committed state hash', () => {
         const hash = hashWorld(world);
         expect(hashWorld(runScene(scene, values)), 'a second run must hash the same').toBe(hash);
         const baseline = baselines[scene.id];
+        // Received: this run; expected: the committed baseline.
         expect(
-          baseline === undefined ? 'missing' : `${baseline.steps} steps, ${baseline.hash}`,
+          `${scene.steps} steps, ${hash}`,
           `sample "${scene.id}" changed its outcome after ${scene.steps} steps. If the change is ` +
             `intended (an engine change you can explain), run ${UPDATE_COMMAND} and commit ` +
             `packages/scenes/baselines.json with the explanation.`,
-        ).toBe(`${scene.steps} steps, ${hash}`);
-        expect(scene.check(world, values)).toBeNull();
+        ).toBe(
+          baseline === undefined ? 'no baseline' : `${baseline.steps} steps, ${baseline.hash}`,
+        );
+        expect(scene.check(world, values), `the physical check of "${scene.id}"`).toBeNull();
       },
     );
   }
