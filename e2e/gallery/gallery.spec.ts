@@ -1,7 +1,7 @@
 import assert from 'node:assert/strict';
 import { readFileSync, readdirSync } from 'node:fs';
 import { test } from '../harness.ts';
-import { assertQuiet, paintedPixels } from '../newton/phone.ts';
+import { assertQuiet, axeViolations, paintedPixels } from '../newton/phone.ts';
 import { closeGallery, openGallery, screenshot, stageWorld } from './gallery-page.ts';
 
 // The samples are the modules in packages/scenes/src/samples (no engine import here: the specs
@@ -197,6 +197,21 @@ test('gallery: a body dragged with the pointer follows it, and is let go', async
       0,
       'released',
     );
+    assertQuiet(gallery);
+  } finally {
+    await closeGallery(gallery);
+  }
+});
+
+test('gallery: axe-core finds no serious or critical violations', async ({ browser }) => {
+  const gallery = await openGallery(browser);
+  const { page } = gallery;
+  try {
+    const found = (await axeViolations(page)).map((v) => `list: ${v}`);
+    await page.evaluate(() => (location.hash = '#/bridge'));
+    await page.locator('[data-source="bridge"]').waitFor();
+    found.push(...(await axeViolations(page)).map((v) => `sample: ${v}`));
+    assert.deepEqual(found, []);
     assertQuiet(gallery);
   } finally {
     await closeGallery(gallery);

@@ -223,7 +223,11 @@ export function renderSample(root: HTMLElement, scene: Scene): () => void {
         'section',
         { class: 'panel' },
         h('h2', {}, `Source: packages/scenes/src/samples/${scene.id}.ts`),
-        h('pre', { class: 'source' }, code),
+        h(
+          'pre',
+          { class: 'source', tabindex: '0', 'aria-label': `Source of ${scene.title}` },
+          code,
+        ),
       ),
     ),
   );
