@@ -165,6 +165,31 @@ describe('polygon outlines', () => {
     expect(compound.mass).toBeCloseTo(5, 12);
   });
 
+  it('adds every part of a concave shape to a body already in a world', () => {
+    const world = new World();
+    world.add(wall({ from: { x: -10, y: 0 }, to: { x: 10, y: 0 } }));
+    const body = world.add(new Body({ position: { x: 0, y: -3 }, mass: 1 }));
+    body.addShape({
+      type: 'polygon',
+      vertices: [
+        { x: -1, y: 0 },
+        { x: 1, y: 0 },
+        { x: 1, y: 1 },
+        { x: 0.8, y: 1 },
+        { x: 0.8, y: 0.2 },
+        { x: -0.8, y: 0.2 },
+        { x: -0.8, y: 1 },
+        { x: -1, y: 1 },
+      ],
+    });
+    expect(body.shapes.length).toBe(3);
+    for (let i = 0; i < 120; i++) world.step(1 / 60);
+    // It landed on its two legs: the legs' feet (local y = 1) rest on the ground at y = 0.
+    expect(body.position.y).toBeCloseTo(-1, 2);
+    expect(world.bodyAt({ x: 0.9, y: -0.5 })).toBe(body);
+    expect(world.bodyAt({ x: 0, y: -0.5 })).toBeNull();
+  });
+
   it("splits the README's U bucket into three parts", () => {
     const bucket = polygon({
       position: { x: 0, y: 5 },
