@@ -1,6 +1,7 @@
 import type { SceneDesc } from '../types.ts';
 import type { SceneOptions } from './common.ts';
 import { compounds } from './compounds.ts';
+import { jointGrid } from './joint-grid.ts';
 import { junkyard } from './junkyard.ts';
 import { largePyramid } from './large-pyramid.ts';
 import { manyPyramids } from './many-pyramids.ts';
@@ -12,6 +13,7 @@ import { washer } from './washer.ts';
 /** Box2D v3's scenes that Physical can build today, in Box2D's order. */
 export const SCENES: Record<string, (options: SceneOptions) => SceneDesc> = {
   compounds,
+  joint_grid: jointGrid,
   junkyard,
   large_pyramid: largePyramid,
   many_pyramids: manyPyramids,
@@ -22,7 +24,6 @@ export const SCENES: Record<string, (options: SceneOptions) => SceneDesc> = {
 
 /** Box2D v3's scenes that need features Physical does not have yet. */
 export const UNSUPPORTED: Record<string, string> = {
-  joint_grid: 'needs joints/capsules (not yet in Physical): 19,800 revolute joints',
   rain: 'needs joints/capsules (not yet in Physical): capsule ragdolls with revolute joints',
   spinner:
     'needs joints/capsules (not yet in Physical): capsules, a loop chain and a revolute motor',
