@@ -24,9 +24,9 @@ export const SCENES: Record<string, (options: SceneOptions) => SceneDesc> = {
 
 /** Box2D v3's scenes that need features Physical does not have yet. */
 export const UNSUPPORTED: Record<string, string> = {
-  rain: 'needs joints/capsules (not yet in Physical): capsule ragdolls with revolute joints',
+  rain: 'needs capsules (not yet in Physical): capsule ragdolls with revolute joints',
   spinner:
-    'needs joints/capsules (not yet in Physical): capsules, a loop chain and a revolute motor',
+    'needs capsules and chains (not yet in Physical): capsules, a loop chain and a revolute motor',
 };
 
 /** Builds a scene by name; `sparse_<n>` is the scaling scene with n bodies. */
