@@ -46,7 +46,6 @@ declare module 'matter-js' {
       rectangle(x: number, y: number, w: number, h: number, options?: BodyOptions): MatterBody;
       circle(x: number, y: number, radius: number, options?: BodyOptions): MatterBody;
       fromVertices(x: number, y: number, sets: Vector[][], options?: BodyOptions): MatterBody;
-      circle(x: number, y: number, radius: number, options?: BodyOptions): MatterBody;
     };
     Constraint: { create(options: ConstraintOptions): object };
     Body: {
