@@ -9,9 +9,10 @@ export default defineConfig({
       '@physical/engine': fileURLToPath(new URL('./packages/engine/src/index.ts', import.meta.url)),
       '@physical/canvas': fileURLToPath(new URL('./packages/canvas/src/index.ts', import.meta.url)),
       '@physical/react': fileURLToPath(new URL('./packages/react/src/index.ts', import.meta.url)),
+      '@physical/scenes': fileURLToPath(new URL('./packages/scenes/src/index.ts', import.meta.url)),
     },
   },
   test: {
-    include: ['packages/*/test/**/*.test.ts', 'apps/*/test/**/*.test.ts'],
+    include: ['packages/*/test/**/*.test.ts', 'apps/*/test/**/*.test.ts', 'docs/test/**/*.test.ts'],
   },
 });

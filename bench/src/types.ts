@@ -75,6 +75,15 @@ export interface BodyDesc {
   readonly hitEvents?: boolean;
 }
 
+/** A revolute joint between two bodies of the scene (indices into `bodies`) at a world point. */
+export interface JointDesc {
+  readonly a: number;
+  readonly b: number;
+  /** Anchor in world coordinates (m, Box2D's frame). */
+  readonly x: number;
+  readonly y: number;
+}
+
 /** Sent to a scene's per-step callback: moves a kinematic body towards a target pose in one step. */
 export interface StepApi {
   moveKinematicTo(index: number, x: number, y: number, angle: number): void;
@@ -107,6 +116,13 @@ export interface SceneDesc {
   /** Scene defaults for shapes without their own material (Box2D: density 1, friction 0.6). */
   readonly material: Required<MaterialDesc>;
   readonly bodies: readonly BodyDesc[];
+  /** Revolute joints (joined bodies do not collide with each other). */
+  readonly joints?: readonly JointDesc[];
+  /**
+   * False when no two shapes of the scene may collide (Box2D: filter category 2, mask ~2). Default
+   * true.
+   */
+  readonly shapesCollide?: boolean;
   readonly onStep?: (step: number, api: StepApi) => void;
   readonly quality: QualitySpec;
   /** What differs from Box2D's scene, if anything (printed). */
@@ -149,6 +165,16 @@ export function materialOf(scene: SceneDesc, shape: ShapeDesc): Required<Materia
     friction: m.friction ?? scene.material.friction,
     restitution: m.restitution ?? scene.material.restitution,
   };
+}
+
+/** A world point (Box2D's frame) in the frame of a body as the scene creates it. */
+export function localPoint(body: BodyDesc, x: number, y: number): [number, number] {
+  const angle = body.angle ?? 0;
+  const c = Math.cos(angle);
+  const s = Math.sin(angle);
+  const dx = x - body.x;
+  const dy = y - body.y;
+  return [c * dx + s * dy, -s * dx + c * dy];
 }
 
 /** Centroid of a convex polygon. */

@@ -37,10 +37,15 @@ export async function startAppServer(): Promise<AppServer> {
       `the Newton app is not built (${DIST} has no index.html): run npm run build -w @physical/newton`,
     );
   }
+  return serveStatic(DIST);
+}
+
+/** Serves the folder `root` (ending in a slash) on 127.0.0.1 and a free port. */
+export async function serveStatic(root: string): Promise<AppServer> {
   const server = createServer((request, response) => {
     const path = decodeURIComponent(new URL(request.url ?? '/', 'http://x').pathname);
-    let file = normalize(join(DIST, path));
-    if (!file.startsWith(DIST)) {
+    let file = normalize(join(root, path));
+    if (!file.startsWith(root)) {
       response.writeHead(403).end();
       return;
     }

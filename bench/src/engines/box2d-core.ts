@@ -75,7 +75,14 @@ export const box2dCore: Engine = {
         awake: !(desc.asleep ?? false),
       });
       for (const shape of desc.shapes) {
-        body.CreateFixture({ shape: makeShape(shape), ...materialOf(scene, shape) });
+        body.CreateFixture({
+          shape: makeShape(shape),
+          ...materialOf(scene, shape),
+          // Box2D's joint_grid filter: category 2, mask ~2, so no two shapes collide.
+          ...(scene.shapesCollide === false
+            ? { filter: { categoryBits: 2, maskBits: 0xfffd } }
+            : {}),
+        });
       }
       if (desc.type === 'static' && ground === null) ground = body;
       if (desc.motor && ground) {
@@ -87,6 +94,11 @@ export const box2dCore: Engine = {
         world.CreateJoint(jd);
       }
       bodies.push(body);
+    }
+    for (const joint of scene.joints ?? []) {
+      const jd = new b2RevoluteJointDef();
+      jd.Initialize(bodies[joint.a]!, bodies[joint.b]!, { x: joint.x, y: joint.y });
+      world.CreateJoint(jd);
     }
     const velocity = { x: 0, y: 0 };
     return {

@@ -66,6 +66,13 @@ function createWorld(b2: B2, scene: SceneDesc): World {
     fd.set_density(m.density);
     fd.set_friction(m.friction);
     fd.set_restitution(m.restitution);
+    if (scene.shapesCollide === false) {
+      // Box2D's joint_grid filter: category 2, mask ~2, so no two shapes collide.
+      const filter = fd.get_filter();
+      filter.set_categoryBits(2);
+      filter.set_maskBits(0xfffd);
+      fd.set_filter(filter);
+    }
     switch (shape.kind) {
       case 'box': {
         const s = new b2.b2PolygonShape();
@@ -121,6 +128,11 @@ function createWorld(b2: B2, scene: SceneDesc): World {
       world.CreateJoint(jd);
     }
     bodies.push(body);
+  }
+  for (const joint of scene.joints ?? []) {
+    const jd = new b2.b2RevoluteJointDef();
+    jd.Initialize(bodies[joint.a]!, bodies[joint.b]!, new b2.b2Vec2(joint.x, joint.y));
+    world.CreateJoint(jd);
   }
   const velocity = new b2.b2Vec2(0, 0);
   return {

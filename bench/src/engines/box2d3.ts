@@ -2,6 +2,7 @@ import Box2DFactory from 'box2d3-wasm';
 import {
   DT,
   SUB_STEPS,
+  localPoint,
   materialOf,
   type Engine,
   type Pose,
@@ -47,6 +48,13 @@ function addShape(b2: B2, scene: SceneDesc, bodyId: BodyId, shape: ShapeDesc, hi
   material.restitution = m.restitution;
   def.material = material;
   def.enableHitEvents = hit;
+  if (scene.shapesCollide === false) {
+    // Box2D's joint_grid filter: category 2, mask ~2, so no two shapes collide.
+    const filter = def.filter;
+    filter.categoryBits = 2;
+    filter.maskBits = 0xfffffffd; // every category but 2 (only 2 exists in the scene)
+    def.filter = filter;
+  }
   switch (shape.kind) {
     case 'box': {
       const radius = shape.radius ?? 0;
@@ -145,6 +153,24 @@ function createWorld(b2: B2, scene: SceneDesc): World {
       b2.b2CreateRevoluteJoint(worldId, joint);
     }
     bodies.push(id);
+  }
+  for (const joint of scene.joints ?? []) {
+    const def = b2.b2DefaultRevoluteJointDef();
+    const base = def.base;
+    base.bodyIdA = bodies[joint.a]!;
+    base.bodyIdB = bodies[joint.b]!;
+    const [ax, ay] = localPoint(scene.bodies[joint.a]!, joint.x, joint.y);
+    const [bx, by] = localPoint(scene.bodies[joint.b]!, joint.x, joint.y);
+    const frameA = new b2.b2Transform();
+    frameA.p = vec(b2, ax, ay);
+    frameA.q = b2.b2MakeRot(0);
+    base.localFrameA = frameA;
+    const frameB = new b2.b2Transform();
+    frameB.p = vec(b2, bx, by);
+    frameB.q = b2.b2MakeRot(0);
+    base.localFrameB = frameB;
+    def.base = base;
+    b2.b2CreateRevoluteJoint(worldId, def);
   }
   const target = new b2.b2Transform();
   const targetP = vec(b2, 0, 0);

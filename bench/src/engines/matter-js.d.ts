@@ -13,6 +13,15 @@ declare module 'matter-js' {
     restitution?: number;
     frictionAir?: number;
     parts?: MatterBody[];
+    collisionFilter?: { category?: number; mask?: number; group?: number };
+  }
+  interface ConstraintOptions {
+    bodyA: MatterBody;
+    bodyB: MatterBody;
+    pointA?: Vector;
+    pointB?: Vector;
+    length?: number;
+    stiffness?: number;
   }
   interface MatterBody {
     position: Vector;
@@ -38,6 +47,7 @@ declare module 'matter-js' {
       circle(x: number, y: number, radius: number, options?: BodyOptions): MatterBody;
       fromVertices(x: number, y: number, sets: Vector[][], options?: BodyOptions): MatterBody;
     };
+    Constraint: { create(options: ConstraintOptions): object };
     Body: {
       create(options: BodyOptions): MatterBody;
       setPosition(body: MatterBody, position: Vector, updateVelocity?: boolean): void;
@@ -45,7 +55,7 @@ declare module 'matter-js' {
       setVelocity(body: MatterBody, velocity: Vector): void;
       setAngularVelocity(body: MatterBody, velocity: number): void;
     };
-    Composite: { add(composite: object, bodies: MatterBody | MatterBody[]): void };
+    Composite: { add(composite: object, items: object | object[]): void };
     Sleeping: { set(body: MatterBody, asleep: boolean): void };
   };
   export default Matter;

@@ -127,6 +127,10 @@ function createWorld(scene: SceneDesc): World {
         friction: m.friction,
         restitution: m.restitution,
         frictionAir: 0,
+        // Box2D's joint_grid filter: category 2, colliding with every category but 2.
+        ...(scene.shapesCollide === false
+          ? { collisionFilter: { category: 2, mask: 0xfffffffd } }
+          : {}),
       };
     };
     let body: MatterBody;
@@ -180,6 +184,26 @@ function createWorld(scene: SceneDesc): World {
     bodies.push(body);
   }
   Matter.Composite.add(engine.world, all);
+  // Revolute joints as matter's pin constraints (length 0, stiffness 1), at the anchor seen from
+  // each body's centre; matter has no joint limits or motors.
+  const constraints = (scene.joints ?? []).map((joint) => {
+    const a = bodies[joint.a]!;
+    const b = bodies[joint.b]!;
+    const x = joint.x * SCALE;
+    const y = -joint.y * SCALE;
+    return Matter.Constraint.create({
+      bodyA: a,
+      bodyB: b,
+      pointA: { x: x - a.position.x, y: y - a.position.y },
+      pointB: { x: x - b.position.x, y: y - b.position.y },
+      length: 0,
+      stiffness: 1,
+    });
+  });
+  if (constraints.length > 0) {
+    Matter.Composite.add(engine.world, constraints);
+    notes.add('revolute joints as pin constraints (length 0, stiffness 1)');
+  }
   if (scene.bodies.some((b) => b.shapes.length > 1 && b.type === 'dynamic')) {
     notes.add('compound bodies: pose is the centre of mass');
   }

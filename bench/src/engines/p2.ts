@@ -126,6 +126,11 @@ export const p2Engine: Engine = {
             break;
         }
         if (offset[0] !== 0 || offset[1] !== 0) offCentre = true;
+        if (scene.shapesCollide === false) {
+          // Box2D's joint_grid filter: group 2, colliding with every group but 2.
+          s.collisionGroup = 2;
+          s.collisionMask = ~2;
+        }
         body.addShape(s, offset, angle);
       }
       if (desc.type === 'dynamic' && offCentre) body.adjustCenterOfMass();
@@ -141,6 +146,14 @@ export const p2Engine: Engine = {
         world.addConstraint(joint);
       }
       bodies.push(body);
+    }
+    for (const joint of scene.joints ?? []) {
+      world.addConstraint(
+        new RevoluteConstraint(bodies[joint.a]!, bodies[joint.b]!, {
+          worldPivot: [joint.x, joint.y],
+          collideConnected: false,
+        }),
+      );
     }
     return {
       notes: [

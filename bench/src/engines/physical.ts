@@ -1,4 +1,4 @@
-import { Body, World as PhysicalWorld, type ShapeOptions } from '@physical/engine';
+import { Body, World as PhysicalWorld, revoluteJoint, type ShapeOptions } from '@physical/engine';
 import {
   DT,
   SUB_STEPS,
@@ -59,7 +59,7 @@ function shapeOptions(scene: SceneDesc, shape: ShapeDesc): ShapeOptions {
 export const physical: Engine = {
   id: 'physical',
   kind: 'js',
-  settings: `subSteps ${SUB_STEPS}, contact 30 Hz / damping 10, push-out 3 m/s, sleep per scene, continuous on (defaults); measured from packages/engine/dist (tsc build)`,
+  settings: `subSteps ${SUB_STEPS}, contact 30 Hz / damping 10, push-out 3 m/s, sleep per scene, continuous on (defaults), revolute motor where the scene has one; measured from packages/engine/dist (tsc build)`,
   create(scene) {
     const world = new PhysicalWorld({
       gravity: { x: scene.gravity.x, y: -scene.gravity.y },
@@ -69,28 +69,49 @@ export const physical: Engine = {
     });
     const notes: string[] = [];
     const bodies: Body[] = [];
+    let ground: Body | null = null;
     for (const desc of scene.bodies) {
-      let type = desc.type;
-      let w = desc.w ?? 0;
-      if (desc.motor) {
-        type = 'kinematic';
-        w = desc.motor.speed;
-        notes.push(
-          'no motors yet (joints are being built on another branch): the motor-driven body is a kinematic body turning at the motor speed',
-        );
-      }
       const body = new Body({
-        type,
+        type: desc.type,
         position: { x: desc.x, y: -desc.y },
         angle: -(desc.angle ?? 0),
         linearVelocity: { x: desc.vx ?? 0, y: -(desc.vy ?? 0) },
-        angularVelocity: -w,
+        angularVelocity: -(desc.w ?? 0),
         asleep: desc.asleep ?? false,
         allowSleep: desc.enableSleep ?? true,
         shapes: desc.shapes.map((s) => shapeOptions(scene, s)),
       });
       world.add(body);
       bodies.push(body);
+      if (desc.type === 'static' && ground === null) ground = body;
+      if (desc.motor) {
+        if (ground === null) throw new Error('a motor needs a static body before it');
+        // y-down: a positive (counter-clockwise) Box2D speed is a negative angular velocity here.
+        world.addJoint(
+          revoluteJoint({
+            bodyA: ground,
+            bodyB: body,
+            anchor: { x: desc.x, y: -desc.y },
+            enableMotor: true,
+            motorSpeed: -desc.motor.speed,
+            maxMotorTorque: desc.motor.maxTorque,
+          }),
+        );
+      }
+    }
+    for (const joint of scene.joints ?? []) {
+      world.addJoint(
+        revoluteJoint({
+          bodyA: bodies[joint.a]!,
+          bodyB: bodies[joint.b]!,
+          anchor: { x: joint.x, y: -joint.y },
+        }),
+      );
+    }
+    if (scene.shapesCollide === false) {
+      notes.push(
+        'no collision filters yet: shapes that are not joined still collide (Box2D: they ignore one another)',
+      );
     }
     if (scene.bodies.some((b) => b.hitEvents)) notes.push('no hit-event listener registered');
     return {

@@ -54,7 +54,13 @@ export const planckEngine: Engine = {
         awake: !(desc.asleep ?? false),
       });
       for (const shape of desc.shapes) {
-        body.createFixture(makeShape(shape), materialOf(scene, shape));
+        body.createFixture(makeShape(shape), {
+          ...materialOf(scene, shape),
+          // Box2D's joint_grid filter: category 2, mask ~2, so no two shapes collide.
+          ...(scene.shapesCollide === false
+            ? { filterCategoryBits: 2, filterMaskBits: 0xfffd }
+            : {}),
+        });
       }
       if (desc.type === 'static' && ground === null) ground = body;
       if (desc.motor && ground) {
@@ -72,6 +78,11 @@ export const planckEngine: Engine = {
         );
       }
       bodies.push(body);
+    }
+    for (const joint of scene.joints ?? []) {
+      world.createJoint(
+        new RevoluteJoint({}, bodies[joint.a]!, bodies[joint.b]!, { x: joint.x, y: joint.y }),
+      );
     }
     const velocity = { x: 0, y: 0 };
     return {

@@ -1,6 +1,7 @@
 import type RAPIER from '@dimforge/rapier2d-compat';
 import {
   DT,
+  localPoint,
   materialOf,
   type Engine,
   type Pose,
@@ -87,13 +88,13 @@ function createWorld(R: Rapier, scene: SceneDesc): World {
     const body = world.createRigidBody(bd);
     for (const shape of desc.shapes) {
       const m = materialOf(scene, shape);
-      world.createCollider(
-        colliderDesc(shape)
-          .setDensity(m.density)
-          .setFriction(m.friction)
-          .setRestitution(m.restitution),
-        body,
-      );
+      const collider = colliderDesc(shape)
+        .setDensity(m.density)
+        .setFriction(m.friction)
+        .setRestitution(m.restitution);
+      // Box2D's joint_grid filter: member of group 2, colliding with every group but 2.
+      if (scene.shapesCollide === false) collider.setCollisionGroups((0x0002 << 16) | 0xfffd);
+      world.createCollider(collider, body);
     }
     if (desc.type === 'static' && ground === null) ground = body;
     if (desc.motor && ground) {
@@ -106,6 +107,16 @@ function createWorld(R: Rapier, scene: SceneDesc): World {
       joint.configureMotorVelocity(desc.motor.speed, 1e4);
     }
     bodies.push(body);
+  }
+  for (const joint of scene.joints ?? []) {
+    const [ax, ay] = localPoint(scene.bodies[joint.a]!, joint.x, joint.y);
+    const [bx, by] = localPoint(scene.bodies[joint.b]!, joint.x, joint.y);
+    world.createImpulseJoint(
+      R.JointData.revolute({ x: ax, y: ay }, { x: bx, y: by }),
+      bodies[joint.a]!,
+      bodies[joint.b]!,
+      true,
+    );
   }
   const velocity = { x: 0, y: 0 };
   return {

@@ -1,6 +1,7 @@
 import type { SceneDesc } from '../types.ts';
 import type { SceneOptions } from './common.ts';
 import { compounds } from './compounds.ts';
+import { jointGrid } from './joint-grid.ts';
 import { junkyard } from './junkyard.ts';
 import { largePyramid } from './large-pyramid.ts';
 import { manyPyramids } from './many-pyramids.ts';
@@ -13,6 +14,7 @@ import { washer } from './washer.ts';
 /** Box2D v3's scenes that Physical can build today, in Box2D's order. */
 export const SCENES: Record<string, (options: SceneOptions) => SceneDesc> = {
   compounds,
+  joint_grid: jointGrid,
   junkyard,
   large_pyramid: largePyramid,
   many_pyramids: manyPyramids,
@@ -24,8 +26,7 @@ export const SCENES: Record<string, (options: SceneOptions) => SceneDesc> = {
 
 /** Box2D v3's scenes that need features Physical does not have yet. */
 export const UNSUPPORTED: Record<string, string> = {
-  joint_grid: 'needs joints/capsules (not yet in Physical): 19,800 revolute joints',
-  rain: 'needs joints and filtering (not yet in Physical): capsule ragdolls with revolute joints',
+  rain: 'not built yet: capsule ragdolls with revolute joints, with collision filtering (not yet merged)',
 };
 
 /** Builds a scene by name; `sparse_<n>` is the scaling scene with n bodies. */

@@ -206,4 +206,15 @@ describe('joints in a world', () => {
     world.step(DT);
     expect(body.linearVelocity.y).toBeGreaterThan(0.2);
   });
+
+  it('a joint between two bodies that cannot move is allowed and never acts', () => {
+    const world = new World();
+    const a = world.add(box({ type: 'static', position: { x: 0, y: 0 }, width: 1, height: 1 }));
+    const b = world.add(box({ type: 'static', position: { x: 1, y: 0 }, width: 1, height: 1 }));
+    const joint = world.addJoint(revoluteJoint({ bodyA: a, bodyB: b, anchor: { x: 0.5, y: 0 } }));
+    world.step(DT);
+    expect(joint.reactionForce.x).toBe(0);
+    expect(joint.reactionForce.y).toBe(0);
+    expect(b.position.x).toBe(1);
+  });
 });

@@ -173,7 +173,10 @@ export function jointPreventsCollision(a: Body, b: Body): boolean {
 
 // ---------------------------------------------------------------- validation helpers
 
-/** @internal Checks the two bodies of a joint. */
+/**
+ * @internal Checks the two bodies of a joint. Two bodies that cannot move may be joined (Box2D
+ * allows it, and a grid pinned by several static bodies does it): such a joint never acts.
+ */
 export function requireBodies(options: JointOptions<unknown>): void {
   if (options === null || typeof options !== 'object') {
     throw new PhysicalError(
@@ -185,12 +188,6 @@ export function requireBodies(options: JointOptions<unknown>): void {
   requireBody('bodyB', options.bodyB);
   if (options.bodyA === options.bodyB) {
     throw new PhysicalError('bodyB', 'must be a different body from bodyA.');
-  }
-  if (options.bodyA.type !== 'dynamic' && options.bodyB.type !== 'dynamic') {
-    throw new PhysicalError(
-      'bodyB',
-      `a joint needs at least one dynamic body; bodyA is ${options.bodyA.type} and bodyB is ${options.bodyB.type}.`,
-    );
   }
 }
 
@@ -233,22 +230,4 @@ export function requireOrdered(
   if (lower > upper) {
     throw new PhysicalError(lowerField, `must not exceed ${upperField} (${upper}), got ${lower}.`);
   }
-}
-
-/**
- * @internal Solves the 2x2 symmetric system [k11 k12; k12 k22] x = (bx, by) into `out` (x then y);
- * a singular matrix gives zero.
- */
-export function solve22(
-  k11: number,
-  k12: number,
-  k22: number,
-  bx: number,
-  by: number,
-  out: Float64Array,
-): void {
-  let det = k11 * k22 - k12 * k12;
-  if (det !== 0) det = 1 / det;
-  out[0] = det * (k22 * bx - k12 * by);
-  out[1] = det * (k11 * by - k12 * bx);
 }

@@ -4,14 +4,7 @@ import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import type { Body } from '../body.ts';
 import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
-import {
-  Joint,
-  optionalNonNegative,
-  requireBody,
-  requirePoint,
-  solve22,
-  type JointStep,
-} from './joint.ts';
+import { Joint, optionalNonNegative, requireBody, requirePoint, type JointStep } from './joint.ts';
 
 /** Options of a {@link MouseJoint}: what dragging a body with a finger or the mouse needs. */
 export interface MouseJointOptions<UserData = unknown> {
@@ -31,8 +24,6 @@ export interface MouseJointOptions<UserData = unknown> {
   /** Anything the app wants to keep with the joint. */
   readonly userData?: UserData;
 }
-
-const scratch = new Float64Array(2);
 
 // Box2D v3 also damps the dragged body's spin a little (0.5 Hz, ratio 0.1), so a body grabbed
 // off-centre settles instead of swinging round the finger for ever.
@@ -213,11 +204,17 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
       const k11 = mB + rBy * rBy * iB;
       const k12 = -rBy * rBx * iB;
       const k22 = mB + rBx * rBx * iB;
-      solve22(k11, k12, k22, cdotX + soft.biasRate * sepX, cdotY + soft.biasRate * sepY, scratch);
+      // 2x2 solve inlined: a call with number arguments would box them (allocate) per call.
+      const bX = cdotX + soft.biasRate * sepX;
+      const bY = cdotY + soft.biasRate * sepY;
+      let det = k11 * k22 - k12 * k12;
+      if (det !== 0) det = 1 / det;
+      const solvedX = det * (k22 * bX - k12 * bY);
+      const solvedY = det * (k11 * bY - k12 * bX);
       const oldX = this.linearImpulseX;
       const oldY = this.linearImpulseY;
-      let accX = oldX - soft.massScale * scratch[0]! - soft.impulseScale * oldX;
-      let accY = oldY - soft.massScale * scratch[1]! - soft.impulseScale * oldY;
+      let accX = oldX - soft.massScale * solvedX - soft.impulseScale * oldX;
+      let accY = oldY - soft.massScale * solvedY - soft.impulseScale * oldY;
       const maxImpulse = this.force * step.h;
       const magnitude = Math.sqrt(accX * accX + accY * accY);
       if (magnitude > maxImpulse) {

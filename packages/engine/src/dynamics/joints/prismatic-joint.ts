@@ -10,7 +10,6 @@ import {
   requireBodies,
   requireOrdered,
   requirePoint,
-  solve22,
   type JointOptions,
   type JointStep,
 } from './joint.ts';
@@ -40,8 +39,6 @@ export interface PrismaticJointOptions<UserData = unknown> extends JointOptions<
   /** Spring damping ratio (>= 0). Default 0. */
   readonly dampingRatio?: number;
 }
-
-const scratch = new Float64Array(2);
 
 /**
  * A slider: body B moves along an axis fixed in body A and cannot turn relative to it; optional
@@ -449,9 +446,15 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
       const k12 = iA * s1 + iB * s2;
       let k22 = iA + iB;
       if (k22 === 0) k22 = 1; // neither body turns: the angle row is idle
-      solve22(k11, k12, k22, cdot1 + bias1, cdot2 + bias2, scratch);
-      const impulse1 = -massScale * scratch[0]! - impulseScale * this.perpendicularImpulse;
-      const impulse2 = -massScale * scratch[1]! - impulseScale * this.angularImpulse;
+      // 2x2 solve inlined: a call with number arguments would box them (allocate) per call.
+      const bX = cdot1 + bias1;
+      const bY = cdot2 + bias2;
+      let det = k11 * k22 - k12 * k12;
+      if (det !== 0) det = 1 / det;
+      const solvedX = det * (k22 * bX - k12 * bY);
+      const solvedY = det * (k11 * bY - k12 * bX);
+      const impulse1 = -massScale * solvedX - impulseScale * this.perpendicularImpulse;
+      const impulse2 = -massScale * solvedY - impulseScale * this.angularImpulse;
       this.perpendicularImpulse += impulse1;
       this.angularImpulse += impulse2;
       const fx = impulse1 * px;

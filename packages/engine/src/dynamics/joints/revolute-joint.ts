@@ -9,7 +9,6 @@ import {
   requireBodies,
   requireOrdered,
   requirePoint,
-  solve22,
   type JointOptions,
   type JointStep,
 } from './joint.ts';
@@ -37,8 +36,6 @@ export interface RevoluteJointOptions<UserData = unknown> extends JointOptions<U
   /** Spring damping ratio (>= 0; 1 is critical). Default 0. */
   readonly dampingRatio?: number;
 }
-
-const scratch = new Float64Array(2);
 
 /**
  * A hinge: body B turns about a point fixed on both bodies, optionally within angle limits, driven
@@ -397,9 +394,15 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
       const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
       const k12 = -rAy * rAx * iA - rBy * rBx * iB;
       const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
-      solve22(k11, k12, k22, cdotX + biasX, cdotY + biasY, scratch);
-      const px = -massScale * scratch[0]! - impulseScale * this.linearImpulseX;
-      const py = -massScale * scratch[1]! - impulseScale * this.linearImpulseY;
+      // 2x2 solve inlined: a call with number arguments would box them (allocate) per call.
+      const bX = cdotX + biasX;
+      const bY = cdotY + biasY;
+      let det = k11 * k22 - k12 * k12;
+      if (det !== 0) det = 1 / det;
+      const solvedX = det * (k22 * bX - k12 * bY);
+      const solvedY = det * (k11 * bY - k12 * bX);
+      const px = -massScale * solvedX - impulseScale * this.linearImpulseX;
+      const py = -massScale * solvedY - impulseScale * this.linearImpulseY;
       this.linearImpulseX += px;
       this.linearImpulseY += py;
       vAx -= mA * px;

@@ -7,7 +7,6 @@ import {
   optionalNonNegative,
   requireBodies,
   requirePoint,
-  solve22,
   type JointOptions,
   type JointStep,
 } from './joint.ts';
@@ -23,8 +22,6 @@ export interface WeldJointOptions<UserData = unknown> extends JointOptions<UserD
   /** Damping ratio of the soft holds (>= 0). Default 1. */
   readonly dampingRatio?: number;
 }
-
-const scratch = new Float64Array(2);
 
 /**
  * Holds body B at a fixed position and angle relative to body A: rigid, or a spring in position
@@ -221,9 +218,15 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
       const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
       const k12 = -rAy * rAx * iA - rBy * rBx * iB;
       const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
-      solve22(k11, k12, k22, cdotX + biasX, cdotY + biasY, scratch);
-      const px = -massScale * scratch[0]! - impulseScale * this.linearImpulseX;
-      const py = -massScale * scratch[1]! - impulseScale * this.linearImpulseY;
+      // 2x2 solve inlined: a call with number arguments would box them (allocate) per call.
+      const bX = cdotX + biasX;
+      const bY = cdotY + biasY;
+      let det = k11 * k22 - k12 * k12;
+      if (det !== 0) det = 1 / det;
+      const solvedX = det * (k22 * bX - k12 * bY);
+      const solvedY = det * (k11 * bY - k12 * bX);
+      const px = -massScale * solvedX - impulseScale * this.linearImpulseX;
+      const py = -massScale * solvedY - impulseScale * this.linearImpulseY;
       this.linearImpulseX += px;
       this.linearImpulseY += py;
       vAx -= mA * px;

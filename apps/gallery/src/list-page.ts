@@ -1,0 +1,71 @@
+import type { PhysicalCanvasElement } from '@physical/canvas';
+import { STEP, type Scene, sceneValues, scenes } from '@physical/scenes';
+import { h } from './dom.ts';
+
+/** Steps a thumbnail's world before it is drawn: the scene well under way. */
+const THUMBNAIL_STEPS = 150;
+
+/** The home page: every sample as a card with a still picture of it. */
+export function renderList(root: HTMLElement): () => void {
+  document.title = 'Physical samples';
+  const bar = h('header', { class: 'app-bar' }, h('h1', {}, 'Physical samples'));
+  const grid = h('ul', { class: 'grid' });
+  const pending: { scene: Scene; canvas: PhysicalCanvasElement }[] = [];
+  for (const scene of scenes) {
+    const canvas = h('physical-canvas', {
+      paused: '',
+      fit: 'contain',
+      'view-box': cameraAttribute(scene),
+      background: '#1e1e1e',
+      'aria-label': `${scene.title}: a still picture`,
+      tabindex: '-1',
+    });
+    pending.push({ scene, canvas });
+    grid.append(
+      h(
+        'li',
+        {},
+        h(
+          'a',
+          { class: 'card', href: `#/${scene.id}`, 'data-sample': scene.id },
+          canvas,
+          h('h2', {}, scene.title),
+        ),
+      ),
+    );
+  }
+  root.replaceChildren(
+    bar,
+    h(
+      'div',
+      { class: 'content' },
+      h(
+        'p',
+        { class: 'intro' },
+        'Each sample is a small module built on Physical\u2019s public API. Open one to run it, ' +
+          'change its parameters, turn on the debug overlays and read its source.',
+      ),
+      grid,
+    ),
+  );
+  // Pictures one per task, so the page answers taps while they are made.
+  let cancelled = false;
+  const next = (index: number): void => {
+    if (cancelled || index >= pending.length) return;
+    const { scene, canvas } = pending[index]!;
+    const world = scene.build(sceneValues(scene));
+    for (let i = 0; i < Math.min(THUMBNAIL_STEPS, scene.steps); i++) world.step(STEP);
+    canvas.world = world;
+    setTimeout(() => next(index + 1), 0);
+  };
+  setTimeout(() => next(0), 0);
+  return () => {
+    cancelled = true;
+  };
+}
+
+/** A scene's camera as a `view-box` attribute. */
+export function cameraAttribute(scene: Scene): string {
+  const { x, y, width, height } = scene.camera;
+  return `${x} ${y} ${width} ${height}`;
+}
