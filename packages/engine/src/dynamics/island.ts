@@ -15,6 +15,8 @@ export class Islands {
   private readonly stack: Body[] = [];
   private readonly woken: Body[] = [];
   private readonly members: Body[] = [];
+  /** Whether the last collected island touches something or is joined to something. */
+  private held = false;
 
   /** Puts to sleep every island of `awake` bodies that has rested for `timeToSleep` seconds. */
   sleepRestingIslands(awake: readonly Body[], count: number, timeToSleep: number): void {
@@ -24,9 +26,15 @@ export class Islands {
     for (let i = 0; i < count; i++) {
       const body = awake[i]!;
       if (!body.awake || body.sleepTime < timeToSleep || body.islandStamp > passStart) continue;
-      if (this.collect(body, timeToSleep, passStart)) {
-        for (let j = 0; j < this.members.length; j++) putToSleep(this.members[j]!);
+      if (!this.collect(body, timeToSleep, passStart)) continue;
+      if (!this.held && !allStill(this.members)) {
+        // Newton's first law: a body that touches nothing keeps its velocity, however small
+        // (Box2D would stop a body drifting in zero gravity below its sleep speed). It rests only
+        // at exactly zero velocity; otherwise it tries again after another timeToSleep.
+        for (let j = 0; j < this.members.length; j++) this.members[j]!.sleepTime = 0;
+        continue;
       }
+      for (let j = 0; j < this.members.length; j++) putToSleep(this.members[j]!);
     }
   }
 
@@ -83,6 +91,7 @@ export class Islands {
     const members = this.members;
     stack.length = 0;
     members.length = 0;
+    this.held = false;
     start.islandStamp = stamp;
     stack.push(start);
     while (stack.length > 0) {
@@ -93,6 +102,7 @@ export class Islands {
       for (let i = 0; i < body.contacts.length; i++) {
         const contact = body.contacts[i]!;
         if (!contact.touching) continue;
+        this.held = true;
         const other = contact.other(body);
         if (other.type === 'static' || other.islandStamp === stamp) continue;
         if (other.sleepTime < minimumRest || other.islandStamp > passStart) return false;
@@ -105,6 +115,7 @@ export class Islands {
       // Joined bodies rest or move together too.
       for (let i = 0; i < body.jointList.length; i++) {
         const joint = body.jointList[i]!;
+        this.held = true;
         const other = joint.bodyA === body ? joint.bodyB : joint.bodyA;
         if (other.type === 'static' || other.islandStamp === stamp) continue;
         if (other.sleepTime < minimumRest || other.islandStamp > passStart) return false;
@@ -115,6 +126,17 @@ export class Islands {
     }
     return true;
   }
+}
+
+/** True if no body of the list moves at all. */
+function allStill(bodies: readonly Body[]): boolean {
+  for (let i = 0; i < bodies.length; i++) {
+    const body = bodies[i]!;
+    if (body.velocityX !== 0 || body.velocityY !== 0 || body.angularVelocityValue !== 0) {
+      return false;
+    }
+  }
+  return true;
 }
 
 function putToSleep(body: Body): void {

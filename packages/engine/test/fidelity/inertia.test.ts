@@ -53,6 +53,32 @@ describe('inertia', () => {
     });
   });
 
+  it('a slow drift (below the sleep speed) never falls asleep: it keeps its velocity for 60 s', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const drifter = world.add(
+      particle({ position: { x: 0, y: 0 }, radius: 0.2, linearVelocity: { x: 0.01, y: -0.004 } }),
+    );
+    const spinner = world.add(
+      box({ position: { x: 5, y: 0 }, width: 1, height: 1, angularVelocity: 0.003 }),
+    );
+    // A body that does rest still sleeps, so a still scene costs nothing.
+    const still = world.add(box({ position: { x: -5, y: 0 }, width: 1, height: 1 }));
+    for (let i = 0; i < 3600; i++) world.step(DT);
+    const t = 3600 * DT;
+    expect(drifter.isAwake).toBe(true);
+    expect(spinner.isAwake).toBe(true);
+    expect(still.isAwake).toBe(false);
+    expect(drifter.linearVelocity.x).toBe(0.01);
+    expect(spinner.angularVelocity).toBe(0.003);
+    const error = Math.hypot(drifter.position.x - 0.01 * t, drifter.position.y + 0.004 * t);
+    reportMeasured(
+      '1 inertia, slow drift position error after 60 s (m)',
+      error,
+      POSITION_TOLERANCE,
+    );
+    expect(error).toBeLessThanOrEqual(POSITION_TOLERANCE);
+  });
+
   it('a body at rest stays exactly where it is', () => {
     const world = new World({ gravity: { x: 0, y: 0 } });
     const body = world.add(
