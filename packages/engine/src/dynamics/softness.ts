@@ -14,14 +14,15 @@ export class Softness {
   impulseScale = 0;
 
   set(hertz: number, zeta: number, h: number): this {
-    if (hertz === 0) {
+    const omega = 2 * Math.PI * hertz;
+    const a1 = 2 * zeta + h * omega;
+    // No stiffness (also a frequency so small that a1 underflows when zeta is 0): no spring.
+    if (hertz === 0 || a1 === 0) {
       this.biasRate = 0;
       this.massScale = 1;
       this.impulseScale = 0;
       return this;
     }
-    const omega = 2 * Math.PI * hertz;
-    const a1 = 2 * zeta + h * omega;
     const a2 = h * omega * a1;
     const a3 = 1 / (1 + a2);
     this.biasRate = omega / a1;

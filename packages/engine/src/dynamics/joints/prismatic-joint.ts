@@ -264,7 +264,7 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
     this.deltaCenterY = b.centerY - a.centerY;
     this.deltaAngle = b.angleValue - a.angleValue - this.referenceAngle;
     this.springSoftness.set(this.springHertz, this.springDampingRatio, step.h);
-    if (!this.springEnabled) this.springImpulse = 0;
+    if (!this.springEnabled || this.springHertz === 0) this.springImpulse = 0;
     if (!this.motorEnabled) this.motorImpulse = 0;
     if (!this.limitEnabled) {
       this.lowerImpulse = 0;
@@ -343,7 +343,8 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
     const axialMass = kAxial > 0 ? 1 / kAxial : 0;
     const soft = step.softness;
 
-    if (this.springEnabled) {
+    // A spring of 0 Hz exerts nothing (Box2D's soft constraint of 0 Hz would lock the motion).
+    if (this.springEnabled && this.springHertz > 0) {
       const spring = this.springSoftness;
       const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
       const impulse =

@@ -255,7 +255,7 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
     const k = this.invInertiaA + this.invInertiaB;
     this.axialMass = k > 0 ? 1 / k : 0;
     this.springSoftness.set(this.springHertz, this.springDampingRatio, step.h);
-    if (!this.springEnabled) this.springImpulse = 0;
+    if (!this.springEnabled || this.springHertz === 0) this.springImpulse = 0;
     if (!this.motorEnabled) this.motorImpulse = 0;
     if (!this.limitEnabled) {
       this.lowerImpulse = 0;
@@ -304,7 +304,8 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
     const axialMass = this.axialMass;
     const soft = step.softness;
 
-    if (this.springEnabled) {
+    // A spring of 0 Hz exerts nothing (Box2D's soft constraint of 0 Hz would lock the motion).
+    if (this.springEnabled && this.springHertz > 0) {
       const spring = this.springSoftness;
       const bias = spring.biasRate * jointAngle;
       const impulse =

@@ -134,4 +134,21 @@ describe('revolute joint', () => {
     }
     expect(worst).toBeLessThan(5e-3);
   });
+
+  it('a torsion spring of 0 Hz exerts nothing: the bar swings freely', () => {
+    const world = new World({ gravity: { x: 0, y: 0 } });
+    const ground = world.add(box({ type: 'static', width: 0.2, height: 0.2 }));
+    const bar = world.add(box({ width: 1, height: 0.1, angularVelocity: 2 }));
+    world.addJoint(
+      revoluteJoint({
+        bodyA: ground,
+        bodyB: bar,
+        anchor: { x: 0, y: 0 },
+        enableSpring: true,
+        hertz: 0,
+      }),
+    );
+    for (let i = 0; i < 30; i++) world.step(DT);
+    expect(bar.angularVelocity).toBeCloseTo(2, 9);
+  });
 });
