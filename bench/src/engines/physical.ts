@@ -79,7 +79,12 @@ export const physical: Engine = {
         angularVelocity: -(desc.w ?? 0),
         asleep: desc.asleep ?? false,
         allowSleep: desc.enableSleep ?? true,
-        shapes: desc.shapes.map((s) => shapeOptions(scene, s)),
+        shapes: desc.shapes.map((s) =>
+          // Box2D's joint_grid filter: category 2, mask ~2, so no two shapes ever collide.
+          scene.shapesCollide === false
+            ? { ...shapeOptions(scene, s), filter: { category: 2, mask: 0xfffffffd } }
+            : shapeOptions(scene, s),
+        ),
       });
       world.add(body);
       bodies.push(body);
@@ -106,11 +111,6 @@ export const physical: Engine = {
           bodyB: bodies[joint.b]!,
           anchor: { x: joint.x, y: -joint.y },
         }),
-      );
-    }
-    if (scene.shapesCollide === false) {
-      notes.push(
-        'no collision filters yet: shapes that are not joined still collide (Box2D: they ignore one another)',
       );
     }
     if (scene.bodies.some((b) => b.hitEvents)) notes.push('no hit-event listener registered');
