@@ -122,8 +122,8 @@ export function bool(path: string, v: unknown): boolean {
   return v;
 }
 
-/** @internal The value of `o[key]`; a missing key names `path.key`. */
+/** @internal The value of `o[key]`; a missing key names `path.key` (`key` at the top). */
 export function field(o: Obj, path: string, key: string): unknown {
-  if (!(key in o)) fail(`${path}.${key}`, 'is missing.');
+  if (!(key in o)) fail(path === '' ? key : `${path}.${key}`, 'is missing.');
   return o[key];
 }
