@@ -220,6 +220,11 @@ export class Contact {
     const a = this.shapeA.geometry;
     const b = this.shapeB.geometry;
     m.speculativeDistance = margin;
+    // Kernels that find no point may return without a normal: clear the one the last call (of
+    // any world: the manifold is shared) left, so the slot holds the same numbers in a copy
+    // restored from a snapshot.
+    m.normalX = 0;
+    m.normalY = 0;
     switch (this.pairKind) {
       case PAIR_CIRCLES:
         collideCircles(a as Circle, xfA, b as Circle, xfB, m);

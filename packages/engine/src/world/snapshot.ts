@@ -15,6 +15,27 @@ import type { Duration } from '../dynamics/force.ts';
 import type { Islands } from '../dynamics/island.ts';
 import type { Sensors } from '../dynamics/sensor.ts';
 import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
+import type { Joint } from '../dynamics/joints/joint.ts';
+import { buildJoint, readJoint, saveJoint, type JointPlan } from './joint-snapshot.ts';
+import {
+  arr,
+  bool,
+  describe,
+  enc,
+  encAll,
+  fail,
+  field,
+  finite,
+  finites,
+  int,
+  MAX_ID,
+  nonNegative,
+  num,
+  obj,
+  positive,
+  type Obj,
+  type SnapshotValue,
+} from './snapshot-values.ts';
 import type { ResolvedWorldOptions } from './world-options.ts';
 import type { World } from './world.ts';
 
@@ -27,22 +48,20 @@ import type { World } from './world.ts';
 // contact in list order with its manifold, warm-start impulses and reuse cache, each body's
 // contact list order (removals swap-remove through it), the broad phase's three trees node by
 // node (their shape decides the order in which new pairs, hence contacts, are found), shape ids
-// and the free-id stack, the sensors' overlap lists, and the step counters.
-//
-// Numbers: JSON keeps every finite double exactly (shortest round-trip printing), but turns -0
-// into 0 and infinities into null. Those three are written as the strings '-0', 'Infinity' and
-// '-Infinity'; NaN never occurs in a valid world and is rejected on load.
+// and the free-id stack, the sensors' overlap lists, the step counters, and every joint in list
+// order with its frames, settings and warm-start impulses (joint-snapshot.ts). Numbers are
+// written as snapshot-values.ts describes (-0 and infinities survive JSON).
 //
 // Not saved: listeners, userData and the Force objects an app holds (the restored world has new
-// ones, in the same order: world.bodies[i] is the body that was at i, body.forces[j] likewise).
+// ones, in the same order: world.bodies[i] is the body that was at i, body.forces[j] and
+// world.joints[k] likewise).
+
+export type { SnapshotNumber, SnapshotValue } from './snapshot-values.ts';
 
 /** The format name every snapshot carries. */
 export const SNAPSHOT_FORMAT = 'physical-world';
 /** The snapshot layout this version writes and reads. */
 export const SNAPSHOT_VERSION = 1;
-
-/** A number as stored: finite numbers as themselves, -0 and infinities as strings. */
-export type SnapshotNumber = number | '-0' | 'Infinity' | '-Infinity';
 
 /**
  * A saved world ({@link World.snapshot}): plain data, safe for `JSON.stringify`. Its sections are
@@ -58,24 +77,16 @@ export interface WorldSnapshot {
   readonly contacts: readonly Readonly<Record<string, SnapshotValue>>[];
   readonly sensors: readonly Readonly<Record<string, SnapshotValue>>[];
   readonly broadPhase: Readonly<Record<string, SnapshotValue>>;
-  /** Reserved for joints; always empty in this version. */
-  readonly joints: readonly SnapshotValue[];
+  /** The joints, in `world.joints` order, their bodies named by index in `bodies`. */
+  readonly joints: readonly Readonly<Record<string, SnapshotValue>>[];
 }
-
-/** Any value inside a snapshot. */
-export type SnapshotValue =
-  | SnapshotNumber
-  | string
-  | boolean
-  | null
-  | readonly SnapshotValue[]
-  | { readonly [key: string]: SnapshotValue };
 
 /** @internal The parts of a world a snapshot reads and writes. */
 export interface WorldInternals {
   readonly world: World;
   readonly settings: ResolvedWorldOptions;
   readonly bodies: Body[];
+  readonly joints: Joint[];
   readonly broadPhase: BroadPhase;
   readonly islands: Islands;
   readonly contactManager: ContactManager;
@@ -88,19 +99,6 @@ export interface WorldInternals {
 }
 
 // ------------------------------------------------------------------ saving
-
-function enc(x: number): SnapshotNumber {
-  if (x === 0 && 1 / x < 0) return '-0';
-  if (x === Infinity) return 'Infinity';
-  if (x === -Infinity) return '-Infinity';
-  return x;
-}
-
-function encAll(values: ArrayLike<number>, count: number = values.length): SnapshotNumber[] {
-  const out: SnapshotNumber[] = [];
-  for (let i = 0; i < count; i++) out.push(enc(values[i]!));
-  return out;
-}
 
 function saveGeometry(shape: Shape): SnapshotValue {
   const g = shape.geometry;
@@ -241,87 +239,14 @@ export function saveWorld(w: WorldInternals): WorldSnapshot {
       trees: broadPhase.trees.map(saveTree),
       moved: broadPhase.moved.slice(),
     },
-    joints: [],
+    joints: w.joints.map(saveJoint),
   };
 }
 
 // ------------------------------------------------------------------ reading
 
-type Obj = Record<string, unknown>;
-
-function fail(path: string, message: string): never {
-  throw new PhysicalError(`snapshot.${path}`, message);
-}
-
-function describe(v: unknown): string {
-  if (typeof v === 'string') return `'${v}'`;
-  if (Array.isArray(v)) return 'an array';
-  if (typeof v === 'object' && v !== null) return 'an object';
-  return String(v);
-}
-
-function obj(path: string, v: unknown): Obj {
-  if (v === null || typeof v !== 'object' || Array.isArray(v)) {
-    fail(path, `must be an object, got ${describe(v)}.`);
-  }
-  return v as Obj;
-}
-
-function arr(path: string, v: unknown, length?: number): unknown[] {
-  if (!Array.isArray(v)) fail(path, `must be an array, got ${describe(v)}.`);
-  if (length !== undefined && v.length !== length) {
-    fail(path, `must hold ${length} entries, got ${v.length}.`);
-  }
-  return v;
-}
-
-function num(path: string, v: unknown): number {
-  if (typeof v === 'number') {
-    if (Number.isNaN(v)) fail(path, 'must be a number, got NaN.');
-    return v;
-  }
-  if (v === '-0') return -0;
-  if (v === 'Infinity') return Infinity;
-  if (v === '-Infinity') return -Infinity;
-  return fail(path, `must be a number, got ${describe(v)}.`);
-}
-
-function finite(path: string, v: unknown): number {
-  const x = num(path, v);
-  if (!Number.isFinite(x)) fail(path, `must be finite, got ${x}.`);
-  return x;
-}
-
-function nonNegative(path: string, v: unknown): number {
-  const x = finite(path, v);
-  if (x < 0) fail(path, `must be zero or more, got ${x}.`);
-  return x;
-}
-
-function finites(path: string, v: unknown, length: number): number[] {
-  return arr(path, v, length).map((x, i) => finite(`${path}[${i}]`, x));
-}
-
-function int(path: string, v: unknown, min: number, max: number): number {
-  if (typeof v !== 'number' || !Number.isInteger(v) || v < min || v > max) {
-    fail(path, `must be a whole number from ${min} to ${max}, got ${describe(v)}.`);
-  }
-  return v;
-}
-
-function bool(path: string, v: unknown): boolean {
-  if (typeof v !== 'boolean') fail(path, `must be true or false, got ${describe(v)}.`);
-  return v;
-}
-
-function field(o: Obj, path: string, key: string): unknown {
-  if (!(key in o)) fail(`${path}.${key}`, 'is missing.');
-  return o[key];
-}
-
 const BODY_TYPES: readonly BodyType[] = ['static', 'kinematic', 'dynamic'];
 const PROXY_TYPE: Record<BodyType, number> = { static: 0, kinematic: 1, dynamic: 2 };
-const MAX_ID = 0x1fffffff;
 
 // ------------------------------------------------------------------ loading
 
@@ -347,12 +272,6 @@ function readSettings(s: Obj): ResolvedWorldOptions {
     timeToSleep: nonNegative(`${p}.timeToSleep`, field(s, p, 'timeToSleep')),
     enableContinuous: bool(`${p}.enableContinuous`, field(s, p, 'enableContinuous')),
   };
-}
-
-function positive(path: string, v: unknown): number {
-  const x = finite(path, v);
-  if (x <= 0) fail(path, `must be greater than zero, got ${x}.`);
-  return x;
 }
 
 /** Shape options that rebuild the saved geometry (validated by the geometry builders). */
@@ -645,10 +564,6 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
       `must be ${SNAPSHOT_VERSION}, the only version this Physical reads; got ${describe(version)}.`,
     );
   }
-  const joints = arr('joints', field(root, '', 'joints'));
-  if (joints.length > 0) {
-    fail('joints', `holds ${joints.length} joints, but this version of Physical has no joints.`);
-  }
   Object.assign(w.settings, readSettings(obj('settings', field(root, '', 'settings'))));
 
   const counters = obj('world', field(root, '', 'world'));
@@ -704,6 +619,18 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
       fail('world.freeShapeIds', `must list exactly the unused shape ids; id ${id} is wrong.`);
     }
   }
+
+  // Joints: checked now, built once everything is checked.
+  const joints: JointPlan[] = arr('joints', field(root, '', 'joints')).map((entry, i) =>
+    readJoint(`joints[${i}]`, entry, w.bodies),
+  );
+  // Bodies a joint keeps from colliding (collideConnected false) can have no contact.
+  const jointBetween = new Map<string, number>();
+  joints.forEach((joint, i) => {
+    if (joint.collideConnected || joint.bodyA === joint.bodyB) return;
+    const key = pairKey(joint.bodyA, joint.bodyB);
+    if (!jointBetween.has(key)) jointBetween.set(key, i);
+  });
 
   // Broad phase: trees, and every shape's leaf.
   const bp = obj('broadPhase', field(root, '', 'broadPhase'));
@@ -771,7 +698,14 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
         'must be two non-sensor shapes of different bodies, one of them dynamic.',
       );
     }
-    const key = ids[0]! < ids[1]! ? `${ids[0]},${ids[1]}` : `${ids[1]},${ids[0]}`;
+    const joint = jointBetween.get(pairKey(a.body.worldIndex, b.body.worldIndex));
+    if (joint !== undefined) {
+      fail(
+        `${path}.shapes`,
+        `joins bodies that joints[${joint}] keeps from colliding (its collideConnected is false).`,
+      );
+    }
+    const key = pairKey(ids[0]!, ids[1]!);
     if (pairs.has(key)) fail(`${path}.shapes`, 'repeats a pair of shapes.');
     pairs.add(key);
     const contact = w.contactManager.restoreContact(a, b);
@@ -841,4 +775,18 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
   for (let id = 0; id < slots; id++) w.shapesById.push(shapes[id] ?? null);
   w.freeShapeIds.push(...free);
   w.broadPhase.importState({ trees, moved });
+  // Joints, in their saved order; each body's list holds its joints in that same order.
+  joints.forEach((plan, i) => {
+    const joint = buildJoint(plan, w.bodies);
+    joint.worldRef = w.world;
+    joint.worldIndex = i;
+    joint.removalPending = false;
+    w.joints.push(joint);
+    joint.bodyA.jointList.push(joint);
+    if (joint.bodyB !== joint.bodyA) joint.bodyB.jointList.push(joint);
+  });
+}
+
+function pairKey(a: number, b: number): string {
+  return a < b ? `${a},${b}` : `${b},${a}`;
 }

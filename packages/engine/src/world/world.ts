@@ -923,6 +923,7 @@ export class World {
       world,
       settings: this.settings,
       bodies: this.bodyList,
+      joints: this.jointList,
       broadPhase: this.broadPhase,
       islands: this.islands,
       contactManager: this.contactManager,

@@ -1,8 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { PhysicalError, World, box, particle, wall } from '@physical/engine';
+import { PhysicalError, World, box, capsule, particle, polygon, wall } from '@physical/engine';
 import type { WorldSnapshot } from '@physical/engine';
 
-/** A pyramid, falling particles, a sleeping stack, timed forces, a sensor, a bullet, a removal. */
+/**
+ * A pyramid, falling particles, capsules and a concave L, a sleeping stack, timed forces, a sensor,
+ * a bullet, a removal.
+ */
 function busyWorld(): World {
   const world = new World();
   world.add(wall({ from: { x: -20, y: 0 }, to: { x: 20, y: 0 } }));
@@ -36,6 +39,29 @@ function busyWorld(): World {
     if (i % 3 === 0)
       ball.applyForce({ x: 3, y: -1 }, { duration: 1.5, point: { x: -8 + 1.3 * i + 0.1, y: -12 } });
   }
+  for (let i = 0; i < 3; i++) {
+    world.add(
+      capsule({
+        position: { x: 4 + i, y: -6 - i },
+        length: 0.6,
+        radius: 0.15 + 0.05 * i,
+        angle: i,
+      }),
+    );
+  }
+  world.add(
+    polygon({
+      position: { x: 16, y: -4 },
+      vertices: [
+        { x: 0, y: 0 },
+        { x: 1.5, y: 0 },
+        { x: 1.5, y: -0.4 },
+        { x: 0.4, y: -0.4 },
+        { x: 0.4, y: -1.5 },
+        { x: 0, y: -1.5 },
+      ],
+    }),
+  );
   world.add(box({ type: 'static', position: { x: 8, y: -1 }, width: 2, height: 2, sensor: true }));
   world.add(
     particle({
@@ -212,9 +238,47 @@ describe('bad snapshots', () => {
     expect(load(ids)).toThrow(/snapshot\.bodies\[4\]\.id/);
   });
 
-  it('rejects joints this version cannot load', () => {
-    expect(load({ ...good(), joints: [{ type: 'revolute' }] })).toThrow(
-      /snapshot\.joints.*no joints/,
+  it('names a bad capsule', () => {
+    const snap = good() as Mutable;
+    const k = snap.bodies.findIndex(
+      (b) =>
+        ((b['shapes'] as Record<string, unknown>[])[0]!['geometry'] as Record<string, unknown>)[
+          'kind'
+        ] === 'capsule',
     );
+    expect(k).toBeGreaterThan(0);
+    const geometry = (): Record<string, unknown> =>
+      (snap.bodies[k]!['shapes'] as Record<string, unknown>[])[0]!['geometry'] as Record<
+        string,
+        unknown
+      >;
+    const center = geometry()['center2'];
+    geometry()['center2'] = [1];
+    expect(load(snap)).toThrow(
+      new RegExp(`snapshot\\.bodies\\[${k}\\]\\.shapes\\[0\\]\\.geometry\\.center2: must hold 2`),
+    );
+    geometry()['center2'] = center;
+    geometry()['radius'] = 0;
+    expect(load(snap)).toThrow(new RegExp(`snapshot\\.bodies\\[${k}\\]\\.shapes\\[0\\]\\.radius`));
+  });
+
+  it("names a contact's data slot of the wrong length or with 3 points", () => {
+    const short = good() as Mutable;
+    const data = short.contacts[0]!['data'] as unknown[];
+    short.contacts[0]!['data'] = data.slice(0, data.length - 1);
+    expect(load(short)).toThrow(
+      new RegExp(`snapshot\\.contacts\\[0\\]\\.data: must hold ${data.length} entries`),
+    );
+    const three = good() as Mutable;
+    (three.contacts[0]!['data'] as unknown[])[2] = 3; // the point count (contact-data.ts)
+    expect(load(three)).toThrow(
+      /snapshot\.contacts\[0\]\.data\[2\]: must be a whole number from 0 to 2, got 3/,
+    );
+  });
+
+  it('names a missing joints section (joint entries: snapshot-joints.test.ts)', () => {
+    const snap = good();
+    delete snap['joints'];
+    expect(load(snap)).toThrow('snapshot.joints: is missing.');
   });
 });

@@ -5,12 +5,17 @@ import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import {
   Joint,
+  type JointOptions,
+  type JointState,
+  type JointStateLayout,
+  type JointStep,
   optionalNonNegative,
   requireBodies,
   requireOrdered,
   requirePoint,
-  type JointOptions,
-  type JointStep,
+  stateBoolean,
+  stateNumber,
+  stateVector,
 } from './joint.ts';
 
 /**
@@ -36,6 +41,27 @@ export interface DistanceJointOptions<UserData = unknown> extends JointOptions<U
   /** Spring damping ratio (>= 0; 1 is critical). Default 0. */
   readonly dampingRatio?: number;
 }
+
+/** @internal What a world snapshot saves of a distance joint (see Joint.exportState). */
+export const DISTANCE_STATE: JointStateLayout = {
+  fields: {
+    localAnchorA: 'vector',
+    localAnchorB: 'vector',
+    length: 'nonNegative',
+    minLength: 'nonNegative',
+    maxLength: 'nonNegativeOrInfinity',
+    enableSpring: 'boolean',
+    hertz: 'nonNegative',
+    dampingRatio: 'nonNegative',
+    impulse: 'finite',
+    lowerImpulse: 'nonNegative',
+    upperImpulse: 'nonNegative',
+  },
+  ordered: [
+    ['minLength', 'length'],
+    ['length', 'maxLength'],
+  ],
+};
 
 /**
  * Keeps two points at a distance, rigidly or as a damped spring, within an optional length range.
@@ -162,6 +188,42 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   set dampingRatio(value: number) {
     this.springDampingRatio = requireNonNegative('dampingRatio', value);
     this.wakeBodies();
+  }
+
+  /** @internal */
+  protected exportOwnState(): JointState {
+    return {
+      localAnchorA: [this.localAnchorAX, this.localAnchorAY],
+      localAnchorB: [this.localAnchorBX, this.localAnchorBY],
+      length: this.rest,
+      minLength: this.min,
+      maxLength: this.max,
+      enableSpring: this.springEnabled,
+      hertz: this.springHertz,
+      dampingRatio: this.springDampingRatio,
+      impulse: this.impulse,
+      lowerImpulse: this.lowerImpulse,
+      upperImpulse: this.upperImpulse,
+    };
+  }
+
+  /** @internal */
+  protected importOwnState(state: JointState): void {
+    const anchorA = stateVector(state, 'localAnchorA');
+    const anchorB = stateVector(state, 'localAnchorB');
+    this.localAnchorAX = anchorA[0]!;
+    this.localAnchorAY = anchorA[1]!;
+    this.localAnchorBX = anchorB[0]!;
+    this.localAnchorBY = anchorB[1]!;
+    this.rest = stateNumber(state, 'length');
+    this.min = stateNumber(state, 'minLength');
+    this.max = stateNumber(state, 'maxLength');
+    this.springEnabled = stateBoolean(state, 'enableSpring');
+    this.springHertz = stateNumber(state, 'hertz');
+    this.springDampingRatio = stateNumber(state, 'dampingRatio');
+    this.impulse = stateNumber(state, 'impulse');
+    this.lowerImpulse = stateNumber(state, 'lowerImpulse');
+    this.upperImpulse = stateNumber(state, 'upperImpulse');
   }
 
   /** @internal */

@@ -33,6 +33,53 @@ export interface JointStep {
 }
 
 /**
+ * @internal How a saved joint value is checked when a world snapshot is loaded: a switch, a
+ * number (finite; at least zero; above zero; at least zero or Infinity) or a vector of two finite
+ * numbers (any; of length 1).
+ */
+export type JointValueKind =
+  | 'boolean'
+  | 'finite'
+  | 'nonNegative'
+  | 'positive'
+  | 'nonNegativeOrInfinity'
+  | 'vector'
+  | 'unitVector';
+
+/** @internal A joint's saved numbers and switches, by name (world snapshots). */
+export type JointState = Record<string, number | boolean | readonly number[]>;
+
+/**
+ * @internal What a snapshot saves of one kind of joint: each value's name and check, and the
+ * pairs of values that must be ordered (first <= second), like a limit's lower and upper end.
+ */
+export interface JointStateLayout {
+  readonly fields: Readonly<Record<string, JointValueKind>>;
+  readonly ordered: readonly (readonly [string, string])[];
+}
+
+/** @internal Saved for every kind of joint: what the last step left (see {@link Joint.exportState}). */
+export const JOINT_STATE: JointStateLayout = {
+  fields: { reactionForce: 'vector', reactionTorque: 'finite', subStepDuration: 'positive' },
+  ordered: [],
+};
+
+/** @internal A checked number of a joint state. */
+export function stateNumber(state: JointState, key: string): number {
+  return state[key] as number;
+}
+
+/** @internal A checked switch of a joint state. */
+export function stateBoolean(state: JointState, key: string): boolean {
+  return state[key] as boolean;
+}
+
+/** @internal A checked vector of a joint state. */
+export function stateVector(state: JointState, key: string): readonly number[] {
+  return state[key] as readonly number[];
+}
+
+/**
  * A constraint between two bodies (or, for a {@link MouseJoint}, between a body and a point).
  * Build one with {@link revoluteJoint}, {@link prismaticJoint}, {@link distanceJoint},
  * {@link weldJoint} or {@link mouseJoint}, then `world.addJoint(joint)`.
@@ -141,6 +188,34 @@ export abstract class Joint<UserData = unknown> {
     this.reactionY = 0;
     this.reactionAngular = 0;
   }
+
+  /**
+   * @internal Everything about the joint that decides later steps, by the names of its kind's
+   * layout plus {@link JOINT_STATE} (world snapshots): frames, settings, and the accumulated
+   * impulses the next step warm-starts from. What prepare() recomputes every step is left out.
+   */
+  exportState(): JointState {
+    const state = this.exportOwnState();
+    state['reactionForce'] = [this.reactionX, this.reactionY];
+    state['reactionTorque'] = this.reactionAngular;
+    state['subStepDuration'] = this.subStepDuration;
+    return state;
+  }
+
+  /** @internal Puts back what {@link exportState} saved; the values were checked by the loader. */
+  importState(state: JointState): void {
+    this.importOwnState(state);
+    const reaction = stateVector(state, 'reactionForce');
+    this.reactionX = reaction[0]!;
+    this.reactionY = reaction[1]!;
+    this.reactionAngular = stateNumber(state, 'reactionTorque');
+    this.subStepDuration = stateNumber(state, 'subStepDuration');
+  }
+
+  /** @internal The kind's own part of {@link exportState}. */
+  protected abstract exportOwnState(): JointState;
+  /** @internal The kind's own part of {@link importState}. */
+  protected abstract importOwnState(state: JointState): void;
 
   /** @internal Anchors, effective masses and softness for this step. */
   abstract prepare(step: JointStep): void;

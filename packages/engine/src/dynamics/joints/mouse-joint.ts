@@ -4,7 +4,17 @@ import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import type { Body } from '../body.ts';
 import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
-import { Joint, optionalNonNegative, requireBody, requirePoint, type JointStep } from './joint.ts';
+import {
+  Joint,
+  type JointState,
+  type JointStateLayout,
+  type JointStep,
+  optionalNonNegative,
+  requireBody,
+  requirePoint,
+  stateNumber,
+  stateVector,
+} from './joint.ts';
 
 /** Options of a {@link MouseJoint}: what dragging a body with a finger or the mouse needs. */
 export interface MouseJointOptions<UserData = unknown> {
@@ -29,6 +39,20 @@ export interface MouseJointOptions<UserData = unknown> {
 // off-centre settles instead of swinging round the finger for ever.
 const ANGULAR_HERTZ = 0.5;
 const ANGULAR_DAMPING_RATIO = 0.1;
+
+/** @internal What a world snapshot saves of a mouse joint (see Joint.exportState). */
+export const MOUSE_STATE: JointStateLayout = {
+  fields: {
+    localAnchor: 'vector',
+    target: 'vector',
+    maxForce: 'nonNegative',
+    hertz: 'positive',
+    dampingRatio: 'nonNegative',
+    linearImpulse: 'vector',
+    angularImpulse: 'finite',
+  },
+  ordered: [],
+};
 
 /**
  * Pulls a point of one body toward a target with a damped spring of bounded force (Box2D v3's
@@ -130,6 +154,36 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
   set dampingRatio(value: number) {
     this.springDampingRatio = requireNonNegative('dampingRatio', value);
     this.bodyB.wake();
+  }
+
+  /** @internal */
+  protected exportOwnState(): JointState {
+    return {
+      localAnchor: [this.localAnchorX, this.localAnchorY],
+      target: [this.targetX, this.targetY],
+      maxForce: this.force,
+      hertz: this.springHertz,
+      dampingRatio: this.springDampingRatio,
+      linearImpulse: [this.linearImpulseX, this.linearImpulseY],
+      angularImpulse: this.angularImpulse,
+    };
+  }
+
+  /** @internal */
+  protected importOwnState(state: JointState): void {
+    const anchor = stateVector(state, 'localAnchor');
+    const target = stateVector(state, 'target');
+    const impulse = stateVector(state, 'linearImpulse');
+    this.localAnchorX = anchor[0]!;
+    this.localAnchorY = anchor[1]!;
+    this.targetX = target[0]!;
+    this.targetY = target[1]!;
+    this.force = stateNumber(state, 'maxForce');
+    this.springHertz = stateNumber(state, 'hertz');
+    this.springDampingRatio = stateNumber(state, 'dampingRatio');
+    this.linearImpulseX = impulse[0]!;
+    this.linearImpulseY = impulse[1]!;
+    this.angularImpulse = stateNumber(state, 'angularImpulse');
   }
 
   /** @internal */

@@ -5,13 +5,18 @@ import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts
 import { Softness } from '../softness.ts';
 import {
   Joint,
+  type JointOptions,
+  type JointState,
+  type JointStateLayout,
+  type JointStep,
   optionalFinite,
   optionalNonNegative,
   requireBodies,
   requireOrdered,
   requirePoint,
-  type JointOptions,
-  type JointStep,
+  stateBoolean,
+  stateNumber,
+  stateVector,
 } from './joint.ts';
 
 /** Options of a {@link PrismaticJoint}: a slider along an axis. */
@@ -39,6 +44,32 @@ export interface PrismaticJointOptions<UserData = unknown> extends JointOptions<
   /** Spring damping ratio (>= 0). Default 0. */
   readonly dampingRatio?: number;
 }
+
+/** @internal What a world snapshot saves of a prismatic joint (see Joint.exportState). */
+export const PRISMATIC_STATE: JointStateLayout = {
+  fields: {
+    localAnchorA: 'vector',
+    localAnchorB: 'vector',
+    localAxis: 'unitVector',
+    referenceAngle: 'finite',
+    enableLimit: 'boolean',
+    lower: 'finite',
+    upper: 'finite',
+    enableMotor: 'boolean',
+    motorSpeed: 'finite',
+    maxMotorForce: 'nonNegative',
+    enableSpring: 'boolean',
+    hertz: 'nonNegative',
+    dampingRatio: 'nonNegative',
+    perpendicularImpulse: 'finite',
+    angularImpulse: 'finite',
+    springImpulse: 'finite',
+    motorImpulse: 'finite',
+    lowerImpulse: 'nonNegative',
+    upperImpulse: 'nonNegative',
+  },
+  ordered: [['lower', 'upper']],
+};
 
 /**
  * A slider: body B moves along an axis fixed in body A and cannot turn relative to it; optional
@@ -231,6 +262,60 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   set dampingRatio(value: number) {
     this.springDampingRatio = requireNonNegative('dampingRatio', value);
     this.wakeBodies();
+  }
+
+  /** @internal */
+  protected exportOwnState(): JointState {
+    return {
+      localAnchorA: [this.localAnchorAX, this.localAnchorAY],
+      localAnchorB: [this.localAnchorBX, this.localAnchorBY],
+      localAxis: [this.localAxisX, this.localAxisY],
+      referenceAngle: this.referenceAngle,
+      enableLimit: this.limitEnabled,
+      lower: this.lowerLimit,
+      upper: this.upperLimit,
+      enableMotor: this.motorEnabled,
+      motorSpeed: this.speed,
+      maxMotorForce: this.maxForce,
+      enableSpring: this.springEnabled,
+      hertz: this.springHertz,
+      dampingRatio: this.springDampingRatio,
+      perpendicularImpulse: this.perpendicularImpulse,
+      angularImpulse: this.angularImpulse,
+      springImpulse: this.springImpulse,
+      motorImpulse: this.motorImpulse,
+      lowerImpulse: this.lowerImpulse,
+      upperImpulse: this.upperImpulse,
+    };
+  }
+
+  /** @internal */
+  protected importOwnState(state: JointState): void {
+    const anchorA = stateVector(state, 'localAnchorA');
+    const anchorB = stateVector(state, 'localAnchorB');
+    const axis = stateVector(state, 'localAxis');
+    this.localAnchorAX = anchorA[0]!;
+    this.localAnchorAY = anchorA[1]!;
+    this.localAnchorBX = anchorB[0]!;
+    this.localAnchorBY = anchorB[1]!;
+    this.localAxisX = axis[0]!;
+    this.localAxisY = axis[1]!;
+    this.referenceAngle = stateNumber(state, 'referenceAngle');
+    this.limitEnabled = stateBoolean(state, 'enableLimit');
+    this.lowerLimit = stateNumber(state, 'lower');
+    this.upperLimit = stateNumber(state, 'upper');
+    this.motorEnabled = stateBoolean(state, 'enableMotor');
+    this.speed = stateNumber(state, 'motorSpeed');
+    this.maxForce = stateNumber(state, 'maxMotorForce');
+    this.springEnabled = stateBoolean(state, 'enableSpring');
+    this.springHertz = stateNumber(state, 'hertz');
+    this.springDampingRatio = stateNumber(state, 'dampingRatio');
+    this.perpendicularImpulse = stateNumber(state, 'perpendicularImpulse');
+    this.angularImpulse = stateNumber(state, 'angularImpulse');
+    this.springImpulse = stateNumber(state, 'springImpulse');
+    this.motorImpulse = stateNumber(state, 'motorImpulse');
+    this.lowerImpulse = stateNumber(state, 'lowerImpulse');
+    this.upperImpulse = stateNumber(state, 'upperImpulse');
   }
 
   /** @internal */

@@ -4,13 +4,18 @@ import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts
 import { Softness } from '../softness.ts';
 import {
   Joint,
+  type JointOptions,
+  type JointState,
+  type JointStateLayout,
+  type JointStep,
   optionalFinite,
   optionalNonNegative,
   requireBodies,
   requireOrdered,
   requirePoint,
-  type JointOptions,
-  type JointStep,
+  stateBoolean,
+  stateNumber,
+  stateVector,
 } from './joint.ts';
 
 /** Options of a {@link RevoluteJoint}: a hinge (a pin) through one world point. */
@@ -36,6 +41,30 @@ export interface RevoluteJointOptions<UserData = unknown> extends JointOptions<U
   /** Spring damping ratio (>= 0; 1 is critical). Default 0. */
   readonly dampingRatio?: number;
 }
+
+/** @internal What a world snapshot saves of a revolute joint (see Joint.exportState). */
+export const REVOLUTE_STATE: JointStateLayout = {
+  fields: {
+    localAnchorA: 'vector',
+    localAnchorB: 'vector',
+    referenceAngle: 'finite',
+    enableLimit: 'boolean',
+    lowerAngle: 'finite',
+    upperAngle: 'finite',
+    enableMotor: 'boolean',
+    motorSpeed: 'finite',
+    maxMotorTorque: 'nonNegative',
+    enableSpring: 'boolean',
+    hertz: 'nonNegative',
+    dampingRatio: 'nonNegative',
+    linearImpulse: 'vector',
+    springImpulse: 'finite',
+    motorImpulse: 'finite',
+    lowerImpulse: 'nonNegative',
+    upperImpulse: 'nonNegative',
+  },
+  ordered: [['lowerAngle', 'upperAngle']],
+};
 
 /**
  * A hinge: body B turns about a point fixed on both bodies, optionally within angle limits, driven
@@ -220,6 +249,56 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   set dampingRatio(value: number) {
     this.springDampingRatio = requireNonNegative('dampingRatio', value);
     this.wakeBodies();
+  }
+
+  /** @internal */
+  protected exportOwnState(): JointState {
+    return {
+      localAnchorA: [this.localAnchorAX, this.localAnchorAY],
+      localAnchorB: [this.localAnchorBX, this.localAnchorBY],
+      referenceAngle: this.referenceAngle,
+      enableLimit: this.limitEnabled,
+      lowerAngle: this.lower,
+      upperAngle: this.upper,
+      enableMotor: this.motorEnabled,
+      motorSpeed: this.speed,
+      maxMotorTorque: this.maxTorque,
+      enableSpring: this.springEnabled,
+      hertz: this.springHertz,
+      dampingRatio: this.springDampingRatio,
+      linearImpulse: [this.linearImpulseX, this.linearImpulseY],
+      springImpulse: this.springImpulse,
+      motorImpulse: this.motorImpulse,
+      lowerImpulse: this.lowerImpulse,
+      upperImpulse: this.upperImpulse,
+    };
+  }
+
+  /** @internal */
+  protected importOwnState(state: JointState): void {
+    const anchorA = stateVector(state, 'localAnchorA');
+    const anchorB = stateVector(state, 'localAnchorB');
+    const impulse = stateVector(state, 'linearImpulse');
+    this.localAnchorAX = anchorA[0]!;
+    this.localAnchorAY = anchorA[1]!;
+    this.localAnchorBX = anchorB[0]!;
+    this.localAnchorBY = anchorB[1]!;
+    this.referenceAngle = stateNumber(state, 'referenceAngle');
+    this.limitEnabled = stateBoolean(state, 'enableLimit');
+    this.lower = stateNumber(state, 'lowerAngle');
+    this.upper = stateNumber(state, 'upperAngle');
+    this.motorEnabled = stateBoolean(state, 'enableMotor');
+    this.speed = stateNumber(state, 'motorSpeed');
+    this.maxTorque = stateNumber(state, 'maxMotorTorque');
+    this.springEnabled = stateBoolean(state, 'enableSpring');
+    this.springHertz = stateNumber(state, 'hertz');
+    this.springDampingRatio = stateNumber(state, 'dampingRatio');
+    this.linearImpulseX = impulse[0]!;
+    this.linearImpulseY = impulse[1]!;
+    this.springImpulse = stateNumber(state, 'springImpulse');
+    this.motorImpulse = stateNumber(state, 'motorImpulse');
+    this.lowerImpulse = stateNumber(state, 'lowerImpulse');
+    this.upperImpulse = stateNumber(state, 'upperImpulse');
   }
 
   /** @internal */

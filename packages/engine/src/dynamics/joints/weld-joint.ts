@@ -4,11 +4,15 @@ import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts
 import { Softness } from '../softness.ts';
 import {
   Joint,
+  type JointOptions,
+  type JointState,
+  type JointStateLayout,
+  type JointStep,
   optionalNonNegative,
   requireBodies,
   requirePoint,
-  type JointOptions,
-  type JointStep,
+  stateNumber,
+  stateVector,
 } from './joint.ts';
 
 /** Options of a {@link WeldJoint}: glues two bodies together, rigidly or springily. */
@@ -22,6 +26,21 @@ export interface WeldJointOptions<UserData = unknown> extends JointOptions<UserD
   /** Damping ratio of the soft holds (>= 0). Default 1. */
   readonly dampingRatio?: number;
 }
+
+/** @internal What a world snapshot saves of a weld joint (see Joint.exportState). */
+export const WELD_STATE: JointStateLayout = {
+  fields: {
+    localAnchorA: 'vector',
+    localAnchorB: 'vector',
+    referenceAngle: 'finite',
+    linearHertz: 'nonNegative',
+    angularHertz: 'nonNegative',
+    dampingRatio: 'nonNegative',
+    linearImpulse: 'vector',
+    angularImpulse: 'finite',
+  },
+  ordered: [],
+};
 
 /**
  * Holds body B at a fixed position and angle relative to body A: rigid, or a spring in position
@@ -99,6 +118,38 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
   set dampingRatio(value: number) {
     this.ratio = requireNonNegative('dampingRatio', value);
     this.wakeBodies();
+  }
+
+  /** @internal */
+  protected exportOwnState(): JointState {
+    return {
+      localAnchorA: [this.localAnchorAX, this.localAnchorAY],
+      localAnchorB: [this.localAnchorBX, this.localAnchorBY],
+      referenceAngle: this.referenceAngle,
+      linearHertz: this.linearFrequency,
+      angularHertz: this.angularFrequency,
+      dampingRatio: this.ratio,
+      linearImpulse: [this.linearImpulseX, this.linearImpulseY],
+      angularImpulse: this.angularImpulse,
+    };
+  }
+
+  /** @internal */
+  protected importOwnState(state: JointState): void {
+    const anchorA = stateVector(state, 'localAnchorA');
+    const anchorB = stateVector(state, 'localAnchorB');
+    const impulse = stateVector(state, 'linearImpulse');
+    this.localAnchorAX = anchorA[0]!;
+    this.localAnchorAY = anchorA[1]!;
+    this.localAnchorBX = anchorB[0]!;
+    this.localAnchorBY = anchorB[1]!;
+    this.referenceAngle = stateNumber(state, 'referenceAngle');
+    this.linearFrequency = stateNumber(state, 'linearHertz');
+    this.angularFrequency = stateNumber(state, 'angularHertz');
+    this.ratio = stateNumber(state, 'dampingRatio');
+    this.linearImpulseX = impulse[0]!;
+    this.linearImpulseY = impulse[1]!;
+    this.angularImpulse = stateNumber(state, 'angularImpulse');
   }
 
   /** @internal */
