@@ -324,6 +324,10 @@ function integrateVelocities(
   const gx = settings.gravityX;
   const gy = settings.gravityY;
   const maxSpeedSquared = settings.maxLinearSpeed * settings.maxLinearSpeed;
+  // At most a quarter turn per sub-step (Box2D v3's B2_MAX_ROTATION): faster, the first-order
+  // rotation of the contact and joint anchors is meaningless, and a joint pulling a tiny body
+  // by a long lever could spin it up without bound until it became NaN.
+  const maxAngularSpeed = (0.25 * Math.PI) / h;
   for (let i = 0; i < count; i++) {
     const q = i * PARAM_STRIDE;
     const invMass = params[q + INV_MASS]!;
@@ -348,6 +352,8 @@ function integrateVelocities(
     }
     const angularDamping = params[q + ANGULAR_DAMPING]!;
     if (angularDamping > 0) w /= 1 + h * angularDamping;
+    if (w > maxAngularSpeed) w = maxAngularSpeed;
+    else if (w < -maxAngularSpeed) w = -maxAngularSpeed;
     const speedSquared = vx * vx + vy * vy;
     if (speedSquared > maxSpeedSquared) {
       const ratio = settings.maxLinearSpeed / Math.sqrt(speedSquared);
