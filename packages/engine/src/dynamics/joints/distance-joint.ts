@@ -90,6 +90,16 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   private deltaCenterY = 0;
   private readonly springSoftness = new Softness();
   private impulse = 0;
+  /**
+   * A spring slow enough for the sub-step (omega h <= 1) acts as a force, integrated by
+   * semi-implicit Euler like gravity: symplectic, so an undamped spring keeps its energy. A soft
+   * constraint (Box2D's spring) is implicit Euler and loses about 15 % of the amplitude per period
+   * at 1 Hz. Stiffer springs stay soft constraints, which are stable at any stiffness.
+   */
+  private explicitSpring = false;
+  private springOmega = 0;
+  /** The explicit spring's impulse in the current sub-step (N s), for the reaction force. */
+  private springSubStepImpulse = 0;
   private lowerImpulse = 0;
   private upperImpulse = 0;
 
@@ -252,6 +262,12 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
     this.deltaCenterY = b.centerY - a.centerY;
     this.springSoftness.set(this.springHertz, this.springDampingRatio, step.h);
     if (this.springEnabled && this.springHertz === 0) this.impulse = 0;
+    this.springOmega = 2 * Math.PI * this.springHertz;
+    this.explicitSpring =
+      this.springEnabled && this.springHertz > 0 && this.springOmega * step.h <= 1;
+    // An explicit spring is a force of this sub-step, not a constraint impulse to warm start.
+    if (this.explicitSpring) this.impulse = 0;
+    this.springSubStepImpulse = 0;
     if (this.min === 0) this.lowerImpulse = 0;
     if (this.max === Infinity) this.upperImpulse = 0;
   }
@@ -319,7 +335,28 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
       const soft = step.softness;
 
       // The rod or the spring: C = length - rest.
-      if (!this.springEnabled || this.springHertz > 0) {
+      if (this.explicitSpring) {
+        if (useBias) {
+          // Spring force -k C - c Cdot over the sub-step, with k and c for the effective mass;
+          // the damping part implicit, so no damping ratio can reverse the motion.
+          const omega = this.springOmega;
+          const damping = 2 * this.springDampingRatio * omega;
+          const cdot =
+            (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
+          const impulse =
+            (-axialMass * step.h * (omega * omega * (length - this.rest) + damping * cdot)) /
+            (1 + damping * step.h);
+          this.springSubStepImpulse = impulse;
+          const px = impulse * nx;
+          const py = impulse * ny;
+          vAx -= mA * px;
+          vAy -= mA * py;
+          wA -= iA * (rAx * py - rAy * px);
+          vBx += mB * px;
+          vBy += mB * py;
+          wB += iB * (rBx * py - rBy * px);
+        }
+      } else if (!this.springEnabled || this.springHertz > 0) {
         let bias = 0;
         let massScale = 1;
         let impulseScale = 0;
@@ -406,7 +443,8 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
       }
 
       if (!useBias) {
-        const axial = this.impulse + this.lowerImpulse - this.upperImpulse;
+        const axial =
+          this.impulse + this.springSubStepImpulse + this.lowerImpulse - this.upperImpulse;
         this.stepImpulseX += axial * nx;
         this.stepImpulseY += axial * ny;
       }
