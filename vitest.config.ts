@@ -9,6 +9,7 @@ export default defineConfig({
       '@physical/engine': fileURLToPath(new URL('./packages/engine/src/index.ts', import.meta.url)),
       '@physical/canvas': fileURLToPath(new URL('./packages/canvas/src/index.ts', import.meta.url)),
       '@physical/react': fileURLToPath(new URL('./packages/react/src/index.ts', import.meta.url)),
+      '@physical/dom': fileURLToPath(new URL('./packages/dom/src/index.ts', import.meta.url)),
     },
   },
   test: {
