@@ -19,10 +19,7 @@ test('dom: a drag moves the element with the pointer, a release throws it, and n
   // Held at the grab point (the button's centre): within a few px of the pointer.
   assert.ok(Math.hypot(held.x - 200, held.y - 150) < 12, `held at ${held.x}, ${held.y}`);
   // Fling to the right and let go: it keeps flying right after the release.
-  for (let i = 1; i <= 5; i++) {
-    await page.mouse.move(200 + 30 * i, 150);
-    await page.waitForTimeout(8);
-  }
+  await page.mouse.move(350, 150, { steps: 10 });
   await page.mouse.up();
   const released = (await boxes(page)).elements.find((element) => element.id === 'count')!;
   const velocity = await page.evaluate(() => window.ui.bodyOf(document.querySelector('#count')!)!.linearVelocity.x);
