@@ -49,5 +49,8 @@ test('dom: a touch tap and a pen-sized wobble under the drag slop are still one 
   await page.mouse.move(fallen.x + 2, fallen.y + 2, { steps: 2 });
   await page.mouse.up();
   assert.equal(await count(page), 2);
-  assert.equal(await page.evaluate(() => window.ui.isDragging(document.querySelector('#count')!)), false);
+  assert.equal(
+    await page.evaluate(() => window.ui.isDragging(document.querySelector('#count')!)),
+    false,
+  );
 });

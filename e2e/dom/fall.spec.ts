@@ -20,8 +20,14 @@ test('dom: tapped chips fall and every element comes to rest inside the containe
     assert.ok(element.x > inner.left && element.x < inner.right, `x ${element.x} inside`);
     assert.ok(element.y > inner.top && element.y < inner.bottom, `y ${element.y} inside`);
     // The body's bounding box (m to px) stays within the walls (1 px of contact slop).
-    assert.ok(element.bodyMinX >= -1 && element.bodyMaxX <= inner.width + 1, JSON.stringify(element));
-    assert.ok(element.bodyMinY >= -1 && element.bodyMaxY <= inner.height + 1, JSON.stringify(element));
+    assert.ok(
+      element.bodyMinX >= -1 && element.bodyMaxX <= inner.width + 1,
+      JSON.stringify(element),
+    );
+    assert.ok(
+      element.bodyMinY >= -1 && element.bodyMaxY <= inner.height + 1,
+      JSON.stringify(element),
+    );
   }
   const lowest = Math.max(...after.elements.map((element) => element.y));
   assert.ok(lowest > inner.bottom - 60, `something lies on the floor (${lowest}, ${inner.bottom})`);

@@ -18,8 +18,14 @@ test('dom: the container shrinking moves its walls and keeps every element insid
   const after = await boxes(page);
   assert.equal(after.container.width, 316); // 320 px minus the 2 px borders
   for (const element of after.elements) {
-    assert.ok(element.bodyMinX >= -1 && element.bodyMaxX <= after.container.width + 1, JSON.stringify(element));
-    assert.ok(element.bodyMinY >= -1 && element.bodyMaxY <= after.container.height + 1, JSON.stringify(element));
+    assert.ok(
+      element.bodyMinX >= -1 && element.bodyMaxX <= after.container.width + 1,
+      JSON.stringify(element),
+    );
+    assert.ok(
+      element.bodyMinY >= -1 && element.bodyMaxY <= after.container.height + 1,
+      JSON.stringify(element),
+    );
     assert.ok(element.x > after.container.left && element.x < after.container.right);
     assert.ok(element.y > after.container.top && element.y < after.container.bottom);
   }
@@ -92,9 +98,7 @@ test('dom: keyboard focus order is the DOM order, before and after the elements 
   assert.equal(await page.evaluate(() => document.querySelector('#count span')!.textContent), '1');
 });
 
-test('dom: elements added and removed while running join and leave the world', async ({
-  open,
-}) => {
+test('dom: elements added and removed while running join and leave the world', async ({ open }) => {
   const page = await open('/dom/showcase.html', { viewport: { width: 700, height: 600 } });
   await page.click('#drop');
   await waitFrames(page, 10);

@@ -9,7 +9,14 @@ declare global {
 
 /** Where the container's padding box and each physical element are (client px), with state. */
 export interface Boxes {
-  container: { left: number; top: number; right: number; bottom: number; width: number; height: number };
+  container: {
+    left: number;
+    top: number;
+    right: number;
+    bottom: number;
+    width: number;
+    height: number;
+  };
   elements: {
     id: string;
     text: string;

@@ -127,7 +127,11 @@ export class DragInput {
   private readonly onMove = (event: PointerEvent): void => {
     const press = this.presses.get(event.pointerId);
     if (press === undefined) return;
-    press.velocity.add(event.timeStamp, event.clientX, event.clientY);
+    // Moves are delivered once per frame; the coalesced ones carry every sample and its time.
+    const samples = event.getCoalescedEvents?.() ?? [];
+    if (samples.length === 0) press.velocity.add(event.timeStamp, event.clientX, event.clientY);
+    for (const sample of samples)
+      press.velocity.add(sample.timeStamp, sample.clientX, sample.clientY);
     if (!press.dragging) {
       const moved = Math.hypot(event.clientX - press.startX, event.clientY - press.startY);
       if (moved <= DRAG_SLOP) return;
@@ -151,7 +155,6 @@ export class DragInput {
     this.presses.delete(event.pointerId);
     if (this.presses.size === 0) this.listen(false);
     if (!press.dragging) return;
-    press.velocity.add(event.timeStamp, event.clientX, event.clientY);
     const velocity = press.velocity.velocity(event.timeStamp, this.velocity);
     this.host.dragEnd(event.pointerId, velocity.x, velocity.y);
     this.suppressClickUntil = event.timeStamp + CLICK_AFTER_DRAG_MS;

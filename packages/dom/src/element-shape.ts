@@ -22,7 +22,8 @@ export interface ElementBox {
 export function parseCornerRadius(text: string, width: number, height: number): number {
   const parts = text.trim().split(/\s+/);
   const horizontal = parseLength(parts[0] ?? '', width);
-  const vertical = parts.length > 1 ? parseLength(parts[1]!, height) : parseLength(parts[0] ?? '', height);
+  const vertical =
+    parts.length > 1 ? parseLength(parts[1]!, height) : parseLength(parts[0] ?? '', height);
   return Math.max(0, Math.min(horizontal, vertical));
 }
 

@@ -46,8 +46,12 @@ export class Grab {
     const omega = 2 * Math.PI * GRAB_HERTZ;
     const point = body.getWorldPoint({ x: this.localX, y: this.localY }, this.point);
     const velocity = body.getVelocityAt(point, this.velocity);
-    let fx = mass * (omega * omega * (this.targetX - point.x) - 2 * GRAB_DAMPING_RATIO * omega * velocity.x);
-    let fy = mass * (omega * omega * (this.targetY - point.y) - 2 * GRAB_DAMPING_RATIO * omega * velocity.y);
+    let fx =
+      mass *
+      (omega * omega * (this.targetX - point.x) - 2 * GRAB_DAMPING_RATIO * omega * velocity.x);
+    let fy =
+      mass *
+      (omega * omega * (this.targetY - point.y) - 2 * GRAB_DAMPING_RATIO * omega * velocity.y);
     const limit = GRAB_MAX_FORCE_PER_WEIGHT * mass * 9.81;
     const size = Math.hypot(fx, fy);
     if (size > limit) {

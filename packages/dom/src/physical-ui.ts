@@ -5,7 +5,12 @@ import { DragInput } from './drag-input.ts';
 import { shapeForBox } from './element-shape.ts';
 import { formatTransform, snap } from './element-transform.ts';
 import { Grab } from './grab.ts';
-import { measureContainer, measureSlots, type ContainerFrame, type Slot } from './layout-measure.ts';
+import {
+  measureContainer,
+  measureSlots,
+  type ContainerFrame,
+  type Slot,
+} from './layout-measure.ts';
 import { springStep } from './return-spring.ts';
 
 /**
@@ -137,7 +142,10 @@ export class PhysicalUI {
     this.returnOmega = 2 * Math.PI * positive('returnHertz', options.returnHertz ?? 2);
     const policy = options.reducedMotion ?? 'respect';
     if (policy !== 'respect' && policy !== 'ignore') {
-      throw new PhysicalError('reducedMotion', `must be 'respect' or 'ignore', got ${String(policy)}.`);
+      throw new PhysicalError(
+        'reducedMotion',
+        `must be 'respect' or 'ignore', got ${String(policy)}.`,
+      );
     }
     this.policy = policy;
     this.world = new World(options.gravity === undefined ? {} : { gravity: options.gravity });
@@ -199,7 +207,10 @@ export class PhysicalUI {
 
   set reducedMotion(value: ReducedMotionPolicy) {
     if (value !== 'respect' && value !== 'ignore') {
-      throw new PhysicalError('reducedMotion', `must be 'respect' or 'ignore', got ${String(value)}.`);
+      throw new PhysicalError(
+        'reducedMotion',
+        `must be 'respect' or 'ignore', got ${String(value)}.`,
+      );
     }
     this.policy = value;
     this.motionChanged();
@@ -299,7 +310,12 @@ export class PhysicalUI {
     );
     this.frameStale = false;
     const ppm = this.ppm;
-    this.walls.rebuild(this.world, this.frame.width / ppm, this.frame.height / ppm, this.material.friction);
+    this.walls.rebuild(
+      this.world,
+      this.frame.width / ppm,
+      this.frame.height / ppm,
+      this.material.friction,
+    );
     for (let i = 0; i < this.items.length; i++) {
       const item = this.items[i]!;
       const slot = slots[i]!;
@@ -354,7 +370,12 @@ export class PhysicalUI {
     const slots = measureSlots(this.container, fresh, this.frame, []);
     this.frameStale = false;
     const ppm = this.ppm;
-    this.walls.rebuild(this.world, this.frame.width / ppm, this.frame.height / ppm, this.material.friction);
+    this.walls.rebuild(
+      this.world,
+      this.frame.width / ppm,
+      this.frame.height / ppm,
+      this.material.friction,
+    );
     const motion = this.motionAllowed;
     for (let i = 0; i < fresh.length; i++) {
       const element = fresh[i]!;
@@ -488,7 +509,12 @@ export class PhysicalUI {
     return [(clientX - frame.left) / scale, (clientY - frame.top) / scale];
   }
 
-  private dragStart(pointerId: number, element: HTMLElement, clientX: number, clientY: number): boolean {
+  private dragStart(
+    pointerId: number,
+    element: HTMLElement,
+    clientX: number,
+    clientY: number,
+  ): boolean {
     const item = this.byElement.get(element);
     if (item === undefined || !this.motionAllowed) return false;
     if (item.state !== 'free') this.setState(item, 'free');
@@ -623,7 +649,12 @@ export class PhysicalUI {
       const angle = beta * item.prevAngle + alpha * body.angle;
       const dx = snap(x * ppm - item.slot.centerX, pixel);
       const dy = snap(y * ppm - item.slot.centerY, pixel);
-      if (item.shown && dx === item.shownX && dy === item.shownY && Math.abs(angle - item.shownAngle) < 1e-4) {
+      if (
+        item.shown &&
+        dx === item.shownX &&
+        dy === item.shownY &&
+        Math.abs(angle - item.shownAngle) < 1e-4
+      ) {
         continue;
       }
       element.style.transform = formatTransform(dx, dy, angle);
