@@ -45,7 +45,10 @@ test('dom: two touches drag two elements at once', async ({ open }) => {
     (element) => element.id === 'count' || element.id === 'likes',
   );
   const session = await page.context().newCDPSession(page);
-  const touch = (type: string, points: { x: number; y: number; id: number }[]) =>
+  const touch = (
+    type: 'touchStart' | 'touchMove' | 'touchEnd',
+    points: { x: number; y: number; id: number }[],
+  ) =>
     session.send('Input.dispatchTouchEvent', {
       type,
       touchPoints: points.map(({ x, y, id }) => ({ x, y, id })),
