@@ -39,5 +39,25 @@ export type {
   WorldOnlyEvents,
 } from './dynamics/events.ts';
 
+export { Joint } from './dynamics/joints/joint.ts';
+export type { JointOptions, JointType } from './dynamics/joints/joint.ts';
+export {
+  distanceJoint,
+  mouseJoint,
+  prismaticJoint,
+  revoluteJoint,
+  weldJoint,
+} from './dynamics/joints/joint-factories.ts';
+export { DistanceJoint } from './dynamics/joints/distance-joint.ts';
+export type { DistanceJointOptions } from './dynamics/joints/distance-joint.ts';
+export { MouseJoint } from './dynamics/joints/mouse-joint.ts';
+export type { MouseJointOptions } from './dynamics/joints/mouse-joint.ts';
+export { PrismaticJoint } from './dynamics/joints/prismatic-joint.ts';
+export type { PrismaticJointOptions } from './dynamics/joints/prismatic-joint.ts';
+export { RevoluteJoint } from './dynamics/joints/revolute-joint.ts';
+export type { RevoluteJointOptions } from './dynamics/joints/revolute-joint.ts';
+export { WeldJoint } from './dynamics/joints/weld-joint.ts';
+export type { WeldJointOptions } from './dynamics/joints/weld-joint.ts';
+
 export { PhysicalError } from './core/errors.ts';
 export type { Vec2, Vec2Like } from './math/vec2.ts';

@@ -15,6 +15,7 @@ import type { World } from '../world/world.ts';
 import type { Contact } from './contact.ts';
 import type { BodyEvents } from './events.ts';
 import { Force, validateDuration, type ForceOptions, type TorqueOptions } from './force.ts';
+import type { Joint } from './joints/joint.ts';
 import { Shape, type ShapeOptions } from './shape.ts';
 
 /**
@@ -135,6 +136,8 @@ export class Body<UserData = unknown> {
   readonly forceList: Force[] = [];
   /** @internal Contacts touching this body's shapes (both touching and merely overlapping boxes). */
   readonly contacts: Contact[] = [];
+  /** @internal Joints attached to this body that are in the world. */
+  readonly jointList: Joint[] = [];
   /** @internal The world holding the body, or null. */
   worldRef: World | null = null;
   /** @internal Index in the world's body array. */
@@ -460,6 +463,11 @@ export class Body<UserData = unknown> {
     this.shapeList.splice(index, 1);
     this.updateMassData();
     this.wake();
+  }
+
+  /** The joints attached to this body (in its world). */
+  get joints(): readonly Joint[] {
+    return this.jointList;
   }
 
   // ---------------------------------------------------------------- forces

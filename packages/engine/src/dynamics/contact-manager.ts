@@ -3,6 +3,7 @@ import { aabbOverlaps } from '../geometry/aabb.ts';
 import type { Body } from './body.ts';
 import { canCollide, Contact, shouldSwap } from './contact.ts';
 import type { Islands } from './island.ts';
+import { jointPreventsCollision } from './joints/joint.ts';
 import type { Shape } from './shape.ts';
 
 /**
@@ -33,6 +34,7 @@ export class ContactManager {
     // Only pairs where something can be pushed matter.
     if (bodyA.type !== 'dynamic' && bodyB.type !== 'dynamic') return;
     if (!canCollide(shapeA, shapeB)) return;
+    if (jointPreventsCollision(bodyA, bodyB)) return;
     if (!this.pairs.add(shapeA.id, shapeB.id)) return;
     const contact = this.pool.pop() ?? new Contact();
     if (shouldSwap(shapeA, shapeB)) contact.init(shapeB, shapeA);
@@ -93,6 +95,15 @@ export class ContactManager {
     for (let i = contacts.length - 1; i >= 0; i--) {
       const contact = contacts[i]!;
       if (contact.shapeA === shape || contact.shapeB === shape) this.destroy(contact, true);
+    }
+  }
+
+  /** Destroys the contacts between two bodies (a joint now keeps them from colliding). */
+  destroyContactsBetween(bodyA: Body, bodyB: Body): void {
+    const contacts = bodyA.contacts;
+    for (let i = contacts.length - 1; i >= 0; i--) {
+      const contact = contacts[i]!;
+      if (contact.other(bodyA) === bodyB) this.destroy(contact, false);
     }
   }
 

@@ -1,4 +1,5 @@
 import type { Body } from './body.ts';
+import type { Joint } from './joints/joint.ts';
 import type { Shape } from './shape.ts';
 
 /** One point of a collision: where the two shapes touch and what the solver did there. */
@@ -71,6 +72,8 @@ export interface WorldOnlyEvents {
   bodyAdded: (body: Body) => void;
   /** A body left the world. */
   bodyRemoved: (body: Body) => void;
+  /** A joint left the world (removeJoint, or one of its bodies was removed). */
+  jointRemoved: (joint: Joint) => void;
   /** A sleeping body woke up (a renderer that stopped drawing a sleeping world starts again). */
   wake: (body: Body) => void;
 }

@@ -1,8 +1,8 @@
 import type { Body } from './body.ts';
 
 /**
- * Sleep by islands: bodies that touch (through dynamic or kinematic bodies, never through static
- * ones) rest or move together, so a pile falls asleep only as a whole and one touch wakes all of
+ * Sleep by islands: bodies that touch or are joined (through dynamic or kinematic bodies, never
+ * through static ones) rest or move together, so a pile falls asleep only as a whole and one touch wakes all of
  * it (Box2D's islands). Islands are found by a depth-first search when needed rather than kept
  * persistent: the search starts only from bodies that have rested long enough, and gives up as
  * soon as it reaches one that has not, so a moving scene pays almost nothing.
@@ -53,6 +53,13 @@ export class Islands {
         other.awake = true;
         stack.push(other);
       }
+      for (let i = 0; i < current.jointList.length; i++) {
+        const joint = current.jointList[i]!;
+        const other = joint.bodyA === current ? joint.bodyB : joint.bodyA;
+        if (other.type === 'static' || other.awake) continue;
+        other.awake = true;
+        stack.push(other);
+      }
     }
     const onWake = this.onWake;
     if (onWake !== null) for (let i = 0; i < woken.length; i++) onWake(woken[i]!);
@@ -90,6 +97,16 @@ export class Islands {
         if (other.sleepTime < minimumRest || other.islandStamp > passStart) return false;
         // A moving kinematic body keeps what it touches awake (checked above); a resting one is
         // left as it is.
+        if (other.type === 'kinematic') continue;
+        other.islandStamp = stamp;
+        stack.push(other);
+      }
+      // Joined bodies rest or move together too.
+      for (let i = 0; i < body.jointList.length; i++) {
+        const joint = body.jointList[i]!;
+        const other = joint.bodyA === body ? joint.bodyB : joint.bodyA;
+        if (other.type === 'static' || other.islandStamp === stamp) continue;
+        if (other.sleepTime < minimumRest || other.islandStamp > passStart) return false;
         if (other.type === 'kinematic') continue;
         other.islandStamp = stamp;
         stack.push(other);

@@ -20,6 +20,7 @@ import {
   storeImpulses,
   warmStartContacts,
 } from './contact-solver.ts';
+import { JointSolver } from './joints/joint-solver.ts';
 import { Softness } from './softness.ts';
 
 /** World settings the solver reads each step. */
@@ -41,9 +42,9 @@ export interface SolverSettings {
  *   for each sub-step h = dt / n:
  *     integrate velocities (semi-implicit Euler: forces, gravity, damping, drag)
  *     point particle pairs' normals along their centres
- *     warm start, solve contacts with soft position correction
+ *     warm start, solve joints then contacts with soft position correction
  *     integrate positions (x += h v, using the new v: semi-implicit Euler)
- *     relax contacts (solve again without the position correction's bias); impacts bounce here,
+ *     relax joints then contacts (solve again without the position correction's bias); impacts bounce here,
  *       at the moment of contact (see contact-solver.ts)
  *   store impulses, write the new poses back to the bodies
  *
@@ -55,6 +56,8 @@ export interface SolverSettings {
 export class Solver {
   readonly states: BodyStates = new BodyStates();
   readonly constraints: ContactConstraints = new ContactConstraints();
+  /** The joints, solved before the contacts in each pass (as Box2D v3 orders them). */
+  readonly joints: JointSolver = new JointSolver();
   /**
    * Awake non-static bodies of this step, in world order (body.solverIndex = position + 1); only
    * the first `awakeCount` entries are valid. Per-step lists keep a count instead of truncating,
@@ -135,17 +138,23 @@ export class Solver {
     this.contactSoftness.set(contactHertz, settings.contactDampingRatio, h);
     this.staticSoftness.set(2 * contactHertz, settings.contactDampingRatio, h);
     prepareContacts(constraints, s, this.contactSoftness, this.staticSoftness);
+    const joints = this.joints;
+    joints.prepare(dt, subSteps, contactHertz);
 
     for (let step = 0; step < subSteps; step++) {
       integrateVelocities(awake, this.awakeCount, s, settings, h);
       refreshCirclePairs(constraints, s);
+      joints.warmStart(s);
       warmStartContacts(constraints, s);
+      joints.solve(s, true);
       solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, true);
       integratePositions(this.awakeCount, s, h);
       refreshCirclePairs(constraints, s);
+      joints.solve(s, false);
       solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, false);
     }
     storeImpulses(constraints);
+    joints.finish();
     this.finalizeBodies(dt);
   }
 

@@ -17,6 +17,7 @@ import {
   type WorldOnlyEvents,
 } from '../dynamics/events.ts';
 import { Islands } from '../dynamics/island.ts';
+import { Joint } from '../dynamics/joints/joint.ts';
 import type { Shape } from '../dynamics/shape.ts';
 import { Solver } from '../dynamics/solver.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
@@ -57,6 +58,9 @@ export class World {
   private locked = false;
   private readonly pendingAdds: Body[] = [];
   private readonly pendingRemoves: Body[] = [];
+  private readonly jointList: Joint[] = [];
+  private readonly pendingJointAdds: Joint[] = [];
+  private readonly pendingJointRemoves: Joint[] = [];
   private readonly listeners = new Listeners<WorldEvents>();
   private readonly collisionEvent = new CollisionEventData();
   private readonly contactEvent = new ContactEventData();
@@ -71,6 +75,7 @@ export class World {
   constructor(options: WorldOptions = {}) {
     this.settings = resolveWorldOptions(options);
     this.queries = new WorldQueries(this.broadPhase, this.shapesById);
+    this.solver.joints.list = this.jointList;
     this.islands.onWake = (body) => {
       const listeners = this.listeners.get('wake');
       if (listeners !== undefined) callAll(listeners, body);
@@ -207,6 +212,88 @@ export class World {
   clear(): void {
     for (const body of this.bodyList.slice()) this.remove(body);
     for (const body of this.pendingAdds.slice()) this.remove(body);
+  }
+
+  // ---------------------------------------------------------------- joints
+
+  /** The joints in the world, in the order they were added. */
+  get joints(): readonly Joint[] {
+    return this.jointList;
+  }
+
+  /**
+   * Adds a joint (build one with {@link revoluteJoint}, {@link mouseJoint}, ...) and returns it; its
+   * bodies wake. Both bodies must be in this world. Inside an event listener the joint joins at the
+   * end of the step.
+   */
+  addJoint<J extends Joint>(joint: J): J {
+    if (!(joint instanceof Joint)) {
+      throw new PhysicalError(
+        'joint',
+        `must be a Joint (for example revoluteJoint({...})), got ${String(joint)}.`,
+      );
+    }
+    if (joint.worldRef !== null) {
+      throw new PhysicalError(
+        'joint',
+        joint.worldRef === this
+          ? 'is already in this world (added twice).'
+          : 'is already in another world; remove it there first.',
+      );
+    }
+    if (!this.has(joint.bodyA)) {
+      throw new PhysicalError('bodyA', 'is not in this world: add the body before the joint.');
+    }
+    if (!this.has(joint.bodyB)) {
+      throw new PhysicalError('bodyB', 'is not in this world: add the body before the joint.');
+    }
+    joint.worldRef = this;
+    if (this.locked) {
+      this.pendingJointAdds.push(joint);
+      return joint;
+    }
+    this.locked = true;
+    try {
+      this.insertJoint(joint);
+      this.dispatchContactEnds();
+    } finally {
+      this.locked = false;
+    }
+    this.flushPending();
+    return joint;
+  }
+
+  /**
+   * Removes a joint; its bodies wake. Inside an event listener the joint leaves at the end of the
+   * step. Removing a body removes its joints. Throws if the joint is not in this world.
+   */
+  removeJoint(joint: Joint): void {
+    if (
+      joint === null ||
+      typeof joint !== 'object' ||
+      joint.worldRef !== this ||
+      joint.removalPending
+    ) {
+      throw new PhysicalError('joint', 'is not in this world (removed twice, or never added).');
+    }
+    const pending = this.pendingJointAdds.indexOf(joint);
+    if (pending >= 0) {
+      this.pendingJointAdds.splice(pending, 1);
+      joint.worldRef = null;
+      return;
+    }
+    if (this.locked) {
+      joint.removalPending = true;
+      this.pendingJointRemoves.push(joint);
+      return;
+    }
+    this.locked = true;
+    try {
+      this.extractJoint(joint);
+    } finally {
+      this.locked = false;
+    }
+    this.flushPending();
   }
 
   // ---------------------------------------------------------------- stepping
@@ -385,7 +472,53 @@ export class World {
     callAll(this.listeners.get('bodyAdded'), body);
   }
 
+  private insertJoint(joint: Joint): void {
+    const a = joint.bodyA;
+    const b = joint.bodyB;
+    // A body removed (or never joined) while the joint waited: the joint never joins.
+    if (this.bodyList[a.worldIndex] !== a || this.bodyList[b.worldIndex] !== b) {
+      joint.worldRef = null;
+      return;
+    }
+    joint.worldIndex = this.jointList.length;
+    joint.removalPending = false;
+    joint.resetImpulses();
+    joint.resetReaction();
+    this.jointList.push(joint);
+    a.jointList.push(joint);
+    if (b !== a) {
+      b.jointList.push(joint);
+      if (!joint.collideConnected) this.contactManager.destroyContactsBetween(a, b);
+    }
+    this.islands.wake(a);
+    this.islands.wake(b);
+  }
+
+  private extractJoint(joint: Joint): void {
+    const a = joint.bodyA;
+    const b = joint.bodyB;
+    this.jointList.splice(joint.worldIndex, 1);
+    for (let i = joint.worldIndex; i < this.jointList.length; i++)
+      this.jointList[i]!.worldIndex = i;
+    a.jointList.splice(a.jointList.indexOf(joint), 1);
+    if (b !== a) b.jointList.splice(b.jointList.indexOf(joint), 1);
+    joint.worldRef = null;
+    joint.worldIndex = -1;
+    joint.removalPending = false;
+    if (!joint.collideConnected && b !== a) {
+      // The pair may touch again: let the broad phase look for it.
+      for (const shape of a.shapeList)
+        if (shape.proxyKey >= 0) this.broadPhase.bufferMove(shape.proxyKey);
+      for (const shape of b.shapeList)
+        if (shape.proxyKey >= 0) this.broadPhase.bufferMove(shape.proxyKey);
+    }
+    this.islands.wake(a);
+    this.islands.wake(b);
+    callAll(this.listeners.get('jointRemoved'), joint);
+  }
+
   private extractBody(body: Body): void {
+    while (body.jointList.length > 0) this.extractJoint(body.jointList[body.jointList.length - 1]!);
     this.contactManager.destroyContactsOf(body);
     for (const shape of body.shapeList) this.destroyProxy(shape);
     this.bodyList.splice(body.worldIndex, 1);
@@ -464,11 +597,21 @@ export class World {
   }
 
   private flushPending(): void {
-    while (this.pendingAdds.length > 0 || this.pendingRemoves.length > 0) {
+    while (
+      this.pendingAdds.length > 0 ||
+      this.pendingRemoves.length > 0 ||
+      this.pendingJointAdds.length > 0 ||
+      this.pendingJointRemoves.length > 0
+    ) {
       this.locked = true;
       try {
+        while (this.pendingJointRemoves.length > 0) {
+          const joint = this.pendingJointRemoves.shift()!;
+          if (joint.worldRef === this) this.extractJoint(joint);
+        }
         while (this.pendingRemoves.length > 0) this.extractBody(this.pendingRemoves.shift()!);
         while (this.pendingAdds.length > 0) this.insertBody(this.pendingAdds.shift()!);
+        while (this.pendingJointAdds.length > 0) this.insertJoint(this.pendingJointAdds.shift()!);
         this.dispatchContactEnds();
       } finally {
         this.locked = false;

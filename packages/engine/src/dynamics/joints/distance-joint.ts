@@ -1,0 +1,373 @@
+import { PhysicalError } from '../../core/errors.ts';
+import { requireFinite, requireNonNegative } from '../../core/validate.ts';
+import type { Vec2Like } from '../../math/vec2.ts';
+import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { Softness } from '../softness.ts';
+import {
+  Joint,
+  optionalNonNegative,
+  requireBodies,
+  requireOrdered,
+  requirePoint,
+  type JointOptions,
+  type JointStep,
+} from './joint.ts';
+
+/**
+ * Options of a {@link DistanceJoint}: a rod between two points (rigid), or a spring of given
+ * frequency and damping; with minLength and maxLength the length stays within a range (a rope is
+ * a spring of 0 Hz with a maxLength).
+ */
+export interface DistanceJointOptions<UserData = unknown> extends JointOptions<UserData> {
+  /** Point on body A (world, m). */
+  readonly anchorA: Vec2Like;
+  /** Point on body B (world, m). */
+  readonly anchorB: Vec2Like;
+  /** Rest length (m, >= 0). Default: the anchors' distance now. */
+  readonly length?: number;
+  /** Shortest length (m, >= 0). Default none (0). */
+  readonly minLength?: number;
+  /** Longest length (m). Default none. */
+  readonly maxLength?: number;
+  /** A spring instead of a rigid rod. Default false. */
+  readonly enableSpring?: boolean;
+  /** Spring frequency (Hz, >= 0); 0 means no spring force (only the length range holds). Default 0. */
+  readonly hertz?: number;
+  /** Spring damping ratio (>= 0; 1 is critical). Default 0. */
+  readonly dampingRatio?: number;
+}
+
+/**
+ * Keeps two points at a distance, rigidly or as a damped spring, within an optional length range.
+ * Box2D v3's distance joint (Catto): one row along the line between the anchors, recomputed each
+ * pass from the current anchors; the rigid row softened by the joint softness, the spring by its
+ * own, the range limits one-sided and speculative like contacts.
+ */
+export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
+  readonly type = 'distance' as const;
+  /** @internal Anchors in each body's frame (relative to the body origin, m). */
+  localAnchorAX = 0;
+  localAnchorAY = 0;
+  localAnchorBX = 0;
+  localAnchorBY = 0;
+  private rest: number;
+  private min: number;
+  private max: number;
+  private springEnabled: boolean;
+  private springHertz: number;
+  private springDampingRatio: number;
+  private rAx = 0;
+  private rAy = 0;
+  private rBx = 0;
+  private rBy = 0;
+  private deltaCenterX = 0;
+  private deltaCenterY = 0;
+  private readonly springSoftness = new Softness();
+  private impulse = 0;
+  private lowerImpulse = 0;
+  private upperImpulse = 0;
+
+  constructor(options: DistanceJointOptions<UserData>) {
+    requireBodies(options);
+    const anchorA = requirePoint('anchorA', options.anchorA);
+    const anchorB = requirePoint('anchorB', options.anchorB);
+    super(options, options.bodyA, options.bodyB);
+    const localA = this.bodyA.getLocalPoint(anchorA);
+    const localB = this.bodyB.getLocalPoint(anchorB);
+    this.localAnchorAX = localA.x;
+    this.localAnchorAY = localA.y;
+    this.localAnchorBX = localB.x;
+    this.localAnchorBY = localB.y;
+    const distance = Math.hypot(anchorB.x - anchorA.x, anchorB.y - anchorA.y);
+    this.rest = optionalNonNegative('length', options.length, distance);
+    this.min = optionalNonNegative('minLength', options.minLength, 0);
+    this.max =
+      options.maxLength === undefined
+        ? Infinity
+        : requireNonNegative('maxLength', options.maxLength);
+    requireOrdered('minLength', this.min, 'maxLength', this.max);
+    requireInRange(this.rest, this.min, this.max);
+    this.springEnabled = options.enableSpring ?? false;
+    this.springHertz = optionalNonNegative('hertz', options.hertz, 0);
+    this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0);
+  }
+
+  /** Distance between the anchors now (m). */
+  get currentLength(): number {
+    const a = this.bodyA.getWorldPoint({ x: this.localAnchorAX, y: this.localAnchorAY });
+    const b = this.bodyB.getWorldPoint({ x: this.localAnchorBX, y: this.localAnchorBY });
+    return Math.hypot(b.x - a.x, b.y - a.y);
+  }
+
+  /** Rest length (m), within [minLength, maxLength]. Setting it wakes the bodies. */
+  get length(): number {
+    return this.rest;
+  }
+
+  set length(value: number) {
+    requireNonNegative('length', value);
+    requireInRange(value, this.min, this.max);
+    this.rest = value;
+    this.wakeBodies();
+  }
+
+  /** Shortest length (m). */
+  get minLength(): number {
+    return this.min;
+  }
+
+  /** Longest length (m); Infinity when there is none. */
+  get maxLength(): number {
+    return this.max;
+  }
+
+  /** Sets the length range (m; maxLength may be Infinity for none); wakes the bodies. */
+  setLengthRange(minLength: number, maxLength: number): void {
+    requireNonNegative('minLength', minLength);
+    if (maxLength !== Infinity) requireNonNegative('maxLength', maxLength);
+    requireOrdered('minLength', minLength, 'maxLength', maxLength);
+    requireInRange(this.rest, minLength, maxLength);
+    this.min = minLength;
+    this.max = maxLength;
+    this.wakeBodies();
+  }
+
+  /** Whether the joint is a spring (else a rigid rod). Changing it wakes the bodies. */
+  get enableSpring(): boolean {
+    return this.springEnabled;
+  }
+
+  set enableSpring(value: boolean) {
+    if (value === this.springEnabled) return;
+    this.springEnabled = value;
+    this.impulse = 0;
+    this.wakeBodies();
+  }
+
+  /** Spring frequency (Hz). Setting it wakes the bodies. */
+  get hertz(): number {
+    return this.springHertz;
+  }
+
+  set hertz(value: number) {
+    this.springHertz = requireNonNegative('hertz', value);
+    this.wakeBodies();
+  }
+
+  /** Spring damping ratio. Setting it wakes the bodies. */
+  get dampingRatio(): number {
+    return this.springDampingRatio;
+  }
+
+  set dampingRatio(value: number) {
+    this.springDampingRatio = requireNonNegative('dampingRatio', value);
+    this.wakeBodies();
+  }
+
+  /** @internal */
+  resetImpulses(): void {
+    this.impulse = 0;
+    this.lowerImpulse = 0;
+    this.upperImpulse = 0;
+  }
+
+  /** @internal */
+  prepare(step: JointStep): void {
+    this.prepareBodies(step);
+    const a = this.bodyA;
+    const b = this.bodyB;
+    const ta = a.transform;
+    const tb = b.transform;
+    const lAx = this.localAnchorAX - a.localCenterX;
+    const lAy = this.localAnchorAY - a.localCenterY;
+    const lBx = this.localAnchorBX - b.localCenterX;
+    const lBy = this.localAnchorBY - b.localCenterY;
+    this.rAx = ta.c * lAx - ta.s * lAy;
+    this.rAy = ta.s * lAx + ta.c * lAy;
+    this.rBx = tb.c * lBx - tb.s * lBy;
+    this.rBy = tb.s * lBx + tb.c * lBy;
+    this.deltaCenterX = b.centerX - a.centerX;
+    this.deltaCenterY = b.centerY - a.centerY;
+    this.springSoftness.set(this.springHertz, this.springDampingRatio, step.h);
+    if (this.springEnabled && this.springHertz === 0) this.impulse = 0;
+    if (this.min === 0) this.lowerImpulse = 0;
+    if (this.max === Infinity) this.upperImpulse = 0;
+  }
+
+  /** @internal */
+  warmStart(s: Float64Array): void {
+    const a = this.stateA;
+    const b = this.stateB;
+    const qAc = s[a + Q_C]!;
+    const qAs = s[a + Q_S]!;
+    const qBc = s[b + Q_C]!;
+    const qBs = s[b + Q_S]!;
+    const rAx = qAc * this.rAx - qAs * this.rAy;
+    const rAy = qAs * this.rAx + qAc * this.rAy;
+    const rBx = qBc * this.rBx - qBs * this.rBy;
+    const rBy = qBs * this.rBx + qBc * this.rBy;
+    const dx = s[b + DP_X]! - s[a + DP_X]! + this.deltaCenterX + rBx - rAx;
+    const dy = s[b + DP_Y]! - s[a + DP_Y]! + this.deltaCenterY + rBy - rAy;
+    const length = Math.sqrt(dx * dx + dy * dy);
+    if (!(length > LENGTH_EPSILON)) return;
+    const axial = this.impulse + this.lowerImpulse - this.upperImpulse;
+    const px = (axial * dx) / length;
+    const py = (axial * dy) / length;
+    s[a + V_X] -= this.invMassA * px;
+    s[a + V_Y] -= this.invMassA * py;
+    s[a + W] -= this.invInertiaA * (rAx * py - rAy * px);
+    s[b + V_X] += this.invMassB * px;
+    s[b + V_Y] += this.invMassB * py;
+    s[b + W] += this.invInertiaB * (rBx * py - rBy * px);
+  }
+
+  /** @internal */
+  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
+    const a = this.stateA;
+    const b = this.stateB;
+    const mA = this.invMassA;
+    const iA = this.invInertiaA;
+    const mB = this.invMassB;
+    const iB = this.invInertiaB;
+    let vAx = s[a + V_X]!;
+    let vAy = s[a + V_Y]!;
+    let wA = s[a + W]!;
+    let vBx = s[b + V_X]!;
+    let vBy = s[b + V_Y]!;
+    let wB = s[b + W]!;
+    const qAc = s[a + Q_C]!;
+    const qAs = s[a + Q_S]!;
+    const qBc = s[b + Q_C]!;
+    const qBs = s[b + Q_S]!;
+    const rAx = qAc * this.rAx - qAs * this.rAy;
+    const rAy = qAs * this.rAx + qAc * this.rAy;
+    const rBx = qBc * this.rBx - qBs * this.rBy;
+    const rBy = qBs * this.rBx + qBc * this.rBy;
+    const dx = s[b + DP_X]! - s[a + DP_X]! + this.deltaCenterX + rBx - rAx;
+    const dy = s[b + DP_Y]! - s[a + DP_Y]! + this.deltaCenterY + rBy - rAy;
+    const length = Math.sqrt(dx * dx + dy * dy);
+    // Coincident anchors have no direction to push along.
+    if (length > LENGTH_EPSILON) {
+      const nx = dx / length;
+      const ny = dy / length;
+      const crA = rAx * ny - rAy * nx;
+      const crB = rBx * ny - rBy * nx;
+      const k = mA + mB + iA * crA * crA + iB * crB * crB;
+      const axialMass = k > 0 ? 1 / k : 0;
+      const soft = step.softness;
+
+      // The rod or the spring: C = length - rest.
+      if (!this.springEnabled || this.springHertz > 0) {
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        if (this.springEnabled) {
+          const spring = this.springSoftness;
+          bias = spring.biasRate * (length - this.rest);
+          massScale = spring.massScale;
+          impulseScale = spring.impulseScale;
+        } else if (useBias) {
+          bias = soft.biasRate * (length - this.rest);
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+        }
+        const cdot =
+          (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
+        const impulse = -massScale * axialMass * (cdot + bias) - impulseScale * this.impulse;
+        this.impulse += impulse;
+        const px = impulse * nx;
+        const py = impulse * ny;
+        vAx -= mA * px;
+        vAy -= mA * py;
+        wA -= iA * (rAx * py - rAy * px);
+        vBx += mB * px;
+        vBy += mB * py;
+        wB += iB * (rBx * py - rBy * px);
+      }
+
+      if (this.springEnabled && this.min > 0) {
+        // length >= minLength: pushes apart only.
+        const c = length - this.min;
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        if (c > 0) bias = c * step.inverseH;
+        else if (useBias) {
+          bias = soft.biasRate * c;
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+        }
+        const cdot =
+          (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
+        const impulse = -massScale * axialMass * (cdot + bias) - impulseScale * this.lowerImpulse;
+        const accumulated = Math.max(this.lowerImpulse + impulse, 0);
+        const applied = accumulated - this.lowerImpulse;
+        this.lowerImpulse = accumulated;
+        const px = applied * nx;
+        const py = applied * ny;
+        vAx -= mA * px;
+        vAy -= mA * py;
+        wA -= iA * (rAx * py - rAy * px);
+        vBx += mB * px;
+        vBy += mB * py;
+        wB += iB * (rBx * py - rBy * px);
+      }
+
+      if (this.springEnabled && this.max !== Infinity) {
+        // length <= maxLength: pulls together only (a rope).
+        const c = this.max - length;
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        if (c > 0) bias = c * step.inverseH;
+        else if (useBias) {
+          bias = soft.biasRate * c;
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+        }
+        const cdot = -(
+          (vBx - wB * rBy - vAx + wA * rAy) * nx +
+          (vBy + wB * rBx - vAy - wA * rAx) * ny
+        );
+        const impulse = -massScale * axialMass * (cdot + bias) - impulseScale * this.upperImpulse;
+        const accumulated = Math.max(this.upperImpulse + impulse, 0);
+        const applied = accumulated - this.upperImpulse;
+        this.upperImpulse = accumulated;
+        const px = -applied * nx;
+        const py = -applied * ny;
+        vAx -= mA * px;
+        vAy -= mA * py;
+        wA -= iA * (rAx * py - rAy * px);
+        vBx += mB * px;
+        vBy += mB * py;
+        wB += iB * (rBx * py - rBy * px);
+      }
+
+      if (!useBias) {
+        const axial = this.impulse + this.lowerImpulse - this.upperImpulse;
+        this.stepImpulseX += axial * nx;
+        this.stepImpulseY += axial * ny;
+      }
+    }
+
+    s[a + V_X] = vAx;
+    s[a + V_Y] = vAy;
+    s[a + W] = wA;
+    s[b + V_X] = vBx;
+    s[b + V_Y] = vBy;
+    s[b + W] = wB;
+  }
+}
+
+/** Below this anchor distance (m) the joint has no direction and does nothing. */
+const LENGTH_EPSILON = 1e-9;
+
+function requireInRange(length: number, min: number, max: number): void {
+  requireFinite('length', length);
+  if (length < min || length > max) {
+    throw new PhysicalError(
+      'length',
+      `must lie between minLength (${min}) and maxLength (${max}), got ${length}.`,
+    );
+  }
+}

@@ -1,0 +1,60 @@
+import { Softness } from '../softness.ts';
+import type { Joint, JointStep } from './joint.ts';
+
+/**
+ * Box2D v3's rigid-joint softness: twice the contact stiffness, damping ratio 2 (stiff and well
+ * damped, so a chain does not ring), for the position error of rigid joints and limits. Springs
+ * use their own frequency and damping ratio.
+ */
+const JOINT_DAMPING_RATIO = 2;
+
+/**
+ * Runs the joints of one step through the soft step's stages (see Solver.solve): prepare once,
+ * then each sub-step warm start, solve with bias (before the contacts), relax (with the contacts);
+ * at the end the summed impulses become each joint's reaction force. Only joints with at least
+ * one awake body take part; the rest sleep with their island.
+ */
+export class JointSolver {
+  /** The world's joints (the world's own list, shared). */
+  list: readonly Joint[] = [];
+  /** Joints solved this step (the first `count`). */
+  private readonly active: Joint[] = [];
+  private count = 0;
+  private readonly step: JointStep = { h: 0, inverseH: 0, dt: 0, softness: new Softness() };
+
+  /** Picks the joints to solve and prepares them; `contactHertz` as the contacts use it. */
+  prepare(dt: number, subSteps: number, contactHertz: number): void {
+    const step = this.step;
+    step.dt = dt;
+    step.h = dt / subSteps;
+    step.inverseH = subSteps / dt;
+    step.softness.set(2 * contactHertz, JOINT_DAMPING_RATIO, step.h);
+    const list = this.list;
+    const active = this.active;
+    let count = 0;
+    for (let i = 0; i < list.length; i++) {
+      const joint = list[i]!;
+      if (joint.bodyA.solverIndex === 0 && joint.bodyB.solverIndex === 0) continue;
+      if (count < active.length) active[count] = joint;
+      else active.push(joint);
+      count++;
+      joint.prepare(step);
+    }
+    this.count = count;
+  }
+
+  warmStart(s: Float64Array): void {
+    for (let i = 0; i < this.count; i++) this.active[i]!.warmStart(s);
+  }
+
+  solve(s: Float64Array, useBias: boolean): void {
+    const step = this.step;
+    for (let i = 0; i < this.count; i++) this.active[i]!.solve(s, step, useBias);
+  }
+
+  /** Turns the step's impulses into reaction forces. */
+  finish(): void {
+    const dt = this.step.dt;
+    for (let i = 0; i < this.count; i++) this.active[i]!.finishStep(dt);
+  }
+}

@@ -1,0 +1,254 @@
+import { PhysicalError } from '../../core/errors.ts';
+import { requireFinite, requireNonNegative, requireVector } from '../../core/validate.ts';
+import type { Vec2, Vec2Like } from '../../math/vec2.ts';
+import type { World } from '../../world/world.ts';
+import type { Body } from '../body.ts';
+import { STATE_STRIDE } from '../body-state.ts';
+import type { Softness } from '../softness.ts';
+
+/** The kinds of joint. */
+export type JointType = 'revolute' | 'prismatic' | 'distance' | 'weld' | 'mouse';
+
+/** Options every two-body joint takes. */
+export interface JointOptions<UserData = unknown> {
+  /** First body. */
+  readonly bodyA: Body;
+  /** Second body; the reaction force is the joint's force on this body. */
+  readonly bodyB: Body;
+  /** Let the two joined bodies collide with each other. Default false. */
+  readonly collideConnected?: boolean;
+  /** Anything the app wants to keep with the joint (a colour, a game object). */
+  readonly userData?: UserData;
+}
+
+/** @internal What a joint needs from the step to prepare and solve itself. */
+export interface JointStep {
+  /** Sub-step duration (s) and its inverse. */
+  h: number;
+  inverseH: number;
+  /** Step duration (s). */
+  dt: number;
+  /** Softness of the rigid joints' position correction this step. */
+  readonly softness: Softness;
+}
+
+/**
+ * A constraint between two bodies (or, for a {@link MouseJoint}, between a body and a point).
+ * Build one with {@link revoluteJoint}, {@link prismaticJoint}, {@link distanceJoint},
+ * {@link weldJoint} or {@link mouseJoint}, then `world.addJoint(joint)`.
+ *
+ * Joints are solved with Box2D v3's soft step (Erin Catto, "Solver2D", 2024; Box2D v3's joint
+ * solvers): prepared once per step, warm-started, solved with soft position correction before the
+ * contacts and relaxed without it after the positions move.
+ */
+export abstract class Joint<UserData = unknown> {
+  /** What kind of joint this is. */
+  abstract readonly type: JointType;
+  /** First body (for a mouse joint, the dragged body, like {@link bodyB}). */
+  readonly bodyA: Body;
+  /** Second body: the reaction force and torque act on it. */
+  readonly bodyB: Body;
+  /** Whether the two bodies may collide with each other. */
+  readonly collideConnected: boolean;
+  /** Anything the app keeps with the joint. */
+  userData: UserData | undefined;
+
+  /** @internal The world holding the joint, or null. */
+  worldRef: World | null = null;
+  /** @internal Index in the world's joint list. */
+  worldIndex = -1;
+  /** @internal A removal was requested during a step. */
+  removalPending = false;
+  /** @internal State offsets (solverIndex * STATE_STRIDE) of the two bodies this step. */
+  stateA = 0;
+  stateB = 0;
+  /** @internal Inverse masses as the solver sees them (0 for static, sleeping, kinematic). */
+  invMassA = 0;
+  invInertiaA = 0;
+  invMassB = 0;
+  invInertiaB = 0;
+  /** @internal Impulses on body B summed over the sub-steps of the step (N s, N m s). */
+  stepImpulseX = 0;
+  stepImpulseY = 0;
+  stepAngularImpulse = 0;
+  /** @internal Reaction of the last step (N, N m). */
+  reactionX = 0;
+  reactionY = 0;
+  reactionAngular = 0;
+  /** @internal Sub-step duration of the last step (s), to turn a sub-step impulse into a force. */
+  subStepDuration = 1 / 240;
+  private readonly reactionView: Vec2 = { x: 0, y: 0 };
+
+  constructor(options: JointOptions<UserData>, bodyA: Body, bodyB: Body) {
+    this.bodyA = bodyA;
+    this.bodyB = bodyB;
+    this.collideConnected = options.collideConnected ?? false;
+    this.userData = options.userData;
+  }
+
+  /** The world this joint is in, or null. */
+  get world(): World | null {
+    return this.worldRef;
+  }
+
+  /**
+   * Force the joint exerted on body B (N, world coordinates), averaged over the last step; body A
+   * felt the opposite. A reused view: read it, do not keep it. For a rope or rod this is its tension.
+   */
+  get reactionForce(): Readonly<Vec2> {
+    this.reactionView.x = this.reactionX;
+    this.reactionView.y = this.reactionY;
+    return this.reactionView;
+  }
+
+  /** Torque the joint exerted on body B (N m), averaged over the last step. */
+  get reactionTorque(): number {
+    return this.reactionAngular;
+  }
+
+  /** Wakes both bodies (a setting changed). */
+  protected wakeBodies(): void {
+    this.bodyA.wake();
+    this.bodyB.wake();
+  }
+
+  /** @internal Looks up the bodies' solver slots and masses for this step, clears the step's sums. */
+  prepareBodies(step: JointStep): void {
+    this.subStepDuration = step.h;
+    const a = this.bodyA;
+    const b = this.bodyB;
+    this.stateA = a.solverIndex * STATE_STRIDE;
+    this.stateB = b.solverIndex * STATE_STRIDE;
+    this.invMassA = a.solverIndex === 0 ? 0 : a.invMass;
+    this.invInertiaA = a.solverIndex === 0 ? 0 : a.invInertia;
+    this.invMassB = b.solverIndex === 0 ? 0 : b.invMass;
+    this.invInertiaB = b.solverIndex === 0 ? 0 : b.invInertia;
+    this.stepImpulseX = 0;
+    this.stepImpulseY = 0;
+    this.stepAngularImpulse = 0;
+  }
+
+  /** @internal Turns the step's summed impulses into average forces. */
+  finishStep(dt: number): void {
+    this.reactionX = this.stepImpulseX / dt;
+    this.reactionY = this.stepImpulseY / dt;
+    this.reactionAngular = this.stepAngularImpulse / dt;
+  }
+
+  /** @internal Clears what the joint carries between steps (on leaving a world). */
+  resetReaction(): void {
+    this.reactionX = 0;
+    this.reactionY = 0;
+    this.reactionAngular = 0;
+  }
+
+  /** @internal Anchors, effective masses and softness for this step. */
+  abstract prepare(step: JointStep): void;
+  /** @internal Applies the impulses carried from the last sub-step. */
+  abstract warmStart(s: Float64Array): void;
+  /**
+   * @internal One pass. With `useBias` position error is corrected softly; without it (relax) only
+   * velocities are constrained. The relax pass adds the sub-step's impulses to the step sums.
+   */
+  abstract solve(s: Float64Array, step: JointStep, useBias: boolean): void;
+  /** @internal Forgets accumulated impulses (the joint was moved by hand or just created). */
+  abstract resetImpulses(): void;
+}
+
+/**
+ * True when a joint between `a` and `b` forbids their collision (collideConnected false). Loops
+ * over the shorter joint list: bodies carry few joints.
+ */
+export function jointPreventsCollision(a: Body, b: Body): boolean {
+  const list = a.jointList.length <= b.jointList.length ? a.jointList : b.jointList;
+  for (let i = 0; i < list.length; i++) {
+    const joint = list[i]!;
+    if (joint.collideConnected) continue;
+    if ((joint.bodyA === a && joint.bodyB === b) || (joint.bodyA === b && joint.bodyB === a)) {
+      return true;
+    }
+  }
+  return false;
+}
+
+// ---------------------------------------------------------------- validation helpers
+
+/** @internal Checks the two bodies of a joint. */
+export function requireBodies(options: JointOptions<unknown>): void {
+  if (options === null || typeof options !== 'object') {
+    throw new PhysicalError(
+      'options',
+      `must be an object of joint options, got ${String(options)}.`,
+    );
+  }
+  requireBody('bodyA', options.bodyA);
+  requireBody('bodyB', options.bodyB);
+  if (options.bodyA === options.bodyB) {
+    throw new PhysicalError('bodyB', 'must be a different body from bodyA.');
+  }
+  if (options.bodyA.type !== 'dynamic' && options.bodyB.type !== 'dynamic') {
+    throw new PhysicalError(
+      'bodyB',
+      `a joint needs at least one dynamic body; bodyA is ${options.bodyA.type} and bodyB is ${options.bodyB.type}.`,
+    );
+  }
+}
+
+/** @internal */
+export function requireBody(field: string, body: Body): void {
+  if (body === null || typeof body !== 'object' || !('shapeList' in body)) {
+    throw new PhysicalError(field, `must be a Body, got ${String(body)}.`);
+  }
+}
+
+/** @internal A world point (m), validated. */
+export function requirePoint(field: string, point: Vec2Like | undefined): Vec2Like {
+  if (point === undefined)
+    throw new PhysicalError(field, 'is required: a world point { x, y } in metres.');
+  requireVector(field, point);
+  return point;
+}
+
+/** @internal An optional non-negative number with a default. */
+export function optionalNonNegative(
+  field: string,
+  value: number | undefined,
+  fallback: number,
+): number {
+  return value === undefined ? fallback : requireNonNegative(field, value);
+}
+
+/** @internal An optional finite number with a default. */
+export function optionalFinite(field: string, value: number | undefined, fallback: number): number {
+  return value === undefined ? fallback : requireFinite(field, value);
+}
+
+/** @internal Throws unless lower <= upper. */
+export function requireOrdered(
+  lowerField: string,
+  lower: number,
+  upperField: string,
+  upper: number,
+): void {
+  if (lower > upper) {
+    throw new PhysicalError(lowerField, `must not exceed ${upperField} (${upper}), got ${lower}.`);
+  }
+}
+
+/**
+ * @internal Solves the 2x2 symmetric system [k11 k12; k12 k22] x = (bx, by) into `out` (x then y);
+ * a singular matrix gives zero.
+ */
+export function solve22(
+  k11: number,
+  k12: number,
+  k22: number,
+  bx: number,
+  by: number,
+  out: Float64Array,
+): void {
+  let det = k11 * k22 - k12 * k12;
+  if (det !== 0) det = 1 / det;
+  out[0] = det * (k22 * bx - k12 * by);
+  out[1] = det * (k11 * by - k12 * bx);
+}

@@ -1,0 +1,251 @@
+import { PhysicalError } from '../../core/errors.ts';
+import { requireNonNegative, requirePositive, requireVector } from '../../core/validate.ts';
+import type { Vec2, Vec2Like } from '../../math/vec2.ts';
+import type { Body } from '../body.ts';
+import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { Softness } from '../softness.ts';
+import {
+  Joint,
+  optionalNonNegative,
+  requireBody,
+  requirePoint,
+  solve22,
+  type JointStep,
+} from './joint.ts';
+
+/** Options of a {@link MouseJoint}: what dragging a body with a finger or the mouse needs. */
+export interface MouseJointOptions<UserData = unknown> {
+  /** The dragged body (dynamic). */
+  readonly body: Body;
+  /**
+   * Where to pull (world point, m). The body's point under the target at creation is the one
+   * pulled: grab a body where the finger touches it.
+   */
+  readonly target: Vec2Like;
+  /** Strongest pull (N, >= 0). Default 1000 times the body's mass: about 100 g. */
+  readonly maxForce?: number;
+  /** Stiffness of the pull (Hz, > 0). Default 5. */
+  readonly hertz?: number;
+  /** Damping ratio of the pull (>= 0; 1 is critical). Default 0.7. */
+  readonly dampingRatio?: number;
+  /** Anything the app wants to keep with the joint. */
+  readonly userData?: UserData;
+}
+
+const scratch = new Float64Array(2);
+
+// Box2D v3 also damps the dragged body's spin a little (0.5 Hz, ratio 0.1), so a body grabbed
+// off-centre settles instead of swinging round the finger for ever.
+const ANGULAR_HERTZ = 0.5;
+const ANGULAR_DAMPING_RATIO = 0.1;
+
+/**
+ * Pulls a point of one body toward a target with a damped spring of bounded force (Box2D v3's
+ * mouse joint, Catto): soft, so a dragged body cannot be forced through a wall, and bounded, so it
+ * cannot fling a heavy stack. `bodyA` and `bodyB` are both the dragged body.
+ */
+export class MouseJoint<UserData = unknown> extends Joint<UserData> {
+  readonly type = 'mouse' as const;
+  /** @internal Grabbed point in the body's frame (relative to the origin, m). */
+  localAnchorX = 0;
+  localAnchorY = 0;
+  private targetX: number;
+  private targetY: number;
+  private force: number;
+  private springHertz: number;
+  private springDampingRatio: number;
+  private readonly targetView: Vec2 = { x: 0, y: 0 };
+  private rBx = 0;
+  private rBy = 0;
+  private deltaCenterX = 0;
+  private deltaCenterY = 0;
+  private readonly linearSoftness = new Softness();
+  private readonly angularSoftness = new Softness();
+  private linearImpulseX = 0;
+  private linearImpulseY = 0;
+  private angularImpulse = 0;
+
+  constructor(options: MouseJointOptions<UserData>) {
+    if (options === null || typeof options !== 'object') {
+      throw new PhysicalError(
+        'options',
+        `must be an object of joint options, got ${String(options)}.`,
+      );
+    }
+    requireBody('body', options.body);
+    if (options.body.type !== 'dynamic') {
+      throw new PhysicalError('body', `must be a dynamic body, got a ${options.body.type} one.`);
+    }
+    const target = requirePoint('target', options.target);
+    super(
+      { bodyA: options.body, bodyB: options.body, ...optionalUserData(options) },
+      options.body,
+      options.body,
+    );
+    this.targetX = target.x;
+    this.targetY = target.y;
+    const local = this.bodyB.getLocalPoint(target);
+    this.localAnchorX = local.x;
+    this.localAnchorY = local.y;
+    this.force = optionalNonNegative('maxForce', options.maxForce, 1000 * options.body.mass);
+    this.springHertz = options.hertz === undefined ? 5 : requirePositive('hertz', options.hertz);
+    this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0.7);
+  }
+
+  /** The dragged body. */
+  get body(): Body {
+    return this.bodyB;
+  }
+
+  /** Where the body is pulled (world point, m); a reused view. Setting it wakes the body. */
+  get target(): Readonly<Vec2> {
+    this.targetView.x = this.targetX;
+    this.targetView.y = this.targetY;
+    return this.targetView;
+  }
+
+  set target(value: Vec2Like) {
+    requireVector('target', value);
+    this.targetX = value.x;
+    this.targetY = value.y;
+    this.bodyB.wake();
+  }
+
+  /** Strongest pull (N). Setting it wakes the body. */
+  get maxForce(): number {
+    return this.force;
+  }
+
+  set maxForce(value: number) {
+    this.force = requireNonNegative('maxForce', value);
+    this.bodyB.wake();
+  }
+
+  /** Stiffness of the pull (Hz, > 0). */
+  get hertz(): number {
+    return this.springHertz;
+  }
+
+  set hertz(value: number) {
+    this.springHertz = requirePositive('hertz', value);
+    this.bodyB.wake();
+  }
+
+  /** Damping ratio of the pull. */
+  get dampingRatio(): number {
+    return this.springDampingRatio;
+  }
+
+  set dampingRatio(value: number) {
+    this.springDampingRatio = requireNonNegative('dampingRatio', value);
+    this.bodyB.wake();
+  }
+
+  /** @internal */
+  resetImpulses(): void {
+    this.linearImpulseX = 0;
+    this.linearImpulseY = 0;
+    this.angularImpulse = 0;
+  }
+
+  /** @internal */
+  prepare(step: JointStep): void {
+    this.prepareBodies(step);
+    // One body: the "A" side is the fixed target.
+    this.stateA = 0;
+    this.invMassA = 0;
+    this.invInertiaA = 0;
+    const b = this.bodyB;
+    const t = b.transform;
+    const lx = this.localAnchorX - b.localCenterX;
+    const ly = this.localAnchorY - b.localCenterY;
+    this.rBx = t.c * lx - t.s * ly;
+    this.rBy = t.s * lx + t.c * ly;
+    this.deltaCenterX = b.centerX - this.targetX;
+    this.deltaCenterY = b.centerY - this.targetY;
+    this.linearSoftness.set(this.springHertz, this.springDampingRatio, step.h);
+    this.angularSoftness.set(ANGULAR_HERTZ, ANGULAR_DAMPING_RATIO, step.h);
+  }
+
+  /** @internal */
+  warmStart(s: Float64Array): void {
+    const b = this.stateB;
+    const mB = this.invMassB;
+    const iB = this.invInertiaB;
+    const rBx = s[b + Q_C]! * this.rBx - s[b + Q_S]! * this.rBy;
+    const rBy = s[b + Q_S]! * this.rBx + s[b + Q_C]! * this.rBy;
+    const px = this.linearImpulseX;
+    const py = this.linearImpulseY;
+    s[b + V_X] += mB * px;
+    s[b + V_Y] += mB * py;
+    s[b + W] += iB * (rBx * py - rBy * px + this.angularImpulse);
+  }
+
+  /** @internal */
+  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
+    const b = this.stateB;
+    const mB = this.invMassB;
+    const iB = this.invInertiaB;
+    let vBx = s[b + V_X]!;
+    let vBy = s[b + V_Y]!;
+    let wB = s[b + W]!;
+
+    // A soft brake on the spin, with no target angle.
+    {
+      const soft = this.angularSoftness;
+      let impulse = iB > 0 ? -wB / iB : 0;
+      impulse = soft.massScale * impulse - soft.impulseScale * this.angularImpulse;
+      this.angularImpulse += impulse;
+      wB += iB * impulse;
+    }
+
+    // The spring to the target; always soft, in both passes (it is a spring, not a rigid link).
+    {
+      const soft = this.linearSoftness;
+      const qc = s[b + Q_C]!;
+      const qs = s[b + Q_S]!;
+      const rBx = qc * this.rBx - qs * this.rBy;
+      const rBy = qs * this.rBx + qc * this.rBy;
+      const cdotX = vBx - wB * rBy;
+      const cdotY = vBy + wB * rBx;
+      const sepX = s[b + DP_X]! + rBx + this.deltaCenterX;
+      const sepY = s[b + DP_Y]! + rBy + this.deltaCenterY;
+      const k11 = mB + rBy * rBy * iB;
+      const k12 = -rBy * rBx * iB;
+      const k22 = mB + rBx * rBx * iB;
+      solve22(k11, k12, k22, cdotX + soft.biasRate * sepX, cdotY + soft.biasRate * sepY, scratch);
+      const oldX = this.linearImpulseX;
+      const oldY = this.linearImpulseY;
+      let accX = oldX - soft.massScale * scratch[0]! - soft.impulseScale * oldX;
+      let accY = oldY - soft.massScale * scratch[1]! - soft.impulseScale * oldY;
+      const maxImpulse = this.force * step.h;
+      const magnitude = Math.sqrt(accX * accX + accY * accY);
+      if (magnitude > maxImpulse) {
+        const scale = maxImpulse / magnitude;
+        accX *= scale;
+        accY *= scale;
+      }
+      this.linearImpulseX = accX;
+      this.linearImpulseY = accY;
+      const px = accX - oldX;
+      const py = accY - oldY;
+      vBx += mB * px;
+      vBy += mB * py;
+      wB += iB * (rBx * py - rBy * px);
+    }
+
+    s[b + V_X] = vBx;
+    s[b + V_Y] = vBy;
+    s[b + W] = wB;
+
+    if (!useBias) {
+      this.stepImpulseX += this.linearImpulseX;
+      this.stepImpulseY += this.linearImpulseY;
+      this.stepAngularImpulse += this.angularImpulse;
+    }
+  }
+}
+
+function optionalUserData<UserData>(options: MouseJointOptions<UserData>): { userData?: UserData } {
+  return options.userData === undefined ? {} : { userData: options.userData };
+}

@@ -1,0 +1,484 @@
+import { PhysicalError } from '../../core/errors.ts';
+import { requireFinite, requireNonNegative } from '../../core/validate.ts';
+import type { Vec2Like } from '../../math/vec2.ts';
+import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { Softness } from '../softness.ts';
+import {
+  Joint,
+  optionalFinite,
+  optionalNonNegative,
+  requireBodies,
+  requireOrdered,
+  requirePoint,
+  solve22,
+  type JointOptions,
+  type JointStep,
+} from './joint.ts';
+
+/** Options of a {@link PrismaticJoint}: a slider along an axis. */
+export interface PrismaticJointOptions<UserData = unknown> extends JointOptions<UserData> {
+  /** A point on the slide line (world, m); the translation is 0 there. */
+  readonly anchor: Vec2Like;
+  /** Direction of the slide (world, any length but zero); it turns with body A. */
+  readonly axis: Vec2Like;
+  /** Keep the translation between lower and upper. Default false. */
+  readonly enableLimit?: boolean;
+  /** Lowest translation (m). Default 0. */
+  readonly lower?: number;
+  /** Highest translation (m). Default 0. */
+  readonly upper?: number;
+  /** Drive the sliding at motorSpeed with at most maxMotorForce. Default false. */
+  readonly enableMotor?: boolean;
+  /** Target speed of B relative to A along the axis (m/s). Default 0. */
+  readonly motorSpeed?: number;
+  /** Strongest force the motor may use (N, >= 0). Default 0. */
+  readonly maxMotorForce?: number;
+  /** A spring toward translation 0. Default false. */
+  readonly enableSpring?: boolean;
+  /** Spring frequency (Hz, >= 0). Default 0. */
+  readonly hertz?: number;
+  /** Spring damping ratio (>= 0). Default 0. */
+  readonly dampingRatio?: number;
+}
+
+const scratch = new Float64Array(2);
+
+/**
+ * A slider: body B moves along an axis fixed in body A and cannot turn relative to it; optional
+ * translation limits, motor and spring. Box2D v3's prismatic joint (Catto): the axial rows (spring,
+ * motor, limits) first, then a 2x2 block for the perpendicular offset and the relative angle.
+ */
+export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
+  readonly type = 'prismatic' as const;
+  /** @internal Anchors in each body's frame (relative to the body origin, m) and A's axis. */
+  localAnchorAX = 0;
+  localAnchorAY = 0;
+  localAnchorBX = 0;
+  localAnchorBY = 0;
+  localAxisX = 1;
+  localAxisY = 0;
+  /** @internal angleB - angleA at creation (rad). */
+  referenceAngle = 0;
+  private limitEnabled: boolean;
+  private lowerLimit: number;
+  private upperLimit: number;
+  private motorEnabled: boolean;
+  private speed: number;
+  private maxForce: number;
+  private springEnabled: boolean;
+  private springHertz: number;
+  private springDampingRatio: number;
+  private rAx = 0;
+  private rAy = 0;
+  private rBx = 0;
+  private rBy = 0;
+  private axisX = 1;
+  private axisY = 0;
+  private deltaCenterX = 0;
+  private deltaCenterY = 0;
+  private deltaAngle = 0;
+  private readonly springSoftness = new Softness();
+  private perpendicularImpulse = 0;
+  private angularImpulse = 0;
+  private springImpulse = 0;
+  private motorImpulse = 0;
+  private lowerImpulse = 0;
+  private upperImpulse = 0;
+
+  constructor(options: PrismaticJointOptions<UserData>) {
+    requireBodies(options);
+    const anchor = requirePoint('anchor', options.anchor);
+    const axis = requirePoint('axis', options.axis);
+    const axisLength = Math.hypot(axis.x, axis.y);
+    if (!(axisLength > 0)) throw new PhysicalError('axis', 'must not be the zero vector.');
+    super(options, options.bodyA, options.bodyB);
+    const localA = this.bodyA.getLocalPoint(anchor);
+    const localB = this.bodyB.getLocalPoint(anchor);
+    this.localAnchorAX = localA.x;
+    this.localAnchorAY = localA.y;
+    this.localAnchorBX = localB.x;
+    this.localAnchorBY = localB.y;
+    const { c, s } = this.bodyA.transform;
+    const ux = axis.x / axisLength;
+    const uy = axis.y / axisLength;
+    this.localAxisX = c * ux + s * uy;
+    this.localAxisY = -s * ux + c * uy;
+    this.referenceAngle = this.bodyB.angle - this.bodyA.angle;
+    this.limitEnabled = options.enableLimit ?? false;
+    this.lowerLimit = optionalFinite('lower', options.lower, 0);
+    this.upperLimit = optionalFinite('upper', options.upper, 0);
+    requireOrdered('lower', this.lowerLimit, 'upper', this.upperLimit);
+    this.motorEnabled = options.enableMotor ?? false;
+    this.speed = optionalFinite('motorSpeed', options.motorSpeed, 0);
+    this.maxForce = optionalNonNegative('maxMotorForce', options.maxMotorForce, 0);
+    this.springEnabled = options.enableSpring ?? false;
+    this.springHertz = optionalNonNegative('hertz', options.hertz, 0);
+    this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0);
+  }
+
+  /** Translation of B's anchor from A's along the axis (m). */
+  get translation(): number {
+    const a = this.bodyA.getWorldPoint({ x: this.localAnchorAX, y: this.localAnchorAY });
+    const b = this.bodyB.getWorldPoint({ x: this.localAnchorBX, y: this.localAnchorBY });
+    const { c, s } = this.bodyA.transform;
+    const ax = c * this.localAxisX - s * this.localAxisY;
+    const ay = s * this.localAxisX + c * this.localAxisY;
+    return (b.x - a.x) * ax + (b.y - a.y) * ay;
+  }
+
+  /** Whether the translation limits hold. Changing it wakes the bodies. */
+  get enableLimit(): boolean {
+    return this.limitEnabled;
+  }
+
+  set enableLimit(value: boolean) {
+    if (value === this.limitEnabled) return;
+    this.limitEnabled = value;
+    this.lowerImpulse = 0;
+    this.upperImpulse = 0;
+    this.wakeBodies();
+  }
+
+  /** Lowest translation (m); must not exceed upper (use setLimits to move both). */
+  get lower(): number {
+    return this.lowerLimit;
+  }
+
+  set lower(value: number) {
+    this.setLimits(value, this.upperLimit);
+  }
+
+  /** Highest translation (m). */
+  get upper(): number {
+    return this.upperLimit;
+  }
+
+  set upper(value: number) {
+    this.setLimits(this.lowerLimit, value);
+  }
+
+  /** Sets both translation limits (m); wakes the bodies. */
+  setLimits(lower: number, upper: number): void {
+    requireFinite('lower', lower);
+    requireFinite('upper', upper);
+    requireOrdered('lower', lower, 'upper', upper);
+    this.lowerLimit = lower;
+    this.upperLimit = upper;
+    this.wakeBodies();
+  }
+
+  /** Whether the motor drives the joint. Changing it wakes the bodies. */
+  get enableMotor(): boolean {
+    return this.motorEnabled;
+  }
+
+  set enableMotor(value: boolean) {
+    if (value === this.motorEnabled) return;
+    this.motorEnabled = value;
+    this.motorImpulse = 0;
+    this.wakeBodies();
+  }
+
+  /** Target speed along the axis (m/s). Setting it wakes the bodies. */
+  get motorSpeed(): number {
+    return this.speed;
+  }
+
+  set motorSpeed(value: number) {
+    this.speed = requireFinite('motorSpeed', value);
+    this.wakeBodies();
+  }
+
+  /** Strongest motor force (N). Setting it wakes the bodies. */
+  get maxMotorForce(): number {
+    return this.maxForce;
+  }
+
+  set maxMotorForce(value: number) {
+    this.maxForce = requireNonNegative('maxMotorForce', value);
+    this.wakeBodies();
+  }
+
+  /** Force the motor applied in the last sub-step (N). */
+  get motorForce(): number {
+    return this.motorImpulse / this.subStepDuration;
+  }
+
+  /** Whether the spring acts. Changing it wakes the bodies. */
+  get enableSpring(): boolean {
+    return this.springEnabled;
+  }
+
+  set enableSpring(value: boolean) {
+    if (value === this.springEnabled) return;
+    this.springEnabled = value;
+    this.springImpulse = 0;
+    this.wakeBodies();
+  }
+
+  /** Spring frequency (Hz). Setting it wakes the bodies. */
+  get hertz(): number {
+    return this.springHertz;
+  }
+
+  set hertz(value: number) {
+    this.springHertz = requireNonNegative('hertz', value);
+    this.wakeBodies();
+  }
+
+  /** Spring damping ratio. Setting it wakes the bodies. */
+  get dampingRatio(): number {
+    return this.springDampingRatio;
+  }
+
+  set dampingRatio(value: number) {
+    this.springDampingRatio = requireNonNegative('dampingRatio', value);
+    this.wakeBodies();
+  }
+
+  /** @internal */
+  resetImpulses(): void {
+    this.perpendicularImpulse = 0;
+    this.angularImpulse = 0;
+    this.springImpulse = 0;
+    this.motorImpulse = 0;
+    this.lowerImpulse = 0;
+    this.upperImpulse = 0;
+  }
+
+  /** @internal */
+  prepare(step: JointStep): void {
+    this.prepareBodies(step);
+    const a = this.bodyA;
+    const b = this.bodyB;
+    const ta = a.transform;
+    const tb = b.transform;
+    const lAx = this.localAnchorAX - a.localCenterX;
+    const lAy = this.localAnchorAY - a.localCenterY;
+    const lBx = this.localAnchorBX - b.localCenterX;
+    const lBy = this.localAnchorBY - b.localCenterY;
+    this.rAx = ta.c * lAx - ta.s * lAy;
+    this.rAy = ta.s * lAx + ta.c * lAy;
+    this.rBx = tb.c * lBx - tb.s * lBy;
+    this.rBy = tb.s * lBx + tb.c * lBy;
+    this.axisX = ta.c * this.localAxisX - ta.s * this.localAxisY;
+    this.axisY = ta.s * this.localAxisX + ta.c * this.localAxisY;
+    this.deltaCenterX = b.centerX - a.centerX;
+    this.deltaCenterY = b.centerY - a.centerY;
+    this.deltaAngle = b.angleValue - a.angleValue - this.referenceAngle;
+    this.springSoftness.set(this.springHertz, this.springDampingRatio, step.h);
+    if (!this.springEnabled) this.springImpulse = 0;
+    if (!this.motorEnabled) this.motorImpulse = 0;
+    if (!this.limitEnabled) {
+      this.lowerImpulse = 0;
+      this.upperImpulse = 0;
+    }
+  }
+
+  /** @internal */
+  warmStart(s: Float64Array): void {
+    const a = this.stateA;
+    const b = this.stateB;
+    const qAc = s[a + Q_C]!;
+    const qAs = s[a + Q_S]!;
+    const qBc = s[b + Q_C]!;
+    const qBs = s[b + Q_S]!;
+    const rAx = qAc * this.rAx - qAs * this.rAy;
+    const rAy = qAs * this.rAx + qAc * this.rAy;
+    const rBx = qBc * this.rBx - qBs * this.rBy;
+    const rBy = qBs * this.rBx + qBc * this.rBy;
+    const dx = s[b + DP_X]! - s[a + DP_X]! + this.deltaCenterX + rBx - rAx;
+    const dy = s[b + DP_Y]! - s[a + DP_Y]! + this.deltaCenterY + rBy - rAy;
+    const ax = qAc * this.axisX - qAs * this.axisY;
+    const ay = qAs * this.axisX + qAc * this.axisY;
+    // Lever arms of the axial and perpendicular rows (A's arm reaches B's anchor: d + rA).
+    const a1 = (dx + rAx) * ay - (dy + rAy) * ax;
+    const a2 = rBx * ay - rBy * ax;
+    const px = -ay;
+    const py = ax;
+    const s1 = (dx + rAx) * py - (dy + rAy) * px;
+    const s2 = rBx * py - rBy * px;
+    const axial = this.springImpulse + this.motorImpulse + this.lowerImpulse - this.upperImpulse;
+    const perpendicular = this.perpendicularImpulse;
+    const angular = this.angularImpulse;
+    const fx = axial * ax + perpendicular * px;
+    const fy = axial * ay + perpendicular * py;
+    const lA = axial * a1 + perpendicular * s1 + angular;
+    const lB = axial * a2 + perpendicular * s2 + angular;
+    s[a + V_X] -= this.invMassA * fx;
+    s[a + V_Y] -= this.invMassA * fy;
+    s[a + W] -= this.invInertiaA * lA;
+    s[b + V_X] += this.invMassB * fx;
+    s[b + V_Y] += this.invMassB * fy;
+    s[b + W] += this.invInertiaB * lB;
+  }
+
+  /** @internal */
+  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
+    const a = this.stateA;
+    const b = this.stateB;
+    const mA = this.invMassA;
+    const iA = this.invInertiaA;
+    const mB = this.invMassB;
+    const iB = this.invInertiaB;
+    let vAx = s[a + V_X]!;
+    let vAy = s[a + V_Y]!;
+    let wA = s[a + W]!;
+    let vBx = s[b + V_X]!;
+    let vBy = s[b + V_Y]!;
+    let wB = s[b + W]!;
+    const qAc = s[a + Q_C]!;
+    const qAs = s[a + Q_S]!;
+    const qBc = s[b + Q_C]!;
+    const qBs = s[b + Q_S]!;
+    const rAx = qAc * this.rAx - qAs * this.rAy;
+    const rAy = qAs * this.rAx + qAc * this.rAy;
+    const rBx = qBc * this.rBx - qBs * this.rBy;
+    const rBy = qBs * this.rBx + qBc * this.rBy;
+    const dx = s[b + DP_X]! - s[a + DP_X]! + this.deltaCenterX + rBx - rAx;
+    const dy = s[b + DP_Y]! - s[a + DP_Y]! + this.deltaCenterY + rBy - rAy;
+    const ax = qAc * this.axisX - qAs * this.axisY;
+    const ay = qAs * this.axisX + qAc * this.axisY;
+    const translation = ax * dx + ay * dy;
+    const a1 = (dx + rAx) * ay - (dy + rAy) * ax;
+    const a2 = rBx * ay - rBy * ax;
+    const kAxial = mA + mB + iA * a1 * a1 + iB * a2 * a2;
+    const axialMass = kAxial > 0 ? 1 / kAxial : 0;
+    const soft = step.softness;
+
+    if (this.springEnabled) {
+      const spring = this.springSoftness;
+      const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
+      const impulse =
+        -spring.massScale * axialMass * (cdot + spring.biasRate * translation) -
+        spring.impulseScale * this.springImpulse;
+      this.springImpulse += impulse;
+      vAx -= mA * impulse * ax;
+      vAy -= mA * impulse * ay;
+      wA -= iA * impulse * a1;
+      vBx += mB * impulse * ax;
+      vBy += mB * impulse * ay;
+      wB += iB * impulse * a2;
+    }
+
+    if (this.motorEnabled) {
+      const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
+      const impulse = axialMass * (this.speed - cdot);
+      const old = this.motorImpulse;
+      const maxImpulse = step.h * this.maxForce;
+      this.motorImpulse = Math.max(-maxImpulse, Math.min(old + impulse, maxImpulse));
+      const applied = this.motorImpulse - old;
+      vAx -= mA * applied * ax;
+      vAy -= mA * applied * ay;
+      wA -= iA * applied * a1;
+      vBx += mB * applied * ax;
+      vBy += mB * applied * ay;
+      wB += iB * applied * a2;
+    }
+
+    if (this.limitEnabled) {
+      // Lower: translation - lower >= 0.
+      {
+        const c = translation - this.lowerLimit;
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        if (c > 0) bias = c * step.inverseH;
+        else if (useBias) {
+          bias = soft.biasRate * c;
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+        }
+        const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
+        const impulse = -axialMass * massScale * (cdot + bias) - impulseScale * this.lowerImpulse;
+        const accumulated = Math.max(this.lowerImpulse + impulse, 0);
+        const applied = accumulated - this.lowerImpulse;
+        this.lowerImpulse = accumulated;
+        vAx -= mA * applied * ax;
+        vAy -= mA * applied * ay;
+        wA -= iA * applied * a1;
+        vBx += mB * applied * ax;
+        vBy += mB * applied * ay;
+        wB += iB * applied * a2;
+      }
+      // Upper: upper - translation >= 0, the same row with the sign turned.
+      {
+        const c = this.upperLimit - translation;
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        if (c > 0) bias = c * step.inverseH;
+        else if (useBias) {
+          bias = soft.biasRate * c;
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+        }
+        const cdot = ax * (vAx - vBx) + ay * (vAy - vBy) + a1 * wA - a2 * wB;
+        const impulse = -axialMass * massScale * (cdot + bias) - impulseScale * this.upperImpulse;
+        const accumulated = Math.max(this.upperImpulse + impulse, 0);
+        const applied = accumulated - this.upperImpulse;
+        this.upperImpulse = accumulated;
+        vAx += mA * applied * ax;
+        vAy += mA * applied * ay;
+        wA += iA * applied * a1;
+        vBx -= mB * applied * ax;
+        vBy -= mB * applied * ay;
+        wB -= iB * applied * a2;
+      }
+    }
+
+    // Perpendicular offset and relative angle, solved together.
+    {
+      const px = -ay;
+      const py = ax;
+      const s1 = (dx + rAx) * py - (dy + rAy) * px;
+      const s2 = rBx * py - rBy * px;
+      const cdot1 = px * (vBx - vAx) + py * (vBy - vAy) + s2 * wB - s1 * wA;
+      const cdot2 = wB - wA;
+      let bias1 = 0;
+      let bias2 = 0;
+      let massScale = 1;
+      let impulseScale = 0;
+      if (useBias) {
+        bias1 = soft.biasRate * (px * dx + py * dy);
+        bias2 = soft.biasRate * (this.deltaAngle + s[b + DELTA_ANGLE]! - s[a + DELTA_ANGLE]!);
+        massScale = soft.massScale;
+        impulseScale = soft.impulseScale;
+      }
+      const k11 = mA + mB + iA * s1 * s1 + iB * s2 * s2;
+      const k12 = iA * s1 + iB * s2;
+      let k22 = iA + iB;
+      if (k22 === 0) k22 = 1; // neither body turns: the angle row is idle
+      solve22(k11, k12, k22, cdot1 + bias1, cdot2 + bias2, scratch);
+      const impulse1 = -massScale * scratch[0]! - impulseScale * this.perpendicularImpulse;
+      const impulse2 = -massScale * scratch[1]! - impulseScale * this.angularImpulse;
+      this.perpendicularImpulse += impulse1;
+      this.angularImpulse += impulse2;
+      const fx = impulse1 * px;
+      const fy = impulse1 * py;
+      const lA = impulse1 * s1 + impulse2;
+      const lB = impulse1 * s2 + impulse2;
+      vAx -= mA * fx;
+      vAy -= mA * fy;
+      wA -= iA * lA;
+      vBx += mB * fx;
+      vBy += mB * fy;
+      wB += iB * lB;
+
+      if (!useBias) {
+        const axial =
+          this.springImpulse + this.motorImpulse + this.lowerImpulse - this.upperImpulse;
+        this.stepImpulseX += axial * ax + this.perpendicularImpulse * px;
+        this.stepImpulseY += axial * ay + this.perpendicularImpulse * py;
+        this.stepAngularImpulse += this.angularImpulse;
+      }
+    }
+
+    s[a + V_X] = vAx;
+    s[a + V_Y] = vAy;
+    s[a + W] = wA;
+    s[b + V_X] = vBx;
+    s[b + V_Y] = vBy;
+    s[b + W] = wB;
+  }
+}

@@ -1,0 +1,427 @@
+import { requireFinite, requireNonNegative } from '../../core/validate.ts';
+import type { Vec2Like } from '../../math/vec2.ts';
+import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { Softness } from '../softness.ts';
+import {
+  Joint,
+  optionalFinite,
+  optionalNonNegative,
+  requireBodies,
+  requireOrdered,
+  requirePoint,
+  solve22,
+  type JointOptions,
+  type JointStep,
+} from './joint.ts';
+
+/** Options of a {@link RevoluteJoint}: a hinge (a pin) through one world point. */
+export interface RevoluteJointOptions<UserData = unknown> extends JointOptions<UserData> {
+  /** The hinge, a world point (m); both bodies turn about it. */
+  readonly anchor: Vec2Like;
+  /** Keep the joint angle between lowerAngle and upperAngle. Default false. */
+  readonly enableLimit?: boolean;
+  /** Lowest joint angle (rad), measured from the bodies' angles at creation. Default 0. */
+  readonly lowerAngle?: number;
+  /** Highest joint angle (rad). Default 0. */
+  readonly upperAngle?: number;
+  /** Drive the relative rotation at motorSpeed with at most maxMotorTorque. Default false. */
+  readonly enableMotor?: boolean;
+  /** Target relative angular velocity of body B to body A (rad/s). Default 0. */
+  readonly motorSpeed?: number;
+  /** Strongest torque the motor may use (N m, >= 0). Default 0. */
+  readonly maxMotorTorque?: number;
+  /** A torsion spring toward the angle at creation. Default false. */
+  readonly enableSpring?: boolean;
+  /** Spring frequency (Hz, >= 0). Default 0 (no spring force). */
+  readonly hertz?: number;
+  /** Spring damping ratio (>= 0; 1 is critical). Default 0. */
+  readonly dampingRatio?: number;
+}
+
+const scratch = new Float64Array(2);
+
+/**
+ * A hinge: body B turns about a point fixed on both bodies, optionally within angle limits, driven
+ * by a motor or held by a torsion spring. Formulas after Box2D v3's revolute joint (Catto): a 2x2
+ * point constraint, plus one angular row each for the spring, the motor and the two limits, the
+ * limits speculative (they allow closing the gap within a sub-step) like contacts.
+ */
+export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
+  readonly type = 'revolute' as const;
+  /** @internal Anchor in each body's frame (relative to the body origin, m). */
+  localAnchorAX = 0;
+  localAnchorAY = 0;
+  localAnchorBX = 0;
+  localAnchorBY = 0;
+  /** @internal angleB - angleA at creation (rad). */
+  referenceAngle = 0;
+  private limitEnabled: boolean;
+  private lower: number;
+  private upper: number;
+  private motorEnabled: boolean;
+  private speed: number;
+  private maxTorque: number;
+  private springEnabled: boolean;
+  private springHertz: number;
+  private springDampingRatio: number;
+  // Solver state of the step.
+  private rAx = 0;
+  private rAy = 0;
+  private rBx = 0;
+  private rBy = 0;
+  private deltaCenterX = 0;
+  private deltaCenterY = 0;
+  private deltaAngle = 0;
+  private axialMass = 0;
+  private readonly springSoftness = new Softness();
+  // Accumulated impulses (warm-started).
+  private linearImpulseX = 0;
+  private linearImpulseY = 0;
+  private springImpulse = 0;
+  private motorImpulse = 0;
+  private lowerImpulse = 0;
+  private upperImpulse = 0;
+
+  constructor(options: RevoluteJointOptions<UserData>) {
+    requireBodies(options);
+    const anchor = requirePoint('anchor', options.anchor);
+    super(options, options.bodyA, options.bodyB);
+    const localA = this.bodyA.getLocalPoint(anchor);
+    const localB = this.bodyB.getLocalPoint(anchor);
+    this.localAnchorAX = localA.x;
+    this.localAnchorAY = localA.y;
+    this.localAnchorBX = localB.x;
+    this.localAnchorBY = localB.y;
+    this.referenceAngle = this.bodyB.angle - this.bodyA.angle;
+    this.limitEnabled = options.enableLimit ?? false;
+    this.lower = optionalFinite('lowerAngle', options.lowerAngle, 0);
+    this.upper = optionalFinite('upperAngle', options.upperAngle, 0);
+    requireOrdered('lowerAngle', this.lower, 'upperAngle', this.upper);
+    this.motorEnabled = options.enableMotor ?? false;
+    this.speed = optionalFinite('motorSpeed', options.motorSpeed, 0);
+    this.maxTorque = optionalNonNegative('maxMotorTorque', options.maxMotorTorque, 0);
+    this.springEnabled = options.enableSpring ?? false;
+    this.springHertz = optionalNonNegative('hertz', options.hertz, 0);
+    this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0);
+  }
+
+  /** Current joint angle (rad): angle of B minus angle of A, minus that difference at creation. */
+  get angle(): number {
+    return this.bodyB.angle - this.bodyA.angle - this.referenceAngle;
+  }
+
+  /** Relative angular velocity of B to A (rad/s). */
+  get angularSpeed(): number {
+    return this.bodyB.angularVelocity - this.bodyA.angularVelocity;
+  }
+
+  /** Whether the angle limits hold. Changing it wakes the bodies. */
+  get enableLimit(): boolean {
+    return this.limitEnabled;
+  }
+
+  set enableLimit(value: boolean) {
+    if (value === this.limitEnabled) return;
+    this.limitEnabled = value;
+    this.lowerImpulse = 0;
+    this.upperImpulse = 0;
+    this.wakeBodies();
+  }
+
+  /** Lowest joint angle (rad); must not exceed upperAngle (use setLimits to move both). */
+  get lowerAngle(): number {
+    return this.lower;
+  }
+
+  set lowerAngle(value: number) {
+    this.setLimits(value, this.upper);
+  }
+
+  /** Highest joint angle (rad). */
+  get upperAngle(): number {
+    return this.upper;
+  }
+
+  set upperAngle(value: number) {
+    this.setLimits(this.lower, value);
+  }
+
+  /** Sets both angle limits (rad) at once; wakes the bodies. */
+  setLimits(lowerAngle: number, upperAngle: number): void {
+    requireFinite('lowerAngle', lowerAngle);
+    requireFinite('upperAngle', upperAngle);
+    requireOrdered('lowerAngle', lowerAngle, 'upperAngle', upperAngle);
+    this.lower = lowerAngle;
+    this.upper = upperAngle;
+    this.wakeBodies();
+  }
+
+  /** Whether the motor drives the joint. Changing it wakes the bodies. */
+  get enableMotor(): boolean {
+    return this.motorEnabled;
+  }
+
+  set enableMotor(value: boolean) {
+    if (value === this.motorEnabled) return;
+    this.motorEnabled = value;
+    this.motorImpulse = 0;
+    this.wakeBodies();
+  }
+
+  /** Target relative angular velocity (rad/s). Setting it wakes the bodies. */
+  get motorSpeed(): number {
+    return this.speed;
+  }
+
+  set motorSpeed(value: number) {
+    this.speed = requireFinite('motorSpeed', value);
+    this.wakeBodies();
+  }
+
+  /** Strongest motor torque (N m). Setting it wakes the bodies. */
+  get maxMotorTorque(): number {
+    return this.maxTorque;
+  }
+
+  set maxMotorTorque(value: number) {
+    this.maxTorque = requireNonNegative('maxMotorTorque', value);
+    this.wakeBodies();
+  }
+
+  /** Torque the motor applied in the last sub-step (N m). */
+  get motorTorque(): number {
+    return this.motorImpulse / this.subStepDuration;
+  }
+
+  /** Whether the torsion spring acts. Changing it wakes the bodies. */
+  get enableSpring(): boolean {
+    return this.springEnabled;
+  }
+
+  set enableSpring(value: boolean) {
+    if (value === this.springEnabled) return;
+    this.springEnabled = value;
+    this.springImpulse = 0;
+    this.wakeBodies();
+  }
+
+  /** Spring frequency (Hz). Setting it wakes the bodies. */
+  get hertz(): number {
+    return this.springHertz;
+  }
+
+  set hertz(value: number) {
+    this.springHertz = requireNonNegative('hertz', value);
+    this.wakeBodies();
+  }
+
+  /** Spring damping ratio. Setting it wakes the bodies. */
+  get dampingRatio(): number {
+    return this.springDampingRatio;
+  }
+
+  set dampingRatio(value: number) {
+    this.springDampingRatio = requireNonNegative('dampingRatio', value);
+    this.wakeBodies();
+  }
+
+  /** @internal */
+  resetImpulses(): void {
+    this.linearImpulseX = 0;
+    this.linearImpulseY = 0;
+    this.springImpulse = 0;
+    this.motorImpulse = 0;
+    this.lowerImpulse = 0;
+    this.upperImpulse = 0;
+  }
+
+  /** @internal */
+  prepare(step: JointStep): void {
+    this.prepareBodies(step);
+    const a = this.bodyA;
+    const b = this.bodyB;
+    const ta = a.transform;
+    const tb = b.transform;
+    // Lever arms from the centres of mass, in world orientation at the step's start; the sub-steps
+    // turn them by each body's rotation since (state Q_C, Q_S).
+    const lAx = this.localAnchorAX - a.localCenterX;
+    const lAy = this.localAnchorAY - a.localCenterY;
+    const lBx = this.localAnchorBX - b.localCenterX;
+    const lBy = this.localAnchorBY - b.localCenterY;
+    this.rAx = ta.c * lAx - ta.s * lAy;
+    this.rAy = ta.s * lAx + ta.c * lAy;
+    this.rBx = tb.c * lBx - tb.s * lBy;
+    this.rBy = tb.s * lBx + tb.c * lBy;
+    this.deltaCenterX = b.centerX - a.centerX;
+    this.deltaCenterY = b.centerY - a.centerY;
+    this.deltaAngle = b.angleValue - a.angleValue - this.referenceAngle;
+    const k = this.invInertiaA + this.invInertiaB;
+    this.axialMass = k > 0 ? 1 / k : 0;
+    this.springSoftness.set(this.springHertz, this.springDampingRatio, step.h);
+    if (!this.springEnabled) this.springImpulse = 0;
+    if (!this.motorEnabled) this.motorImpulse = 0;
+    if (!this.limitEnabled) {
+      this.lowerImpulse = 0;
+      this.upperImpulse = 0;
+    }
+  }
+
+  /** @internal */
+  warmStart(s: Float64Array): void {
+    const a = this.stateA;
+    const b = this.stateB;
+    const mA = this.invMassA;
+    const iA = this.invInertiaA;
+    const mB = this.invMassB;
+    const iB = this.invInertiaB;
+    const rAx = s[a + Q_C]! * this.rAx - s[a + Q_S]! * this.rAy;
+    const rAy = s[a + Q_S]! * this.rAx + s[a + Q_C]! * this.rAy;
+    const rBx = s[b + Q_C]! * this.rBx - s[b + Q_S]! * this.rBy;
+    const rBy = s[b + Q_S]! * this.rBx + s[b + Q_C]! * this.rBy;
+    const px = this.linearImpulseX;
+    const py = this.linearImpulseY;
+    const axial = this.springImpulse + this.motorImpulse + this.lowerImpulse - this.upperImpulse;
+    s[a + V_X] -= mA * px;
+    s[a + V_Y] -= mA * py;
+    s[a + W] -= iA * (rAx * py - rAy * px + axial);
+    s[b + V_X] += mB * px;
+    s[b + V_Y] += mB * py;
+    s[b + W] += iB * (rBx * py - rBy * px + axial);
+  }
+
+  /** @internal */
+  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
+    const a = this.stateA;
+    const b = this.stateB;
+    const mA = this.invMassA;
+    const iA = this.invInertiaA;
+    const mB = this.invMassB;
+    const iB = this.invInertiaB;
+    let vAx = s[a + V_X]!;
+    let vAy = s[a + V_Y]!;
+    let wA = s[a + W]!;
+    let vBx = s[b + V_X]!;
+    let vBy = s[b + V_Y]!;
+    let wB = s[b + W]!;
+    const jointAngle = this.deltaAngle + s[b + DELTA_ANGLE]! - s[a + DELTA_ANGLE]!;
+    const axialMass = this.axialMass;
+    const soft = step.softness;
+
+    if (this.springEnabled) {
+      const spring = this.springSoftness;
+      const bias = spring.biasRate * jointAngle;
+      const impulse =
+        -spring.massScale * axialMass * (wB - wA + bias) - spring.impulseScale * this.springImpulse;
+      this.springImpulse += impulse;
+      wA -= iA * impulse;
+      wB += iB * impulse;
+    }
+
+    if (this.motorEnabled) {
+      const impulse = -axialMass * (wB - wA - this.speed);
+      const old = this.motorImpulse;
+      const maxImpulse = step.h * this.maxTorque;
+      this.motorImpulse = Math.max(-maxImpulse, Math.min(old + impulse, maxImpulse));
+      const applied = this.motorImpulse - old;
+      wA -= iA * applied;
+      wB += iB * applied;
+    }
+
+    if (this.limitEnabled) {
+      // Lower limit: C = angle - lower >= 0.
+      {
+        const c = jointAngle - this.lower;
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        if (c > 0) bias = c * step.inverseH;
+        else if (useBias) {
+          bias = soft.biasRate * c;
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+        }
+        const impulse =
+          -axialMass * massScale * (wB - wA + bias) - impulseScale * this.lowerImpulse;
+        const accumulated = Math.max(this.lowerImpulse + impulse, 0);
+        const applied = accumulated - this.lowerImpulse;
+        this.lowerImpulse = accumulated;
+        wA -= iA * applied;
+        wB += iB * applied;
+      }
+      // Upper limit: C = upper - angle >= 0, the same row with the sign turned.
+      {
+        const c = this.upper - jointAngle;
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        if (c > 0) bias = c * step.inverseH;
+        else if (useBias) {
+          bias = soft.biasRate * c;
+          massScale = soft.massScale;
+          impulseScale = soft.impulseScale;
+        }
+        const impulse =
+          -axialMass * massScale * (wA - wB + bias) - impulseScale * this.upperImpulse;
+        const accumulated = Math.max(this.upperImpulse + impulse, 0);
+        const applied = accumulated - this.upperImpulse;
+        this.upperImpulse = accumulated;
+        wA += iA * applied;
+        wB -= iB * applied;
+      }
+    }
+
+    // The point constraint: both anchors at the same place.
+    {
+      const qAc = s[a + Q_C]!;
+      const qAs = s[a + Q_S]!;
+      const qBc = s[b + Q_C]!;
+      const qBs = s[b + Q_S]!;
+      const rAx = qAc * this.rAx - qAs * this.rAy;
+      const rAy = qAs * this.rAx + qAc * this.rAy;
+      const rBx = qBc * this.rBx - qBs * this.rBy;
+      const rBy = qBs * this.rBx + qBc * this.rBy;
+      const cdotX = vBx - wB * rBy - (vAx - wA * rAy);
+      const cdotY = vBy + wB * rBx - (vAy + wA * rAx);
+      let biasX = 0;
+      let biasY = 0;
+      let massScale = 1;
+      let impulseScale = 0;
+      if (useBias) {
+        const sepX = s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + this.deltaCenterX;
+        const sepY = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + this.deltaCenterY;
+        biasX = soft.biasRate * sepX;
+        biasY = soft.biasRate * sepY;
+        massScale = soft.massScale;
+        impulseScale = soft.impulseScale;
+      }
+      const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+      const k12 = -rAy * rAx * iA - rBy * rBx * iB;
+      const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+      solve22(k11, k12, k22, cdotX + biasX, cdotY + biasY, scratch);
+      const px = -massScale * scratch[0]! - impulseScale * this.linearImpulseX;
+      const py = -massScale * scratch[1]! - impulseScale * this.linearImpulseY;
+      this.linearImpulseX += px;
+      this.linearImpulseY += py;
+      vAx -= mA * px;
+      vAy -= mA * py;
+      wA -= iA * (rAx * py - rAy * px);
+      vBx += mB * px;
+      vBy += mB * py;
+      wB += iB * (rBx * py - rBy * px);
+    }
+
+    s[a + V_X] = vAx;
+    s[a + V_Y] = vAy;
+    s[a + W] = wA;
+    s[b + V_X] = vBx;
+    s[b + V_Y] = vBy;
+    s[b + W] = wB;
+
+    if (!useBias) {
+      this.stepImpulseX += this.linearImpulseX;
+      this.stepImpulseY += this.linearImpulseY;
+      this.stepAngularImpulse +=
+        this.springImpulse + this.motorImpulse + this.lowerImpulse - this.upperImpulse;
+    }
+  }
+}
