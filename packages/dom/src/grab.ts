@@ -1,73 +1,53 @@
-import type { Body } from '@physical/engine';
-
-/** Spring frequency (Hz) and damping ratio of a grab: firm, and without wobble. */
-export const GRAB_HERTZ = 5;
-export const GRAB_DAMPING_RATIO = 0.7;
-/** The grab's force limit, in multiples of the body's weight under standard gravity. */
-export const GRAB_MAX_FORCE_PER_WEIGHT = 1000;
+import { mouseJoint, type Body, type MouseJoint, type World } from '@physical/engine';
 
 /**
- * A pointer holding a body at a point: pulls that point toward the pointer with a soft spring
- * (frequency {@link GRAB_HERTZ}, damping ratio {@link GRAB_DAMPING_RATIO}), so the body swings
- * and collides while held, and keeps the velocity it had when let go.
+ * A pointer holding a body: the engine's mouse joint (Box2D v3's soft, force-limited pull)
+ * from the point the pointer pressed toward the pointer, so the body swings and collides while
+ * held and keeps its velocity when let go. Defaults: 5 Hz, damping ratio 0.7, at most 1000 times
+ * the body's mass in newtons.
  */
 export class Grab {
-  body: Body;
+  private readonly world: World;
+  private joint: MouseJoint;
   private readonly localX: number;
   private readonly localY: number;
-  private targetX: number;
-  private targetY: number;
-  private readonly point = { x: 0, y: 0 };
-  private readonly velocity = { x: 0, y: 0 };
-  private readonly force = { x: 0, y: 0 };
-  private readonly options = { point: this.point };
 
   /** Holds `body` at the world point (x, y) (m), which is also the first target. */
-  constructor(body: Body, x: number, y: number) {
-    this.body = body;
+  constructor(world: World, body: Body, x: number, y: number) {
+    this.world = world;
     const local = body.getLocalPoint({ x, y });
     this.localX = local.x;
     this.localY = local.y;
-    this.targetX = x;
-    this.targetY = y;
+    this.joint = world.addJoint(mouseJoint({ body, target: { x, y } }));
   }
 
-  /** Moves the target (m). */
+  /** The held body. */
+  get body(): Body {
+    return this.joint.body;
+  }
+
+  /** Moves the target (m); wakes the body. */
   setTarget(x: number, y: number): void {
-    this.targetX = x;
-    this.targetY = y;
-    this.body.wake();
+    this.joint.target = { x, y };
   }
 
-  /** Applies this step's spring force at the held point (call before each world step). */
-  apply(): void {
-    const body = this.body;
-    const mass = body.mass;
-    const omega = 2 * Math.PI * GRAB_HERTZ;
-    const point = body.getWorldPoint({ x: this.localX, y: this.localY }, this.point);
-    const velocity = body.getVelocityAt(point, this.velocity);
-    let fx =
-      mass *
-      (omega * omega * (this.targetX - point.x) - 2 * GRAB_DAMPING_RATIO * omega * velocity.x);
-    let fy =
-      mass *
-      (omega * omega * (this.targetY - point.y) - 2 * GRAB_DAMPING_RATIO * omega * velocity.y);
-    const limit = GRAB_MAX_FORCE_PER_WEIGHT * mass * 9.81;
-    const size = Math.hypot(fx, fy);
-    if (size > limit) {
-      fx *= limit / size;
-      fy *= limit / size;
-    }
-    this.force.x = fx;
-    this.force.y = fy;
-    body.applyForce(this.force, this.options);
-  }
-
-  /** Holds `body` instead, at the same local point (the element's body was rebuilt in place). */
+  /**
+   * Holds `body` instead, by the same local point and toward the same target (the element's
+   * body was rebuilt in place: it changed size or state).
+   */
   rebind(body: Body): void {
-    this.body = body;
+    const target = this.joint.target;
+    const targetX = target.x;
+    const targetY = target.y;
+    this.release();
+    this.joint = this.world.addJoint(
+      mouseJoint({ body, target: body.getWorldPoint({ x: this.localX, y: this.localY }) }),
+    );
+    this.joint.target = { x: targetX, y: targetY };
   }
 
-  /** Lets go. */
-  release(): void {}
+  /** Lets go (removing the body already took its joint away). */
+  release(): void {
+    if (this.joint.world === this.world) this.world.removeJoint(this.joint);
+  }
 }

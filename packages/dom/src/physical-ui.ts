@@ -519,7 +519,7 @@ export class PhysicalUI {
     if (item === undefined || !this.motionAllowed) return false;
     if (item.state !== 'free') this.setState(item, 'free');
     const [x, y] = this.clientToWorld(clientX, clientY);
-    this.grabs.set(pointerId, { grab: new Grab(item.body, x, y), item });
+    this.grabs.set(pointerId, { grab: new Grab(this.world, item.body, x, y), item });
     item.element.dataset['physical'] = 'dragging';
     this.loop.invalidate();
     return true;
@@ -570,6 +570,7 @@ export class PhysicalUI {
     const motion = this.motionAllowed;
     if (!motion) {
       this.input.cancelAll();
+      for (const entry of this.grabs.values()) entry.grab.release();
       this.grabs.clear();
       for (const item of this.items) if (item.state !== 'layout') this.setState(item, 'layout');
     }
@@ -591,7 +592,6 @@ export class PhysicalUI {
       item.prevAngle = body.angle;
       if (item.state === 'returning') this.springBack(item, dt, ppm);
     }
-    for (const entry of this.grabs.values()) entry.grab.apply();
     this.world.step(dt);
     for (const item of this.items) {
       if (item.state === 'returning' && this.hasArrived(item, ppm)) this.setState(item, 'layout');
