@@ -32,7 +32,8 @@ export type ReducedMotionPolicy = 'respect' | 'ignore';
 export interface PhysicalUIOptions {
   /**
    * Which elements become bodies: a selector matched inside the container (elements added later
-   * that match join by themselves), or a list of elements. Default: the container's children.
+   * that match join by themselves), or a list of elements (add more with `add`). Default: the
+   * container's children, and children added later.
    */
   readonly elements?: string | Iterable<HTMLElement>;
   /** CSS px per metre. Default 100: a 100 px button is a 1 m body. */
@@ -114,6 +115,8 @@ export class PhysicalUI {
   private readonly material: { density: number; friction: number; restitution: number };
   private readonly returnOmega: number;
   private readonly selector: string | null;
+  /** With no `elements` option, children added later join too. */
+  private readonly followChildren: boolean;
   private readonly items: Item[] = [];
   private readonly byElement = new Map<HTMLElement, Item>();
   private readonly walls = new ContainerWalls();
@@ -167,6 +170,7 @@ export class PhysicalUI {
 
     const elements = options.elements;
     this.selector = typeof elements === 'string' ? elements : null;
+    this.followChildren = elements === undefined;
     const initial =
       elements === undefined
         ? [...container.children].filter((child) => child instanceof HTMLElement)
@@ -729,14 +733,15 @@ export class PhysicalUI {
             }
           }
         }
-        if (this.selector === null) continue;
         for (const node of record.addedNodes) {
           if (!(node instanceof HTMLElement)) continue;
+          if (this.followChildren && node.parentNode === container) added.push(node);
+          if (this.selector === null) continue;
           if (node.matches(this.selector)) added.push(node);
           added.push(...node.querySelectorAll<HTMLElement>(this.selector));
         }
       }
-      const joining = added.filter((element) => container.contains(element));
+      const joining = [...new Set(added)].filter((element) => container.contains(element));
       if (joining.length > 0) this.addAll(joining);
     });
     mutations.observe(container, { childList: true, subtree: true });
