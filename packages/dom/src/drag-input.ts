@@ -1,4 +1,4 @@
-import { PointerVelocity } from './pointer-velocity.ts';
+import { PointerVelocity } from '@physical/canvas';
 
 /**
  * A press becomes a drag once the pointer moves this far (client CSS px) from where it went

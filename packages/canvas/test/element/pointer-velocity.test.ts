@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { PointerVelocity, VELOCITY_WINDOW_MS } from '../src/pointer-velocity.ts';
+import { PointerVelocity, VELOCITY_WINDOW_MS } from '../../src/index.ts';
 
 describe('PointerVelocity', () => {
   it('measures a steady fling over the last window, ignoring older moves', () => {
