@@ -180,7 +180,12 @@ export class PhysicalUI {
 
     this.watch();
     this.input.attach(container);
-    this.addAll(initial);
+    try {
+      this.addAll(initial);
+    } catch (error) {
+      this.destroy(); // an element it cannot use: leave nothing behind
+      throw error;
+    }
     if (options.released === true) this.release();
   }
 
@@ -713,6 +718,14 @@ export class PhysicalUI {
     };
     onDensity();
     undo.push(() => density?.removeEventListener('change', onDensity));
+
+    // Off screen, nothing is seen moving: no frames until the container scrolls back in.
+    const intersection = new IntersectionObserver((entries) => {
+      if (entries[entries.length - 1]!.isIntersecting) this.loop.resume('offscreen');
+      else this.loop.suspend('offscreen');
+    });
+    intersection.observe(container);
+    undo.push(() => intersection.disconnect());
 
     const onVisibility = (): void => {
       if (document.visibilityState === 'hidden') this.loop.suspend('hidden');
