@@ -336,7 +336,9 @@ for (const engine of engineIds) {
 }
 log(
   '- Scenes: tumbler uses a revolute motor (25 deg/s, max torque 1e8) where the engine has motors, ' +
-    'else a kinematic body at 25 deg/s; washer hit events only exist in box2d3-wasm.',
+    "else a kinematic body at 25 deg/s; washer hit events only exist in box2d3-wasm; spinner's " +
+    'paddle likewise (5 rad/s, unlimited torque), and its capsules and rounded paddle are ' +
+    'approximated where an engine lacks them (see the notes above).',
 );
 log();
 

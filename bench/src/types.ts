@@ -10,6 +10,18 @@ export type ShapeDesc =
       readonly cx: number;
       readonly cy: number;
       readonly angle: number;
+      /** Rounding radius (m) added around the box, as b2MakeRoundedBox; 0 or absent: sharp. */
+      readonly radius?: number;
+      readonly material?: MaterialDesc;
+    }
+  | {
+      /** Every point within `radius` of the segment between the two centres (b2Capsule). */
+      readonly kind: 'capsule';
+      readonly x1: number;
+      readonly y1: number;
+      readonly x2: number;
+      readonly y2: number;
+      readonly radius: number;
       readonly material?: MaterialDesc;
     }
   | {
@@ -57,6 +69,8 @@ export interface BodyDesc {
    * without motors make the body kinematic with angular velocity `speed` instead (and say so).
    */
   readonly motor?: { readonly speed: number; readonly maxTorque: number };
+  /** False: this body never sleeps (Box2D's bodyDef.enableSleep). Default true. */
+  readonly enableSleep?: boolean;
   /** Box2D's enableHitEvents on the body's shapes (only Box2D v3 has them). */
   readonly hitEvents?: boolean;
 }
@@ -175,4 +189,54 @@ export function hull(points: readonly (readonly [number, number])[]): [number, n
   lower.pop();
   upper.pop();
   return lower.concat(upper);
+}
+
+/**
+ * For engines without capsules or rounded boxes: the shape as a convex polygon of 8 vertices
+ * inscribed in it (a capsule's half circles by 4 points each; a rounded box with its corners cut
+ * between the arcs' ends). Other shapes are returned unchanged. Counter-clockwise (y up).
+ */
+export type SharpShapeDesc = Exclude<ShapeDesc, { readonly kind: 'capsule' }>;
+
+export function withoutRounding(shape: ShapeDesc): SharpShapeDesc {
+  if (shape.kind === 'capsule') {
+    const axis = Math.atan2(shape.y2 - shape.y1, shape.x2 - shape.x1);
+    const vertices: [number, number][] = [];
+    for (const [cx, cy, start] of [
+      [shape.x2, shape.y2, -Math.PI / 2],
+      [shape.x1, shape.y1, Math.PI / 2],
+    ] as const) {
+      for (let k = 0; k < 4; k++) {
+        const angle = axis + start + (k * Math.PI) / 3;
+        vertices.push([cx + shape.radius * Math.cos(angle), cy + shape.radius * Math.sin(angle)]);
+      }
+    }
+    return shape.material === undefined
+      ? { kind: 'polygon', vertices }
+      : { kind: 'polygon', vertices, material: shape.material };
+  }
+  if (shape.kind === 'box' && (shape.radius ?? 0) > 0) {
+    const r = shape.radius!;
+    const { hw, hh } = shape;
+    const local: [number, number][] = [
+      [hw + r, -hh],
+      [hw + r, hh],
+      [hw, hh + r],
+      [-hw, hh + r],
+      [-hw - r, hh],
+      [-hw - r, -hh],
+      [-hw, -hh - r],
+      [hw, -hh - r],
+    ];
+    const c = Math.cos(shape.angle);
+    const s = Math.sin(shape.angle);
+    const vertices = local.map(([x, y]): [number, number] => [
+      c * x - s * y + shape.cx,
+      s * x + c * y + shape.cy,
+    ]);
+    return shape.material === undefined
+      ? { kind: 'polygon', vertices }
+      : { kind: 'polygon', vertices, material: shape.material };
+  }
+  return shape;
 }

@@ -134,7 +134,7 @@ async function main(): Promise<void> {
     engine: engineId,
     scene: sceneName,
     settings: engine.settings,
-    notes: [...world.notes],
+    notes: [...(scene.notes === undefined ? [] : [scene.notes]), ...world.notes],
     bodies: scene.bodies.length,
     timedSteps,
     plannedSteps: scene.steps - 1,

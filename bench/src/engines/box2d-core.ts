@@ -8,7 +8,15 @@ import {
   type b2Body,
   type b2Shape,
 } from '@box2d/core';
-import { DT, materialOf, type Engine, type Pose, type ShapeDesc, type World } from '../types.ts';
+import {
+  DT,
+  materialOf,
+  withoutRounding,
+  type Engine,
+  type Pose,
+  type ShapeDesc,
+  type World,
+} from '../types.ts';
 
 const ITERATIONS = { velocityIterations: 8, positionIterations: 3 };
 
@@ -25,7 +33,11 @@ export const box2dCore: Engine = {
       dynamic: b2BodyType.b2_dynamicBody,
       kinematic: b2BodyType.b2_kinematicBody,
     };
-    const makeShape = (shape: ShapeDesc): b2Shape => {
+    const notes = new Set<string>();
+    const makeShape = (original: ShapeDesc): b2Shape => {
+      const shape = withoutRounding(original);
+      if (shape !== original)
+        notes.add('capsules and rounded boxes as inscribed 8-gons (no such shapes)');
       switch (shape.kind) {
         case 'box':
           return new b2PolygonShape().SetAsBox(
@@ -78,7 +90,7 @@ export const box2dCore: Engine = {
     }
     const velocity = { x: 0, y: 0 };
     return {
-      notes: [],
+      notes: [...notes],
       step() {
         world.Step(DT, ITERATIONS);
       },

@@ -5,6 +5,7 @@ import { dirname, join } from 'node:path';
 import {
   DT,
   materialOf,
+  withoutRounding,
   type Engine,
   type Pose,
   type SceneDesc,
@@ -55,7 +56,11 @@ function createWorld(b2: B2, scene: SceneDesc): World {
     kinematic: b2.b2_kinematicBody,
   };
   const vertexBuffer = b2._malloc(8 * 8);
-  const addShape = (body: B2Body, shape: ShapeDesc): void => {
+  const notes = new Set<string>();
+  const addShape = (body: B2Body, original: ShapeDesc): void => {
+    const shape = withoutRounding(original);
+    if (shape !== original)
+      notes.add('capsules and rounded boxes as inscribed 8-gons (no such shapes)');
     const m = materialOf(scene, shape);
     const fd = new b2.b2FixtureDef();
     fd.set_density(m.density);
@@ -119,7 +124,7 @@ function createWorld(b2: B2, scene: SceneDesc): World {
   }
   const velocity = new b2.b2Vec2(0, 0);
   return {
-    notes: [],
+    notes: [...notes],
     step() {
       world.Step(DT, VELOCITY_ITERATIONS, POSITION_ITERATIONS);
     },

@@ -49,16 +49,33 @@ function addShape(b2: B2, scene: SceneDesc, bodyId: BodyId, shape: ShapeDesc, hi
   def.enableHitEvents = hit;
   switch (shape.kind) {
     case 'box': {
+      const radius = shape.radius ?? 0;
       const polygon =
-        shape.cx === 0 && shape.cy === 0 && shape.angle === 0
-          ? b2.b2MakeBox(shape.hw, shape.hh)
-          : b2.b2MakeOffsetBox(
+        radius > 0
+          ? b2.b2MakeOffsetRoundedBox(
               shape.hw,
               shape.hh,
               vec(b2, shape.cx, shape.cy),
               b2.b2MakeRot(shape.angle),
-            );
+              radius,
+            )
+          : shape.cx === 0 && shape.cy === 0 && shape.angle === 0
+            ? b2.b2MakeBox(shape.hw, shape.hh)
+            : b2.b2MakeOffsetBox(
+                shape.hw,
+                shape.hh,
+                vec(b2, shape.cx, shape.cy),
+                b2.b2MakeRot(shape.angle),
+              );
       b2.b2CreatePolygonShape(bodyId, def, polygon);
+      break;
+    }
+    case 'capsule': {
+      const capsule = new b2.b2Capsule();
+      capsule.center1 = vec(b2, shape.x1, shape.y1);
+      capsule.center2 = vec(b2, shape.x2, shape.y2);
+      capsule.radius = shape.radius;
+      b2.b2CreateCapsuleShape(bodyId, def, capsule);
       break;
     }
     case 'polygon': {
@@ -103,6 +120,7 @@ function createWorld(b2: B2, scene: SceneDesc): World {
     def.linearVelocity = vec(b2, desc.vx ?? 0, desc.vy ?? 0);
     def.angularVelocity = desc.w ?? 0;
     if (desc.asleep) def.isAwake = false;
+    if (desc.enableSleep === false) def.enableSleep = false;
     const id = b2.b2CreateBody(worldId, def);
     for (const shape of desc.shapes) addShape(b2, scene, id, shape, desc.hitEvents ?? false);
     if (desc.type === 'static' && ground === null) ground = id;

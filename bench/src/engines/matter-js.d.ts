@@ -35,6 +35,7 @@ declare module 'matter-js' {
     };
     Bodies: {
       rectangle(x: number, y: number, w: number, h: number, options?: BodyOptions): MatterBody;
+      circle(x: number, y: number, radius: number, options?: BodyOptions): MatterBody;
       fromVertices(x: number, y: number, sets: Vector[][], options?: BodyOptions): MatterBody;
     };
     Body: {

@@ -3,6 +3,7 @@ import {
   DT,
   centroid,
   materialOf,
+  withoutRounding,
   type Engine,
   type Pose,
   type SceneDesc,
@@ -49,7 +50,7 @@ function createWorld(scene: SceneDesc): World {
 
   // A part at its world position (matter y-down pixels) for a body at (bx, by, angle) in Box2D's frame.
   const makePart = (
-    shape: ShapeDesc,
+    original: ShapeDesc,
     bx: number,
     by: number,
     bangle: number,
@@ -61,6 +62,9 @@ function createWorld(scene: SceneDesc): World {
       bx + cos * lx - sin * ly,
       by + sin * lx + cos * ly,
     ];
+    const shape = withoutRounding(original);
+    if (shape !== original)
+      notes.add('capsules and rounded boxes as inscribed 8-gons (no such shapes)');
     switch (shape.kind) {
       case 'box': {
         const [x, y] = toWorld(shape.cx, shape.cy);
@@ -102,7 +106,8 @@ function createWorld(scene: SceneDesc): World {
         );
       }
       case 'circle': {
-        throw new Error('circles are not used by the bench scenes');
+        const [x, y] = toWorld(shape.cx, shape.cy);
+        return Matter.Bodies.circle(x * SCALE, -y * SCALE, shape.radius * SCALE, options);
       }
     }
   };

@@ -1,6 +1,7 @@
 import {
   Body as P2Body,
   Box,
+  Capsule,
   Circle,
   Convex,
   Line,
@@ -12,13 +13,19 @@ import {
   DT,
   centroid,
   materialOf,
+  withoutRounding,
   type Engine,
   type Pose,
   type ShapeDesc,
   type World,
 } from '../types.ts';
 
-function area(shape: ShapeDesc): number {
+function area(original: ShapeDesc): number {
+  if (original.kind === 'capsule') {
+    const length = Math.hypot(original.x2 - original.x1, original.y2 - original.y1);
+    return 2 * original.radius * length + Math.PI * original.radius * original.radius;
+  }
+  const shape = withoutRounding(original);
   switch (shape.kind) {
     case 'box':
       return 4 * shape.hw * shape.hh;
@@ -57,6 +64,7 @@ export const p2Engine: Engine = {
     world.defaultContactMaterial.restitution = scene.material.restitution;
     const bodies: P2Body[] = [];
     let ground: P2Body | null = null;
+    let rounded = false;
     const types = { static: P2Body.STATIC, dynamic: P2Body.DYNAMIC, kinematic: P2Body.KINEMATIC };
     for (const desc of scene.bodies) {
       const mass =
@@ -74,10 +82,24 @@ export const p2Engine: Engine = {
         angularDamping: 0,
       });
       let offCentre = false;
-      for (const shape of desc.shapes) {
+      for (const original of desc.shapes) {
         let s: Shape;
         let offset: [number, number] = [0, 0];
         let angle = 0;
+        if (original.kind === 'capsule') {
+          // p2's capsule lies along its local x axis, centred.
+          const dx = original.x2 - original.x1;
+          const dy = original.y2 - original.y1;
+          s = new Capsule({ length: Math.hypot(dx, dy), radius: original.radius });
+          body.addShape(
+            s,
+            [(original.x1 + original.x2) / 2, (original.y1 + original.y2) / 2],
+            Math.atan2(dy, dx),
+          );
+          continue;
+        }
+        const shape = withoutRounding(original);
+        if (shape !== original) rounded = true;
         switch (shape.kind) {
           case 'box':
             s = new Box({ width: 2 * shape.hw, height: 2 * shape.hh });
@@ -121,9 +143,12 @@ export const p2Engine: Engine = {
       bodies.push(body);
     }
     return {
-      notes: scene.bodies.some((b) => b.shapes.length > 1 && b.type === 'dynamic')
-        ? ['compound bodies: pose is the centre of mass (adjustCenterOfMass)']
-        : [],
+      notes: [
+        ...(scene.bodies.some((b) => b.shapes.length > 1 && b.type === 'dynamic')
+          ? ['compound bodies: pose is the centre of mass (adjustCenterOfMass)']
+          : []),
+        ...(rounded ? ['rounded boxes as inscribed 8-gons (p2 has no rounded polygons)'] : []),
+      ],
       step() {
         world.step(DT);
       },

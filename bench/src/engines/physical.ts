@@ -22,6 +22,15 @@ function shapeOptions(scene: SceneDesc, shape: ShapeDesc): ShapeOptions {
         height: 2 * shape.hh,
         offset: { x: shape.cx, y: -shape.cy },
         angle: -shape.angle,
+        radius: shape.radius ?? 0,
+        ...material,
+      };
+    case 'capsule':
+      return {
+        type: 'capsule',
+        center1: { x: shape.x1, y: -shape.y1 },
+        center2: { x: shape.x2, y: -shape.y2 },
+        radius: shape.radius,
         ...material,
       };
     case 'polygon':
@@ -66,7 +75,9 @@ export const physical: Engine = {
       if (desc.motor) {
         type = 'kinematic';
         w = desc.motor.speed;
-        notes.push('no motors: container is a kinematic body turning at the motor speed');
+        notes.push(
+          'no motors yet (joints are being built on another branch): the motor-driven body is a kinematic body turning at the motor speed',
+        );
       }
       const body = new Body({
         type,
@@ -75,6 +86,7 @@ export const physical: Engine = {
         linearVelocity: { x: desc.vx ?? 0, y: -(desc.vy ?? 0) },
         angularVelocity: -w,
         asleep: desc.asleep ?? false,
+        allowSleep: desc.enableSleep ?? true,
         shapes: desc.shapes.map((s) => shapeOptions(scene, s)),
       });
       world.add(body);

@@ -8,7 +8,15 @@ import {
   type Body,
   type Shape,
 } from 'planck';
-import { DT, materialOf, type Engine, type Pose, type ShapeDesc, type World } from '../types.ts';
+import {
+  DT,
+  materialOf,
+  withoutRounding,
+  type Engine,
+  type Pose,
+  type ShapeDesc,
+  type World,
+} from '../types.ts';
 
 /** planck.js: Box2D v2.3's design in JavaScript. world.step(dt) uses its defaults (8 / 3). */
 export const planckEngine: Engine = {
@@ -18,7 +26,11 @@ export const planckEngine: Engine = {
     'planck defaults: 8 velocity / 3 position iterations, blockSolve on, warm starting on, continuousPhysics on, no sub-stepping; sleep per scene; revolute motor where the scene has one',
   create(scene) {
     const world = new PlanckWorld({ gravity: scene.gravity, allowSleep: scene.sleep });
-    const makeShape = (shape: ShapeDesc): Shape => {
+    const notes = new Set<string>();
+    const makeShape = (original: ShapeDesc): Shape => {
+      const shape = withoutRounding(original);
+      if (shape !== original)
+        notes.add('capsules and rounded boxes as inscribed 8-gons (no such shapes)');
       switch (shape.kind) {
         case 'box':
           return new BoxShape(shape.hw, shape.hh, { x: shape.cx, y: shape.cy }, shape.angle);
@@ -63,7 +75,7 @@ export const planckEngine: Engine = {
     }
     const velocity = { x: 0, y: 0 };
     return {
-      notes: [],
+      notes: [...notes],
       step() {
         world.step(DT);
       },

@@ -43,9 +43,21 @@ function createWorld(R: Rapier, scene: SceneDesc): World {
   const colliderDesc = (shape: ShapeDesc): InstanceType<typeof R.ColliderDesc> => {
     switch (shape.kind) {
       case 'box':
-        return R.ColliderDesc.cuboid(shape.hw, shape.hh)
+        return (
+          (shape.radius ?? 0) > 0
+            ? R.ColliderDesc.roundCuboid(shape.hw, shape.hh, shape.radius!)
+            : R.ColliderDesc.cuboid(shape.hw, shape.hh)
+        )
           .setTranslation(shape.cx, shape.cy)
           .setRotation(shape.angle);
+      case 'capsule': {
+        // Rapier's capsule runs along its local y axis: turn it onto the segment.
+        const dx = shape.x2 - shape.x1;
+        const dy = shape.y2 - shape.y1;
+        return R.ColliderDesc.capsule(0.5 * Math.hypot(dx, dy), shape.radius)
+          .setTranslation(0.5 * (shape.x1 + shape.x2), 0.5 * (shape.y1 + shape.y2))
+          .setRotation(Math.atan2(dy, dx) - Math.PI / 2);
+      }
       case 'polygon': {
         const desc = R.ColliderDesc.convexHull(new Float32Array(shape.vertices.flat()));
         if (!desc) throw new Error('rapier rejected a convex hull');
@@ -70,7 +82,7 @@ function createWorld(R: Rapier, scene: SceneDesc): World {
       .setRotation(desc.angle ?? 0)
       .setLinvel(desc.vx ?? 0, desc.vy ?? 0)
       .setAngvel(desc.w ?? 0)
-      .setCanSleep(scene.sleep);
+      .setCanSleep(scene.sleep && desc.enableSleep !== false);
     if (desc.asleep) bd.setSleeping(true);
     const body = world.createRigidBody(bd);
     for (const shape of desc.shapes) {

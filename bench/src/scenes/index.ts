@@ -6,6 +6,7 @@ import { largePyramid } from './large-pyramid.ts';
 import { manyPyramids } from './many-pyramids.ts';
 import { smash } from './smash.ts';
 import { sparse } from './sparse.ts';
+import { spinner } from './spinner.ts';
 import { tumbler } from './tumbler.ts';
 import { washer } from './washer.ts';
 
@@ -16,6 +17,7 @@ export const SCENES: Record<string, (options: SceneOptions) => SceneDesc> = {
   large_pyramid: largePyramid,
   many_pyramids: manyPyramids,
   smash,
+  spinner,
   tumbler,
   washer,
 };
@@ -23,9 +25,7 @@ export const SCENES: Record<string, (options: SceneOptions) => SceneDesc> = {
 /** Box2D v3's scenes that need features Physical does not have yet. */
 export const UNSUPPORTED: Record<string, string> = {
   joint_grid: 'needs joints/capsules (not yet in Physical): 19,800 revolute joints',
-  rain: 'needs joints/capsules (not yet in Physical): capsule ragdolls with revolute joints',
-  spinner:
-    'needs joints/capsules (not yet in Physical): capsules, a loop chain and a revolute motor',
+  rain: 'needs joints and filtering (not yet in Physical): capsule ragdolls with revolute joints',
 };
 
 /** Builds a scene by name; `sparse_<n>` is the scaling scene with n bodies. */

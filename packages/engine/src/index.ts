@@ -7,9 +7,17 @@ export type { RayCastHit } from './world/queries.ts';
 
 export { Body } from './dynamics/body.ts';
 export type { BodyOptions, BodyType } from './dynamics/body.ts';
-export { box, particle, polygon, regularPolygon, wall } from './dynamics/body-factories.ts';
+export {
+  box,
+  capsule,
+  particle,
+  polygon,
+  regularPolygon,
+  wall,
+} from './dynamics/body-factories.ts';
 export type {
   BoxOptions,
+  CapsuleOptions,
   ParticleOptions,
   PolygonOptions,
   RegularPolygonOptions,
@@ -18,6 +26,7 @@ export type {
 export { Shape } from './dynamics/shape.ts';
 export type {
   BoxShapeOptions,
+  CapsuleShapeOptions,
   CircleShapeOptions,
   Geometry,
   MaterialOptions,
@@ -25,6 +34,7 @@ export type {
   SegmentShapeOptions,
   ShapeOptions,
 } from './dynamics/shape.ts';
+export type { Capsule } from './geometry/capsule.ts';
 export type { Circle } from './geometry/circle.ts';
 export type { Polygon } from './geometry/polygon.ts';
 export type { Segment } from './geometry/segment.ts';

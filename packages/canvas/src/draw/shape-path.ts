@@ -2,7 +2,7 @@ import type { Geometry } from '@physical/engine';
 import type { Pose } from './pose.ts';
 
 /**
- * Adds the outline of a circle or polygon, at a body pose, to the context's current path, in
+ * Adds the outline of a circle, polygon or capsule, at a body pose, to the context's current path, in
  * world metres. A circle gets a radius line along the body's x axis so its rotation shows.
  * Segments have no area: see {@link appendSegmentPath}. Returns false for a segment.
  *
@@ -56,6 +56,21 @@ export function appendAreaPath(
       if (i === 0) context.moveTo(x + radius * Math.cos(from), y + radius * Math.sin(from));
       context.arc(x, y, radius, from, to);
     }
+    context.closePath();
+    return true;
+  }
+  if (geometry.kind === 'capsule') {
+    // Two half circles around the end centres, joined by the sides (the path's implicit lines).
+    const x1 = pose.x + cos * geometry.x1 - sin * geometry.y1;
+    const y1 = pose.y + sin * geometry.x1 + cos * geometry.y1;
+    const x2 = pose.x + cos * geometry.x2 - sin * geometry.y2;
+    const y2 = pose.y + sin * geometry.x2 + cos * geometry.y2;
+    const r = geometry.radius;
+    const axis = Math.atan2(y2 - y1, x2 - x1);
+    const side = axis + Math.PI / 2;
+    context.moveTo(x2 + r * Math.cos(side - Math.PI), y2 + r * Math.sin(side - Math.PI));
+    context.arc(x2, y2, r, side - Math.PI, side);
+    context.arc(x1, y1, r, side, side + Math.PI);
     context.closePath();
     return true;
   }

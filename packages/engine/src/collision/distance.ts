@@ -1,4 +1,5 @@
 import { MAX_POLYGON_VERTICES } from '../core/constants.ts';
+import type { Capsule } from '../geometry/capsule.ts';
 import type { Circle } from '../geometry/circle.ts';
 import type { Polygon } from '../geometry/polygon.ts';
 import type { Segment } from '../geometry/segment.ts';
@@ -65,6 +66,17 @@ export function setProxyFromCircle(proxy: DistanceProxy, circle: Circle): Distan
   proxy.vertices[1] = circle.centerY;
   proxy.count = 1;
   proxy.radius = circle.radius;
+  return proxy;
+}
+
+/** Fills `proxy` from a capsule: its two centres and its radius. Returns `proxy`. */
+export function setProxyFromCapsule(proxy: DistanceProxy, capsule: Capsule): DistanceProxy {
+  proxy.vertices[0] = capsule.x1;
+  proxy.vertices[1] = capsule.y1;
+  proxy.vertices[2] = capsule.x2;
+  proxy.vertices[3] = capsule.y2;
+  proxy.count = 2;
+  proxy.radius = capsule.radius;
   return proxy;
 }
 

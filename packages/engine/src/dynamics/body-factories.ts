@@ -1,6 +1,6 @@
 import { PhysicalError } from '../core/errors.ts';
 import { requireFinite, requirePositive } from '../core/validate.ts';
-import { MAX_POLYGON_VERTICES } from '../core/constants.ts';
+import { LINEAR_SLOP, MAX_POLYGON_VERTICES } from '../core/constants.ts';
 import type { Vec2Like } from '../math/vec2.ts';
 import { Body, type BodyOptions } from './body.ts';
 import type { MaterialOptions } from './shape.ts';
@@ -22,6 +22,20 @@ export interface BoxOptions<UserData = unknown> extends Common<UserData> {
   readonly width: number;
   /** Full height (m), > 0. */
   readonly height: number;
+  /**
+   * Rounds the corners (m), default 0: a rounded box, the shape of an app's buttons. The outline
+   * grows by `radius` on every side, so the body is `width + 2 radius` wide (as Box2D's
+   * b2MakeRoundedBox).
+   */
+  readonly radius?: number;
+}
+
+/** Options of {@link capsule}. */
+export interface CapsuleOptions<UserData = unknown> extends Common<UserData> {
+  /** Distance between the centres of the two rounded ends (m), >= 0.005; along the body's x axis. */
+  readonly length: number;
+  /** Radius of the rounded ends (m), > 0: the capsule is 2 radius thick, length + 2 radius long. */
+  readonly radius: number;
 }
 
 /** Options of {@link regularPolygon}. */
@@ -34,8 +48,13 @@ export interface RegularPolygonOptions<UserData = unknown> extends Common<UserDa
 
 /** Options of {@link polygon}. */
 export interface PolygonOptions<UserData = unknown> extends Common<UserData> {
-  /** 3 to 8 vertices of a convex polygon, relative to `position` (m), either winding. */
+  /**
+   * 3 to 256 points of a simple (non-self-intersecting) outline, relative to `position` (m),
+   * either winding, convex or concave.
+   */
   readonly vertices: readonly Vec2Like[];
+  /** Rounds the corners (m), default 0; only for a convex outline of at most 8 corners. */
+  readonly radius?: number;
 }
 
 /** Options of {@link wall}. */
@@ -73,7 +92,44 @@ export function particle<UserData = unknown>(options: ParticleOptions<UserData>)
 export function box<UserData = unknown>(options: BoxOptions<UserData>): Body<UserData> {
   return new Body<UserData>({
     ...options,
-    shapes: [{ type: 'box', width: options.width, height: options.height, ...material(options) }],
+    shapes: [
+      {
+        type: 'box',
+        width: options.width,
+        height: options.height,
+        radius: options.radius ?? 0,
+        ...material(options),
+      },
+    ],
+  });
+}
+
+/**
+ * A capsule body (a pill): two half discs of `radius` joined by a rectangle, the centres of the
+ * ends `length` apart along the body's x axis (horizontal until `angle` turns it), centred on its
+ * position. Mass and inertia are exact.
+ */
+export function capsule<UserData = unknown>(options: CapsuleOptions<UserData>): Body<UserData> {
+  const length = requireFinite('length', options.length);
+  if (!(length >= LINEAR_SLOP)) {
+    throw new PhysicalError(
+      'length',
+      `must be at least ${LINEAR_SLOP} m (the distance between the end centres), got ${length}. ` +
+        'For a round body use particle().',
+    );
+  }
+  const half = 0.5 * length;
+  return new Body<UserData>({
+    ...options,
+    shapes: [
+      {
+        type: 'capsule',
+        center1: { x: -half, y: 0 },
+        center2: { x: half, y: 0 },
+        radius: options.radius,
+        ...material(options),
+      },
+    ],
   });
 }
 
@@ -103,11 +159,23 @@ export function regularPolygon<UserData = unknown>(
   });
 }
 
-/** A convex polygon body from its vertices (relative to `position`). Concave lists are rejected. */
+/**
+ * A polygon body from its outline (relative to `position`, which stays the body origin). Any
+ * simple outline works: a concave one, or one with more than 8 corners, becomes several convex
+ * shapes on the one body (`body.shapes` lists them) with exactly the outline's mass, centre of
+ * mass and inertia. A self-intersecting outline is an error.
+ */
 export function polygon<UserData = unknown>(options: PolygonOptions<UserData>): Body<UserData> {
   return new Body<UserData>({
     ...options,
-    shapes: [{ type: 'polygon', vertices: options.vertices, ...material(options) }],
+    shapes: [
+      {
+        type: 'polygon',
+        vertices: options.vertices,
+        radius: options.radius ?? 0,
+        ...material(options),
+      },
+    ],
   });
 }
 

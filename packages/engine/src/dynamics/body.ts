@@ -6,6 +6,7 @@ import {
   requirePositive,
   requireVector,
 } from '../core/validate.ts';
+import { computeCapsuleMass } from '../geometry/capsule.ts';
 import { computeCircleMass } from '../geometry/circle.ts';
 import { MassData } from '../geometry/mass-data.ts';
 import { computePolygonMass } from '../geometry/polygon.ts';
@@ -16,7 +17,7 @@ import type { Contact } from './contact.ts';
 import type { BodyEvents } from './events.ts';
 import { Force, validateDuration, type ForceOptions, type TorqueOptions } from './force.ts';
 import type { Joint } from './joints/joint.ts';
-import { Shape, type ShapeOptions } from './shape.ts';
+import { createGeometries, Shape, type ShapeOptions } from './shape.ts';
 
 /**
  * - `'dynamic'`: moved by forces and collisions; needs a positive mass.
@@ -76,7 +77,8 @@ const scratchMass = new MassData();
 
 /**
  * A rigid body: the thesis's RigidBody2D. Build one, then `world.add(body)`; or use the helpers
- * {@link particle}, {@link box}, {@link regularPolygon}, {@link polygon} and {@link wall}.
+ * {@link particle}, {@link box}, {@link capsule}, {@link regularPolygon}, {@link polygon} and
+ * {@link wall}.
  *
  * Coordinates are SI in a y-down world by default (x right, y down, like the screen).
  */
@@ -196,7 +198,7 @@ export class Body<UserData = unknown> {
       throw new PhysicalError('shapes', 'must be an array of shape descriptions.');
     }
     for (let i = 0; i < shapes.length; i++) {
-      this.shapeList.push(this.createShape(shapes[i] as ShapeOptions, `shapes[${i}]`));
+      this.shapeList.push(...this.createShapes(shapes[i] as ShapeOptions, `shapes[${i}]`));
     }
     this.updateMassData();
     if (type !== 'static') {
@@ -438,20 +440,23 @@ export class Body<UserData = unknown> {
 
   // ---------------------------------------------------------------- shapes
 
-  /** The body's shapes. */
+  /** The body's shapes; a concave polygon shows as its convex parts, one shape each. */
   get shapes(): readonly Shape[] {
     return this.shapeList;
   }
 
-  /** Adds a shape (compound bodies); the mass is computed again. */
+  /**
+   * Adds a shape (compound bodies); the mass is computed again. A concave polygon adds one shape
+   * per convex part: this returns the first, and {@link shapes} lists them all.
+   */
   addShape(options: ShapeOptions): Shape {
     this.worldRef?.requireUnlocked('addShape');
-    const shape = this.createShape(options, 'shape');
-    this.shapeList.push(shape);
+    const added = this.createShapes(options, 'shape');
+    this.shapeList.push(...added);
     this.updateMassData();
-    this.worldRef?.shapeAdded(shape);
+    for (const shape of added) this.worldRef?.shapeAdded(shape);
     this.wake();
-    return shape;
+    return added[0]!;
   }
 
   /** Removes one of the body's shapes; the mass is computed again. */
@@ -618,7 +623,9 @@ export class Body<UserData = unknown> {
       const data =
         g.kind === 'circle'
           ? computeCircleMass(g, shape.density, scratchMass)
-          : computePolygonMass(g, shape.density, scratchMass);
+          : g.kind === 'capsule'
+            ? computeCapsuleMass(g, shape.density, scratchMass)
+            : computePolygonMass(g, shape.density, scratchMass);
       mass += data.mass;
       cx += data.mass * data.centerX;
       cy += data.mass * data.centerY;
@@ -679,6 +686,13 @@ export class Body<UserData = unknown> {
           inner = Math.min(inner, d);
         }
         minExtent = Math.min(minExtent, inner + g.radius);
+      } else if (g.kind === 'capsule') {
+        maxExtent = Math.max(
+          maxExtent,
+          Math.hypot(g.x1 - cx, g.y1 - cy) + g.radius,
+          Math.hypot(g.x2 - cx, g.y2 - cy) + g.radius,
+        );
+        minExtent = Math.min(minExtent, g.radius);
       } else {
         maxExtent = Math.max(
           maxExtent,
@@ -692,8 +706,10 @@ export class Body<UserData = unknown> {
     this.minExtent = minExtent === Infinity ? 0 : minExtent;
   }
 
-  private createShape(options: ShapeOptions, field: string): Shape {
-    return new Shape(this as Body, options, field);
+  /** One shape per geometry the options make (several for a concave polygon). */
+  private createShapes(options: ShapeOptions, field: string): Shape[] {
+    const geometries = createGeometries(options, field);
+    return geometries.map((geometry) => new Shape(this as Body, options, field, geometry));
   }
 
   private attachForce(force: Force): void {

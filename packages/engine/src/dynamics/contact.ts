@@ -1,10 +1,15 @@
+import { collideCapsuleAndCircle } from '../collision/collide-capsule-circle.ts';
+import { collideCapsules } from '../collision/collide-capsules.ts';
 import { collideCircles } from '../collision/collide-circles.ts';
+import { collidePolygonAndCapsule } from '../collision/collide-polygon-capsule.ts';
 import { collidePolygonAndCircle } from '../collision/collide-polygon-circle.ts';
 import { collidePolygons } from '../collision/collide-polygons.ts';
+import { collideSegmentAndCapsule } from '../collision/collide-segment-capsule.ts';
 import { collideSegmentAndCircle } from '../collision/collide-segment-circle.ts';
 import { collideSegmentAndPolygon } from '../collision/collide-segment-polygon.ts';
 import { Manifold, type ManifoldPoint } from '../collision/manifold.ts';
 import { LINEAR_SLOP, SPECULATIVE_DISTANCE } from '../core/constants.ts';
+import type { Capsule } from '../geometry/capsule.ts';
 import type { Circle } from '../geometry/circle.ts';
 import type { Polygon } from '../geometry/polygon.ts';
 import type { Segment } from '../geometry/segment.ts';
@@ -18,15 +23,19 @@ const REUSE_TOLERANCE = 0.5 * LINEAR_SLOP;
 const REUSE_TOLERANCE_SQUARED = REUSE_TOLERANCE * REUSE_TOLERANCE;
 
 // The narrow-phase table: which collide function handles a pair of shape kinds, with shape A the
-// higher-ranked kind (segment > polygon > circle). One switch here instead of registration by
-// import side effects.
+// higher-ranked kind (segment > polygon > capsule > circle). One switch here instead of
+// registration by import side effects.
 const PAIR_CIRCLES = 0;
 const PAIR_POLYGON_CIRCLE = 1;
 const PAIR_POLYGONS = 2;
 const PAIR_SEGMENT_CIRCLE = 3;
 const PAIR_SEGMENT_POLYGON = 4;
+const PAIR_CAPSULE_CIRCLE = 5;
+const PAIR_CAPSULES = 6;
+const PAIR_POLYGON_CAPSULE = 7;
+const PAIR_SEGMENT_CAPSULE = 8;
 
-const KIND_RANK = { circle: 0, polygon: 1, segment: 2 } as const;
+const KIND_RANK = { circle: 0, capsule: 1, polygon: 2, segment: 3 } as const;
 
 /** True if two shapes can ever collide (segments never collide with segments). */
 export function canCollide(a: Shape, b: Shape): boolean {
@@ -94,9 +103,22 @@ export class Contact {
     const kindA = a.geometry.kind;
     const kindB = b.geometry.kind;
     if (kindA === 'circle') this.pairKind = PAIR_CIRCLES;
+    else if (kindA === 'capsule')
+      this.pairKind = kindB === 'circle' ? PAIR_CAPSULE_CIRCLE : PAIR_CAPSULES;
     else if (kindA === 'polygon')
-      this.pairKind = kindB === 'circle' ? PAIR_POLYGON_CIRCLE : PAIR_POLYGONS;
-    else this.pairKind = kindB === 'circle' ? PAIR_SEGMENT_CIRCLE : PAIR_SEGMENT_POLYGON;
+      this.pairKind =
+        kindB === 'circle'
+          ? PAIR_POLYGON_CIRCLE
+          : kindB === 'capsule'
+            ? PAIR_POLYGON_CAPSULE
+            : PAIR_POLYGONS;
+    else
+      this.pairKind =
+        kindB === 'circle'
+          ? PAIR_SEGMENT_CIRCLE
+          : kindB === 'capsule'
+            ? PAIR_SEGMENT_CAPSULE
+            : PAIR_SEGMENT_POLYGON;
   }
 
   /**
@@ -185,8 +207,20 @@ export class Contact {
       case PAIR_SEGMENT_CIRCLE:
         collideSegmentAndCircle(a as Segment, xfA, b as Circle, xfB, m);
         break;
-      default:
+      case PAIR_SEGMENT_POLYGON:
         collideSegmentAndPolygon(a as Segment, xfA, b as Polygon, xfB, m);
+        break;
+      case PAIR_CAPSULE_CIRCLE:
+        collideCapsuleAndCircle(a as Capsule, xfA, b as Circle, xfB, m);
+        break;
+      case PAIR_CAPSULES:
+        collideCapsules(a as Capsule, xfA, b as Capsule, xfB, m);
+        break;
+      case PAIR_POLYGON_CAPSULE:
+        collidePolygonAndCapsule(a as Polygon, xfA, b as Capsule, xfB, m);
+        break;
+      default:
+        collideSegmentAndCapsule(a as Segment, xfA, b as Capsule, xfB, m);
         break;
     }
     if (reach > 0 && m.pointCount > 0) this.dropPassingPoints(dt);
@@ -230,10 +264,14 @@ export class Contact {
   private storeCache(x: number, y: number, c: number, s: number): void {
     const m = this.manifold;
     const cache = this.cache;
-    // Only polygon pairs are worth it: the circle kernels cost less than the bookkeeping.
+    // Only polygon-like pairs are worth it: the circle kernels cost less than the bookkeeping.
+    const kind = this.pairKind;
     if (
       m.pointCount === 0 ||
-      (this.pairKind !== PAIR_POLYGONS && this.pairKind !== PAIR_SEGMENT_POLYGON)
+      kind === PAIR_CIRCLES ||
+      kind === PAIR_POLYGON_CIRCLE ||
+      kind === PAIR_SEGMENT_CIRCLE ||
+      kind === PAIR_CAPSULE_CIRCLE
     ) {
       this.hasCache = false;
       return;

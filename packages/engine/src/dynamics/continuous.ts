@@ -1,5 +1,6 @@
 import type { BroadPhase } from '../collision/broad-phase.ts';
 import {
+  setProxyFromCapsule,
   DistanceProxy,
   setProxyFromCircle,
   setProxyFromPolygon,
@@ -155,6 +156,7 @@ function setShapeProxy(proxy: DistanceProxy, shape: Shape): void {
   const g = shape.geometry;
   if (g.kind === 'circle') setProxyFromCircle(proxy, g);
   else if (g.kind === 'polygon') setProxyFromPolygon(proxy, g);
+  else if (g.kind === 'capsule') setProxyFromCapsule(proxy, g);
   else setProxyFromSegment(proxy, g);
 }
 
@@ -179,6 +181,10 @@ function setCoreProxy(proxy: DistanceProxy, shape: Shape): void {
       inner = Math.min(inner, d);
     }
     radius = 0.25 * (inner + g.radius);
+  } else if (g.kind === 'capsule') {
+    x = 0.5 * (g.x1 + g.x2);
+    y = 0.5 * (g.y1 + g.y2);
+    radius = 0.25 * g.radius;
   } else {
     x = 0.5 * (g.x1 + g.x2);
     y = 0.5 * (g.y1 + g.y2);

@@ -6,8 +6,10 @@ import {
   requireVector,
 } from '../core/validate.ts';
 import { AABB } from '../geometry/aabb.ts';
+import { computeCapsuleAABB, makeCapsule, type Capsule } from '../geometry/capsule.ts';
 import { computeCircleAABB, makeCircle, type Circle } from '../geometry/circle.ts';
-import { computePolygonAABB, makeBox, makePolygon, type Polygon } from '../geometry/polygon.ts';
+import { computePolygonAABB, makeBox, type Polygon } from '../geometry/polygon.ts';
+import { makePolygonParts } from '../geometry/polygon-decomposition.ts';
 import { computeSegmentAABB, makeSegment, type Segment } from '../geometry/segment.ts';
 import type { Transform } from '../math/transform.ts';
 import type { Vec2Like } from '../math/vec2.ts';
@@ -32,13 +34,36 @@ export interface CircleShapeOptions extends MaterialOptions {
   readonly offset?: Vec2Like;
 }
 
-/** A convex polygon from its vertices, relative to the body origin (m); either winding. */
+/**
+ * A polygon from its outline, relative to the body origin (m); either winding. Any simple
+ * (non-self-intersecting) outline of 3 to 256 points works: a convex one with at most 8 corners
+ * becomes one shape; any other is split into convex parts of at most 8 corners, each its own
+ * {@link Shape} with this material (`body.shapes` lists them), whose mass, centre of mass and
+ * inertia add up exactly to the outline's.
+ */
 export interface PolygonShapeOptions extends MaterialOptions {
   readonly type: 'polygon';
-  /** 3 to 8 points of a convex polygon (m, body-local). Concave lists are rejected with an error. */
+  /** 3 to 256 points of a simple outline (m, body-local). Self-intersecting lists are rejected. */
   readonly vertices: readonly Vec2Like[];
-  /** Rounding radius (m), default 0. */
+  /**
+   * Rounding radius (m), default 0: the outline grows by it on every side, corners become arcs.
+   * Only for a convex outline of at most 8 corners.
+   */
   readonly radius?: number;
+}
+
+/**
+ * A capsule (a pill): every point within `radius` of the segment from `center1` to `center2`
+ * (body-local, m). Its length, end to end, is |center2 - center1| + 2 radius.
+ */
+export interface CapsuleShapeOptions extends MaterialOptions {
+  readonly type: 'capsule';
+  /** Centre of the first rounded end (m, body-local). */
+  readonly center1: Vec2Like;
+  /** Centre of the second rounded end (m, body-local); at least 0.005 m from center1. */
+  readonly center2: Vec2Like;
+  /** Radius (m), > 0: half the thickness. */
+  readonly radius: number;
 }
 
 /** A box (rectangle), the most common polygon. */
@@ -52,7 +77,7 @@ export interface BoxShapeOptions extends MaterialOptions {
   readonly offset?: Vec2Like;
   /** Rotation relative to the body (rad). Default 0. */
   readonly angle?: number;
-  /** Rounding radius (m), default 0. */
+  /** Rounding radius (m), default 0: the box grows by it on every side, corners become arcs. */
   readonly radius?: number;
 }
 
@@ -71,10 +96,14 @@ export interface SegmentShapeOptions extends MaterialOptions {
 
 /** Describes one shape of a body. */
 export type ShapeOptions =
-  CircleShapeOptions | PolygonShapeOptions | BoxShapeOptions | SegmentShapeOptions;
+  | CircleShapeOptions
+  | PolygonShapeOptions
+  | BoxShapeOptions
+  | SegmentShapeOptions
+  | CapsuleShapeOptions;
 
 /** The geometry of a shape, in its body's frame. */
-export type Geometry = Circle | Polygon | Segment;
+export type Geometry = Circle | Polygon | Segment | Capsule;
 
 /**
  * A shape attached to a body: geometry plus material. Created from {@link ShapeOptions} by the
@@ -101,7 +130,8 @@ export class Shape {
   /** @internal The broad phase's fattened box. */
   readonly fatAABB: AABB = new AABB();
 
-  constructor(body: Body, options: ShapeOptions, field: string) {
+  /** `geometry` is built from `options` unless given (a part of a split polygon). */
+  constructor(body: Body, options: ShapeOptions, field: string, geometry?: Geometry) {
     this.body = body;
     if (options === null || typeof options !== 'object') {
       throw new PhysicalError(field, `must be a shape description object, got ${String(options)}.`);
@@ -109,7 +139,7 @@ export class Shape {
     this.density = requireNonNegative(`${field}.density`, options.density ?? 1);
     this.friction = requireNonNegative(`${field}.friction`, options.friction ?? 0.6);
     this.restitution = requireNonNegative(`${field}.restitution`, options.restitution ?? 0);
-    this.geometry = createGeometry(options, field);
+    this.geometry = geometry ?? createGeometries(options, field)[0]!;
   }
 
   /** The shape's bounding box in world coordinates (m), at the body's current pose. */
@@ -134,8 +164,30 @@ export class Shape {
     const g = this.geometry;
     if (g.kind === 'circle') return computeCircleAABB(g, xf, this.aabb);
     if (g.kind === 'polygon') return computePolygonAABB(g, xf, this.aabb);
+    if (g.kind === 'capsule') return computeCapsuleAABB(g, xf, this.aabb);
     return computeSegmentAABB(g, xf, this.aabb);
   }
+}
+
+/**
+ * @internal The geometry of each shape that `options` makes: one, or the convex parts of a split
+ * polygon outline.
+ */
+export function createGeometries(options: ShapeOptions, field: string): Geometry[] {
+  if (options === null || typeof options !== 'object') {
+    throw new PhysicalError(field, `must be a shape description object, got ${String(options)}.`);
+  }
+  if (options.type === 'polygon') {
+    if (!Array.isArray(options.vertices)) {
+      throw new PhysicalError(`${field}.vertices`, 'must be an array of points { x, y } (m).');
+    }
+    return makePolygonParts(
+      options.vertices,
+      requireNonNegative(`${field}.radius`, options.radius ?? 0),
+      field,
+    );
+  }
+  return [createGeometry(options, field)];
 }
 
 function createGeometry(options: ShapeOptions, field: string): Geometry {
@@ -145,13 +197,15 @@ function createGeometry(options: ShapeOptions, field: string): Geometry {
       requireVector(`${field}.offset`, offset);
       return makeCircle(offset.x, offset.y, options.radius, field);
     }
-    case 'polygon': {
-      if (!Array.isArray(options.vertices)) {
-        throw new PhysicalError(`${field}.vertices`, 'must be an array of points { x, y } (m).');
-      }
-      return makePolygon(
-        options.vertices,
-        requireNonNegative(`${field}.radius`, options.radius ?? 0),
+    case 'capsule': {
+      requireVector(`${field}.center1`, options.center1);
+      requireVector(`${field}.center2`, options.center2);
+      return makeCapsule(
+        options.center1.x,
+        options.center1.y,
+        options.center2.x,
+        options.center2.y,
+        options.radius,
         field,
       );
     }
@@ -185,7 +239,7 @@ function createGeometry(options: ShapeOptions, field: string): Geometry {
     default:
       throw new PhysicalError(
         `${field}.type`,
-        `must be 'circle', 'polygon', 'box' or 'segment', got ${String((options as { type?: unknown }).type)}.`,
+        `must be 'circle', 'polygon', 'box', 'capsule' or 'segment', got ${String((options as { type?: unknown }).type)}.`,
       );
   }
 }

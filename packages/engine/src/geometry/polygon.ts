@@ -57,21 +57,28 @@ const STRAIGHT_TOLERANCE = 0.5 * LINEAR_SLOP;
 
 const MIN_POLYGON_VERTICES = 3;
 
+/** Most points a polygon outline may list (a concave outline is split into convex parts). */
+export const MAX_OUTLINE_POINTS = 256;
+
 /**
- * Validates a point list and builds a convex polygon from it (body-local, m). Accepts clockwise or
- * counter-clockwise input and stores it counter-clockwise; merges points closer than
- * 0.5 * LINEAR_SLOP and drops vertices that are straight within that tolerance. It never computes a
- * hull: a concave or self-intersecting outline is an error, so the shape is always what was drawn.
- * `radius` (m) >= 0 rounds the corners. Fills `out` when given (reusing its storage).
- * @throws PhysicalError with field `${field}.vertices`, `${field}.vertices[i]`,
- *   `${field}.vertices[i].x`/`.y` or `${field}.radius`.
+ * A validated simple outline: `count` distinct points, counter-clockwise, no straight vertices.
+ * Scratch arrays may be longer than `count`.
  */
-export function makePolygon(
-  points: ArrayLike<Vec2Like>,
-  radius: number,
-  field: string,
-  out?: Polygon,
-): Polygon {
+export interface Outline {
+  readonly xs: Float64Array;
+  readonly ys: Float64Array;
+  readonly count: number;
+}
+
+/**
+ * Validates a point list (body-local, m) as a simple polygon outline and cleans it: accepts
+ * clockwise or counter-clockwise input and returns it counter-clockwise; merges points closer
+ * than 0.5 * LINEAR_SLOP and drops vertices that are straight within that tolerance. Concave
+ * outlines pass; self-intersecting, collinear and too-long ones do not.
+ * @throws PhysicalError with field `${field}.vertices`, `${field}.vertices[i]`,
+ *   `${field}.vertices[i].x`/`.y`.
+ */
+export function prepareOutline(points: ArrayLike<Vec2Like>, field: string): Outline {
   const verticesField = `${field}.vertices`;
   if (points === null || typeof points !== 'object' || typeof points.length !== 'number') {
     throw new PhysicalError(
@@ -80,10 +87,16 @@ export function makePolygon(
     );
   }
   const inputCount = points.length;
+  if (inputCount > MAX_OUTLINE_POINTS) {
+    throw new PhysicalError(
+      verticesField,
+      `has ${inputCount} points but an outline may have at most ${MAX_OUTLINE_POINTS}. ` +
+        'Simplify the outline, or build the body from several shapes.',
+    );
+  }
   for (let i = 0; i < inputCount; i++) {
     requireVector(`${verticesField}[${i}]`, points[i]!);
   }
-  requireNonNegative(`${field}.radius`, radius);
 
   // Merge consecutive near-duplicates, including the last point against the first (a closed
   // outline often repeats its first point at the end).
@@ -122,6 +135,15 @@ export function makePolygon(
     );
   }
 
+  const duplicate = findRepeatedPoint(xs, ys, count);
+  if (duplicate >= 0) {
+    throw new PhysicalError(
+      verticesField,
+      `point ${duplicate >> 8} and point ${duplicate & 0xff} are the same point, so the outline ` +
+        'touches itself. List each corner once, in order around the shape.',
+    );
+  }
+
   const crossing = findSelfIntersection(xs, ys, count);
   if (crossing >= 0) {
     throw new PhysicalError(
@@ -145,18 +167,49 @@ export function makePolygon(
         'Spread the corners out, or use a wall (segment) for a line.',
     );
   }
+  return { xs, ys, count };
+}
 
+/** Index of the first vertex of a counter-clockwise outline that turns right (concave), or -1. */
+export function findConcaveVertex(outline: Outline): number {
+  const { xs, ys, count } = outline;
   for (let i = 0; i < count; i++) {
     const previous = i === 0 ? count - 1 : i - 1;
     const next = i === count - 1 ? 0 : i + 1;
     if (turn(xs, ys, previous, i, next) < 0) {
-      throw new PhysicalError(
-        verticesField,
-        `is concave at (${xs[i]}, ${ys[i]}): concave polygons are not supported yet, and ` +
-          'decomposition into convex parts is not supported yet. ' +
-          'Split the outline into convex parts and add each as a separate shape on one body.',
-      );
+      return i;
     }
+  }
+  return -1;
+}
+
+/**
+ * Validates a point list and builds a convex polygon from it (body-local, m). Accepts clockwise or
+ * counter-clockwise input and stores it counter-clockwise; merges points closer than
+ * 0.5 * LINEAR_SLOP and drops vertices that are straight within that tolerance. It never computes a
+ * hull: a concave or self-intersecting outline is an error, so the shape is always what was drawn
+ * (the polygon shape splits concave outlines into convex parts: see polygon-decomposition.ts).
+ * `radius` (m) >= 0 rounds the corners. Fills `out` when given (reusing its storage).
+ * @throws PhysicalError with field `${field}.vertices`, `${field}.vertices[i]`,
+ *   `${field}.vertices[i].x`/`.y` or `${field}.radius`.
+ */
+export function makePolygon(
+  points: ArrayLike<Vec2Like>,
+  radius: number,
+  field: string,
+  out?: Polygon,
+): Polygon {
+  const verticesField = `${field}.vertices`;
+  const outline = prepareOutline(points, field);
+  requireNonNegative(`${field}.radius`, radius);
+  const { xs, ys, count } = outline;
+  const concave = findConcaveVertex(outline);
+  if (concave >= 0) {
+    throw new PhysicalError(
+      verticesField,
+      `is concave at (${xs[concave]}, ${ys[concave]}), but one convex part must be convex. ` +
+        'A polygon shape or body splits concave outlines into convex parts by itself.',
+    );
   }
 
   if (count > MAX_POLYGON_VERTICES) {
@@ -166,7 +219,20 @@ export function makePolygon(
         'Use fewer corners, or split the shape into several polygons on one body.',
     );
   }
+  return makePolygonFromOutline(xs, ys, count, radius, out);
+}
 
+/**
+ * Builds a polygon from `count` counter-clockwise, convex, cleaned points (no validation: callers
+ * have done it). Fills `out` when given.
+ */
+export function makePolygonFromOutline(
+  xs: ArrayLike<number>,
+  ys: ArrayLike<number>,
+  count: number,
+  radius: number,
+  out?: Polygon,
+): Polygon {
   const polygon = out ?? createEmptyPolygon();
   polygon.count = count;
   polygon.radius = radius;
@@ -649,6 +715,21 @@ function isWithinBox(
     Math.min(ay, by) <= py &&
     py <= Math.max(ay, by)
   );
+}
+
+/**
+ * Returns (i << 8) | j for the first two non-consecutive points closer than DUPLICATE_TOLERANCE
+ * (an outline that pinches itself at one point), or -1.
+ */
+function findRepeatedPoint(xs: Float64Array, ys: Float64Array, count: number): number {
+  for (let i = 0; i < count; i++) {
+    for (let j = i + 1; j < count; j++) {
+      if (distance(xs[i]!, ys[i]!, xs[j]!, ys[j]!) < DUPLICATE_TOLERANCE) {
+        return (i << 8) | j;
+      }
+    }
+  }
+  return -1;
 }
 
 /**

@@ -1,6 +1,7 @@
 import type { BroadPhase } from '../collision/broad-phase.ts';
 import { AABB, aabbOverlaps } from '../geometry/aabb.ts';
 import { circleContainsPoint, rayCastCircle } from '../geometry/circle.ts';
+import { capsuleContainsPoint, rayCastCapsule } from '../geometry/capsule.ts';
 import { polygonContainsPoint, rayCastPolygon } from '../geometry/polygon.ts';
 import { RayHit, RayInput } from '../geometry/ray.ts';
 import { rayCastSegment } from '../geometry/segment.ts';
@@ -85,7 +86,7 @@ export class WorldQueries {
         ? circleContainsPoint(g, xf, this.pointX, this.pointY)
         : g.kind === 'polygon'
           ? polygonContainsPoint(g, xf, this.pointX, this.pointY)
-          : false;
+          : g.kind === 'capsule' && capsuleContainsPoint(g, xf, this.pointX, this.pointY);
     // Prefer the body added last: it is drawn on top.
     if (inside && (this.best === null || shape.body.worldIndex > this.best.body.worldIndex)) {
       this.best = shape;
@@ -113,7 +114,9 @@ export class WorldQueries {
         ? rayCastCircle(g, xf, input, hit)
         : g.kind === 'polygon'
           ? rayCastPolygon(g, xf, input, hit)
-          : rayCastSegment(g, xf, input, hit);
+          : g.kind === 'capsule'
+            ? rayCastCapsule(g, xf, input, hit)
+            : rayCastSegment(g, xf, input, hit);
     if (!didHit || hit.fraction > this.bestFraction) return -1;
     this.best = shape;
     this.bestFraction = hit.fraction;

@@ -1,6 +1,6 @@
 import { describe, it } from 'vitest';
 import fc from 'fast-check';
-import { World, box, particle, polygon, regularPolygon, wall } from '@physical/engine';
+import { World, box, capsule, particle, polygon, regularPolygon, wall } from '@physical/engine';
 import type { Body } from '@physical/engine';
 
 // Property tests: random valid scenes never produce NaN and never throw; random sequences of
@@ -27,7 +27,9 @@ type BodySpec =
   | { kind: 'box'; width: number; height: number }
   | { kind: 'regular'; sides: number; radius: number }
   | { kind: 'convex'; radius: number; angles: number[] }
-  | { kind: 'wall'; length: number };
+  | { kind: 'wall'; length: number }
+  | { kind: 'capsule'; length: number; radius: number }
+  | { kind: 'star'; radius: number; reach: number[] };
 
 const bodySpec: fc.Arbitrary<BodySpec> = fc.oneof(
   fc.record({ kind: fc.constant('particle' as const), radius: size }),
@@ -46,6 +48,13 @@ const bodySpec: fc.Arbitrary<BodySpec> = fc.oneof(
   fc.record({
     kind: fc.constant('wall' as const),
     length: fc.double({ min: 0.5, max: 30, noNaN: true }),
+  }),
+  fc.record({ kind: fc.constant('capsule' as const), length: size, radius: size }),
+  fc.record({
+    kind: fc.constant('star' as const),
+    radius: size,
+    // Points at evenly spread angles and random distances: a simple, usually concave outline.
+    reach: fc.array(fc.double({ min: 0.3, max: 1, noNaN: true }), { minLength: 3, maxLength: 24 }),
   }),
 );
 
@@ -92,6 +101,21 @@ function makeBody(
       } catch {
         // Nearly collinear points can be rejected (validly): use the regular polygon instead.
         return regularPolygon({ ...common, sides: n, radius: spec.radius });
+      }
+    }
+    case 'capsule':
+      return capsule({ ...common, length: spec.length, radius: spec.radius });
+    case 'star': {
+      const n = spec.reach.length;
+      const vertices = spec.reach.map((reach, i) => ({
+        x: spec.radius * reach * Math.cos((2 * Math.PI * i) / n),
+        y: spec.radius * reach * Math.sin((2 * Math.PI * i) / n),
+      }));
+      try {
+        return polygon({ ...common, vertices });
+      } catch {
+        // Nearly straight or collinear runs can be rejected (validly): use a regular polygon.
+        return regularPolygon({ ...common, sides: Math.min(n, 8), radius: spec.radius });
       }
     }
     case 'wall': {

@@ -2,11 +2,13 @@ import { describe, expect, it } from 'vitest';
 import {
   DistanceOutput,
   DistanceProxy,
+  setProxyFromCapsule,
   setProxyFromCircle,
   setProxyFromPolygon,
   setProxyFromSegment,
   shapeDistance,
 } from '../../../src/collision/distance.ts';
+import { makeCapsule } from '../../../src/geometry/capsule.ts';
 import { createEmptyPolygon } from '../../../src/geometry/polygon.ts';
 import type { Polygon } from '../../../src/geometry/polygon.ts';
 import { Transform } from '../../../src/math/transform.ts';
@@ -266,5 +268,30 @@ describe('shapeDistance', () => {
     }
     expect(maxIterations).toBeLessThanOrEqual(20);
     expect(maxIterations).toBeGreaterThan(1);
+  });
+});
+
+describe('capsule proxies', () => {
+  it('measure a capsule as its segment swollen by its radius', () => {
+    const capsule = new DistanceProxy();
+    setProxyFromCapsule(capsule, makeCapsule(-1, 0, 1, 0, 0.25, 'c'));
+    expect([capsule.count, capsule.radius]).toEqual([2, 0.25]);
+    const ball = new DistanceProxy();
+    setProxyFromCircle(ball, { kind: 'circle', centerX: 0, centerY: 0, radius: 0.5 });
+    const out = new DistanceOutput();
+    // Beside the middle: 1.5 - 0.25 - 0.5; beyond the end, turned: |(2.5, 0) - (1, 0)| - 0.75.
+    expect(
+      shapeDistance(capsule, new Transform(), ball, new Transform().set(0.3, 1.5, 0), out),
+    ).toBeCloseTo(0.75, 12);
+    expect(
+      shapeDistance(
+        capsule,
+        new Transform().set(0, 0, Math.PI / 2),
+        ball,
+        new Transform().set(0, 2.5, 0),
+        out,
+      ),
+    ).toBeCloseTo(0.75, 12);
+    expect(out.normalY).toBeCloseTo(1, 12);
   });
 });

@@ -152,13 +152,12 @@ describe('makePolygon', () => {
     expect(catchError(() => makePolygon(pentagram, 0, 's')).message).toMatch(/self-intersecting/);
   });
 
-  it('rejects a concave outline, explaining what is not supported and what to do', () => {
+  it('rejects a concave outline as one convex part, pointing to the polygon shape', () => {
     const arrow = points(0, 0, 2, 1, 0, 2, 0.5, 1);
     const error = catchError(() => makePolygon(arrow, 0, 'shapes[0]'));
     expect(error.field).toBe('shapes[0].vertices');
-    expect(error.message).toMatch(/concave polygons are not supported yet/);
-    expect(error.message).toMatch(/decomposition into convex parts is not supported yet/);
-    expect(error.message).toMatch(/convex parts.*separate shape on one body/);
+    expect(error.message).toMatch(/is concave at \(0.5, 1\)/);
+    expect(error.message).toMatch(/splits concave outlines into convex parts/);
     // Same outline clockwise: still concave, never silently hulled.
     expect(catchError(() => makePolygon(arrow.slice().reverse(), 0, 's')).message).toMatch(
       /concave/,
