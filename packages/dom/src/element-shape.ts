@@ -2,7 +2,7 @@ import type { ShapeOptions } from '@physical/engine';
 
 /**
  * The smallest core (CSS px) a rounded box keeps: the engine's box needs a width and a height
- * greater than 0, so a pill's straight part never shrinks below this.
+ * greater than 0.
  */
 const MIN_CORE = 1;
 
@@ -42,10 +42,13 @@ export function cornerRadius(corners: readonly number[], width: number, height: 
   return Math.max(0, Math.min(smallest, width / 2, height / 2));
 }
 
+/** Capsule ends closer than this (m) are refused by the engine; such pills are circles. */
+const MIN_CAPSULE_LENGTH = 0.005;
+
 /**
  * The engine shape of an element's box, centred on the body (m): a circle for a round element
- * (square within 1 px, fully rounded), otherwise a box rounded by the corner radius. Pills are
- * rounded boxes with a 1 px core until capsules reach the engine.
+ * (square within 1 px, fully rounded), a capsule for a pill (fully rounded along its short
+ * side), otherwise a box rounded by the corner radius. Each has the element's outline.
  */
 export function shapeForBox(
   box: ElementBox,
@@ -55,8 +58,21 @@ export function shapeForBox(
   const { width, height } = box;
   const smaller = Math.min(width, height);
   const radius = Math.max(0, Math.min(box.radius, smaller / 2));
-  if (Math.abs(width - height) <= 1 && radius >= smaller / 2 - 0.5) {
+  const fullyRounded = radius >= smaller / 2 - 0.5;
+  const length = Math.abs(width - height) / pixelsPerMeter; // between the capsule's end centres
+  if (fullyRounded && (Math.abs(width - height) <= 1 || length < MIN_CAPSULE_LENGTH)) {
     return { type: 'circle', radius: (width + height) / 4 / pixelsPerMeter, ...material };
+  }
+  if (fullyRounded) {
+    const half = length / 2;
+    const wide = width > height;
+    return {
+      type: 'capsule',
+      center1: wide ? { x: -half, y: 0 } : { x: 0, y: -half },
+      center2: wide ? { x: half, y: 0 } : { x: 0, y: half },
+      radius: smaller / 2 / pixelsPerMeter,
+      ...material,
+    };
   }
   const rounding = Math.min(radius, (smaller - MIN_CORE) / 2);
   const r = Math.max(0, rounding);

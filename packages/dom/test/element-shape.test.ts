@@ -44,9 +44,31 @@ describe('shapeForBox', () => {
     expect(body.centerOfMass.y).toBeCloseTo(1, 12);
   });
 
-  it('makes a pill a rounded box with a 1 px core (until capsules), same outline', () => {
-    const shape = shapeForBox({ width: 100, height: 30, radius: 15 }, 100, material);
-    expect(shape).toEqual({ type: 'box', width: 0.71, height: 0.01, radius: 0.145, ...material });
+  it('makes a pill a capsule along its long side, with the outline of the pill', () => {
+    const wide = shapeForBox({ width: 100, height: 30, radius: 15 }, 100, material);
+    expect(wide).toEqual({
+      type: 'capsule',
+      center1: { x: -0.35, y: 0 },
+      center2: { x: 0.35, y: 0 },
+      radius: 0.15,
+      ...material,
+    });
+    const tall = shapeForBox({ width: 30, height: 100, radius: 999 }, 100, material);
+    expect(tall).toMatchObject({ center1: { x: 0, y: -0.35 }, center2: { x: 0, y: 0.35 } });
+    const body = new Body({ position: { x: 1, y: 1 }, shapes: [wide] });
+    const bounds = body.shapes[0]!.getBounds();
+    expect([bounds.minX, bounds.maxX, bounds.minY, bounds.maxY]).toEqual([
+      expect.closeTo(0.5, 12),
+      expect.closeTo(1.5, 12),
+      expect.closeTo(0.85, 12),
+      expect.closeTo(1.15, 12),
+    ]);
+  });
+
+  it('makes an almost round pill a circle: capsule ends must be 5 mm apart', () => {
+    expect(shapeForBox({ width: 30.4, height: 30, radius: 15 }, 100, material)).toMatchObject({
+      type: 'circle',
+    });
   });
 
   it('keeps sharp corners sharp and a square that is not round a box', () => {
