@@ -89,6 +89,7 @@ const MAX_RETURN_TIME = 4;
 const MAX_THROW_SPEED = 30;
 
 const spring: [number, number] = [0, 0];
+const velocityScratch = { x: 0, y: 0 };
 
 /**
  * Physical UI: makes a container's own elements physical. Each element becomes a body shaped
@@ -389,13 +390,15 @@ export class PhysicalUI {
     for (let i = 0; i < fresh.length; i++) {
       const element = fresh[i]!;
       const slot = slots[i]!;
+      const x = slot.centerX / ppm;
+      const y = slot.centerY / ppm;
       const item: Item = {
         element,
-        body: null as unknown as Body,
+        body: this.makeBody(element, slot, 'static', x, y, 0, 0, 0, 0),
         state: 'layout',
         slot,
-        prevX: slot.centerX / ppm,
-        prevY: slot.centerY / ppm,
+        prevX: x,
+        prevY: y,
         prevAngle: 0,
         homeAngle: 0,
         returnTime: 0,
@@ -407,7 +410,6 @@ export class PhysicalUI {
         savedOrigin: element.style.transformOrigin,
         savedTouchAction: element.style.touchAction,
       };
-      item.body = this.makeBody(item, 'static', item.prevX, item.prevY, 0, 0, 0, 0);
       // The body turns about its centre of mass, the box's centre; CSS turns about
       // transform-origin, which defaults to the centre too, but a stylesheet may move it.
       element.style.transformOrigin = '50% 50%';
@@ -420,8 +422,10 @@ export class PhysicalUI {
     this.loop.invalidate();
   }
 
+  /** A body for `element` with the shape of its slot, added to the world. */
   private makeBody(
-    item: Item,
+    element: HTMLElement,
+    slot: Slot,
     type: 'static' | 'kinematic' | 'dynamic',
     x: number,
     y: number,
@@ -435,8 +439,8 @@ export class PhysicalUI {
       position: { x, y },
       angle,
       ...(type === 'static' ? {} : { linearVelocity: { x: vx, y: vy }, angularVelocity: w }),
-      shapes: [shapeForBox(item.slot, this.ppm, this.material)],
-      userData: item.element,
+      shapes: [shapeForBox(slot, this.ppm, this.material)],
+      userData: element,
     });
     return this.world.add(body);
   }
@@ -447,7 +451,8 @@ export class PhysicalUI {
     const { x, y } = old.position;
     const velocity = old.linearVelocity;
     const body = this.makeBody(
-      item,
+      item.element,
+      item.slot,
       type,
       x,
       y,
@@ -467,7 +472,7 @@ export class PhysicalUI {
       const x = item.slot.centerX / ppm;
       const y = item.slot.centerY / ppm;
       this.world.remove(item.body);
-      item.body = this.makeBody(item, 'static', x, y, 0, 0, 0, 0);
+      item.body = this.makeBody(item.element, item.slot, 'static', x, y, 0, 0, 0, 0);
       item.prevX = x;
       item.prevY = y;
       item.prevAngle = 0;
@@ -619,7 +624,9 @@ export class PhysicalUI {
     const ex1 = springStep(ex, velocity.x, omega, dt, spring)[0];
     const ey1 = springStep(ey, velocity.y, omega, dt, spring)[0];
     const ea1 = springStep(ea, body.angularVelocity, omega, dt, spring)[0];
-    body.linearVelocity = { x: (ex1 - ex) / dt, y: (ey1 - ey) / dt };
+    velocityScratch.x = (ex1 - ex) / dt;
+    velocityScratch.y = (ey1 - ey) / dt;
+    body.linearVelocity = velocityScratch; // copied by the body
     body.angularVelocity = (ea1 - ea) / dt;
     item.returnTime += dt;
   }
