@@ -135,3 +135,24 @@ test('dom: elements added and removed while running join and leave the world', a
   assert.ok(Math.abs(result.grew - 0.52) < 0.05, `the body grew by ${result.grew} m`);
   assert.equal(result.count, 9);
 });
+
+test('dom: one element sent back to its layout can be released again', async ({ open }) => {
+  const page = await open('/dom/showcase.html', { viewport: { width: 700, height: 600 } });
+  await page.click('#drop');
+  await waitSettled(page);
+  const states = await page.evaluate(async () => {
+    const ui = window.ui;
+    const [chip, other] = ui.elements as [HTMLElement, HTMLElement];
+    ui.restore(chip);
+    const sent = [ui.stateOf(chip), ui.stateOf(other)];
+    while (ui.isRunning) await new Promise((resolve) => setTimeout(resolve, 50));
+    const home = [ui.stateOf(chip), chip.style.transform];
+    ui.release(chip);
+    await new Promise((resolve) => setTimeout(resolve, 300));
+    return { sent, home, again: ui.stateOf(chip), transform: chip.style.transform };
+  });
+  assert.deepEqual(states.sent, ['returning', 'free']);
+  assert.deepEqual(states.home, ['layout', '']);
+  assert.equal(states.again, 'free');
+  assert.match(states.transform, /^translate\(0px, [1-9]\d*(\.\d+)?px\)/); // falling straight down
+});
