@@ -2,6 +2,7 @@ import { FrameLoop, animationFrameScheduler, type FrameScheduler } from '@physic
 import { Body, PhysicalError, World, type Vec2Like } from '@physical/engine';
 import { ContainerWalls } from './container-walls.ts';
 import { DragInput } from './drag-input.ts';
+import { watchEnvironment, type EnvironmentWatch } from './environment-watch.ts';
 import { shapeForBox } from './element-shape.ts';
 import { formatTransform, snap } from './element-transform.ts';
 import { Grab } from './grab.ts';
@@ -271,7 +272,7 @@ export class PhysicalUI {
     this.world.remove(item.body);
     this.byElement.delete(element);
     this.items.splice(this.items.indexOf(item), 1);
-    this.resizeObserver?.unobserve(element);
+    this.environment?.unobserve(element);
     element.style.transform = item.savedTransform;
     element.style.transformOrigin = item.savedOrigin;
     element.style.touchAction = item.savedTouchAction;
@@ -361,7 +362,7 @@ export class PhysicalUI {
 
   // ------------------------------------------------------------------ internals
 
-  private resizeObserver: ResizeObserver | null = null;
+  private environment: EnvironmentWatch | null = null;
 
   private select(element: HTMLElement | undefined): Item[] {
     if (element === undefined) return this.items.slice();
@@ -417,7 +418,7 @@ export class PhysicalUI {
       element.dataset['physical'] = 'layout';
       this.items.push(item);
       this.byElement.set(element, item);
-      this.resizeObserver?.observe(element);
+      this.environment?.observe(element);
     }
     this.loop.invalidate();
   }
@@ -693,54 +694,24 @@ export class PhysicalUI {
   private watch(): void {
     const container = this.container;
     const undo = this.teardown;
-
-    this.resizeObserver = new ResizeObserver(() => this.measure());
-    this.resizeObserver.observe(container);
-    undo.push(() => this.resizeObserver?.disconnect());
-
-    const onScroll = (): void => {
-      this.frameStale = true;
-    };
-    window.addEventListener('scroll', onScroll, { capture: true, passive: true });
-    undo.push(() => window.removeEventListener('scroll', onScroll, { capture: true }));
-
-    const motion = matchMedia('(prefers-reduced-motion: reduce)');
-    const onMotion = (): void => {
-      this.prefersReduced = motion.matches;
-      this.motionChanged();
-    };
-    this.prefersReduced = motion.matches;
-    motion.addEventListener('change', onMotion);
-    undo.push(() => motion.removeEventListener('change', onMotion));
-
-    // A resolution query matches one density only: re-armed at the new one after each change.
-    let density: MediaQueryList | null = null;
-    const onDensity = (): void => {
-      density?.removeEventListener('change', onDensity);
-      this.devicePixelRatio = window.devicePixelRatio || 1;
-      density = matchMedia(`(resolution: ${this.devicePixelRatio}dppx)`);
-      density.addEventListener('change', onDensity);
-      this.frameStale = true;
-      this.loop.invalidate();
-    };
-    onDensity();
-    undo.push(() => density?.removeEventListener('change', onDensity));
-
-    // Off screen, nothing is seen moving: no frames until the container scrolls back in.
-    const intersection = new IntersectionObserver((entries) => {
-      if (entries[entries.length - 1]!.isIntersecting) this.loop.resume('offscreen');
-      else this.loop.suspend('offscreen');
+    const environment = watchEnvironment(container, this.loop, {
+      resized: () => this.measure(),
+      scrolled: () => {
+        this.frameStale = true;
+      },
+      reducedMotionChanged: (reduce) => {
+        this.prefersReduced = reduce;
+        this.motionChanged();
+      },
+      densityChanged: (ratio) => {
+        this.devicePixelRatio = ratio;
+        this.frameStale = true;
+        this.loop.invalidate();
+      },
     });
-    intersection.observe(container);
-    undo.push(() => intersection.disconnect());
-
-    const onVisibility = (): void => {
-      if (document.visibilityState === 'hidden') this.loop.suspend('hidden');
-      else this.loop.resume('hidden');
-    };
-    onVisibility();
-    document.addEventListener('visibilitychange', onVisibility);
-    undo.push(() => document.removeEventListener('visibilitychange', onVisibility));
+    this.prefersReduced = environment.prefersReducedMotion;
+    this.environment = environment;
+    undo.push(() => environment.stop());
 
     // Elements that leave the DOM leave the world; with a selector, matching newcomers join.
     const mutations = new MutationObserver((records) => {
