@@ -10,6 +10,7 @@ export default defineConfig({
       '@physical/canvas': fileURLToPath(new URL('./packages/canvas/src/index.ts', import.meta.url)),
       '@physical/react': fileURLToPath(new URL('./packages/react/src/index.ts', import.meta.url)),
       '@physical/scenes': fileURLToPath(new URL('./packages/scenes/src/index.ts', import.meta.url)),
+      '@physical/dom': fileURLToPath(new URL('./packages/dom/src/index.ts', import.meta.url)),
     },
   },
   test: {

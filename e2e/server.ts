@@ -33,6 +33,7 @@ export async function startServer(): Promise<TestServer> {
         '@physical/react': fileURLToPath(
           new URL('../packages/react/src/index.ts', import.meta.url),
         ),
+        '@physical/dom': fileURLToPath(new URL('../packages/dom/src/index.ts', import.meta.url)),
       },
     },
     server: {

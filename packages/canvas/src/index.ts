@@ -11,6 +11,7 @@ export { define } from './element/define-physical-canvas.ts';
 export { CanvasSettingError } from './element/attribute-parsers.ts';
 export type { PointerEventDetail } from './element/pointer-input.ts';
 export { TAP_SLOP } from './element/pointer-input.ts';
+export { PointerVelocity, VELOCITY_WINDOW_MS } from './element/pointer-velocity.ts';
 export type { StyleResolver } from './element/body-styles.ts';
 export { FrameLoop } from './element/frame-loop.ts';
 export type { FrameLoopTarget, SuspendReason } from './element/frame-loop.ts';

@@ -2,3 +2,5 @@
 
 export { PhysicalCanvas } from './physical-canvas.ts';
 export type { PhysicalCanvasProps } from './physical-canvas.ts';
+export { PhysicalContainer, usePhysicalUI } from './physical-ui.ts';
+export type { PhysicalContainerProps } from './physical-ui.ts';

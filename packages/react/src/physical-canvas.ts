@@ -56,6 +56,8 @@ export interface PhysicalCanvasProps {
   stepsPerSecond?: number;
   /** Catch-up cap after a stall. Default 4. */
   maxStepsPerFrame?: number;
+  /** Pointers drag and throw dynamic bodies. Default true; false renders `drag="off"`. */
+  drag?: boolean;
   /** Style of each body (return shared objects: it is called every frame). */
   styleFor?: StyleResolver | null;
   /** App drawings after the bodies, in world metres. */
@@ -124,6 +126,7 @@ function attributes(
     'velocity-scale': text(props.velocityScale),
     'steps-per-second': text(props.stepsPerSecond),
     'max-steps-per-frame': text(props.maxStepsPerFrame),
+    drag: props.drag === false ? 'off' : undefined,
   };
 }
 

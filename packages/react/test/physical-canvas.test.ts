@@ -16,6 +16,7 @@ describe('<PhysicalCanvas> on the server', () => {
         viewBox: { x: 0, y: 0, width: 10, height: 5 },
         paused: true,
         debug: ['contacts', 'normals'],
+        drag: false,
         'aria-label': 'Falling boxes',
         onBodyTap: () => undefined,
       }),
@@ -31,6 +32,7 @@ describe('<PhysicalCanvas> on the server', () => {
       'paused=""',
       'debug="contacts normals"',
       'aria-label="Falling boxes"',
+      'drag="off"',
     ]) {
       expect(html).toContain(attribute);
     }

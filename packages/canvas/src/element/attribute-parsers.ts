@@ -159,3 +159,13 @@ export function parseColor(setting: string, value: unknown): string {
   if (!supported) throw new CanvasSettingError(setting, value, 'a CSS colour');
   return text;
 }
+
+/** `drag`: on unless `"off"` or `"false"` (absent, `""`, `"on"`, `"true"` and `true` are on). */
+export function parseDrag(setting: string, value: unknown): boolean {
+  if (value === null || value === undefined || value === true) return true;
+  if (value === false) return false;
+  const text = typeof value === 'string' ? value.trim().toLowerCase() : undefined;
+  if (text === '' || text === 'on' || text === 'true') return true;
+  if (text === 'off' || text === 'false') return false;
+  throw new CanvasSettingError(setting, value, '"on" or "off" (or true / false)');
+}

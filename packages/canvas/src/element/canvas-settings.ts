@@ -5,6 +5,7 @@ import type { FitMode, ViewBox } from '../draw/viewport.ts';
 import {
   parseColor,
   parseDebug,
+  parseDrag,
   parseFit,
   parseNonNegative,
   parsePoint,
@@ -29,6 +30,7 @@ export const SETTING_ATTRIBUTES = [
   'velocity-scale',
   'steps-per-second',
   'max-steps-per-frame',
+  'drag',
 ] as const;
 
 /** One of {@link SETTING_ATTRIBUTES}. */
@@ -64,6 +66,8 @@ export class CanvasSettings {
   velocityScale: number = SETTING_DEFAULTS.velocityScale;
   stepsPerSecond: number = SETTING_DEFAULTS.stepsPerSecond;
   maxStepsPerFrame: number = SETTING_DEFAULTS.maxStepsPerFrame;
+  /** Pointers drag dynamic bodies (attribute `drag`, on unless `"off"`). */
+  drag = true;
 
   /**
    * Parses an attribute's new text (null when removed: back to the default) into its setting.
@@ -122,6 +126,9 @@ export class CanvasSettings {
         this.maxStepsPerFrame = present
           ? parsePositiveInteger(name, value)
           : SETTING_DEFAULTS.maxStepsPerFrame;
+        break;
+      case 'drag':
+        this.drag = parseDrag(name, value);
         break;
     }
   }

@@ -13,6 +13,7 @@ import {
   formatDebug,
   parseColor,
   parseDebug,
+  parseDrag,
   parseFit,
   parseNonNegative,
   parsePoint,
@@ -20,6 +21,7 @@ import {
   parsePositiveInteger,
   parseViewBox,
 } from './attribute-parsers.ts';
+import { BodyDrag } from './body-drag.ts';
 import { BodyStyles, type StyleResolver } from './body-styles.ts';
 import { emit, type PhysicalCanvasEventMap } from './canvas-events.ts';
 import { CanvasRenderer } from './canvas-renderer.ts';
@@ -53,13 +55,15 @@ const UPGRADED_PROPERTIES = [
   'background',
   'debug',
   'collisionArrows',
+  'drag',
 ] as const;
 
 const TEMPLATE = `<style>
 :host { display: block; position: relative; height: 300px; contain: layout paint; outline: none; }
 :host([hidden]) { display: none; }
 :host(:focus-visible) { box-shadow: 0 0 0 2px #82b1ff; }
-canvas { display: block; width: 100%; height: 100%; touch-action: manipulation; }
+canvas { display: block; width: 100%; height: 100%; touch-action: none; }
+:host([drag='off' i]) canvas, :host([drag='false' i]) canvas { touch-action: manipulation; }
 </style><canvas part="canvas"></canvas>`;
 
 // Server rendering and Node tests import this module without a DOM: the class then extends a
@@ -74,7 +78,7 @@ const ElementBase: typeof HTMLElement =
  *
  * Attributes (each also a property): `pixels-per-meter`, `origin`, `fit`, `view-box`, `paused`,
  * `time-scale`, `background`, `debug`, `collision-arrows`, `collision-arrow-duration`,
- * `force-scale`, `velocity-scale`, `steps-per-second`, `max-steps-per-frame`. Properties only:
+ * `force-scale`, `velocity-scale`, `steps-per-second`, `max-steps-per-frame`, `drag`. Properties only:
  * `world`, `styleFor`, `drawOverlay`, `frameScheduler`. Events: see {@link PhysicalCanvasEventMap}.
  */
 // The interface of the same name below adds typed addEventListener overloads (the usual pattern
@@ -99,11 +103,19 @@ export class PhysicalCanvasElement extends ElementBase {
   private readonly poses = new PoseHistory();
   private readonly styles = new BodyStyles();
   private readonly arrows = new CollisionArrows();
+  private readonly drags = new BodyDrag();
   private readonly input = new PointerInput({
     clientToWorld: (x, y) => this.clientToWorld(x, y),
     bodyAt: (point) => this.worldValue?.bodyAt(point) ?? null,
     emit: (type, detail) => emit(this, type, detail),
     wake: () => this.invalidate(),
+    dragStart: (pointerId, body, x, y, toX, toY) => {
+      const world = this.worldValue;
+      if (world === null || !this.settings.drag) return false;
+      return this.drags.start(world, pointerId, body, x, y, toX, toY);
+    },
+    dragMove: (pointerId, x, y) => this.drags.move(pointerId, x, y),
+    dragEnd: (pointerId, vx, vy, isThrow) => this.drags.end(pointerId, vx, vy, isThrow),
   });
   private readonly renderer: CanvasRenderer;
   private canvasElement: HTMLCanvasElement | null = null;
@@ -158,6 +170,7 @@ export class PhysicalCanvasElement extends ElementBase {
       throw new CanvasSettingError('world', value, 'a World from @physical/engine, or null');
     }
     if (value === this.worldValue) return;
+    this.drags.clear();
     this.unsubscribe();
     this.worldValue = value;
     this.poses.clear();
@@ -294,6 +307,24 @@ export class PhysicalCanvasElement extends ElementBase {
   clientToWorld(clientX: number, clientY: number): Vec2 {
     const rect = this.getBoundingClientRect();
     return screenToWorld(this.viewport, { x: clientX - rect.left, y: clientY - rect.top });
+  }
+
+  // ------------------------------------------------------------------ input
+
+  /**
+   * Pointers drag dynamic bodies (attribute `drag`; `drag="off"` turns it off): press on a body
+   * and move, and the engine's mouse joint pulls the pressed point after the pointer; letting go
+   * throws the body with the pointer's velocity. Mouse, touch and pen; several fingers drag
+   * several bodies. Default on. While on, the canvas takes touch gestures (`touch-action: none`),
+   * so a page does not scroll by a swipe over it.
+   */
+  get drag(): boolean {
+    return this.settings.drag;
+  }
+
+  set drag(value: boolean) {
+    if (parseDrag('drag', value)) this.removeAttribute('drag');
+    else this.setAttribute('drag', 'off');
   }
 
   // ------------------------------------------------------------------ time
@@ -453,6 +484,7 @@ export class PhysicalCanvasElement extends ElementBase {
     this.loop.suspend('detached');
     this.unsubscribe();
     this.input.detach();
+    this.drags.clear();
     for (const undo of this.teardown) undo();
     this.teardown = [];
   }
@@ -514,6 +546,7 @@ export class PhysicalCanvasElement extends ElementBase {
     loop.fixedStep = 1 / settings.stepsPerSecond;
     loop.maxStepsPerFrame = settings.maxStepsPerFrame;
     this.arrows.duration = settings.collisionArrowDuration;
+    if (name === 'drag' && !settings.drag) this.drags.clear();
     if (name === 'collision-arrows') {
       // Listen to collisions only while arrows are on: the events cost the engine time.
       this.unsubscribe();

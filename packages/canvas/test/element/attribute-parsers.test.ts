@@ -1,6 +1,7 @@
 import { describe, expect, it } from 'vitest';
 import {
   parseDebug,
+  parseDrag,
   parsePoint,
   parsePositive,
   parseViewBox,
@@ -35,5 +36,13 @@ describe('attribute parsers', () => {
     expect(parseDebug('debug', ['aabbs']).aabbs).toBe(true);
     expect(parseDebug('debug', { velocities: true }).velocities).toBe(true);
     expect(() => parseDebug('debug', 'sparkles')).toThrow(/overlay names/);
+  });
+
+  it('read drag as on unless "off" or "false", and reject anything else by name', () => {
+    for (const on of [null, '', 'on', 'TRUE', true]) expect(parseDrag('drag', on)).toBe(true);
+    for (const off of ['off', ' Off ', 'false', false]) expect(parseDrag('drag', off)).toBe(false);
+    expect(() => parseDrag('drag', 'sometimes')).toThrow(
+      /<physical-canvas> drag: expected "on" or "off" \(or true \/ false\), got "sometimes"/,
+    );
   });
 });

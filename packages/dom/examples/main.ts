@@ -1,0 +1,3 @@
+import { mountShowcase } from './showcase.ts';
+
+mountShowcase(document.getElementById('showcase')!);
