@@ -51,6 +51,7 @@ export default defineConfig({
       '@physical/engine': source('../../packages/engine/src/index.ts'),
       '@physical/canvas': source('../../packages/canvas/src/index.ts'),
       '@physical/react': source('../../packages/react/src/index.ts'),
+      '@physical/dom': source('../../packages/dom/src/index.ts'),
     },
   },
   build: {
