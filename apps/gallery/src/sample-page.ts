@@ -49,6 +49,8 @@ export function renderSample(root: HTMLElement, scene: Scene): () => void {
     fit: 'contain',
     'view-box': cameraAttribute(scene),
     background: SURFACE,
+    // The page drags bodies itself (and draws the drag line), and a tap that is not a drag kicks.
+    drag: 'off',
     'aria-label': `${scene.title}: live simulation`,
     // The stage takes the camera's shape (CSS caps its height), so no space is wasted on a phone.
     style: `aspect-ratio: ${scene.camera.width} / ${scene.camera.height}`,
