@@ -126,7 +126,7 @@ for (let round = 1; round <= rounds; round++) {
       list.push(r);
       results.set(key(scene, engine), list);
       progress(
-        `round ${round}/${rounds} ${scene} ${engine}: ${r.ok ? `${r.msPerStep.toFixed(3)} ms/step (${r.timedSteps} steps)` : `FAILED ${r.error}`}`,
+        `round ${round}/${rounds} ${scene} ${engine}: ${r.ok ? `${r.msPerStep.toFixed(3)} ms/step (${r.timedSteps} steps)` : r.unsupported ? `unsupported: ${r.error}` : `FAILED ${r.error}`}`,
       );
     }
   }
@@ -239,7 +239,12 @@ for (const scene of sceneNames) {
         minMsPerStep: null,
         steps: null,
         ratio: null,
-        quality: `failed: ${failed && !failed.ok ? failed.error : 'no runs'}`,
+        quality:
+          failed && !failed.ok
+            ? failed.unsupported
+              ? `unsupported: ${failed.error}`
+              : `failed: ${failed.error}`
+            : 'failed: no runs',
       });
       continue;
     }
