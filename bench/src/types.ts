@@ -169,6 +169,11 @@ export interface SceneDesc {
   readonly onStep?: (step: number, api: StepApi) => void;
   /** True when onStep creates and destroys body groups (engines need createGroup). */
   readonly createsGroups?: boolean;
+  /**
+   * Every distinct shape filter the scene uses, those of groups created later included (absent
+   * filter: DEFAULT_FILTER), for engines that turn filters into a fixed set of collision classes.
+   */
+  readonly filters?: readonly FilterDesc[];
   readonly quality: QualitySpec;
   /** What differs from Box2D's scene, if anything (printed). */
   readonly notes?: string;

@@ -1,10 +1,11 @@
-import type {
-  BodyDesc,
-  BodyGroupDesc,
-  FilterDesc,
-  JointDesc,
-  SceneDesc,
-  ShapeDesc,
+import {
+  DEFAULT_FILTER,
+  type BodyDesc,
+  type BodyGroupDesc,
+  type FilterDesc,
+  type JointDesc,
+  type SceneDesc,
+  type ShapeDesc,
 } from '../types.ts';
 import { BOX2D_MATERIAL, box, type SceneOptions } from './common.ts';
 
@@ -204,6 +205,13 @@ export function rain({ small }: SceneOptions): SceneDesc {
     material: BOX2D_MATERIAL,
     bodies: [{ type: 'static', x: 0, y: 0, shapes: ground }],
     createsGroups: true,
+    filters: [
+      DEFAULT_FILTER,
+      ...Array.from({ length: groupSize }, (_, i) => [
+        { category: 2, mask: 1 | 2, group: -(i + 1) },
+        { category: 2, mask: 1, group: -(i + 1) },
+      ]).flat(),
+    ],
     onStep: (step, api) => {
       if ((step & delay) !== 0) return;
       let column: number;
