@@ -150,14 +150,16 @@ function createWorld(R: Rapier, scene: SceneDesc): World {
     ) as InstanceType<typeof R.RevoluteImpulseJoint>;
     // Rapier's angle is angleB - angleA (both bodies start unrotated): shift by the reference.
     const reference = joint.referenceAngle ?? 0;
-    if (joint.limit) created.setLimits(joint.limit.lower + reference, joint.limit.upper + reference);
+    if (joint.limit)
+      created.setLimits(joint.limit.lower + reference, joint.limit.upper + reference);
     if (joint.spring) {
       // One motor per joint: a position motor is the spring (acceleration-based, so stiffness
       // w^2 and damping 2 zeta w, as Box2D's soft spring); the friction motor is left out.
       const w = 2 * Math.PI * joint.spring.hertz;
       created.configureMotorModel(R.MotorModel.AccelerationBased);
       created.configureMotorPosition(reference, w * w, 2 * joint.spring.dampingRatio * w);
-      if (joint.motor) notes.add('joint friction (a speed-0 motor) left out: the motor is the spring');
+      if (joint.motor)
+        notes.add('joint friction (a speed-0 motor) left out: the motor is the spring');
     } else if (joint.motor) {
       created.configureMotorVelocity(joint.motor.speed, 1e4);
     }

@@ -188,7 +188,8 @@ export function rain({ small }: SceneOptions): SceneDesc {
       const bodies: BodyDesc[] = [];
       const joints: JointDesc[] = [];
       const x = -0.5 * span + (span / columnCount) * (column + 0.5);
-      for (let i = 0; i < groupSize; i++) addHuman(bodies, joints, x + 0.5 * i, 40 + 45 * row, i + 1);
+      for (let i = 0; i < groupSize; i++)
+        addHuman(bodies, joints, x + 0.5 * i, 40 + 45 * row, i + 1);
       groups.push({ bodies, joints });
     }
   }
