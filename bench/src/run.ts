@@ -325,6 +325,16 @@ if (angles.length) {
 log();
 
 // ---- Settings and approximations ----
+function settingsWithoutRun(all: WorkerResult[]): string {
+  const failed = all.filter((r) => !r.ok);
+  if (failed.length === 0) return 'not run';
+  if (failed.every((r) => r.unsupported)) {
+    return `no supported scene run (${failed.map((r) => r.scene).join(', ')})`;
+  }
+  const crash = failed.find((r) => !r.unsupported) ?? failed[0]!;
+  return `did not load: ${crash.error}`;
+}
+
 log(
   'Engine settings (each at its documented/default settings; scene materials and sleep as Box2D):',
 );
@@ -332,7 +342,7 @@ for (const engine of engineIds) {
   const all = runnable.flatMap((s) => results.get(key(s, engine)) ?? []);
   const ok = all.find((r): r is Ok => r.ok);
   log(
-    `- ${engine}: ${ok ? ok.settings : `did not load: ${all.find((r) => !r.ok && 'error' in r)?.ok === false ? (all.find((r) => !r.ok) as { error: string }).error : 'not run'}`}`,
+    `- ${engine}: ${ok ? ok.settings : settingsWithoutRun(all)}`,
   );
   for (const scene of runnable) {
     const r = (results.get(key(scene, engine)) ?? []).find((x): x is Ok => x.ok);
