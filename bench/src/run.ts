@@ -341,9 +341,7 @@ log(
 for (const engine of engineIds) {
   const all = runnable.flatMap((s) => results.get(key(s, engine)) ?? []);
   const ok = all.find((r): r is Ok => r.ok);
-  log(
-    `- ${engine}: ${ok ? ok.settings : settingsWithoutRun(all)}`,
-  );
+  log(`- ${engine}: ${ok ? ok.settings : settingsWithoutRun(all)}`);
   for (const scene of runnable) {
     const r = (results.get(key(scene, engine)) ?? []).find((x): x is Ok => x.ok);
     if (r && r.notes.length) log(`    ${scene}: ${r.notes.join('; ')}`);
