@@ -26,6 +26,10 @@ export function measure(scene: SceneDesc, world: World): Metrics {
     const p = world.pose(i);
     if (!Number.isFinite(p.x) || !Number.isFinite(p.y) || !Number.isFinite(p.angle)) nan++;
   }
+  // Bodies the scene created while running (rain's ragdolls).
+  for (const p of world.groupPoses?.() ?? []) {
+    if (!Number.isFinite(p.x) || !Number.isFinite(p.y) || !Number.isFinite(p.angle)) nan++;
+  }
   const metrics: Metrics = { nan };
   const q = scene.quality;
   if (q.kind === 'pyramid') {

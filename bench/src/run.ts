@@ -126,7 +126,7 @@ for (let round = 1; round <= rounds; round++) {
       list.push(r);
       results.set(key(scene, engine), list);
       progress(
-        `round ${round}/${rounds} ${scene} ${engine}: ${r.ok ? `${r.msPerStep.toFixed(3)} ms/step (${r.timedSteps} steps)` : `FAILED ${r.error}`}`,
+        `round ${round}/${rounds} ${scene} ${engine}: ${r.ok ? `${r.msPerStep.toFixed(3)} ms/step (${r.timedSteps} steps)` : r.unsupported ? `unsupported: ${r.error}` : `FAILED ${r.error}`}`,
       );
     }
   }
@@ -239,7 +239,12 @@ for (const scene of sceneNames) {
         minMsPerStep: null,
         steps: null,
         ratio: null,
-        quality: `failed: ${failed && !failed.ok ? failed.error : 'no runs'}`,
+        quality:
+          failed && !failed.ok
+            ? failed.unsupported
+              ? `unsupported: ${failed.error}`
+              : `failed: ${failed.error}`
+            : 'failed: no runs',
       });
       continue;
     }
@@ -320,15 +325,23 @@ if (angles.length) {
 log();
 
 // ---- Settings and approximations ----
+function settingsWithoutRun(all: WorkerResult[]): string {
+  const failed = all.filter((r) => !r.ok);
+  if (failed.length === 0) return 'not run';
+  if (failed.every((r) => r.unsupported)) {
+    return `no supported scene run (${failed.map((r) => r.scene).join(', ')})`;
+  }
+  const crash = failed.find((r) => !r.unsupported) ?? failed[0]!;
+  return `did not load: ${crash.error}`;
+}
+
 log(
   'Engine settings (each at its documented/default settings; scene materials and sleep as Box2D):',
 );
 for (const engine of engineIds) {
   const all = runnable.flatMap((s) => results.get(key(s, engine)) ?? []);
   const ok = all.find((r): r is Ok => r.ok);
-  log(
-    `- ${engine}: ${ok ? ok.settings : `did not load: ${all.find((r) => !r.ok && 'error' in r)?.ok === false ? (all.find((r) => !r.ok) as { error: string }).error : 'not run'}`}`,
-  );
+  log(`- ${engine}: ${ok ? ok.settings : settingsWithoutRun(all)}`);
   for (const scene of runnable) {
     const r = (results.get(key(scene, engine)) ?? []).find((x): x is Ok => x.ok);
     if (r && r.notes.length) log(`    ${scene}: ${r.notes.join('; ')}`);

@@ -13,6 +13,7 @@ export type ShapeDesc =
       /** Rounding radius (m) added around the box, as b2MakeRoundedBox; 0 or absent: sharp. */
       readonly radius?: number;
       readonly material?: MaterialDesc;
+      readonly filter?: FilterDesc;
     }
   | {
       /** Every point within `radius` of the segment between the two centres (b2Capsule). */
@@ -23,12 +24,16 @@ export type ShapeDesc =
       readonly y2: number;
       readonly radius: number;
       readonly material?: MaterialDesc;
+      readonly filter?: FilterDesc;
     }
   | {
       readonly kind: 'polygon';
       /** Convex hull, counter-clockwise in the y-up frame, body-local (m). */
       readonly vertices: readonly (readonly [number, number])[];
+      /** Rounding radius (m) around the hull, as b2MakePolygon's radius; 0 or absent: sharp. */
+      readonly radius?: number;
       readonly material?: MaterialDesc;
+      readonly filter?: FilterDesc;
     }
   | {
       readonly kind: 'segment';
@@ -37,6 +42,7 @@ export type ShapeDesc =
       readonly x2: number;
       readonly y2: number;
       readonly material?: MaterialDesc;
+      readonly filter?: FilterDesc;
     }
   | {
       readonly kind: 'circle';
@@ -44,7 +50,18 @@ export type ShapeDesc =
       readonly cx: number;
       readonly cy: number;
       readonly material?: MaterialDesc;
+      readonly filter?: FilterDesc;
     };
+
+/**
+ * Box2D's collision filter: two shapes collide when each one's category is in the other's mask,
+ * unless they share a non-zero group (positive: always collide, negative: never).
+ */
+export interface FilterDesc {
+  readonly category: number;
+  readonly mask: number;
+  readonly group: number;
+}
 
 export interface MaterialDesc {
   readonly density?: number;
@@ -73,6 +90,10 @@ export interface BodyDesc {
   readonly enableSleep?: boolean;
   /** Box2D's enableHitEvents on the body's shapes (only Box2D v3 has them). */
   readonly hitEvents?: boolean;
+  /** Linear damping (1/s). Default 0. */
+  readonly linearDamping?: number;
+  /** Box2D's bodyDef.sleepThreshold (m/s); engines without it keep their own (and say so). */
+  readonly sleepThreshold?: number;
 }
 
 /** A revolute joint between two bodies of the scene (indices into `bodies`) at a world point. */
@@ -82,11 +103,33 @@ export interface JointDesc {
   /** Anchor in world coordinates (m, Box2D's frame). */
   readonly x: number;
   readonly y: number;
+  /**
+   * The joint angle is angleB - angleA - referenceAngle (rad; Box2D v3: the rotation of localFrameA
+   * when both bodies start unrotated). Default 0.
+   */
+  readonly referenceAngle?: number;
+  /** Joint angle limits (rad). */
+  readonly limit?: { readonly lower: number; readonly upper: number };
+  /** Motor (rad/s, N m); speed 0 with a small torque is Box2D's joint friction. */
+  readonly motor?: { readonly speed: number; readonly maxTorque: number };
+  /** Torsion spring towards joint angle 0. */
+  readonly spring?: { readonly hertz: number; readonly dampingRatio: number };
+}
+
+/** Bodies and joints created together while the scene runs (a column of ragdolls). */
+export interface BodyGroupDesc {
+  readonly bodies: readonly BodyDesc[];
+  /** Joints between this group's bodies (`a`, `b` index `bodies`). */
+  readonly joints: readonly JointDesc[];
 }
 
 /** Sent to a scene's per-step callback: moves a kinematic body towards a target pose in one step. */
 export interface StepApi {
   moveKinematicTo(index: number, x: number, y: number, angle: number): void;
+  /** Creates a group of bodies and joints (timed, as Box2D's rain creates ragdolls); a handle. */
+  createGroup(group: BodyGroupDesc): number;
+  /** Destroys a group's bodies and joints. */
+  destroyGroup(handle: number): void;
 }
 
 export type QualitySpec =
@@ -124,6 +167,13 @@ export interface SceneDesc {
    */
   readonly shapesCollide?: boolean;
   readonly onStep?: (step: number, api: StepApi) => void;
+  /** True when onStep creates and destroys body groups (engines need createGroup). */
+  readonly createsGroups?: boolean;
+  /**
+   * Every distinct shape filter the scene uses, those of groups created later included (absent
+   * filter: DEFAULT_FILTER), for engines that turn filters into a fixed set of collision classes.
+   */
+  readonly filters?: readonly FilterDesc[];
   readonly quality: QualitySpec;
   /** What differs from Box2D's scene, if anything (printed). */
   readonly notes?: string;
@@ -141,6 +191,11 @@ export interface World {
   /** Pose of scene.bodies[index] in Box2D's frame (origin of the body, or its centre where noted). */
   pose(index: number): Pose;
   moveKinematicTo(index: number, x: number, y: number, angle: number): void;
+  /** Body groups created while running (see StepApi); engines without it cannot run such scenes. */
+  createGroup?(group: BodyGroupDesc): number;
+  destroyGroup?(handle: number): void;
+  /** Poses of every body of every live group (for the quality check at the end). */
+  groupPoses?(): Pose[];
   /** Approximations this engine made for this scene, printed beside its settings. */
   readonly notes: readonly string[];
 }
@@ -152,7 +207,22 @@ export interface Engine {
   /** JavaScript engines can report gc events; for WASM engines gc covers only the JS glue. */
   readonly kind: 'js' | 'wasm';
   create(scene: SceneDesc): World;
+  /** Scenes this engine cannot run, with the reason (printed in the quality column). */
+  readonly unsupported?: Readonly<Record<string, string>>;
 }
+
+/**
+ * Whether two shapes collide under Box2D's filter rule (a shared non-zero group decides, else the
+ * category/mask bits both ways). Absent filters are category 1, mask all, group 0.
+ */
+export function filtersCollide(a: FilterDesc | undefined, b: FilterDesc | undefined): boolean {
+  const fa = a ?? DEFAULT_FILTER;
+  const fb = b ?? DEFAULT_FILTER;
+  if (fa.group === fb.group && fa.group !== 0) return fa.group > 0;
+  return (fa.category & fb.mask) !== 0 && (fb.category & fa.mask) !== 0;
+}
+
+export const DEFAULT_FILTER: FilterDesc = { category: 1, mask: 0xffffffff, group: 0 };
 
 export const DT = 1 / 60;
 export const SUB_STEPS = 4;
@@ -220,7 +290,7 @@ export function hull(points: readonly (readonly [number, number])[]): [number, n
 /**
  * For engines without capsules or rounded boxes: the shape as a convex polygon of 8 vertices
  * inscribed in it (a capsule's half circles by 4 points each; a rounded box with its corners cut
- * between the arcs' ends). Other shapes are returned unchanged. Counter-clockwise (y up).
+ * between the arcs' ends). A rounded polygon loses its radius. Other shapes are returned unchanged. Counter-clockwise (y up).
  */
 export type SharpShapeDesc = Exclude<ShapeDesc, { readonly kind: 'capsule' }>;
 
@@ -237,9 +307,7 @@ export function withoutRounding(shape: ShapeDesc): SharpShapeDesc {
         vertices.push([cx + shape.radius * Math.cos(angle), cy + shape.radius * Math.sin(angle)]);
       }
     }
-    return shape.material === undefined
-      ? { kind: 'polygon', vertices }
-      : { kind: 'polygon', vertices, material: shape.material };
+    return sharpPolygon(shape, vertices);
   }
   if (shape.kind === 'box' && (shape.radius ?? 0) > 0) {
     const r = shape.radius!;
@@ -260,9 +328,23 @@ export function withoutRounding(shape: ShapeDesc): SharpShapeDesc {
       c * x - s * y + shape.cx,
       s * x + c * y + shape.cy,
     ]);
-    return shape.material === undefined
-      ? { kind: 'polygon', vertices }
-      : { kind: 'polygon', vertices, material: shape.material };
+    return sharpPolygon(shape, vertices);
+  }
+  if (shape.kind === 'polygon' && (shape.radius ?? 0) > 0) {
+    // The rounding is dropped: the hull alone (a rounded polygon's corner radius is small here).
+    return sharpPolygon(shape, shape.vertices);
   }
   return shape;
+}
+
+function sharpPolygon(
+  shape: ShapeDesc,
+  vertices: readonly (readonly [number, number])[],
+): SharpShapeDesc {
+  return {
+    kind: 'polygon',
+    vertices,
+    ...(shape.material === undefined ? {} : { material: shape.material }),
+    ...(shape.filter === undefined ? {} : { filter: shape.filter }),
+  };
 }

@@ -6,6 +6,7 @@ import { parseArgs } from 'node:util';
 import { ENGINES } from './engines/index.ts';
 import { measure, type Metrics } from './metrics.ts';
 import { buildScene } from './scenes/index.ts';
+import type { StepApi } from './types.ts';
 
 export interface GcStats {
   /** gc events during the timed loop, by kind. */
@@ -38,7 +39,14 @@ export type WorkerResult =
       metrics: Metrics;
       gc: GcStats;
     }
-  | { ok: false; engine: string; scene: string; error: string };
+  | {
+      ok: false;
+      engine: string;
+      scene: string;
+      error: string;
+      /** True when the engine cannot run this scene (error is the reason), not a crash. */
+      unsupported?: boolean;
+    };
 
 const { values } = parseArgs({
   options: {
@@ -71,10 +79,26 @@ async function main(): Promise<void> {
     ...(values.steps === undefined ? {} : { steps: Number(values.steps) }),
   });
   const budgetMs = Number(values.budget) * 1000;
+  const unsupported = engine.unsupported?.[sceneName];
+  if (unsupported !== undefined) {
+    send({ ok: false, engine: engineId, scene: sceneName, error: unsupported, unsupported: true });
+    return;
+  }
 
   const t0 = performance.now();
   const world = engine.create(scene);
-  const api = { moveKinematicTo: world.moveKinematicTo.bind(world) };
+  const { createGroup, destroyGroup } = world;
+  if (scene.createsGroups && (!createGroup || !destroyGroup)) {
+    throw new Error(`${engineId} cannot create bodies while running`);
+  }
+  const noGroups = (): never => {
+    throw new Error('this scene creates no groups');
+  };
+  const api: StepApi = {
+    moveKinematicTo: world.moveKinematicTo.bind(world),
+    createGroup: createGroup ? createGroup.bind(world) : noGroups,
+    destroyGroup: destroyGroup ? destroyGroup.bind(world) : noGroups,
+  };
   scene.onStep?.(0, api);
   world.step();
   const setupMs = performance.now() - t0;

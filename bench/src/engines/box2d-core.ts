@@ -24,6 +24,9 @@ const ITERATIONS = { velocityIterations: 8, positionIterations: 3 };
 export const box2dCore: Engine = {
   id: '@box2d/core',
   kind: 'js',
+  unsupported: {
+    rain: 'adapter not built for rain: it has no body creation/destruction while running (Box2D v2.4 has no capsules, no revolute spring)',
+  },
   settings: `Box2D v2.4 TS port: ${ITERATIONS.velocityIterations} velocity / ${ITERATIONS.positionIterations} position iterations (v2's usual default), no sub-steps, sleep per scene, continuous on (default), revolute motor where the scene has one`,
   create(scene) {
     const world = b2World.Create(scene.gravity);

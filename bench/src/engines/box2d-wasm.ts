@@ -41,6 +41,9 @@ export async function loadBox2dWasm(): Promise<Engine> {
   return {
     id: 'box2d-wasm',
     kind: 'wasm',
+    unsupported: {
+      rain: 'adapter not built for rain: it has no body creation/destruction while running (Box2D v2.4 has no capsules, no revolute spring)',
+    },
     settings: `Box2D v2.4.1 (${name}.wasm): ${VELOCITY_ITERATIONS} velocity / ${POSITION_ITERATIONS} position iterations (v2's usual default), no sub-steps, sleep per scene, continuous on (default), revolute motor where the scene has one`,
     create: (scene) => createWorld(b2, scene),
   };

@@ -4,7 +4,10 @@ import {
   SUB_STEPS,
   localPoint,
   materialOf,
+  type BodyDesc,
+  type BodyGroupDesc,
   type Engine,
+  type JointDesc,
   type Pose,
   type SceneDesc,
   type ShapeDesc,
@@ -48,7 +51,13 @@ function addShape(b2: B2, scene: SceneDesc, bodyId: BodyId, shape: ShapeDesc, hi
   material.restitution = m.restitution;
   def.material = material;
   def.enableHitEvents = hit;
-  if (scene.shapesCollide === false) {
+  if (shape.filter) {
+    const filter = def.filter;
+    filter.categoryBits = shape.filter.category;
+    filter.maskBits = shape.filter.mask;
+    filter.groupIndex = shape.filter.group;
+    def.filter = filter;
+  } else if (scene.shapesCollide === false) {
     // Box2D's joint_grid filter: category 2, mask ~2, so no two shapes collide.
     const filter = def.filter;
     filter.categoryBits = 2;
@@ -88,7 +97,7 @@ function addShape(b2: B2, scene: SceneDesc, bodyId: BodyId, shape: ShapeDesc, hi
     }
     case 'polygon': {
       const hull = b2.b2ComputeHull(shape.vertices.map(([x, y]) => vec(b2, x, y)));
-      b2.b2CreatePolygonShape(bodyId, def, b2.b2MakePolygon(hull, 0));
+      b2.b2CreatePolygonShape(bodyId, def, b2.b2MakePolygon(hull, shape.radius ?? 0));
       break;
     }
     case 'segment': {
@@ -120,7 +129,7 @@ function createWorld(b2: B2, scene: SceneDesc): World {
   };
   const bodies: BodyId[] = [];
   let ground: BodyId | null = null;
-  for (const desc of scene.bodies) {
+  const makeBody = (desc: BodyDesc): BodyId => {
     const def = b2.b2DefaultBodyDef();
     def.type = types[desc.type];
     def.position = vec(b2, desc.x, desc.y);
@@ -129,8 +138,48 @@ function createWorld(b2: B2, scene: SceneDesc): World {
     def.angularVelocity = desc.w ?? 0;
     if (desc.asleep) def.isAwake = false;
     if (desc.enableSleep === false) def.enableSleep = false;
+    if (desc.linearDamping !== undefined) def.linearDamping = desc.linearDamping;
+    if (desc.sleepThreshold !== undefined) def.sleepThreshold = desc.sleepThreshold;
     const id = b2.b2CreateBody(worldId, def);
     for (const shape of desc.shapes) addShape(b2, scene, id, shape, desc.hitEvents ?? false);
+    return id;
+  };
+  const makeJoint = (joint: JointDesc, ids: readonly BodyId[], descs: readonly BodyDesc[]) => {
+    const def = b2.b2DefaultRevoluteJointDef();
+    const base = def.base;
+    base.bodyIdA = ids[joint.a]!;
+    base.bodyIdB = ids[joint.b]!;
+    const [ax, ay] = localPoint(descs[joint.a]!, joint.x, joint.y);
+    const [bx, by] = localPoint(descs[joint.b]!, joint.x, joint.y);
+    const frameA = new b2.b2Transform();
+    frameA.p = vec(b2, ax, ay);
+    // Box2D v3 measures the joint angle between the frames: A's rotation is the reference angle.
+    frameA.q = b2.b2MakeRot(joint.referenceAngle ?? 0);
+    base.localFrameA = frameA;
+    const frameB = new b2.b2Transform();
+    frameB.p = vec(b2, bx, by);
+    frameB.q = b2.b2MakeRot(0);
+    base.localFrameB = frameB;
+    def.base = base;
+    if (joint.limit) {
+      def.enableLimit = true;
+      def.lowerAngle = joint.limit.lower;
+      def.upperAngle = joint.limit.upper;
+    }
+    if (joint.motor) {
+      def.enableMotor = true;
+      def.motorSpeed = joint.motor.speed;
+      def.maxMotorTorque = joint.motor.maxTorque;
+    }
+    if (joint.spring) {
+      def.enableSpring = true;
+      def.hertz = joint.spring.hertz;
+      def.dampingRatio = joint.spring.dampingRatio;
+    }
+    b2.b2CreateRevoluteJoint(worldId, def);
+  };
+  for (const desc of scene.bodies) {
+    const id = makeBody(desc);
     if (desc.type === 'static' && ground === null) ground = id;
     if (desc.motor) {
       if (ground === null) throw new Error('a motor needs a static body before it');
@@ -154,28 +203,34 @@ function createWorld(b2: B2, scene: SceneDesc): World {
     }
     bodies.push(id);
   }
-  for (const joint of scene.joints ?? []) {
-    const def = b2.b2DefaultRevoluteJointDef();
-    const base = def.base;
-    base.bodyIdA = bodies[joint.a]!;
-    base.bodyIdB = bodies[joint.b]!;
-    const [ax, ay] = localPoint(scene.bodies[joint.a]!, joint.x, joint.y);
-    const [bx, by] = localPoint(scene.bodies[joint.b]!, joint.x, joint.y);
-    const frameA = new b2.b2Transform();
-    frameA.p = vec(b2, ax, ay);
-    frameA.q = b2.b2MakeRot(0);
-    base.localFrameA = frameA;
-    const frameB = new b2.b2Transform();
-    frameB.p = vec(b2, bx, by);
-    frameB.q = b2.b2MakeRot(0);
-    base.localFrameB = frameB;
-    def.base = base;
-    b2.b2CreateRevoluteJoint(worldId, def);
-  }
+  for (const joint of scene.joints ?? []) makeJoint(joint, bodies, scene.bodies);
+  const groups = new Map<number, BodyId[]>();
+  let nextGroup = 0;
   const target = new b2.b2Transform();
   const targetP = vec(b2, 0, 0);
   return {
     notes: [],
+    createGroup(group: BodyGroupDesc) {
+      const ids = group.bodies.map(makeBody);
+      for (const joint of group.joints) makeJoint(joint, ids, group.bodies);
+      groups.set(nextGroup, ids);
+      return nextGroup++;
+    },
+    destroyGroup(handle) {
+      // b2DestroyBody destroys the body's joints too.
+      for (const id of groups.get(handle) ?? []) b2.b2DestroyBody(id);
+      groups.delete(handle);
+    },
+    groupPoses() {
+      const poses: Pose[] = [];
+      for (const ids of groups.values()) {
+        for (const id of ids) {
+          const p = b2.b2Body_GetPosition(id);
+          poses.push({ x: p.x, y: p.y, angle: b2.b2Rot_GetAngle(b2.b2Body_GetRotation(id)) });
+        }
+      }
+      return poses;
+    },
     step() {
       b2.b2World_Step(worldId, DT, SUB_STEPS);
     },

@@ -38,6 +38,9 @@ interface Moving {
 export const matterEngine: Engine = {
   id: 'matter-js',
   kind: 'js',
+  unsupported: {
+    rain: 'no revolute joints with angle limits, motors or springs (matter-js constraints are pins)',
+  },
   settings: `matter-js defaults: positionIterations 6, velocityIterations 4, constraintIterations 2, slop 0.05, no sub-steps, no CCD; Engine.update(1000/60 ms); 1 m = ${SCALE} px; sleep per scene (enableSleeping); frictionAir set to 0; no kinematic bodies or motors (static bodies moved with setPosition/setAngle each step); segments as ${SEGMENT_THICKNESS} m static rectangles`,
   create: (scene) => createWorld(scene),
 };

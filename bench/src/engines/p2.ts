@@ -55,6 +55,9 @@ function area(original: ShapeDesc): number {
 export const p2Engine: Engine = {
   id: 'p2-es',
   kind: 'js',
+  unsupported: {
+    rain: 'adapter not built for rain: no body creation/destruction while running, no revolute joint limits/spring wiring yet',
+  },
   settings:
     'p2-es defaults: GSSolver 10 iterations, SAPBroadphase, island split on, no sub-steps, no CCD (ccdSpeedThreshold -1); sleep per scene (BODY_SLEEPING); body damping set to 0 (p2 default 0.1); friction on the default contact material; revolute motor where the scene has one',
   create(scene) {

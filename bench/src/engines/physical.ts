@@ -1,9 +1,18 @@
-import { Body, World as PhysicalWorld, revoluteJoint, type ShapeOptions } from '@physical/engine';
+import {
+  Body,
+  World as PhysicalWorld,
+  revoluteJoint,
+  type RevoluteJointOptions,
+  type ShapeOptions,
+} from '@physical/engine';
 import {
   DT,
   SUB_STEPS,
   materialOf,
+  type BodyDesc,
+  type BodyGroupDesc,
   type Engine,
+  type JointDesc,
   type Pose,
   type SceneDesc,
   type ShapeDesc,
@@ -37,6 +46,7 @@ function shapeOptions(scene: SceneDesc, shape: ShapeDesc): ShapeOptions {
       return {
         type: 'polygon',
         vertices: shape.vertices.map(([x, y]) => ({ x, y: -y })).reverse(),
+        radius: shape.radius ?? 0,
         ...material,
       };
     case 'segment':
@@ -56,6 +66,47 @@ function shapeOptions(scene: SceneDesc, shape: ShapeDesc): ShapeOptions {
   }
 }
 
+/** The joint's revolute options in Physical's y-down frame (see JointDesc for the angle). */
+function revoluteOptions(
+  joint: JointDesc,
+  a: BodyDesc,
+  b: BodyDesc,
+  notes: Set<string>,
+): Omit<RevoluteJointOptions, 'bodyA' | 'bodyB'> {
+  // Physical measures the joint angle from the bodies' angles at creation and in y-down, so
+  // Box2D's angle t = (angleB - angleA at creation) - referenceAngle - (Physical's angle).
+  const offset = (b.angle ?? 0) - (a.angle ?? 0) - (joint.referenceAngle ?? 0);
+  if (joint.spring && offset !== 0) {
+    notes.add(
+      'no reference-angle option on revoluteJoint: a spring of a joint with a reference angle (the elbows) rests at the creation angle (Box2D: at the reference angle)',
+    );
+  }
+  return {
+    anchor: { x: joint.x, y: -joint.y },
+    ...(joint.limit
+      ? {
+          enableLimit: true,
+          lowerAngle: offset - joint.limit.upper,
+          upperAngle: offset - joint.limit.lower,
+        }
+      : {}),
+    ...(joint.motor
+      ? {
+          enableMotor: true,
+          motorSpeed: -joint.motor.speed,
+          maxMotorTorque: joint.motor.maxTorque,
+        }
+      : {}),
+    ...(joint.spring
+      ? {
+          enableSpring: true,
+          hertz: joint.spring.hertz,
+          dampingRatio: joint.spring.dampingRatio,
+        }
+      : {}),
+  };
+}
+
 export const physical: Engine = {
   id: 'physical',
   kind: 'js',
@@ -67,25 +118,42 @@ export const physical: Engine = {
       enableSleep: scene.sleep,
       enableContinuous: true,
     });
-    const notes: string[] = [];
+    const notes = new Set<string>();
     const bodies: Body[] = [];
     let ground: Body | null = null;
-    for (const desc of scene.bodies) {
-      const body = new Body({
+    const makeBody = (desc: BodyDesc): Body => {
+      if (desc.sleepThreshold !== undefined) {
+        notes.add('no per-body sleep threshold (Box2D bodyDef.sleepThreshold): the default');
+      }
+      return new Body({
         type: desc.type,
         position: { x: desc.x, y: -desc.y },
         angle: -(desc.angle ?? 0),
         linearVelocity: { x: desc.vx ?? 0, y: -(desc.vy ?? 0) },
         angularVelocity: -(desc.w ?? 0),
+        linearDamping: desc.linearDamping ?? 0,
         asleep: desc.asleep ?? false,
         allowSleep: desc.enableSleep ?? true,
         shapes: desc.shapes.map((s) =>
-          // Box2D's joint_grid filter: category 2, mask ~2, so no two shapes ever collide.
-          scene.shapesCollide === false
-            ? { ...shapeOptions(scene, s), filter: { category: 2, mask: 0xfffffffd } }
-            : shapeOptions(scene, s),
+          s.filter
+            ? { ...shapeOptions(scene, s), filter: s.filter }
+            : // Box2D's joint_grid filter: category 2, mask ~2, so no two shapes ever collide.
+              scene.shapesCollide === false
+              ? { ...shapeOptions(scene, s), filter: { category: 2, mask: 0xfffffffd } }
+              : shapeOptions(scene, s),
         ),
       });
+    };
+    const makeJoint = (joint: JointDesc, list: readonly Body[], descs: readonly BodyDesc[]) =>
+      world.addJoint(
+        revoluteJoint({
+          bodyA: list[joint.a]!,
+          bodyB: list[joint.b]!,
+          ...revoluteOptions(joint, descs[joint.a]!, descs[joint.b]!, notes),
+        }),
+      );
+    for (const desc of scene.bodies) {
+      const body = makeBody(desc);
       world.add(body);
       bodies.push(body);
       if (desc.type === 'static' && ground === null) ground = body;
@@ -104,18 +172,34 @@ export const physical: Engine = {
         );
       }
     }
-    for (const joint of scene.joints ?? []) {
-      world.addJoint(
-        revoluteJoint({
-          bodyA: bodies[joint.a]!,
-          bodyB: bodies[joint.b]!,
-          anchor: { x: joint.x, y: -joint.y },
-        }),
-      );
-    }
-    if (scene.bodies.some((b) => b.hitEvents)) notes.push('no hit-event listener registered');
+    for (const joint of scene.joints ?? []) makeJoint(joint, bodies, scene.bodies);
+    const groups = new Map<number, Body[]>();
+    let nextGroup = 0;
+    if (scene.bodies.some((b) => b.hitEvents)) notes.add('no hit-event listener registered');
     return {
-      notes: [...new Set(notes)],
+      get notes() {
+        return [...notes];
+      },
+      createGroup(group: BodyGroupDesc) {
+        const list = group.bodies.map((desc) => world.add(makeBody(desc)));
+        for (const joint of group.joints) makeJoint(joint, list, group.bodies);
+        groups.set(nextGroup, list);
+        return nextGroup++;
+      },
+      destroyGroup(handle) {
+        // Removing a body removes its joints.
+        for (const body of groups.get(handle) ?? []) world.remove(body);
+        groups.delete(handle);
+      },
+      groupPoses() {
+        const poses: Pose[] = [];
+        for (const list of groups.values()) {
+          for (const body of list) {
+            poses.push({ x: body.position.x, y: -body.position.y, angle: -body.angle });
+          }
+        }
+        return poses;
+      },
       step() {
         world.step(DT);
       },

@@ -12,7 +12,10 @@ import {
   DT,
   materialOf,
   withoutRounding,
+  type BodyDesc,
+  type BodyGroupDesc,
   type Engine,
+  type JointDesc,
   type Pose,
   type ShapeDesc,
   type World,
@@ -44,24 +47,65 @@ export const planckEngine: Engine = {
     };
     const bodies: Body[] = [];
     let ground: Body | null = null;
-    for (const desc of scene.bodies) {
+    const makeBody = (desc: BodyDesc): Body => {
       const body = world.createBody({
         type: desc.type,
         position: { x: desc.x, y: desc.y },
         angle: desc.angle ?? 0,
         linearVelocity: { x: desc.vx ?? 0, y: desc.vy ?? 0 },
         angularVelocity: desc.w ?? 0,
+        linearDamping: desc.linearDamping ?? 0,
         awake: !(desc.asleep ?? false),
       });
+      if (desc.sleepThreshold !== undefined) {
+        notes.add('no per-body sleep threshold (world linearSleepTolerance default)');
+      }
       for (const shape of desc.shapes) {
         body.createFixture(makeShape(shape), {
           ...materialOf(scene, shape),
-          // Box2D's joint_grid filter: category 2, mask ~2, so no two shapes collide.
-          ...(scene.shapesCollide === false
-            ? { filterCategoryBits: 2, filterMaskBits: 0xfffd }
-            : {}),
+          ...(shape.filter
+            ? {
+                // planck's filter bits are 16-bit.
+                filterCategoryBits: shape.filter.category & 0xffff,
+                filterMaskBits: shape.filter.mask & 0xffff,
+                filterGroupIndex: shape.filter.group,
+              }
+            : // Box2D's joint_grid filter: category 2, mask ~2, so no two shapes collide.
+              scene.shapesCollide === false
+              ? { filterCategoryBits: 2, filterMaskBits: 0xfffd }
+              : {}),
         });
       }
+      return body;
+    };
+    const makeJoint = (joint: JointDesc, list: readonly Body[]): void => {
+      if (joint.spring) notes.add('no revolute spring (Box2D v2.4 design): limits and motor only');
+      const bodyA = list[joint.a]!;
+      const bodyB = list[joint.b]!;
+      const anchor = { x: joint.x, y: joint.y };
+      world.createJoint(
+        new RevoluteJoint({
+          bodyA,
+          bodyB,
+          localAnchorA: bodyA.getLocalPoint(anchor),
+          localAnchorB: bodyB.getLocalPoint(anchor),
+          // As Box2D v3's rotated frame A: the joint angle is angleB - angleA - referenceAngle.
+          referenceAngle: joint.referenceAngle ?? 0,
+          ...(joint.limit
+            ? { enableLimit: true, lowerAngle: joint.limit.lower, upperAngle: joint.limit.upper }
+            : {}),
+          ...(joint.motor
+            ? {
+                enableMotor: true,
+                motorSpeed: joint.motor.speed,
+                maxMotorTorque: joint.motor.maxTorque,
+              }
+            : {}),
+        }),
+      );
+    };
+    for (const desc of scene.bodies) {
+      const body = makeBody(desc);
       if (desc.type === 'static' && ground === null) ground = body;
       if (desc.motor && ground) {
         world.createJoint(
@@ -79,14 +123,35 @@ export const planckEngine: Engine = {
       }
       bodies.push(body);
     }
-    for (const joint of scene.joints ?? []) {
-      world.createJoint(
-        new RevoluteJoint({}, bodies[joint.a]!, bodies[joint.b]!, { x: joint.x, y: joint.y }),
-      );
-    }
+    for (const joint of scene.joints ?? []) makeJoint(joint, bodies);
+    const groups = new Map<number, Body[]>();
+    let nextGroup = 0;
     const velocity = { x: 0, y: 0 };
     return {
-      notes: [...notes],
+      get notes() {
+        return [...notes];
+      },
+      createGroup(group: BodyGroupDesc) {
+        const list = group.bodies.map(makeBody);
+        for (const joint of group.joints) makeJoint(joint, list);
+        groups.set(nextGroup, list);
+        return nextGroup++;
+      },
+      destroyGroup(handle) {
+        // destroyBody destroys the body's joints too.
+        for (const body of groups.get(handle) ?? []) world.destroyBody(body);
+        groups.delete(handle);
+      },
+      groupPoses() {
+        const poses: Pose[] = [];
+        for (const list of groups.values()) {
+          for (const body of list) {
+            const p = body.getPosition();
+            poses.push({ x: p.x, y: p.y, angle: body.getAngle() });
+          }
+        }
+        return poses;
+      },
       step() {
         world.step(DT);
       },

@@ -1,9 +1,15 @@
 import type RAPIER from '@dimforge/rapier2d-compat';
 import {
+  DEFAULT_FILTER,
   DT,
   localPoint,
   materialOf,
+  filtersCollide,
+  type BodyDesc,
+  type BodyGroupDesc,
   type Engine,
+  type FilterDesc,
+  type JointDesc,
   type Pose,
   type SceneDesc,
   type ShapeDesc,
@@ -41,6 +47,7 @@ export async function loadRapier(simd: boolean): Promise<Engine> {
 function createWorld(R: Rapier, scene: SceneDesc): World {
   const world = new R.World(scene.gravity);
   world.timestep = DT;
+  const notes = new Set<string>();
   const colliderDesc = (shape: ShapeDesc): InstanceType<typeof R.ColliderDesc> => {
     switch (shape.kind) {
       case 'box':
@@ -60,7 +67,11 @@ function createWorld(R: Rapier, scene: SceneDesc): World {
           .setRotation(Math.atan2(dy, dx) - Math.PI / 2);
       }
       case 'polygon': {
-        const desc = R.ColliderDesc.convexHull(new Float32Array(shape.vertices.flat()));
+        const points = new Float32Array(shape.vertices.flat());
+        const desc =
+          (shape.radius ?? 0) > 0
+            ? R.ColliderDesc.roundConvexHull(points, shape.radius!)
+            : R.ColliderDesc.convexHull(points);
         if (!desc) throw new Error('rapier rejected a convex hull');
         return desc;
       }
@@ -70,9 +81,29 @@ function createWorld(R: Rapier, scene: SceneDesc): World {
         return R.ColliderDesc.ball(shape.radius).setTranslation(shape.cx, shape.cy);
     }
   };
+  // Box2D's filters as Rapier interaction groups: each distinct filter of the scene is one class
+  // (one of 16 membership bits); a class's filter bits are the classes Box2D's rule lets it touch.
+  const classes = scene.filters ?? [];
+  if (classes.length > 16) throw new Error('more than 16 distinct collision filters');
+  const keyOf = (f: FilterDesc): string => `${f.category}/${f.mask}/${f.group}`;
+  const groupBits = new Map<string, number>();
+  classes.forEach((f, i) => {
+    let touches = 0;
+    classes.forEach((g, j) => {
+      if (filtersCollide(f, g)) touches |= 1 << j;
+    });
+    groupBits.set(keyOf(f), ((1 << (i + 16)) | touches) >>> 0);
+  });
+  const defaultBits = groupBits.get(keyOf(DEFAULT_FILTER));
+  const collisionGroups = (filter: FilterDesc | undefined): number | undefined => {
+    if (filter === undefined) return defaultBits;
+    const bits = groupBits.get(keyOf(filter));
+    if (bits === undefined) throw new Error('a shape filter missing from scene.filters');
+    return bits;
+  };
   const bodies: InstanceType<typeof R.RigidBody>[] = [];
   let ground: InstanceType<typeof R.RigidBody> | null = null;
-  for (const desc of scene.bodies) {
+  const makeBody = (desc: BodyDesc): InstanceType<typeof R.RigidBody> => {
     const bd =
       desc.type === 'static'
         ? R.RigidBodyDesc.fixed()
@@ -83,8 +114,10 @@ function createWorld(R: Rapier, scene: SceneDesc): World {
       .setRotation(desc.angle ?? 0)
       .setLinvel(desc.vx ?? 0, desc.vy ?? 0)
       .setAngvel(desc.w ?? 0)
+      .setLinearDamping(desc.linearDamping ?? 0)
       .setCanSleep(scene.sleep && desc.enableSleep !== false);
     if (desc.asleep) bd.setSleeping(true);
+    if (desc.sleepThreshold !== undefined) notes.add('no per-body sleep threshold: its default');
     const body = world.createRigidBody(bd);
     for (const shape of desc.shapes) {
       const m = materialOf(scene, shape);
@@ -92,10 +125,47 @@ function createWorld(R: Rapier, scene: SceneDesc): World {
         .setDensity(m.density)
         .setFriction(m.friction)
         .setRestitution(m.restitution);
+      const bits = collisionGroups(shape.filter);
+      if (bits !== undefined) collider.setCollisionGroups(bits);
       // Box2D's joint_grid filter: member of group 2, colliding with every group but 2.
-      if (scene.shapesCollide === false) collider.setCollisionGroups((0x0002 << 16) | 0xfffd);
+      else if (scene.shapesCollide === false) {
+        collider.setCollisionGroups((0x0002 << 16) | 0xfffd);
+      }
       world.createCollider(collider, body);
     }
+    return body;
+  };
+  const makeJoint = (
+    joint: JointDesc,
+    list: readonly InstanceType<typeof R.RigidBody>[],
+    descs: readonly BodyDesc[],
+  ): void => {
+    const [ax, ay] = localPoint(descs[joint.a]!, joint.x, joint.y);
+    const [bx, by] = localPoint(descs[joint.b]!, joint.x, joint.y);
+    const created = world.createImpulseJoint(
+      R.JointData.revolute({ x: ax, y: ay }, { x: bx, y: by }),
+      list[joint.a]!,
+      list[joint.b]!,
+      true,
+    ) as InstanceType<typeof R.RevoluteImpulseJoint>;
+    // Rapier's angle is angleB - angleA (both bodies start unrotated): shift by the reference.
+    const reference = joint.referenceAngle ?? 0;
+    if (joint.limit)
+      created.setLimits(joint.limit.lower + reference, joint.limit.upper + reference);
+    if (joint.spring) {
+      // One motor per joint: a position motor is the spring (acceleration-based, so stiffness
+      // w^2 and damping 2 zeta w, as Box2D's soft spring); the friction motor is left out.
+      const w = 2 * Math.PI * joint.spring.hertz;
+      created.configureMotorModel(R.MotorModel.AccelerationBased);
+      created.configureMotorPosition(reference, w * w, 2 * joint.spring.dampingRatio * w);
+      if (joint.motor)
+        notes.add('joint friction (a speed-0 motor) left out: the motor is the spring');
+    } else if (joint.motor) {
+      created.configureMotorVelocity(joint.motor.speed, 1e4);
+    }
+  };
+  for (const desc of scene.bodies) {
+    const body = makeBody(desc);
     if (desc.type === 'static' && ground === null) ground = body;
     if (desc.motor && ground) {
       const joint = world.createImpulseJoint(
@@ -108,19 +178,35 @@ function createWorld(R: Rapier, scene: SceneDesc): World {
     }
     bodies.push(body);
   }
-  for (const joint of scene.joints ?? []) {
-    const [ax, ay] = localPoint(scene.bodies[joint.a]!, joint.x, joint.y);
-    const [bx, by] = localPoint(scene.bodies[joint.b]!, joint.x, joint.y);
-    world.createImpulseJoint(
-      R.JointData.revolute({ x: ax, y: ay }, { x: bx, y: by }),
-      bodies[joint.a]!,
-      bodies[joint.b]!,
-      true,
-    );
-  }
+  for (const joint of scene.joints ?? []) makeJoint(joint, bodies, scene.bodies);
+  const groups = new Map<number, InstanceType<typeof R.RigidBody>[]>();
+  let nextGroup = 0;
   const velocity = { x: 0, y: 0 };
   return {
-    notes: [],
+    get notes() {
+      return [...notes];
+    },
+    createGroup(group: BodyGroupDesc) {
+      const list = group.bodies.map(makeBody);
+      for (const joint of group.joints) makeJoint(joint, list, group.bodies);
+      groups.set(nextGroup, list);
+      return nextGroup++;
+    },
+    destroyGroup(handle) {
+      // removeRigidBody removes the body's colliders and joints too.
+      for (const body of groups.get(handle) ?? []) world.removeRigidBody(body);
+      groups.delete(handle);
+    },
+    groupPoses() {
+      const poses: Pose[] = [];
+      for (const list of groups.values()) {
+        for (const body of list) {
+          const p = body.translation();
+          poses.push({ x: p.x, y: p.y, angle: body.rotation() });
+        }
+      }
+      return poses;
+    },
     step() {
       world.step();
     },

@@ -5,19 +5,21 @@ import { jointGrid } from './joint-grid.ts';
 import { junkyard } from './junkyard.ts';
 import { largePyramid } from './large-pyramid.ts';
 import { manyPyramids } from './many-pyramids.ts';
+import { rain } from './rain.ts';
 import { smash } from './smash.ts';
 import { sparse } from './sparse.ts';
 import { spinner } from './spinner.ts';
 import { tumbler } from './tumbler.ts';
 import { washer } from './washer.ts';
 
-/** Box2D v3's scenes that Physical can build today, in Box2D's order. */
+/** Box2D v3's scenes, in Box2D's order. */
 export const SCENES: Record<string, (options: SceneOptions) => SceneDesc> = {
   compounds,
   joint_grid: jointGrid,
   junkyard,
   large_pyramid: largePyramid,
   many_pyramids: manyPyramids,
+  rain,
   smash,
   spinner,
   tumbler,
@@ -25,9 +27,7 @@ export const SCENES: Record<string, (options: SceneOptions) => SceneDesc> = {
 };
 
 /** Box2D v3's scenes that need features Physical does not have yet. */
-export const UNSUPPORTED: Record<string, string> = {
-  rain: 'not built yet: capsule ragdolls with revolute joints, with collision filtering (not yet merged)',
-};
+export const UNSUPPORTED: Record<string, string> = {};
 
 /** Builds a scene by name; `sparse_<n>` is the scaling scene with n bodies. */
 export function buildScene(name: string, options: SceneOptions & { steps?: number }): SceneDesc {
