@@ -3,6 +3,7 @@ import type { MouseJoint, World } from '@physical/engine';
 import { STEP, type Scene, grab, sceneValues } from '@physical/scenes';
 import { h } from './dom.ts';
 import { icon } from './icons.ts';
+import { sceneStyleFor } from './scene-styles.ts';
 import { cameraAttribute } from './list-page.ts';
 import { sourceOf } from './sources.ts';
 
@@ -54,6 +55,7 @@ export function renderSample(root: HTMLElement, scene: Scene): () => void {
     style: `aspect-ratio: ${scene.camera.width} / ${scene.camera.height}`,
   });
   canvas.world = world;
+  canvas.styleFor = sceneStyleFor(scene);
   // Rods and ropes the scene declares, and the drag line from the grabbed body to the pointer.
   canvas.drawOverlay = (context, element) => {
     const links = scene.links?.(world) ?? [];

@@ -1,4 +1,4 @@
-import type { Vec2Like, World } from '@physical/engine';
+import type { Body, Vec2Like, World } from '@physical/engine';
 
 /** One slider of a sample: a number the scene is built from. */
 export interface SceneParameter {
@@ -45,6 +45,11 @@ export interface Scene {
    * as pairs of world points (m). Optional.
    */
   links?(world: World): readonly (readonly [Vec2Like, Vec2Like])[];
+  /**
+   * A fill colour (CSS) the gallery gives a body this frame, or null for the default: a sample
+   * colours what its events found (a sensor's visitors). Optional.
+   */
+  fill?(body: Body): string | null;
   /** Builds a fresh world from the parameter values. */
   build(values: SceneValues): World;
   /**
