@@ -4,7 +4,14 @@ import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import type { Body } from '../body.ts';
 import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
-import { Joint, optionalNonNegative, requireBody, requirePoint, type JointStep } from './joint.ts';
+import {
+  Joint,
+  optionalNonNegative,
+  requireBody,
+  requirePoint,
+  worldAnchor,
+  type JointStep,
+} from './joint.ts';
 
 /** Options of a {@link MouseJoint}: what dragging a body with a finger or the mouse needs. */
 export interface MouseJointOptions<UserData = unknown> {
@@ -81,6 +88,17 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
     this.force = optionalNonNegative('maxForce', options.maxForce, 1000 * options.body.mass);
     this.springHertz = options.hertz === undefined ? 5 : requirePositive('hertz', options.hertz);
     this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0.7);
+  }
+
+  /** @internal The target. */
+  protected writeAnchorA(out: Vec2): void {
+    out.x = this.targetX;
+    out.y = this.targetY;
+  }
+
+  /** @internal The pulled point of the body. */
+  protected writeAnchorB(out: Vec2): void {
+    worldAnchor(this.bodyB, this.localAnchorX, this.localAnchorY, out);
   }
 
   /** The dragged body. */
