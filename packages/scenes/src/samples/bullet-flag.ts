@@ -46,6 +46,8 @@ export default defineScene({
     // A backstop behind the plates: continuous collision stops every shot at a static wall, so
     // the ones that got through wait there.
     world.add(wall({ from: { x: BACKSTOP_X, y: 0 }, to: { x: BACKSTOP_X, y: -ROW_GAP * 6 } }));
+    // A floor that catches the sliding plates, so they stay in view.
+    world.add(wall({ from: { x: 2.5, y: 0.3 }, to: { x: BACKSTOP_X, y: 0.3 } }));
     for (let i = 0; i < count; i++) {
       const y = -0.8 - i * ROW_GAP;
       // The launcher, just behind the shot.
