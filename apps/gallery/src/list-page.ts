@@ -1,6 +1,7 @@
 import type { PhysicalCanvasElement } from '@physical/canvas';
 import { STEP, type Scene, sceneValues, scenes } from '@physical/scenes';
 import { h } from './dom.ts';
+import { sceneStyleFor } from './scene-styles.ts';
 
 /** Steps a thumbnail's world before it is drawn: the scene well under way. */
 const THUMBNAIL_STEPS = 150;
@@ -55,6 +56,7 @@ export function renderList(root: HTMLElement): () => void {
     const { scene, canvas } = pending[index]!;
     const world = scene.build(sceneValues(scene));
     for (let i = 0; i < Math.min(THUMBNAIL_STEPS, scene.steps); i++) world.step(STEP);
+    canvas.styleFor = sceneStyleFor(scene);
     canvas.world = world;
     setTimeout(() => next(index + 1), 0);
   };

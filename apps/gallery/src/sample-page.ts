@@ -3,6 +3,7 @@ import type { MouseJoint, World } from '@physical/engine';
 import { STEP, type Scene, grab, sceneValues } from '@physical/scenes';
 import { h } from './dom.ts';
 import { icon } from './icons.ts';
+import { sceneStyleFor } from './scene-styles.ts';
 import { cameraAttribute } from './list-page.ts';
 import { sourceOf } from './sources.ts';
 
@@ -18,9 +19,6 @@ const OVERLAYS = [
 
 /** The stage's colour: Material's raised dark surface, so the canvas reads as a panel. */
 export const SURFACE = '#1e1e1e';
-
-const LINK_COLOR = 'rgba(255, 255, 255, 0.6)';
-const DRAG_COLOR = '#82b1ff';
 
 /** Time scale of slow motion. */
 const SLOW_MOTION = 0.25;
@@ -56,27 +54,8 @@ export function renderSample(root: HTMLElement, scene: Scene): () => void {
     style: `aspect-ratio: ${scene.camera.width} / ${scene.camera.height}`,
   });
   canvas.world = world;
-  // Rods and ropes the scene declares, and the drag line from the grabbed body to the pointer.
-  canvas.drawOverlay = (context, element) => {
-    const links = scene.links?.(world) ?? [];
-    if (links.length === 0 && dragged === null) return;
-    context.lineWidth = 1.5 / element.viewport.scale;
-    context.strokeStyle = LINK_COLOR;
-    context.beginPath();
-    for (const [from, to] of links) {
-      context.moveTo(from.x, from.y);
-      context.lineTo(to.x, to.y);
-    }
-    context.stroke();
-    if (dragged !== null && dragged.world !== null) {
-      const from = dragged.body.position;
-      context.strokeStyle = DRAG_COLOR;
-      context.beginPath();
-      context.moveTo(from.x, from.y);
-      context.lineTo(dragged.target.x, dragged.target.y);
-      context.stroke();
-    }
-  };
+  canvas.styleFor = sceneStyleFor(scene);
+  // Joints (the scene's rods and hinges, and the mouse joint of a drag) are drawn by the canvas.
 
   // ---- toolbar: play/pause, step, slow motion, reset, time
   const play = iconButton('pause', 'Pause', 'play');

@@ -1,6 +1,8 @@
 import type { Scene } from './scene.ts';
 import bridge from './samples/bridge.ts';
+import bulletFlag from './samples/bullet-flag.ts';
 import bullets from './samples/bullets.ts';
+import collisionFiltering from './samples/collision-filtering.ts';
 import capsulesAndRoundedBoxes from './samples/capsules-and-rounded-boxes.ts';
 import car from './samples/car.ts';
 import concaveShapes from './samples/concave-shapes.ts';
@@ -17,6 +19,7 @@ import newtonsCradle from './samples/newtons-cradle.ts';
 import pyramid from './samples/pyramid.ts';
 import ragdoll from './samples/ragdoll.ts';
 import restitutionRow from './samples/restitution-row.ts';
+import sensors from './samples/sensors.ts';
 import tumbler from './samples/tumbler.ts';
 import verticalStack from './samples/vertical-stack.ts';
 
@@ -34,6 +37,9 @@ export const scenes: readonly Scene[] = [
   ragdoll,
   tumbler,
   bullets,
+  bulletFlag,
+  sensors,
+  collisionFiltering,
   compoundShapes,
   concaveShapes,
   capsulesAndRoundedBoxes,

@@ -1,4 +1,4 @@
-import type { Vec2Like, World } from '@physical/engine';
+import type { Body, World } from '@physical/engine';
 
 /** One slider of a sample: a number the scene is built from. */
 export interface SceneParameter {
@@ -41,10 +41,10 @@ export interface Scene {
   /** Fixed steps of 1/60 s the regression suite runs (and the thumbnail shows). */
   readonly steps: number;
   /**
-   * Lines the gallery draws over the bodies (rods, ropes: joints the canvas does not draw),
-   * as pairs of world points (m). Optional.
+   * A fill colour (CSS) the gallery gives a body this frame, or null for the default: a sample
+   * colours what its events found (a sensor's visitors). Optional.
    */
-  links?(world: World): readonly (readonly [Vec2Like, Vec2Like])[];
+  fill?(body: Body): string | null;
   /** Builds a fresh world from the parameter values. */
   build(values: SceneValues): World;
   /**

@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { type Scene, findScene, runScene, sceneValues } from '@physical/scenes';
+import { STEP, type Scene, findScene, runScene, sceneValues } from '@physical/scenes';
 
 function scene(id: string): Scene {
   const found = findScene(id);
@@ -50,5 +50,50 @@ describe('sample checks reject broken outcomes', () => {
     expect(row.check(runScene(row, sceneValues(row), 5), sceneValues(row))).toMatch(
       /never bounced/,
     );
+  });
+
+  it('sensors: a zone that counted one ball twice', () => {
+    const sensors = scene('sensors');
+    const world = runScene(sensors);
+    const zone = world.bodies.find((body) => body.shapes[0]?.sensor === true)!;
+    (zone.userData as { entered: number }).entered++;
+    expect(sensors.check(world, sceneValues(sensors))).toMatch(/the zone counted/);
+  });
+
+  it('sensors: balls still above the zone', () => {
+    const sensors = scene('sensors');
+    expect(
+      sensors.check(runScene(sensors, sceneValues(sensors), 10), sceneValues(sensors)),
+    ).toMatch(/has not fallen past/);
+  });
+
+  it('collision filtering: teams never thrown at each other never touch', () => {
+    const filtering = scene('collision-filtering');
+    const values = sceneValues(filtering, { speed: 0 });
+    expect(filtering.check(runScene(filtering, values), values)).toMatch(/ever touched/);
+  });
+
+  it('collision filtering: without the filters, teammates collide', () => {
+    const filtering = scene('collision-filtering');
+    const values = sceneValues(filtering);
+    const world = filtering.build(values);
+    for (const body of world.bodies) body.shapes[0]!.filter = { category: 1, mask: 0xffffffff };
+    for (let i = 0; i < filtering.steps; i++) world.step(STEP);
+    expect(filtering.check(world, values)).toMatch(/contacts between balls of one team/);
+  });
+
+  it('collision filtering: a red ball placed inside a blue one', () => {
+    const filtering = scene('collision-filtering');
+    const world = runScene(filtering);
+    const red = world.bodies.find((body) => body.userData === 'red')!;
+    const blue = world.bodies.find((body) => body.userData === 'blue')!;
+    red.position = { x: blue.position.x + 0.1, y: blue.position.y };
+    expect(filtering.check(world, sceneValues(filtering))).toMatch(/overlap by/);
+  });
+
+  it('bullet flag: without it, the plain balls pass through the moving plates', () => {
+    const flag = scene('bullet-flag');
+    const values = sceneValues(flag, { bullet: 0 });
+    expect(flag.check(runScene(flag, values), values)).toMatch(/4 of 4 shots passed through/);
   });
 });

@@ -1,6 +1,7 @@
 import { drawBodies, drawLabels, type BodyBatches } from './draw-bodies.ts';
 import { drawCollisionArrows } from './draw-collision-arrows.ts';
 import { drawDebugOverlays } from './draw-debug.ts';
+import { drawJoints } from './draw-joints.ts';
 import type { Scene } from './scene.ts';
 
 /**
@@ -17,7 +18,7 @@ export function setWorldTransform(
 }
 
 /**
- * Draws a whole frame: background, bodies, collision arrows, debug overlays, then `overlay` (in
+ * Draws a whole frame: background, bodies, joints, collision arrows, debug overlays, then `overlay` (in
  * world metres, for app drawings such as force arrows), then labels. The canvas's backing store
  * must be `viewport.width * devicePixelRatio` by `viewport.height * devicePixelRatio` pixels.
  */
@@ -38,6 +39,7 @@ export function drawScene(
   if (scene.world === null) return;
   setWorldTransform(context, scene);
   drawBodies(context, scene, batches);
+  drawJoints(context, scene);
   if (scene.collisionArrows.length > 0) {
     drawCollisionArrows(context, scene.viewport.scale, scene.collisionArrows, scene.forceScale);
   }

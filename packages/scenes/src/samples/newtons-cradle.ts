@@ -56,12 +56,6 @@ export default defineScene({
     }
     return world;
   },
-  // The rods: from each ball's pivot on the bar to its centre.
-  links(world) {
-    return world.bodies
-      .slice(1)
-      .map((ball) => [{ x: (ball.userData as Bob).restX, y: 0 }, ball.position] as const);
-  },
   check(world, { pulled, angle }) {
     const balls = world.bodies.slice(1);
     const reach = LENGTH * Math.sin((angle * Math.PI) / 180);

@@ -125,6 +125,8 @@ export abstract class Joint<UserData = unknown> {
   /** @internal Sub-step duration of the last step (s), to turn a sub-step impulse into a force. */
   subStepDuration = 1 / 240;
   private readonly reactionView: Vec2 = { x: 0, y: 0 };
+  private readonly anchorViewA: Vec2 = { x: 0, y: 0 };
+  private readonly anchorViewB: Vec2 = { x: 0, y: 0 };
 
   constructor(options: JointOptions<UserData>, bodyA: Body, bodyB: Body) {
     this.bodyA = bodyA;
@@ -152,6 +154,30 @@ export abstract class Joint<UserData = unknown> {
   get reactionTorque(): number {
     return this.reactionAngular;
   }
+
+  /**
+   * The joint's point on body A in world coordinates (m), from the body's current pose: where a
+   * renderer draws the joint. For a {@link MouseJoint}, the target. A reused view, like
+   * `body.position`: read it, do not keep it.
+   */
+  get anchorA(): Readonly<Vec2> {
+    this.writeAnchorA(this.anchorViewA);
+    return this.anchorViewA;
+  }
+
+  /**
+   * The joint's point on body B in world coordinates (m), from the body's current pose. A rigid
+   * joint holds it on {@link anchorA}, up to its softness. A reused view: read it, do not keep it.
+   */
+  get anchorB(): Readonly<Vec2> {
+    this.writeAnchorB(this.anchorViewB);
+    return this.anchorViewB;
+  }
+
+  /** @internal Writes the world point of {@link anchorA} into `out`. */
+  protected abstract writeAnchorA(out: Vec2): void;
+  /** @internal Writes the world point of {@link anchorB} into `out`. */
+  protected abstract writeAnchorB(out: Vec2): void;
 
   /** Wakes both bodies (a setting changed). */
   protected wakeBodies(): void {
@@ -244,6 +270,13 @@ export function jointPreventsCollision(a: Body, b: Body): boolean {
     }
   }
   return false;
+}
+
+/** @internal Writes the world point of a body-local point (m) into `out`, without allocating. */
+export function worldAnchor(body: Body, localX: number, localY: number, out: Vec2): void {
+  const { c, s, x, y } = body.transform;
+  out.x = c * localX - s * localY + x;
+  out.y = s * localX + c * localY + y;
 }
 
 // ---------------------------------------------------------------- validation helpers

@@ -14,6 +14,7 @@ import {
   requirePoint,
   stateNumber,
   stateVector,
+  worldAnchor,
 } from './joint.ts';
 
 /** Options of a {@link MouseJoint}: what dragging a body with a finger or the mouse needs. */
@@ -105,6 +106,17 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
     this.force = optionalNonNegative('maxForce', options.maxForce, 1000 * options.body.mass);
     this.springHertz = options.hertz === undefined ? 5 : requirePositive('hertz', options.hertz);
     this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0.7);
+  }
+
+  /** @internal The target. */
+  protected writeAnchorA(out: Vec2): void {
+    out.x = this.targetX;
+    out.y = this.targetY;
+  }
+
+  /** @internal The pulled point of the body. */
+  protected writeAnchorB(out: Vec2): void {
+    worldAnchor(this.bodyB, this.localAnchorX, this.localAnchorY, out);
   }
 
   /** The dragged body. */

@@ -1,6 +1,6 @@
 import { PhysicalError } from '../../core/errors.ts';
 import { requireFinite, requireNonNegative } from '../../core/validate.ts';
-import type { Vec2Like } from '../../math/vec2.ts';
+import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import {
@@ -17,6 +17,7 @@ import {
   stateBoolean,
   stateNumber,
   stateVector,
+  worldAnchor,
 } from './joint.ts';
 
 /** Options of a {@link PrismaticJoint}: a slider along an axis. */
@@ -142,6 +143,16 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
     this.springEnabled = options.enableSpring ?? false;
     this.springHertz = optionalNonNegative('hertz', options.hertz, 0);
     this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0);
+  }
+
+  /** @internal */
+  protected writeAnchorA(out: Vec2): void {
+    worldAnchor(this.bodyA, this.localAnchorAX, this.localAnchorAY, out);
+  }
+
+  /** @internal */
+  protected writeAnchorB(out: Vec2): void {
+    worldAnchor(this.bodyB, this.localAnchorBX, this.localAnchorBY, out);
   }
 
   /** Translation of B's anchor from A's along the axis (m). */

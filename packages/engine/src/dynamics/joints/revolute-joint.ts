@@ -1,5 +1,5 @@
 import { requireFinite, requireNonNegative } from '../../core/validate.ts';
-import type { Vec2Like } from '../../math/vec2.ts';
+import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import {
@@ -16,6 +16,7 @@ import {
   stateBoolean,
   stateNumber,
   stateVector,
+  worldAnchor,
 } from './joint.ts';
 
 /** Options of a {@link RevoluteJoint}: a hinge (a pin) through one world point. */
@@ -129,6 +130,16 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
     this.springEnabled = options.enableSpring ?? false;
     this.springHertz = optionalNonNegative('hertz', options.hertz, 0);
     this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0);
+  }
+
+  /** @internal */
+  protected writeAnchorA(out: Vec2): void {
+    worldAnchor(this.bodyA, this.localAnchorAX, this.localAnchorAY, out);
+  }
+
+  /** @internal */
+  protected writeAnchorB(out: Vec2): void {
+    worldAnchor(this.bodyB, this.localAnchorBX, this.localAnchorBY, out);
   }
 
   /** Current joint angle (rad): angle of B minus angle of A, minus that difference at creation. */

@@ -1,5 +1,5 @@
 import { requireNonNegative } from '../../core/validate.ts';
-import type { Vec2Like } from '../../math/vec2.ts';
+import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import {
@@ -13,6 +13,7 @@ import {
   requirePoint,
   stateNumber,
   stateVector,
+  worldAnchor,
 } from './joint.ts';
 
 /** Options of a {@link WeldJoint}: glues two bodies together, rigidly or springily. */
@@ -88,6 +89,16 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
     this.linearFrequency = optionalNonNegative('linearHertz', options.linearHertz, 0);
     this.angularFrequency = optionalNonNegative('angularHertz', options.angularHertz, 0);
     this.ratio = optionalNonNegative('dampingRatio', options.dampingRatio, 1);
+  }
+
+  /** @internal */
+  protected writeAnchorA(out: Vec2): void {
+    worldAnchor(this.bodyA, this.localAnchorAX, this.localAnchorAY, out);
+  }
+
+  /** @internal */
+  protected writeAnchorB(out: Vec2): void {
+    worldAnchor(this.bodyB, this.localAnchorBX, this.localAnchorBY, out);
   }
 
   /** Stiffness of the position hold (Hz); 0 is rigid. Setting it wakes the bodies. */
