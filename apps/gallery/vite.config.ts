@@ -11,6 +11,7 @@ export default defineConfig({
       '@physical/engine': source('../../packages/engine/src/index.ts'),
       '@physical/canvas': source('../../packages/canvas/src/index.ts'),
       '@physical/scenes': source('../../packages/scenes/src/index.ts'),
+      '@physical/dom': source('../../packages/dom/src/index.ts'),
     },
   },
   build: { outDir: source('dist'), emptyOutDir: true, target: 'es2022' },

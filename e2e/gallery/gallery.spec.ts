@@ -217,3 +217,33 @@ test('gallery: axe-core finds no serious or critical violations', async ({ brows
     await closeGallery(gallery);
   }
 });
+
+test('gallery: the Physical UI page drops a tapped chip, and its buttons still count', async ({
+  browser,
+}) => {
+  const gallery = await openGallery(browser);
+  const { page } = gallery;
+  try {
+    await page.locator('[data-page="physical-ui"]').click();
+    await page.waitForSelector('.physical-ui .chip');
+    const chip = page.locator('.physical-ui .chip').first();
+    assert.equal(await chip.getAttribute('data-physical'), 'layout');
+    const before = await chip.boundingBox();
+    await chip.click();
+    await sleep(300);
+    assert.equal(await chip.getAttribute('data-physical'), 'free', 'a tapped chip is released');
+    // The chips below it are still in their layout (obstacles): drop them all.
+    await page.locator('.physical-ui #drop').click();
+    await sleep(1500);
+    const after = await chip.boundingBox();
+    assert.ok(after!.y > before!.y + 50, `the chip fell (${before!.y} -> ${after!.y} px)`);
+    const counter = page.locator('.physical-ui #count');
+    await counter.click();
+    await sleep(100);
+    assert.equal(await counter.locator('span').textContent(), '1', 'the button counted the click');
+    await screenshot(page, 'physical-ui-phone');
+    assertQuiet(gallery);
+  } finally {
+    await closeGallery(gallery);
+  }
+});

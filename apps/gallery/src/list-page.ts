@@ -46,6 +46,11 @@ export function renderList(root: HTMLElement): () => void {
         'Each sample is a small module built on Physical\u2019s public API. Open one to run it, ' +
           'change its parameters, turn on the debug overlays and read its source.',
       ),
+      h(
+        'a',
+        { class: 'card physical-ui-card', href: '#/physical-ui', 'data-page': 'physical-ui' },
+        h('h2', {}, 'Physical UI: a page\u2019s own buttons, falling, thrown, still buttons'),
+      ),
       grid,
     ),
   );
