@@ -350,7 +350,7 @@ for (const engine of engineIds) {
 log(
   '- Scenes: tumbler uses a revolute motor (25 deg/s, max torque 1e8) where the engine has motors, ' +
     'else a kinematic body at 25 deg/s; joint_grid circles ignore one another where the engine has ' +
-    'collision filters (all peers; not yet Physical); washer hit events only exist in box2d3-wasm; ' +
+    'collision filters (every engine here); washer hit events only exist in box2d3-wasm; ' +
     "spinner's paddle likewise (5 rad/s, unlimited torque), and its capsules and rounded paddle are " +
     'approximated where an engine lacks them (see the notes above).',
 );
