@@ -73,7 +73,7 @@ export class ContactManager {
         i++;
         continue;
       }
-      if (!aabbOverlaps(contact.fatA, contact.fatB)) {
+      if (!aabbOverlaps(contact.shapeA.fatAABB, contact.shapeB.fatAABB)) {
         this.destroy(contact, false);
         continue; // the last contact now sits at index i
       }

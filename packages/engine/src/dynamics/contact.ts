@@ -13,7 +13,6 @@ import type { Capsule } from '../geometry/capsule.ts';
 import type { Circle } from '../geometry/circle.ts';
 import type { Polygon } from '../geometry/polygon.ts';
 import type { Segment } from '../geometry/segment.ts';
-import type { AABB } from '../geometry/aabb.ts';
 import type { Body } from './body.ts';
 import {
   CACHE,
@@ -82,14 +81,6 @@ export class Contact {
   shapeB!: Shape;
   bodyA!: Body;
   bodyB!: Body;
-  /**
-   * The shapes' tight and fat boxes (the Shape's own AABB objects, which it never replaces), held
-   * here so the per-contact checks of every step skip a hop through the shape objects.
-   */
-  boxA!: AABB;
-  boxB!: AABB;
-  fatA!: AABB;
-  fatB!: AABB;
   /** Which collide function applies. */
   pairKind = 0;
   /** The manifold has at least one point (possibly speculative). */
@@ -110,10 +101,6 @@ export class Contact {
     this.shapeB = b;
     this.bodyA = a.body;
     this.bodyB = b.body;
-    this.boxA = a.aabb;
-    this.boxB = b.aabb;
-    this.fatA = a.fatAABB;
-    this.fatB = b.fatAABB;
     this.touching = false;
     this.extentB = Math.hypot(b.body.localCenterX, b.body.localCenterY);
     const base = this.index * CONTACT_STRIDE;
@@ -168,8 +155,8 @@ export class Contact {
     const margin = SPECULATIVE_DISTANCE + reach;
     // Most pairs whose fat boxes overlap are nowhere near touching: their tight boxes, kept
     // current by the world, settle that before anything else of the contact is read.
-    const boxA = this.boxA;
-    const boxB = this.boxB;
+    const boxA = this.shapeA.aabb;
+    const boxB = this.shapeB.aabb;
     if (
       boxA.minX - margin > boxB.maxX ||
       boxB.minX - margin > boxA.maxX ||
