@@ -37,7 +37,7 @@ import {
   type SnapshotValue,
 } from './snapshot-values.ts';
 import type { ResolvedWorldOptions } from './world-options.ts';
-import type { World } from './world.ts';
+import { World } from './world.ts';
 
 // World snapshots: everything that decides future steps, as plain JSON-compatible data, so that
 // restoring and stepping gives bit-for-bit the states of never having saved.
@@ -55,6 +55,9 @@ import type { World } from './world.ts';
 // Not saved: listeners, userData and the Force objects an app holds (the restored world has new
 // ones, in the same order: world.bodies[i] is the body that was at i, body.forces[j] and
 // world.joints[k] likewise).
+//
+// takeSnapshot and restoreSnapshot are free functions, not World methods, so that an app that
+// never calls them bundles neither this code nor every joint kind joint-snapshot.ts imports.
 
 export type { SnapshotNumber, SnapshotValue } from './snapshot-values.ts';
 
@@ -64,7 +67,7 @@ export const SNAPSHOT_FORMAT = 'physical-world';
 export const SNAPSHOT_VERSION = 1;
 
 /**
- * A saved world ({@link World.snapshot}): plain data, safe for `JSON.stringify`. Its sections are
+ * A saved world ({@link takeSnapshot}): plain data, safe for `JSON.stringify`. Its sections are
  * `settings`, `world` (counters), `bodies` (with their shapes and forces), `contacts`, `sensors`,
  * `broadPhase` and `joints`. Treat the contents as opaque: the layout may change with `version`.
  */
@@ -96,6 +99,44 @@ export interface WorldInternals {
   nextBodyId: number;
   stepCount: number;
   lastStep: number;
+}
+
+/**
+ * Saves everything that decides the world's future as plain, JSON-compatible data: restoring it
+ * with {@link restoreSnapshot} and stepping gives bit-for-bit the states this world reaches.
+ * Listeners, `userData` and the app's Force objects are not saved. Not allowed during a step:
+ * from a listener it throws a PhysicalError.
+ *
+ * @example
+ * const saved = JSON.stringify(takeSnapshot(world));
+ * // later, or elsewhere
+ * const copy = restoreSnapshot(JSON.parse(saved));
+ */
+export function takeSnapshot(world: World): WorldSnapshot {
+  if (world.isStepping) {
+    throw new PhysicalError(
+      'snapshot',
+      'cannot be taken while the world is stepping (from a listener); take it after step().',
+    );
+  }
+  return saveWorld(world.internals());
+}
+
+/**
+ * A new world from a {@link takeSnapshot} result (a parsed JSON copy is fine), its bodies in the
+ * saved order. Checks the whole snapshot first: a wrong format or version, a missing or
+ * non-numeric field or a broken reference throws a PhysicalError naming the field
+ * (`snapshot.bodies[2].angle`), and no world is returned.
+ *
+ * @example
+ * const checkpoint = takeSnapshot(world);
+ * world.step();
+ * const rewound = restoreSnapshot(checkpoint); // the world as it was before that step
+ */
+export function restoreSnapshot(snapshot: WorldSnapshot): World {
+  const world = new World();
+  loadWorld(world.internals(), snapshot);
+  return world;
 }
 
 // ------------------------------------------------------------------ saving
@@ -200,8 +241,8 @@ function saveTree(tree: TreeState): SnapshotValue {
   return { ...tree, boxes: encAll(tree.boxes) };
 }
 
-/** @internal Writes a world's state as a snapshot. */
-export function saveWorld(w: WorldInternals): WorldSnapshot {
+/** Writes a world's state as a snapshot. */
+function saveWorld(w: WorldInternals): WorldSnapshot {
   const s = w.settings;
   const contactIndex = new Map<Contact, number>();
   w.contactManager.contacts.forEach((c, i) => contactIndex.set(c, i));
@@ -544,11 +585,11 @@ function readTree(path: string, v: unknown): TreeState {
 }
 
 /**
- * @internal Loads a snapshot into a newly made, empty world. Validates every section and every
- * reference before it returns; on error it throws a PhysicalError naming the field, and the
- * caller drops the half-built world.
+ * Loads a snapshot into a newly made, empty world. Validates every section and every reference
+ * before it returns; on error it throws a PhysicalError naming the field, and the caller drops
+ * the half-built world.
  */
-export function loadWorld(w: WorldInternals, snapshot: unknown): void {
+function loadWorld(w: WorldInternals, snapshot: unknown): void {
   const root = obj('', snapshot);
   const format = root['format'];
   if (format !== SNAPSHOT_FORMAT) {

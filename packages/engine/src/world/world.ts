@@ -37,7 +37,7 @@ import { Sensors } from '../dynamics/sensor.ts';
 import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
 import { Solver } from '../dynamics/solver.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
-import { loadWorld, saveWorld, type WorldInternals, type WorldSnapshot } from './snapshot.ts';
+import type { WorldInternals } from './snapshot.ts';
 import { ShapeQueries, type QueryPose, type ShapeCastHit } from './shape-queries.ts';
 import {
   resolveWorldOptions,
@@ -452,40 +452,6 @@ export class World {
       this.fillCollisionEvent(contact, event);
       visitor(event);
     }
-  }
-
-  // ---------------------------------------------------------------- snapshots
-
-  /**
-   * Saves everything that decides the world's future as plain, JSON-compatible data: restoring it
-   * with {@link World.fromSnapshot} and stepping gives bit-for-bit the states this world reaches.
-   * Listeners, `userData` and the app's Force objects are not saved. Not allowed during a step.
-   *
-   * @example
-   * const saved = JSON.stringify(world.snapshot());
-   * // later, or elsewhere
-   * const copy = World.fromSnapshot(JSON.parse(saved));
-   */
-  snapshot(): WorldSnapshot {
-    if (this.locked) {
-      throw new PhysicalError(
-        'snapshot',
-        'cannot be taken while the world is stepping (from a listener); take it after step().',
-      );
-    }
-    return saveWorld(this.internals());
-  }
-
-  /**
-   * A new world from a {@link snapshot} (a parsed JSON copy is fine), its bodies in the saved
-   * order. Checks the whole snapshot first: a wrong format or version, a missing or non-numeric
-   * field or a broken reference throws a PhysicalError naming the field (`snapshot.bodies[2].angle`),
-   * and no world is returned.
-   */
-  static fromSnapshot(snapshot: WorldSnapshot): World {
-    const world = new World();
-    loadWorld(world.internals(), snapshot);
-    return world;
   }
 
   // ---------------------------------------------------------------- events
@@ -915,7 +881,11 @@ export class World {
     }
   }
 
-  /** @internal The parts of the world a snapshot reads and writes. */
+  /**
+   * @internal The parts of the world a snapshot reads and writes (`takeSnapshot` and
+   * `restoreSnapshot` in snapshot.ts, kept out of World so that apps without snapshots do not
+   * bundle them, nor every joint kind they import).
+   */
   internals(): WorldInternals {
     // eslint-disable-next-line @typescript-eslint/no-this-alias
     const world = this;

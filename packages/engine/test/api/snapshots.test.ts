@@ -1,5 +1,15 @@
 import { describe, expect, it } from 'vitest';
-import { PhysicalError, World, box, capsule, particle, polygon, wall } from '@physical/engine';
+import {
+  PhysicalError,
+  World,
+  box,
+  capsule,
+  particle,
+  polygon,
+  restoreSnapshot,
+  takeSnapshot,
+  wall,
+} from '@physical/engine';
 import type { WorldSnapshot } from '@physical/engine';
 
 /**
@@ -100,8 +110,8 @@ describe('snapshots', () => {
   it('restoring through JSON and stepping 1,000 times gives bit-for-bit the same states', () => {
     const original = busyWorld();
     for (let i = 0; i < 120; i++) original.step(1 / 60);
-    const saved = JSON.stringify(original.snapshot());
-    const restored = World.fromSnapshot(JSON.parse(saved) as WorldSnapshot);
+    const saved = JSON.stringify(takeSnapshot(original));
+    const restored = restoreSnapshot(JSON.parse(saved) as WorldSnapshot);
     expect(restored.bodies.length).toBe(original.bodies.length);
     expect(restored.steps).toBe(original.steps);
     let sleepingSeen = false;
@@ -114,15 +124,15 @@ describe('snapshots', () => {
     expect(sleepingSeen).toBe(true);
     expect(sameBits(state(restored), state(original))).toBe(true);
     // Every internal the snapshot holds agrees too (contacts, trees, timers).
-    expect(JSON.stringify(restored.snapshot())).toBe(JSON.stringify(original.snapshot()));
+    expect(JSON.stringify(takeSnapshot(restored))).toBe(JSON.stringify(takeSnapshot(original)));
   }, 30_000);
 
   it('restores a world saved before its first step, and sensor overlaps without repeating begins', () => {
     const early = new World();
     early.add(particle({ radius: 0.5, position: { x: 0, y: -3 } }));
     early.add(box({ type: 'static', position: { x: 0, y: 0 }, width: 4, height: 4, sensor: true }));
-    const copyEarly = World.fromSnapshot(
-      JSON.parse(JSON.stringify(early.snapshot())) as WorldSnapshot,
+    const copyEarly = restoreSnapshot(
+      JSON.parse(JSON.stringify(takeSnapshot(early))) as WorldSnapshot,
     );
     const begins = [0, 0];
     early.on('sensorBegin', () => begins[0]!++);
@@ -132,8 +142,8 @@ describe('snapshots', () => {
       copyEarly.step(1 / 60);
       if (i === 30) {
         // Saved while the ball is inside the sensor: the copy must not report it entering again.
-        const mid = World.fromSnapshot(
-          JSON.parse(JSON.stringify(early.snapshot())) as WorldSnapshot,
+        const mid = restoreSnapshot(
+          JSON.parse(JSON.stringify(takeSnapshot(early))) as WorldSnapshot,
         );
         let again = 0;
         mid.on('sensorBegin', () => again++);
@@ -151,8 +161,8 @@ describe('snapshots', () => {
     ball.applyForce({ x: 1, y: 0 }, { duration: 'constant' });
     world.step();
     ball.linearVelocity = { x: -0, y: 0 };
-    const snap = JSON.parse(JSON.stringify(world.snapshot())) as WorldSnapshot;
-    const copy = World.fromSnapshot(snap);
+    const snap = JSON.parse(JSON.stringify(takeSnapshot(world))) as WorldSnapshot;
+    const copy = restoreSnapshot(snap);
     expect(Object.is(copy.bodies[0]!.linearVelocity.x, -0)).toBe(true);
     expect(copy.bodies[0]!.forces[0]!.remaining).toBe(Infinity);
     copy.step();
@@ -166,22 +176,25 @@ describe('snapshots', () => {
     let error: unknown = null;
     world.on('move', () => {
       try {
-        world.snapshot();
+        takeSnapshot(world);
       } catch (e) {
         error = e;
       }
     });
     world.step();
     expect(error).toBeInstanceOf(PhysicalError);
+    expect(String(error)).toMatch(/snapshot.*while the world is stepping/);
+    // After the step it is allowed again.
+    expect(takeSnapshot(world).bodies).toHaveLength(1);
   });
 });
 
 describe('bad snapshots', () => {
   function good(): Record<string, unknown> {
-    return JSON.parse(JSON.stringify(busyWorld().snapshot())) as Record<string, unknown>;
+    return JSON.parse(JSON.stringify(takeSnapshot(busyWorld()))) as Record<string, unknown>;
   }
   function load(snap: unknown): () => World {
-    return () => World.fromSnapshot(snap as WorldSnapshot);
+    return () => restoreSnapshot(snap as WorldSnapshot);
   }
   type Mutable = Record<string, unknown> & {
     bodies: Record<string, unknown>[];
