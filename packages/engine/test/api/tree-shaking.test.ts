@@ -1,0 +1,121 @@
+import { build, type Metafile } from 'esbuild';
+import { fileURLToPath } from 'node:url';
+import { beforeAll, describe, expect, it } from 'vitest';
+
+// An app pays only for what it imports: bundled as an app bundler would (esbuild, minified,
+// tree-shaken), an entry without joints or snapshots carries no snapshot code and no joint kind.
+// Each check runs on the whole library too, where it must find what it looks for, so that a
+// marker that no longer exists cannot make the app check pass.
+
+const source = fileURLToPath(new URL('../../src/', import.meta.url));
+
+/** Source files whose code must stay out of an app that imports neither joints nor snapshots. */
+const SNAPSHOT_FILES = ['world/snapshot.ts', 'world/joint-snapshot.ts', 'world/snapshot-values.ts'];
+const JOINT_FILES = [
+  'dynamics/joints/revolute-joint.ts',
+  'dynamics/joints/prismatic-joint.ts',
+  'dynamics/joints/distance-joint.ts',
+  'dynamics/joints/weld-joint.ts',
+  'dynamics/joints/mouse-joint.ts',
+  'dynamics/joints/joint-factories.ts',
+];
+
+/** Strings only those files hold, as they appear in minified output. */
+const SNAPSHOT_MARKERS = [
+  'physical-world', // the snapshot format name
+  'cannot be taken while the world is stepping', // takeSnapshot's error
+  'the only version this Physical reads', // restoreSnapshot's version check
+  'must be a unit vector, got one of length', // a joint snapshot check
+];
+const JOINT_MARKERS = [
+  'lowerAngle', // revolute
+  'must not be the zero vector', // prismatic axis
+  'must lie between minLength', // distance
+  'angularHertz', // weld
+  'must be a dynamic body, got a', // mouse
+];
+
+interface Bundle {
+  readonly code: string;
+  /** Source files (relative to src/) that put at least one byte into the output. */
+  readonly files: string[];
+}
+
+async function bundle(entry: string): Promise<Bundle> {
+  const result = await build({
+    stdin: { contents: entry, resolveDir: source, sourcefile: 'app.ts', loader: 'ts' },
+    bundle: true,
+    minify: true,
+    treeShaking: true,
+    format: 'esm',
+    platform: 'neutral',
+    target: 'es2022',
+    write: false,
+    metafile: true,
+    logLevel: 'silent',
+  });
+  const metafile: Metafile = result.metafile;
+  const output = Object.values(metafile.outputs)[0]!;
+  const files = Object.entries(output.inputs)
+    .filter(([, input]) => input.bytesInOutput > 0)
+    .map(([path]) => path.replace(/\\/g, '/'))
+    .filter((path) => path.includes('packages/engine/src/'))
+    .map((path) =>
+      path.slice(path.indexOf('packages/engine/src/') + 'packages/engine/src/'.length),
+    );
+  return { code: result.outputFiles[0]!.text, files };
+}
+
+let library: Bundle;
+let app: Bundle;
+
+beforeAll(async () => {
+  // Every export kept, as a library bundle.
+  library = await bundle(`export * from './index.ts';`);
+  // An app: bodies, walls, forces; no joints, no snapshots.
+  app = await bundle(`
+    import { Force, World, box, particle, polygon, wall } from './index.ts';
+    const world = new World({ gravity: { x: 0, y: 9.81 } });
+    world.add(wall({ from: { x: -10, y: 0 }, to: { x: 10, y: 0 } }));
+    const crate = world.add(box({ position: { x: 0, y: -1 }, width: 1, height: 1 }));
+    world.add(particle({ position: { x: 1, y: -3 }, radius: 0.25 }));
+    world.add(polygon({ vertices: [{ x: 0, y: 0 }, { x: 1, y: 0 }, { x: 0, y: 1 }] }));
+    crate.applyForce({ x: 5, y: 0 }, { duration: 0.5 });
+    world.step();
+    console.log(crate.position, Force);
+  `);
+});
+
+describe('tree-shaking: an app without joints or snapshots', () => {
+  it('bundles the world, shapes and forces', () => {
+    expect(app.files).toContain('world/world.ts');
+    expect(app.files).toContain('dynamics/force.ts');
+    expect(app.files).toContain('dynamics/body-factories.ts');
+  });
+
+  it('carries no snapshot code', () => {
+    for (const file of SNAPSHOT_FILES) {
+      expect(library.files, `the library bundles ${file}`).toContain(file);
+      expect(app.files, `the app bundles ${file}`).not.toContain(file);
+    }
+    for (const marker of SNAPSHOT_MARKERS) {
+      expect(library.code, `the library holds '${marker}'`).toContain(marker);
+      expect(app.code, `the app holds '${marker}'`).not.toContain(marker);
+    }
+  });
+
+  it('carries no joint kind', () => {
+    for (const file of JOINT_FILES) {
+      expect(library.files, `the library bundles ${file}`).toContain(file);
+      expect(app.files, `the app bundles ${file}`).not.toContain(file);
+    }
+    for (const marker of JOINT_MARKERS) {
+      expect(library.code, `the library holds '${marker}'`).toContain(marker);
+      expect(app.code, `the app holds '${marker}'`).not.toContain(marker);
+    }
+  });
+
+  it('is smaller than the library', () => {
+    expect(app.code.length).toBeLessThan(library.code.length * 0.8);
+  });
+});
