@@ -377,6 +377,31 @@ if (runnable.includes('large_pyramid')) {
 }
 log();
 
+// Target 3 is about the steady state: the first steps also tier up the JIT (code that runs in
+// V8's interpreter boxes every fractional number) and fill the pools, so this run lets 100 steps
+// pass untimed and then counts gc over the next 1,000.
+const WARMUP = 100;
+const STEADY_STEPS = 1000;
+let steadyState: { warmupSteps: number; steps: number; gc: Ok['gc'] } | null = null;
+if (engineIds.includes('physical') && runnable.includes('large_pyramid')) {
+  const r = await runWorker('physical', 'large_pyramid', [
+    '--warmup',
+    String(quick ? 2 : WARMUP),
+    '--steps',
+    String(1 + WARMUP + STEADY_STEPS),
+  ]);
+  if (r.ok) {
+    steadyState = { warmupSteps: quick ? 2 : WARMUP, steps: r.timedSteps, gc: r.gc };
+    const retained = r.gc.retainedBytes;
+    const met = r.gc.count === 0 && retained !== null && retained < 256 * 1024;
+    log(
+      `Steady state (physical large_pyramid, ${steadyState.warmupSteps} steps of warm-up, then ${r.timedSteps} steps): ${gcLine(r)}; ` +
+        `target (no gc, retained growth < 256 KB): ${met ? 'met' : 'NOT met'}`,
+    );
+  } else log(`Steady state run failed: ${r.error}`);
+  log();
+}
+
 // ---- Scaling ----
 interface ScalingRow {
   bodies: number;
@@ -474,6 +499,7 @@ if (values.json) {
         quick,
         settings,
         scaling,
+        steadyState,
         size,
         browser,
       },

@@ -55,6 +55,8 @@ const { values } = parseArgs({
     small: { type: 'boolean', default: false },
     steps: { type: 'string' },
     budget: { type: 'string', default: '120' },
+    // Steps 1..warmup run before the timed loop (JIT tiering, pools filling); 0 times from step 1.
+    warmup: { type: 'string', default: '0' },
   },
 });
 
@@ -102,6 +104,11 @@ async function main(): Promise<void> {
   scene.onStep?.(0, api);
   world.step();
   const setupMs = performance.now() - t0;
+  const warmup = Math.min(Number(values.warmup), scene.steps - 2);
+  for (let step = 1; step <= warmup; step++) {
+    scene.onStep?.(step, api);
+    world.step();
+  }
 
   gc?.();
   const heapBefore = process.memoryUsage().heapUsed;
@@ -114,10 +121,12 @@ async function main(): Promise<void> {
     retainedBytes: null,
     rawDeltaBytes: 0,
   };
-  let timing = false;
+  // Entries arrive after the synchronous loop; count those that started inside it.
+  let timedFrom = Infinity;
+  let timedTo = Infinity;
   const observer = new PerformanceObserver((list) => {
-    if (!timing) return;
     for (const entry of list.getEntries()) {
+      if (entry.startTime < timedFrom || entry.startTime > timedTo) continue;
       gcStats.count++;
       gcStats.totalMs += entry.duration;
       const kind = (entry as { detail?: { kind?: number } }).detail?.kind;
@@ -130,9 +139,9 @@ async function main(): Promise<void> {
   observer.observe({ entryTypes: ['gc'] });
 
   const onStep = scene.onStep;
-  let steps = 1;
-  timing = true;
+  let steps = 1 + warmup;
   const start = performance.now();
+  timedFrom = start;
   for (; steps < scene.steps; steps++) {
     onStep?.(steps, api);
     world.step();
@@ -141,18 +150,18 @@ async function main(): Promise<void> {
       break;
     }
   }
-  const totalMs = performance.now() - start;
+  timedTo = performance.now();
+  const totalMs = timedTo - start;
   const heapAfterRaw = process.memoryUsage().heapUsed;
   // Let the observer deliver the loop's entries before we stop counting.
   await new Promise((resolve) => setTimeout(resolve, 0));
-  timing = false;
   observer.disconnect();
   gcStats.rawDeltaBytes = heapAfterRaw - heapBefore;
   if (gc) {
     gc();
     gcStats.retainedBytes = process.memoryUsage().heapUsed - heapBefore;
   }
-  const timedSteps = steps - 1;
+  const timedSteps = steps - 1 - warmup;
   send({
     ok: true,
     engine: engineId,
@@ -161,7 +170,7 @@ async function main(): Promise<void> {
     notes: [...(scene.notes === undefined ? [] : [scene.notes]), ...world.notes],
     bodies: scene.bodies.length,
     timedSteps,
-    plannedSteps: scene.steps - 1,
+    plannedSteps: scene.steps - 1 - warmup,
     totalMs,
     msPerStep: totalMs / Math.max(1, timedSteps),
     setupMs,

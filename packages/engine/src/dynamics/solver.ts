@@ -1,4 +1,5 @@
 import type { Body } from './body.ts';
+import type { BodyBounds } from './body-bounds.ts';
 import {
   BodyStates,
   DELTA_ANGLE,
@@ -20,6 +21,7 @@ import {
   storeImpulses,
   warmStartContacts,
 } from './contact-solver.ts';
+import { ContinuousSolver } from './continuous.ts';
 import { JointSolver } from './joints/joint-solver.ts';
 import { Softness } from './softness.ts';
 
@@ -70,6 +72,14 @@ export class Solver {
    */
   readonly awake: Body[] = [];
   awakeCount = 0;
+  /**
+   * Dynamic bodies of the last finalizeBodies that need a sweep test (the first `fastCount`), and
+   * the bullets among such bodies (the first `fastBulletCount`), in awake order.
+   */
+  readonly fastBodies: Body[] = [];
+  fastCount = 0;
+  readonly fastBullets: Body[] = [];
+  fastBulletCount = 0;
   private readonly contactSoftness = new Softness();
   private readonly staticSoftness = new Softness();
 
@@ -79,27 +89,24 @@ export class Solver {
    */
   gatherBodies(bodies: readonly Body[], dt: number): void {
     const awake = this.awake;
-    let count = 0;
-    for (let i = 0; i < bodies.length; i++) {
-      const body = bodies[i]!;
-      body.solverIndex = 0;
-      if (body.awake && body.type !== 'static') {
-        if (count < awake.length) awake[count] = body;
-        else awake.push(body);
-        count++;
-        body.solverIndex = count;
-      }
-    }
-    this.awakeCount = count;
-    const s = this.states.reserve(count);
-    if (this.params.length < count * PARAM_STRIDE) {
+    // One pass over the bodies: each body object is read once per step here and once in
+    // finalizeBodies, which is what a scene of many bodies pays for in cache misses.
+    const s = this.states.reserve(bodies.length);
+    if (this.params.length < bodies.length * PARAM_STRIDE) {
       let size = this.params.length;
-      while (size < count * PARAM_STRIDE) size *= 2;
+      while (size < bodies.length * PARAM_STRIDE) size *= 2;
       this.params = new Float64Array(size);
     }
     const params = this.params;
-    for (let i = 0; i < count; i++) {
-      const body = awake[i]!;
+    let count = 0;
+    for (let n = 0; n < bodies.length; n++) {
+      const body = bodies[n]!;
+      body.solverIndex = 0;
+      if (!body.awake || body.type === 'static') continue;
+      const i = count++;
+      if (i < awake.length) awake[i] = body;
+      else awake.push(body);
+      body.solverIndex = count;
       const k = (i + 1) * STATE_STRIDE;
       s[k + V_X] = body.velocityX;
       s[k + V_Y] = body.velocityY;
@@ -124,6 +131,7 @@ export class Solver {
       params[q + LINEAR_DAMPING] = body.linearDampingValue;
       params[q + ANGULAR_DAMPING] = body.angularDampingValue;
     }
+    this.awakeCount = count;
   }
 
   /**
@@ -173,13 +181,22 @@ export class Solver {
     }
     storeImpulses(constraints, contactData);
     joints.finish();
-    this.finalizeBodies(dt);
   }
 
-  /** Writes velocities and poses back to the bodies and updates their sleep timers. */
-  private finalizeBodies(dt: number): void {
+  /**
+   * Writes velocities and poses back to the bodies, updates their sleep timers and moves their
+   * shapes' broad-phase boxes (`bounds`, predicting a next step of `boundsDt`). With `continuous`,
+   * dynamic bodies that moved far enough to need a sweep test are listed in `fastBodies` and
+   * `fastBullets` instead, their boxes left to the sweep. One pass, so each body object is
+   * fetched once (Box2D v3's "b2FinalizeBodiesTask" does the same).
+   */
+  finalizeBodies(dt: number, bounds: BodyBounds, boundsDt: number, continuous: boolean): void {
     const awake = this.awake;
     const s = this.states.data;
+    let fastCount = 0;
+    let fastBulletCount = 0;
+    const fastBodies = this.fastBodies;
+    const fastBullets = this.fastBullets;
     for (let i = 0; i < this.awakeCount; i++) {
       const body = awake[i]!;
       const k = (i + 1) * STATE_STRIDE;
@@ -204,6 +221,19 @@ export class Solver {
         body.localCenterX,
         body.localCenterY,
       );
+      if (continuous && body.type === 'dynamic' && ContinuousSolver.isFast(body)) {
+        if (body.bulletValue) {
+          if (fastBulletCount < fastBullets.length) fastBullets[fastBulletCount] = body;
+          else fastBullets.push(body);
+          fastBulletCount++;
+        } else {
+          if (fastCount < fastBodies.length) fastBodies[fastCount] = body;
+          else fastBodies.push(body);
+          fastCount++;
+        }
+      } else {
+        bounds.refresh(body, boundsDt, false);
+      }
 
       // Sleep: the body must be slow, and not being moved by position correction either
       // (Box2D v3's rule, with its 0.5 weight on correction).
@@ -220,6 +250,8 @@ export class Solver {
       if (sleepSpeed > SLEEP_SPEED) body.sleepTime = 0;
       else body.sleepTime += dt;
     }
+    this.fastCount = fastCount;
+    this.fastBulletCount = fastBulletCount;
   }
 }
 

@@ -1,9 +1,7 @@
-import { AABB_MARGIN, SPECULATIVE_DISTANCE } from '../core/constants.ts';
 import { PhysicalError } from '../core/errors.ts';
 import { Listeners } from '../core/listeners.ts';
 import { requireFinite, requireNonNegative, requireVector } from '../core/validate.ts';
 import { BroadPhase, type ProxyType } from '../collision/broad-phase.ts';
-import { AABB } from '../geometry/aabb.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
 import type { Contact } from '../dynamics/contact.ts';
@@ -21,6 +19,7 @@ import {
   P_X,
   P_Y,
 } from '../dynamics/contact-data.ts';
+import { BodyBounds } from '../dynamics/body-bounds.ts';
 import { ContactManager } from '../dynamics/contact-manager.ts';
 import { ContinuousSolver } from '../dynamics/continuous.ts';
 import {
@@ -65,6 +64,7 @@ export class World {
   private readonly settings: ResolvedWorldOptions;
   private readonly bodyList: Body[] = [];
   private readonly broadPhase = new BroadPhase();
+  private readonly bounds = new BodyBounds(this.broadPhase);
   private readonly islands = new Islands();
   private readonly contactManager = new ContactManager(this.islands);
   private readonly solver = new Solver();
@@ -86,7 +86,6 @@ export class World {
   private readonly collisionEvent = new CollisionEventData();
   private readonly contactEvent = new ContactEventData();
   private readonly gravityView: Vec2 = { x: 0, y: 0 };
-  private readonly proxyBox = new AABB();
   private readonly onPair = (shapeIdA: number, shapeIdB: number): void => {
     this.contactManager.addPair(this.shapesById[shapeIdA]!, this.shapesById[shapeIdB]!);
   };
@@ -350,9 +349,9 @@ export class World {
         this.settings,
         dt,
       );
-      if (this.settings.enableContinuous) this.solveContinuous();
-      this.updateBroadPhase();
-      if (this.settings.enableContinuous) this.solveBullets();
+      this.solver.finalizeBodies(dt, this.bounds, this.lastStep, this.settings.enableContinuous);
+      this.solveContinuous();
+      this.solveBullets();
       if (this.sensors.shapes.length > 0) this.sensors.update(this.broadPhase, this.shapesById);
       if (this.settings.enableSleep) {
         this.islands.sleepRestingIslands(
@@ -611,7 +610,7 @@ export class World {
     const id = this.freeShapeIds.length > 0 ? this.freeShapeIds.pop()! : this.shapesById.length;
     shape.id = id;
     this.shapesById[id] = shape;
-    const box = this.speculativeBox(shape);
+    const box = this.bounds.speculativeBox(shape, this.lastStep);
     shape.proxyKey = this.broadPhase.createProxy(box, PROXY_TYPE[shape.body.type], id, false);
     this.broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
     if (shape.sensor) this.sensors.add(shape);
@@ -632,41 +631,17 @@ export class World {
    * the pair exists (and its speculative contact can stop the motion) before it reaches what it
    * will hit; slower bodies need no stretch, and stretching them would only make idle pairs.
    */
-  private speculativeBox(shape: Shape): AABB {
-    const body = shape.body;
-    const tight = shape.computeAABB(body.transform);
-    const dt = this.lastStep;
-    const spin = Math.abs(body.angularVelocityValue) * body.maxExtent * dt;
-    let grow = SPECULATIVE_DISTANCE;
-    if (spin > AABB_MARGIN) grow += spin;
-    let dx = body.velocityX * dt;
-    let dy = body.velocityY * dt;
-    if (dx * dx + dy * dy <= AABB_MARGIN * AABB_MARGIN) {
-      dx = 0;
-      dy = 0;
-    }
-    return this.proxyBox.set(
-      tight.minX - grow + Math.min(dx, 0),
-      tight.minY - grow + Math.min(dy, 0),
-      tight.maxX + grow + Math.max(dx, 0),
-      tight.maxY + grow + Math.max(dy, 0),
-    );
-  }
-
   private refreshProxies(body: Body, forcePairs: boolean): void {
-    for (const shape of body.shapeList) {
-      const moved = this.broadPhase.moveProxy(shape.proxyKey, this.speculativeBox(shape));
-      if (moved) this.broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
-      else if (forcePairs && body.type === 'static') this.broadPhase.bufferMove(shape.proxyKey);
-    }
+    this.bounds.refresh(body, this.lastStep, forcePairs);
   }
 
+  /** Sweeps the fast bodies that finalizeBodies listed, then moves their boxes. */
   private solveContinuous(): void {
-    const awake = this.solver.awake;
-    for (let i = 0; i < this.solver.awakeCount; i++) {
-      const body = awake[i]!;
-      if (body.type !== 'dynamic' || body.bulletValue || !ContinuousSolver.isFast(body)) continue;
+    const fast = this.solver.fastBodies;
+    for (let i = 0; i < this.solver.fastCount; i++) {
+      const body = fast[i]!;
       this.continuous.solve(body, this.broadPhase, this.shapesById);
+      this.refreshProxies(body, false);
     }
   }
 
@@ -676,19 +651,15 @@ export class World {
    * impact gets its boxes refreshed again.
    */
   private solveBullets(): void {
-    const awake = this.solver.awake;
-    for (let i = 0; i < this.solver.awakeCount; i++) {
-      const body = awake[i]!;
-      if (body.type !== 'dynamic' || !body.bulletValue || !ContinuousSolver.isFast(body)) continue;
+    const bullets = this.solver.fastBullets;
+    const count = this.solver.fastBulletCount;
+    for (let i = 0; i < count; i++) this.refreshProxies(bullets[i]!, false);
+    for (let i = 0; i < count; i++) {
+      const body = bullets[i]!;
       if (this.continuous.solve(body, this.broadPhase, this.shapesById, true)) {
         this.refreshProxies(body, false);
       }
     }
-  }
-
-  private updateBroadPhase(): void {
-    const awake = this.solver.awake;
-    for (let i = 0; i < this.solver.awakeCount; i++) this.refreshProxies(awake[i]!, false);
   }
 
   private flushPending(): void {

@@ -1,0 +1,78 @@
+import type { BroadPhase } from '../collision/broad-phase.ts';
+import { AABB_MARGIN, SPECULATIVE_DISTANCE } from '../core/constants.ts';
+import { AABB } from '../geometry/aabb.ts';
+import type { Body } from './body.ts';
+import type { Shape } from './shape.ts';
+
+/**
+ * Keeps a body's shapes' broad-phase boxes around them: each shape's box at the body's pose, grown
+ * by the speculative distance and by the motion the body would make in the next step of `dt`
+ * seconds (its velocity, and its spin swept over its extent), so contacts exist before shapes
+ * touch. The broad phase moves a proxy only when this box leaves its fat box (Box2D v3 computes
+ * the same box while finalizing bodies, "b2FinalizeBodiesTask").
+ */
+export class BodyBounds {
+  private readonly box = new AABB();
+
+  constructor(private readonly broadPhase: BroadPhase) {}
+
+  // The growth of the body last passed to measureMotion.
+  private grow = 0;
+  private backX = 0;
+  private backY = 0;
+  private aheadX = 0;
+  private aheadY = 0;
+
+  /** The speculative box of a shape at its body's pose (m); valid until the next call. */
+  speculativeBox(shape: Shape, dt: number): AABB {
+    this.measureMotion(shape.body, dt);
+    return this.place(shape.computeAABB(shape.body.transform));
+  }
+
+  /**
+   * Moves the proxies of `body`'s shapes whose speculative box left their fat box. With
+   * `forcePairs`, a static body's proxies look for new pairs even if they did not move.
+   */
+  refresh(body: Body, dt: number, forcePairs: boolean): void {
+    this.measureMotion(body, dt);
+    const broadPhase = this.broadPhase;
+    const shapes = body.shapeList;
+    for (let i = 0; i < shapes.length; i++) {
+      const shape = shapes[i]!;
+      const box = this.place(shape.computeAABB(body.transform));
+      if (broadPhase.moveProxy(shape.proxyKey, box)) {
+        broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
+      } else if (forcePairs && body.type === 'static') {
+        broadPhase.bufferMove(shape.proxyKey);
+      }
+    }
+  }
+
+  private measureMotion(body: Body, dt: number): void {
+    const spin = Math.abs(body.angularVelocityValue) * body.maxExtent * dt;
+    let grow = SPECULATIVE_DISTANCE;
+    if (spin > AABB_MARGIN) grow += spin;
+    let dx = body.velocityX * dt;
+    let dy = body.velocityY * dt;
+    // Slow bodies are not stretched along their motion: the fat margin covers it.
+    if (dx * dx + dy * dy <= AABB_MARGIN * AABB_MARGIN) {
+      dx = 0;
+      dy = 0;
+    }
+    this.grow = grow;
+    this.backX = Math.min(dx, 0);
+    this.backY = Math.min(dy, 0);
+    this.aheadX = Math.max(dx, 0);
+    this.aheadY = Math.max(dy, 0);
+  }
+
+  private place(tight: AABB): AABB {
+    const box = this.box;
+    const grow = this.grow;
+    box.minX = tight.minX - grow + this.backX;
+    box.minY = tight.minY - grow + this.backY;
+    box.maxX = tight.maxX + grow + this.aheadX;
+    box.maxY = tight.maxY + grow + this.aheadY;
+    return box;
+  }
+}
