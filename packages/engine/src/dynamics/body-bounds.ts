@@ -13,15 +13,14 @@ import type { Shape } from './shape.ts';
  */
 export class BodyBounds {
   private readonly box = new AABB();
-
-  constructor(private readonly broadPhase: BroadPhase) {}
-
   // The growth of the body last passed to measureMotion.
   private grow = 0;
   private backX = 0;
   private backY = 0;
   private aheadX = 0;
   private aheadY = 0;
+
+  constructor(private readonly broadPhase: BroadPhase) {}
 
   /** The speculative box of a shape at its body's pose (m); valid until the next call. */
   speculativeBox(shape: Shape, dt: number): AABB {
@@ -54,7 +53,9 @@ export class BodyBounds {
     if (spin > AABB_MARGIN) grow += spin;
     let dx = body.velocityX * dt;
     let dy = body.velocityY * dt;
-    // Slow bodies are not stretched along their motion: the fat margin covers it.
+    // A body that moves farther in a step than the fat margin gets its box stretched along its
+    // velocity, so the pair exists (and its speculative contact can stop the motion) before it
+    // reaches what it will hit; stretching slower bodies would only make idle pairs.
     if (dx * dx + dy * dy <= AABB_MARGIN * AABB_MARGIN) {
       dx = 0;
       dy = 0;

@@ -625,12 +625,7 @@ export class World {
     shape.proxyKey = -1;
   }
 
-  /**
-   * The shape's box at the body's pose, grown by the speculative distance. A body that moves
-   * farther in a step than the fat box's margin also gets its box stretched along its velocity, so
-   * the pair exists (and its speculative contact can stop the motion) before it reaches what it
-   * will hit; slower bodies need no stretch, and stretching them would only make idle pairs.
-   */
+  /** Moves the body's shapes' broad-phase boxes to where the body is now (see BodyBounds). */
   private refreshProxies(body: Body, forcePairs: boolean): void {
     this.bounds.refresh(body, this.lastStep, forcePairs);
   }
