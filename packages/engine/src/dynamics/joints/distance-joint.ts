@@ -9,13 +9,13 @@ import {
   type JointState,
   type JointStateLayout,
   type JointStep,
+  importLocalAnchors,
   optionalNonNegative,
   requireBodies,
   requireOrdered,
   requirePoint,
   stateBoolean,
   stateNumber,
-  stateVector,
   worldAnchor,
 } from './joint.ts';
 
@@ -230,12 +230,7 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
 
   /** @internal */
   protected importOwnState(state: JointState): void {
-    const anchorA = stateVector(state, 'localAnchorA');
-    const anchorB = stateVector(state, 'localAnchorB');
-    this.localAnchorAX = anchorA[0]!;
-    this.localAnchorAY = anchorA[1]!;
-    this.localAnchorBX = anchorB[0]!;
-    this.localAnchorBY = anchorB[1]!;
+    importLocalAnchors(state, this);
     this.rest = stateNumber(state, 'length');
     this.min = stateNumber(state, 'minLength');
     this.max = stateNumber(state, 'maxLength');

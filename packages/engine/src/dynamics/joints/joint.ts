@@ -79,6 +79,24 @@ export function stateVector(state: JointState, key: string): readonly number[] {
   return state[key] as readonly number[];
 }
 
+/** @internal The two body-frame anchors (m) that revolute, prismatic, distance and weld joints keep. */
+export interface LocalAnchors {
+  localAnchorAX: number;
+  localAnchorAY: number;
+  localAnchorBX: number;
+  localAnchorBY: number;
+}
+
+/** @internal Restores a joint's `localAnchorA` and `localAnchorB` from a saved state. */
+export function importLocalAnchors(state: JointState, joint: LocalAnchors): void {
+  const anchorA = stateVector(state, 'localAnchorA');
+  const anchorB = stateVector(state, 'localAnchorB');
+  joint.localAnchorAX = anchorA[0]!;
+  joint.localAnchorAY = anchorA[1]!;
+  joint.localAnchorBX = anchorB[0]!;
+  joint.localAnchorBY = anchorB[1]!;
+}
+
 /**
  * A constraint between two bodies (or, for a {@link MouseJoint}, between a body and a point).
  * Build one with {@link revoluteJoint}, {@link prismaticJoint}, {@link distanceJoint},

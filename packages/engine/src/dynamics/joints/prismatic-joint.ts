@@ -9,6 +9,7 @@ import {
   type JointState,
   type JointStateLayout,
   type JointStep,
+  importLocalAnchors,
   optionalFinite,
   optionalNonNegative,
   requireBodies,
@@ -302,13 +303,8 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
 
   /** @internal */
   protected importOwnState(state: JointState): void {
-    const anchorA = stateVector(state, 'localAnchorA');
-    const anchorB = stateVector(state, 'localAnchorB');
+    importLocalAnchors(state, this);
     const axis = stateVector(state, 'localAxis');
-    this.localAnchorAX = anchorA[0]!;
-    this.localAnchorAY = anchorA[1]!;
-    this.localAnchorBX = anchorB[0]!;
-    this.localAnchorBY = anchorB[1]!;
     this.localAxisX = axis[0]!;
     this.localAxisY = axis[1]!;
     this.referenceAngle = stateNumber(state, 'referenceAngle');

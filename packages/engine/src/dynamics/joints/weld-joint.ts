@@ -8,6 +8,7 @@ import {
   type JointState,
   type JointStateLayout,
   type JointStep,
+  importLocalAnchors,
   optionalNonNegative,
   requireBodies,
   requirePoint,
@@ -147,13 +148,8 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
 
   /** @internal */
   protected importOwnState(state: JointState): void {
-    const anchorA = stateVector(state, 'localAnchorA');
-    const anchorB = stateVector(state, 'localAnchorB');
+    importLocalAnchors(state, this);
     const impulse = stateVector(state, 'linearImpulse');
-    this.localAnchorAX = anchorA[0]!;
-    this.localAnchorAY = anchorA[1]!;
-    this.localAnchorBX = anchorB[0]!;
-    this.localAnchorBY = anchorB[1]!;
     this.referenceAngle = stateNumber(state, 'referenceAngle');
     this.linearFrequency = stateNumber(state, 'linearHertz');
     this.angularFrequency = stateNumber(state, 'angularHertz');
