@@ -20,6 +20,7 @@ const { values } = parseArgs({
     json: { type: 'string' },
     browser: { type: 'boolean', default: false },
     budget: { type: 'string' },
+    steps: { type: 'string' },
     'no-build': { type: 'boolean', default: false },
     'no-scaling': { type: 'boolean', default: false },
   },
@@ -32,6 +33,11 @@ const quick = values.quick;
 const rounds = Number(values.rounds ?? (quick ? 1 : 3));
 const budgetSeconds = Number(values.budget ?? 90);
 const QUICK_STEPS = 10;
+// --steps N: every engine times the same first N steps of each scene (a shorter, like-for-like run).
+const fixedSteps = values.steps === undefined ? null : Number(values.steps);
+if (fixedSteps !== null && !(Number.isInteger(fixedSteps) && fixedSteps >= 1)) {
+  throw new Error(`--steps must be a whole number of steps >= 1, got ${values.steps}`);
+}
 const allScenes = [...Object.keys(SCENES), ...Object.keys(UNSUPPORTED)].sort();
 const sceneNames = values.scenes ? values.scenes.split(',').map((s) => s.trim()) : allScenes;
 const engineIds = values.engines
@@ -81,6 +87,10 @@ function runWorker(engine: string, scene: string, extra: string[] = []): Promise
       ...extra,
     ];
     if (quick) args.push('--small', '--steps', String(QUICK_STEPS));
+    // The worker's --steps counts step 0 (untimed); a caller's own --steps in `extra` wins.
+    else if (fixedSteps !== null && !extra.includes('--steps')) {
+      args.push('--steps', String(fixedSteps + 1));
+    }
     const child = fork(workerPath, args, {
       execArgv: ['--import', 'tsx', '--expose-gc'],
       stdio: ['ignore', 'ignore', 'pipe', 'ipc'],
@@ -177,11 +187,6 @@ function qualityOf(scene: string, engine: string, runs: Ok[]): string {
   const problems = new Set<string>();
   for (const r of runs) {
     const m = r.metrics;
-    if (r.timedSteps < r.plannedSteps) {
-      problems.add(
-        `partial: ${r.timedSteps}/${r.plannedSteps} steps in the ${budgetSeconds} s budget`,
-      );
-    }
     if (m.nan > 0) problems.add(`NaN in ${m.nan} bodies`);
     if (m.maxLateral !== undefined && m.maxLateral > m.lateralLimit!) {
       problems.add(`a box moved ${m.maxLateral.toFixed(3)} m sideways (> ${m.lateralLimit} m)`);
@@ -213,6 +218,36 @@ function qualityOf(scene: string, engine: string, runs: Ok[]): string {
   return problems.size ? [...problems].join('; ') : 'ok';
 }
 
+// Like for like: within a scene every compared engine's ms/step covers the same first K timed
+// steps, K being the fewest that any of them timed within its budget (a scene's early steps are
+// cheaper than its later ones, so runs cut at different points are not comparable). A peer too slow
+// to time half as many steps as Physical would cut the window to the scene's first moments for
+// everyone: it is shown over its own steps, without a ratio.
+interface Window {
+  steps: number;
+  planned: number;
+  compared: Set<string>;
+}
+function windowOf(scene: string): Window | null {
+  const reached = new Map<string, number>();
+  let planned = 0;
+  for (const engine of engineIds) {
+    const ok = (results.get(key(scene, engine)) ?? []).filter((r): r is Ok => r.ok);
+    if (!ok.length) continue;
+    reached.set(engine, Math.min(...ok.map((r) => r.timedSteps)));
+    planned = Math.max(planned, ...ok.map((r) => r.plannedSteps));
+  }
+  if (reached.size === 0) return null;
+  const physicalSteps = reached.get('physical');
+  const floor = physicalSteps === undefined ? 0 : physicalSteps / 2;
+  const compared = new Set([...reached].filter(([, n]) => n >= floor).map(([e]) => e));
+  const steps = Math.min(...[...compared].map((e) => reached.get(e)!));
+  return { steps, planned, compared };
+}
+/** ms/step of one run over its first `steps` timed steps. */
+const msOver = (r: Ok, steps: number): number =>
+  steps >= r.timedSteps ? r.msPerStep : r.cumulativeMs[steps - 1]! / steps;
+
 for (const scene of sceneNames) {
   if (UNSUPPORTED[scene]) {
     rows.push({
@@ -226,8 +261,10 @@ for (const scene of sceneNames) {
     });
     continue;
   }
+  const window = windowOf(scene);
   const physicalRuns = (results.get(key(scene, 'physical')) ?? []).filter((r): r is Ok => r.ok);
-  const physicalMedian = physicalRuns.length ? median(physicalRuns.map((r) => r.msPerStep)) : null;
+  const physicalMedian =
+    physicalRuns.length && window ? median(physicalRuns.map((r) => msOver(r, window.steps))) : null;
   for (const engine of engineIds) {
     const runs = results.get(key(scene, engine)) ?? [];
     const ok = runs.filter((r): r is Ok => r.ok);
@@ -249,16 +286,26 @@ for (const scene of sceneNames) {
       });
       continue;
     }
-    const med = median(ok.map((r) => r.msPerStep));
+    const compared = window !== null && window.compared.has(engine);
+    const steps = compared ? window.steps : Math.min(...ok.map((r) => r.timedSteps));
+    const perStep = ok.map((r) => msOver(r, steps));
+    const med = median(perStep);
+    const planned = window?.planned ?? ok[0]!.plannedSteps;
+    const cut = !compared
+      ? `not compared: timed only ${steps}/${planned} steps in the ${budgetSeconds} s budget`
+      : steps < planned
+        ? `cut to the first ${steps}/${planned} steps, as every compared engine`
+        : null;
+    const quality = qualityOf(scene, engine, ok);
     rows.push({
       scene,
       engine,
       medianMsPerStep: med,
-      minMsPerStep: Math.min(...ok.map((r) => r.msPerStep)),
-      steps: Math.min(...ok.map((r) => r.timedSteps)),
-      ratio: physicalMedian ? med / physicalMedian : null,
+      minMsPerStep: Math.min(...perStep),
+      steps,
+      ratio: compared && physicalMedian ? med / physicalMedian : null,
       quality:
-        qualityOf(scene, engine, ok) +
+        (cut === null ? quality : quality === 'ok' ? cut : `${cut}; ${quality}`) +
         (ok.length < runs.length ? ` (${runs.length - ok.length} runs failed)` : ''),
     });
   }
@@ -293,8 +340,23 @@ log(widths.map((w, i) => (i === widths.length - 1 ? '---' : '-'.repeat(w))).join
 for (const b of body) log(line(b));
 log();
 log(
-  'ratio to Physical = peer median / Physical median: above 1 means the peer is slower than Physical.',
+  'ratio to Physical = peer median / Physical median over the same steps: above 1 means the peer is slower than Physical.',
 );
+
+// ---- Warm-up: the cold first step against the median step ----
+const firstStep: { scene: string; firstStepMs: number; msPerStep: number; ratio: number }[] = [];
+for (const scene of runnable) {
+  const ok = (results.get(key(scene, 'physical')) ?? []).filter((r): r is Ok => r.ok);
+  if (!ok.length) continue;
+  const first = median(ok.map((r) => r.firstStepMs));
+  const med = median(ok.map((r) => r.msPerStep));
+  firstStep.push({ scene, firstStepMs: first, msPerStep: med, ratio: first / med });
+}
+if (firstStep.length) {
+  log(
+    `Physical's first step (step 0, cold JIT) / its mean timed step: ${firstStep.map((f) => `${f.scene} ${f.firstStepMs.toFixed(1)} ms = ${f.ratio.toFixed(1)}x`).join(', ')}`,
+  );
+}
 
 // ---- Pyramid sinks ----
 for (const scene of runnable.filter((s) => s.includes('pyramid'))) {
@@ -490,14 +552,19 @@ if (values.json) {
     values.json,
     `${JSON.stringify(
       {
-        rows: rows.map(({ scene, engine, medianMsPerStep, minMsPerStep, steps, quality }) => ({
-          scene,
-          engine,
-          medianMsPerStep,
-          minMsPerStep,
-          steps,
-          quality,
-        })),
+        rows: rows.map(
+          ({ scene, engine, medianMsPerStep, minMsPerStep, steps, ratio, quality }) => ({
+            scene,
+            engine,
+            medianMsPerStep,
+            minMsPerStep,
+            steps,
+            quality,
+            // This engine's median over Physical's, over the same steps: below 1 the peer is faster.
+            ratioToPhysical: ratio,
+          }),
+        ),
+        firstStep,
         rounds,
         quick,
         settings,

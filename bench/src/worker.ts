@@ -36,6 +36,13 @@ export type WorkerResult =
       totalMs: number;
       msPerStep: number;
       setupMs: number;
+      /** Step 0 alone (not timed in msPerStep): the cold step, before the JIT has tiered up. */
+      firstStepMs: number;
+      /**
+       * Cumulative ms after each timed step (entry i = time of timed steps 1..i+1), so the runner
+       * can compare every engine over the same steps when some runs stop early.
+       */
+      cumulativeMs: number[];
       metrics: Metrics;
       gc: GcStats;
     }
@@ -102,7 +109,9 @@ async function main(): Promise<void> {
     destroyGroup: destroyGroup ? destroyGroup.bind(world) : noGroups,
   };
   scene.onStep?.(0, api);
+  const t1 = performance.now();
   world.step();
+  const firstStepMs = performance.now() - t1;
   const setupMs = performance.now() - t0;
   const warmup = Math.min(Number(values.warmup), scene.steps - 2);
   for (let step = 1; step <= warmup; step++) {
@@ -140,12 +149,16 @@ async function main(): Promise<void> {
 
   const onStep = scene.onStep;
   let steps = 1 + warmup;
+  // Preallocated, so recording a step's time allocates nothing inside the loop.
+  const cumulative = new Float64Array(Math.max(0, scene.steps - 1 - warmup));
   const start = performance.now();
   timedFrom = start;
   for (; steps < scene.steps; steps++) {
     onStep?.(steps, api);
     world.step();
-    if (performance.now() - start > budgetMs) {
+    const elapsed = performance.now() - start;
+    cumulative[steps - 1 - warmup] = elapsed;
+    if (elapsed > budgetMs) {
       steps++;
       break;
     }
@@ -174,6 +187,8 @@ async function main(): Promise<void> {
     totalMs,
     msPerStep: totalMs / Math.max(1, timedSteps),
     setupMs,
+    firstStepMs,
+    cumulativeMs: Array.from(cumulative.subarray(0, timedSteps)),
     metrics: measure(scene, world),
     gc: gcStats,
   });
