@@ -67,9 +67,23 @@ export const browserTest = base.extend<{ baseUrl: string; open: TestContext['ope
   },
 });
 
+/** Titles registered so far, by spec file: Playwright refuses a repeated title in one file. */
+const registered = new Map<string, number>();
+
 /** Registers a browser test; spec files call it at import. */
 export function test(name: string, run: (context: TestContext) => Promise<void>): void {
-  browserTest(name, async ({ browser, baseUrl, open }) => {
+  // The old runner accepted a title twice in one file; number the repeats instead of failing.
+  const key = `${callerFile()}\n${name}`;
+  const count = (registered.get(key) ?? 0) + 1;
+  registered.set(key, count);
+  browserTest(count === 1 ? name : `${name} (${count})`, async ({ browser, baseUrl, open }) => {
     await run({ browser, baseUrl, open });
   });
+}
+
+/** The file of the function that called `test` (the spec), from the stack. */
+function callerFile(): string {
+  // Lines: the message, callerFile, test, then the spec's call.
+  const line = new Error().stack?.split('\n')[3] ?? '';
+  return /\(?([^\s()]+?):\d+:\d+\)?$/.exec(line.trim())?.[1] ?? line;
 }
