@@ -9,8 +9,8 @@ export default defineConfig({
   outputDir: '../test-results/playwright',
   globalSetup: './global-setup.ts',
   // A hung test fails instead of stalling the run. The slowest (every gallery sample in turn)
-  // takes about 20 s on a quiet 2-core machine.
-  timeout: 120_000,
+  // takes about 20 s on a quiet 2-core machine, and over a minute on a loaded one.
+  timeout: 180_000,
   // The guide forbids focused tests; the harness has no test.only, but a spec could import it.
   forbidOnly: true,
   // A failed test runs once more, recording a trace (below): a real failure fails twice and
@@ -35,8 +35,10 @@ export default defineConfig({
       ],
     },
     // Every failure leaves a screenshot of each page it had open, its retry also a trace
-    // (npx playwright show-trace test-results/playwright/<test>/trace.zip).
-    trace: 'on-first-retry',
+    // (npx playwright show-trace test-results/playwright/<test>-retry1/trace.zip): actions,
+    // console, network and a screencast. DOM snapshots are left out: they made a retry take
+    // twice as long as the test.
+    trace: { mode: 'on-first-retry', screenshots: true, snapshots: false, sources: true },
     screenshot: 'only-on-failure',
   },
 });
