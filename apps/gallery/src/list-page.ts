@@ -1,5 +1,5 @@
 import type { PhysicalCanvasElement } from '@physical/canvas';
-import { STEP, type Scene, sceneValues, scenes } from '@physical/scenes';
+import { STEP, type Scene, type SceneView, sceneValues, sceneView, scenes } from '@physical/scenes';
 import { h } from './dom.ts';
 import { sceneStyleFor } from './scene-styles.ts';
 
@@ -62,6 +62,8 @@ export function renderList(root: HTMLElement): () => void {
     const world = scene.build(sceneValues(scene));
     for (let i = 0; i < Math.min(THUMBNAIL_STEPS, scene.steps); i++) world.step(STEP);
     canvas.styleFor = sceneStyleFor(scene);
+    // A camera that follows a body frames the picture where that body has gone.
+    canvas.setAttribute('view-box', viewBoxAttribute(sceneView(scene, world)));
     canvas.world = world;
     setTimeout(() => next(index + 1), 0);
   };
@@ -73,6 +75,10 @@ export function renderList(root: HTMLElement): () => void {
 
 /** A scene's camera as a `view-box` attribute. */
 export function cameraAttribute(scene: Scene): string {
-  const { x, y, width, height } = scene.camera;
+  return viewBoxAttribute(scene.camera);
+}
+
+/** A world rectangle as a `view-box` attribute. */
+export function viewBoxAttribute({ x, y, width, height }: SceneView): string {
   return `${x} ${y} ${width} ${height}`;
 }

@@ -1,10 +1,10 @@
 import type { PointerEventDetail } from '@physical/canvas';
 import type { MouseJoint, World } from '@physical/engine';
-import { STEP, type Scene, grab, sceneValues } from '@physical/scenes';
+import { STEP, type Scene, grab, sceneValues, sceneView } from '@physical/scenes';
 import { h } from './dom.ts';
 import { icon } from './icons.ts';
 import { sceneStyleFor } from './scene-styles.ts';
-import { cameraAttribute } from './list-page.ts';
+import { cameraAttribute, viewBoxAttribute } from './list-page.ts';
 import { sourceOf } from './sources.ts';
 
 /** Every overlay `<physical-canvas>` draws, with the chip's label. */
@@ -114,10 +114,15 @@ export function renderSample(root: HTMLElement, scene: Scene): () => void {
     body.applyImpulse({ x: 0, y: -4 * body.mass }, detail.point);
   });
 
-  // Once per frame: show the simulated time.
+  // Once per frame: show the simulated time, and move the view with a followed body.
   let frame = 0;
+  let view = cameraAttribute(scene);
   const tick = (): void => {
     time.textContent = `t = ${(world.steps * STEP).toFixed(2)} s`;
+    if (scene.camera.follow !== undefined) {
+      const next = viewBoxAttribute(sceneView(scene, world));
+      if (next !== view) canvas.setAttribute('view-box', (view = next));
+    }
     frame = requestAnimationFrame(tick);
   };
   frame = requestAnimationFrame(tick);

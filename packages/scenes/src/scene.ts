@@ -18,6 +18,26 @@ export interface SceneCamera {
   readonly y: number;
   readonly width: number;
   readonly height: number;
+  /**
+   * A body the view follows (optional), for a sample whose action travels: the view stays as
+   * declared while the body is inside a band of it, and slides with the body when it leaves
+   * the band (see `sceneView`).
+   */
+  readonly follow?: SceneFollow;
+}
+
+/** The body a sample's camera follows. */
+export interface SceneFollow {
+  /** Finds the followed body in a world the sample built (undefined: the view stays put). */
+  body(world: World): Body | undefined;
+  /** The axes the view slides along: `'x'` (default, the ground stays in view) or `'xy'`. */
+  readonly axes?: 'x' | 'xy';
+  /**
+   * The band of the view (fractions of its width, and of its height with `'xy'`, from the left
+   * or top) the body is kept in; the view slides only when it leaves it. Default `[0.35, 0.65]`.
+   * Put the band ahead of where the body starts, or the view slides at once.
+   */
+  readonly within?: readonly [number, number];
 }
 
 /** Parameter values by name. Every declared parameter is present (defaults filled in). */

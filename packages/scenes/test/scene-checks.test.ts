@@ -33,8 +33,16 @@ describe('sample checks reject broken outcomes', () => {
   it('bullets: a bullet behind the wall', () => {
     const bullets = scene('bullets');
     const world = runScene(bullets);
-    world.bodies[1]!.position = { x: 9, y: -1 };
-    expect(bullets.check(world, sceneValues(bullets))).toMatch(/passed through/);
+    // Bodies 0 and 1 are the two walls; the bullets follow.
+    world.bodies[2]!.position = { x: 9, y: -1 };
+    expect(bullets.check(world, sceneValues(bullets))).toMatch(/bullet 1 passed through the wall/);
+  });
+
+  it('bullets: a bullet behind the back wall', () => {
+    const bullets = scene('bullets');
+    const world = runScene(bullets);
+    world.bodies[3]!.position = { x: -1, y: -1 };
+    expect(bullets.check(world, sceneValues(bullets))).toMatch(/bullet 2 passed through the back/);
   });
 
   it('bridge: a plank torn off its hinges', () => {

@@ -1,15 +1,19 @@
-import { World, box } from '@physical/engine';
+import { World, box, wall } from '@physical/engine';
 import { STEP, defineScene } from '../scene.ts';
+
+/** The box the squares move in (m): walls just inside the camera, so a thrown square stays. */
+const BOX = { left: -0.75, top: -1.25, right: 12.75, bottom: 3.25 };
 
 /**
  * The thesis's second law: the same constant force on two squares of different mass on
  * frictionless tracks. a = F / m: the lighter one covers more ground, in proportion to 1 / m.
+ * Walls close the track, so a square that arrives (or is thrown) stays on screen.
  */
 export default defineScene({
   id: 'newton-forces',
   title: 'Newton: forces',
   description:
-    'Second law. One force, two masses: each square accelerates at F/m and covers \u00bd (F/m) t\u00b2.',
+    'Second law. One force, two masses: each square accelerates at F/m and covers \u00bd (F/m) t\u00b2. Walls keep them, and any square you throw, on screen.',
   parameters: [
     { name: 'force', label: 'Force (N)', min: 0.5, max: 10, step: 0.5, default: 4 },
     {
@@ -42,6 +46,28 @@ export default defineScene({
         box({ position: { x: 0, y }, width: 1, height: 1, density: mass, fixedRotation: true }),
       );
       square.applyForce({ x: force, y: 0 }, { duration: 'constant' });
+    }
+    // Added after the squares, so they stay bodies 0 and 1.
+    const { left, top, right, bottom } = BOX;
+    for (const [from, to] of [
+      [
+        { x: left, y: top },
+        { x: right, y: top },
+      ],
+      [
+        { x: right, y: top },
+        { x: right, y: bottom },
+      ],
+      [
+        { x: right, y: bottom },
+        { x: left, y: bottom },
+      ],
+      [
+        { x: left, y: bottom },
+        { x: left, y: top },
+      ],
+    ] as const) {
+      world.add(wall({ from, to }));
     }
     return world;
   },
