@@ -196,7 +196,7 @@ for (const name of pages) {
     try {
       await page.goto(`${origin}/${name}/dist/index.html`);
       await page.waitForFunction('window.probe !== undefined', undefined, { timeout: 30_000 });
-      const startY = await probe<number>(page, 'y()');
+      const startY = await probe<number>(page, 'startY');
       // The box starts at y = 1 m and rests on the wall at y = 5 m (its centre at 4.5 m).
       await page.waitForFunction('window.probe.y() > 4.3', undefined, { timeout: 30_000 });
       await page.waitForFunction('window.probe.collisions() > 0', undefined, { timeout: 30_000 });
