@@ -1,3 +1,4 @@
+/* eslint-disable no-console -- a command-line script: its output is the report */
 // Consumer test: the libraries as users receive them. Packs every library, installs the
 // tarballs (and only registry packages besides) into projects in a temp dir outside the
 // workspace, type-checks them under strict tsc, builds them with Vite, runs the Node scripts,

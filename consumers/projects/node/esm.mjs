@@ -1,3 +1,5 @@
+/* global console */
+/* eslint-disable no-console -- the script prints what it checked */
 // A Node ESM script, as the engine README shows it.
 import assert from 'node:assert/strict';
 import { World, particle, wall } from '@physical/engine';

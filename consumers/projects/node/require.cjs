@@ -1,3 +1,5 @@
+/* global console, require */
+/* eslint-disable no-console, @typescript-eslint/no-require-imports -- a CommonJS script on purpose */
 // A Node CommonJS script: the packages are ESM only, loaded by require() of ESM (Node >= 20.19).
 const assert = require('node:assert/strict');
 const { World, box, wall } = require('@physical/engine');

@@ -1,6 +1,6 @@
-// Vite + strict TypeScript: the element registered by its side-effect entry, typed through it.
+// Vite + strict TypeScript: the element registered by its side-effect entry and typed through it
+// alone (no other import of @physical/canvas, so nothing else brings the tag's typings in).
 import '@physical/canvas/define';
-import { worldToScreen } from '@physical/canvas';
 import { World, box, wall } from '@physical/engine';
 import { expose } from '../shared/expose.ts';
 
@@ -16,6 +16,7 @@ canvas.addEventListener('bodytap', (event) => {
 });
 expose(world, crate, () => {
   const rect = canvas.getBoundingClientRect();
-  const point = worldToScreen(canvas.viewport, crate.position);
-  return { x: rect.left + point.x, y: rect.top + point.y, taps };
+  const { originX, originY, scale } = canvas.viewport;
+  const x = rect.left + (crate.position.x - originX) * scale;
+  return { x, y: rect.top + (crate.position.y - originY) * scale, taps };
 });
