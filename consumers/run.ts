@@ -140,7 +140,12 @@ await check('node ESM import', () => console.log(run(process.execPath, ['node/es
 await check('node CommonJS require (require of ESM)', () =>
   console.log(run(process.execPath, ['node/require.cjs'], app)),
 );
-await check('strict tsc over the Vite, React and Vue projects', () =>
+// The Vite page on its own: a program with the React page would see the tag's typings through
+// its import of the main entry, and miss a `/define` that carries none.
+await check('strict tsc over the Vite + TypeScript project (only @physical/canvas/define)', () =>
+  run(process.execPath, ['node_modules/typescript/bin/tsc', '-p', 'vite-ts/tsconfig.json'], app),
+);
+await check('strict tsc over the React and Vue projects', () =>
   run(process.execPath, ['node_modules/typescript/bin/tsc', '-p', 'tsconfig.json'], app),
 );
 const pages = ['vite-ts', 'react', 'vue'] as const;
