@@ -8,6 +8,8 @@ export default defineConfig({
     alias: {
       '@physical/engine': fileURLToPath(new URL('./packages/engine/src/index.ts', import.meta.url)),
       '@physical/canvas': fileURLToPath(new URL('./packages/canvas/src/index.ts', import.meta.url)),
+      // Before '@physical/react', which would also match its subpath.
+      '@physical/react/ui': fileURLToPath(new URL('./packages/react/src/ui.ts', import.meta.url)),
       '@physical/react': fileURLToPath(new URL('./packages/react/src/index.ts', import.meta.url)),
       '@physical/scenes': fileURLToPath(new URL('./packages/scenes/src/index.ts', import.meta.url)),
       '@physical/dom': fileURLToPath(new URL('./packages/dom/src/index.ts', import.meta.url)),

@@ -1,7 +1,8 @@
 // Mounts <PhysicalContainer> under StrictMode (effects mount, unmount and mount again), with
 // controls the test drives: release all, add a chip, unmount.
 import type { PhysicalUI } from '@physical/dom';
-import { PhysicalContainer } from '@physical/react';
+// The e2e server aliases only package entries; Physical UI is the `@physical/react/ui` entry.
+import { PhysicalContainer } from '../../packages/react/src/ui.ts';
 import { StrictMode, createElement, useRef, useState } from 'react';
 import { createRoot } from 'react-dom/client';
 

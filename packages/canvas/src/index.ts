@@ -6,7 +6,13 @@ export type {
   AttributeErrorDetail,
   PauseChangeDetail,
   PhysicalCanvasEventMap,
+  PhysicalCanvasEvents,
 } from './element/canvas-events.ts';
+export type {
+  PhysicalCanvasAttributes,
+  PhysicalCanvasEventProps,
+  PhysicalCanvasProperties,
+} from './element/element-typings.ts';
 export { define } from './element/define-physical-canvas.ts';
 export { CanvasSettingError } from './element/attribute-parsers.ts';
 export type { PointerEventDetail } from './element/pointer-input.ts';

@@ -1,6 +1,6 @@
 // @physical/react's public API. Everything not listed here is internal.
+// Physical UI (<PhysicalContainer>, usePhysicalUI) lives in the `@physical/react/ui` entry
+// (src/ui.ts), so apps that only draw a world never load, or need to install, @physical/dom.
 
 export { PhysicalCanvas } from './physical-canvas.ts';
 export type { PhysicalCanvasProps } from './physical-canvas.ts';
-export { PhysicalContainer, usePhysicalUI } from './physical-ui.ts';
-export type { PhysicalContainerProps } from './physical-ui.ts';

@@ -1,6 +1,6 @@
 import { createElement } from 'react';
 import { describe, expect, it } from 'vitest';
-import { PhysicalContainer } from '@physical/react';
+import { PhysicalContainer } from '@physical/react/ui';
 
 describe('<PhysicalContainer> on the server', () => {
   it('renders the container and its children as plain HTML, without touching window', async () => {

@@ -11,8 +11,11 @@ export interface PauseChangeDetail {
   readonly paused: boolean;
 }
 
-/** The events of `<physical-canvas>` (besides those of every element), by name. */
-export interface PhysicalCanvasEventMap extends HTMLElementEventMap {
+/**
+ * The events `<physical-canvas>` dispatches, by name. They bubble and are composed; they are also
+ * in the global `HTMLElementEventMap`, so listeners on ancestors are typed too.
+ */
+export interface PhysicalCanvasEvents {
   /** A pointer pressed on a body. */
   bodypress: CustomEvent<PointerEventDetail>;
   /** A pointer that pressed a body was released (or cancelled). */
@@ -26,6 +29,9 @@ export interface PhysicalCanvasEventMap extends HTMLElementEventMap {
   /** The keyboard (Space) paused or resumed the simulation. */
   pausechange: CustomEvent<PauseChangeDetail>;
 }
+
+/** Every event of `<physical-canvas>`: its own ({@link PhysicalCanvasEvents}) and those of any element. */
+export interface PhysicalCanvasEventMap extends HTMLElementEventMap, PhysicalCanvasEvents {}
 
 /** Dispatches one of the element's events: bubbling and composed, so it leaves the shadow root. */
 export function emit<K extends keyof PhysicalCanvasEventMap>(

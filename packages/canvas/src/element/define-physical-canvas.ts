@@ -1,10 +1,7 @@
 import { PhysicalCanvasElement } from './physical-canvas-element.ts';
 
-declare global {
-  interface HTMLElementTagNameMap {
-    'physical-canvas': PhysicalCanvasElement;
-  }
-}
+// The tag's global typings (HTMLElementTagNameMap, HTMLElementEventMap) live there.
+import './element-typings.ts';
 
 /**
  * Registers `<physical-canvas>` (or the element under another tag name). Safe to call more than

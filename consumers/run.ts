@@ -1,0 +1,242 @@
+/* eslint-disable no-console -- a command-line script: its output is the report */
+// Consumer test: the libraries as users receive them. Packs every library, installs the
+// tarballs (and only registry packages besides) into projects in a temp dir outside the
+// workspace, type-checks them under strict tsc, builds them with Vite, runs the Node scripts,
+// drives the pages in Chromium (a body falls, a collision event arrives, a drag moves it), and
+// runs publint and attw on every tarball. Any failure exits non-zero.
+// Run: `npx tsx consumers/run.ts` (after `npm ci`; CI runs it from .ci/run).
+import { execFileSync } from 'node:child_process';
+import { cpSync, mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import { createServer, type Server } from 'node:http';
+import { tmpdir } from 'node:os';
+import { extname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium, type Page } from 'playwright-core';
+import { publint } from 'publint';
+import { formatMessage } from 'publint/utils';
+
+const root = resolve(fileURLToPath(new URL('..', import.meta.url)));
+const libraries = ['engine', 'canvas', 'dom', 'react'] as const;
+const work = mkdtempSync(join(tmpdir(), 'physical-consumers-'));
+const failures: string[] = [];
+const started = Date.now();
+
+function run(command: string, args: readonly string[], cwd: string): string {
+  const shown = `${command} ${args.join(' ')}`;
+  console.log(`$ ${shown}   (in ${cwd})`);
+  try {
+    return execFileSync(command, args, {
+      cwd,
+      encoding: 'utf8',
+      stdio: ['ignore', 'pipe', 'pipe'],
+    });
+  } catch (error) {
+    const { stdout = '', stderr = '' } = error as { stdout?: string; stderr?: string };
+    throw new Error(`${shown} failed:\n${stdout}${stderr}`, { cause: error });
+  }
+}
+
+async function check(name: string, body: () => unknown): Promise<void> {
+  try {
+    await body();
+    console.log(`ok   ${name}`);
+  } catch (error) {
+    failures.push(name);
+    console.log(`FAIL ${name}\n${error instanceof Error ? error.message : String(error)}`);
+  }
+}
+
+function kib(bytes: number): string {
+  return `${(bytes / 1024).toFixed(1)} kB`;
+}
+
+// 1. Pack: build each library once (prepack would rebuild its dependencies for each), then pack.
+for (const name of libraries) run('npm', ['run', 'build', '-w', `@physical/${name}`], root);
+const tarballs: Record<string, string> = {};
+for (const name of libraries) {
+  const [info] = JSON.parse(
+    run(
+      'npm',
+      ['pack', '--json', '--ignore-scripts', '--pack-destination', work],
+      join(root, 'packages', name),
+    ),
+  ) as { filename: string; size: number; unpackedSize: number; entryCount: number }[];
+  tarballs[name] = join(work, info!.filename);
+  console.log(
+    `packed @physical/${name}: ${info!.filename}, ${kib(info!.size)} packed, ${kib(info!.unpackedSize)} unpacked, ${info!.entryCount} files`,
+  );
+}
+
+// 2. Lint the tarballs: publint (errors and warnings fail) and attw (ESM only by design, so the
+// esm-only profile: node10 and CommonJS `import()`-only resolutions are not problems).
+for (const name of libraries) {
+  await check(`publint @physical/${name}`, async () => {
+    const buffer = readFileSync(tarballs[name]!);
+    const tarball = buffer.buffer.slice(buffer.byteOffset, buffer.byteOffset + buffer.byteLength);
+    const { messages, pkg } = await publint({
+      pack: { tarball },
+      level: 'suggestion',
+      strict: true,
+    });
+    for (const message of messages) {
+      console.log(`  publint ${message.type}: ${formatMessage(message, pkg) ?? message.code}`);
+    }
+    const bad = messages.filter((message) => message.type !== 'suggestion');
+    if (bad.length > 0) throw new Error(`${bad.length} publint errors or warnings`);
+  });
+  await check(`attw @physical/${name}`, () => {
+    const attw = join(root, 'node_modules/@arethetypeswrong/cli/dist/index.js');
+    const output = run(
+      process.execPath,
+      [
+        attw,
+        tarballs[name]!,
+        '--profile',
+        'esm-only',
+        '--format',
+        'table',
+        '--no-emoji',
+        '--no-color',
+      ],
+      work,
+    );
+    console.log(output.replace(/^/gm, '  '));
+  });
+}
+
+// 3. The consumer projects, outside the workspace, with the tarballs and registry packages only.
+const app = join(work, 'app');
+cpSync(join(root, 'consumers/projects'), app, { recursive: true });
+const dependencies: Record<string, string> = {};
+for (const name of libraries) dependencies[`@physical/${name}`] = `file:${tarballs[name]}`;
+writeFileSync(
+  join(app, 'package.json'),
+  JSON.stringify(
+    {
+      name: 'physical-consumer',
+      private: true,
+      type: 'module',
+      dependencies: {
+        ...dependencies,
+        react: '^19.0.0',
+        'react-dom': '^19.0.0',
+        vue: '^3.5.0',
+      },
+      devDependencies: {
+        '@types/react': '^19.0.0',
+        '@types/react-dom': '^19.0.0',
+        '@vitejs/plugin-react': '^6.0.0',
+        typescript: '^6.0.0',
+        vite: '^8.0.0',
+      },
+    },
+    null,
+    2,
+  ),
+);
+run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel=error'], app);
+
+await check('node ESM import', () => console.log(run(process.execPath, ['node/esm.mjs'], app)));
+await check('node CommonJS require (require of ESM)', () =>
+  console.log(run(process.execPath, ['node/require.cjs'], app)),
+);
+// The Vite page on its own: a program with the React page would see the tag's typings through
+// its import of the main entry, and miss a `/define` that carries none.
+await check('strict tsc over the Vite + TypeScript project (only @physical/canvas/define)', () =>
+  run(process.execPath, ['node_modules/typescript/bin/tsc', '-p', 'vite-ts/tsconfig.json'], app),
+);
+await check('strict tsc over the React and Vue projects', () =>
+  run(process.execPath, ['node_modules/typescript/bin/tsc', '-p', 'tsconfig.json'], app),
+);
+const pages = ['vite-ts', 'react', 'vue'] as const;
+for (const page of pages) {
+  await check(`vite build ${page}`, () =>
+    run(
+      process.execPath,
+      ['node_modules/vite/bin/vite.js', 'build', page, '--base', './', '--logLevel', 'warn'],
+      app,
+    ),
+  );
+}
+
+// 4. The pages in Chromium.
+const types: Record<string, string> = {
+  '.html': 'text/html',
+  '.js': 'text/javascript',
+  '.css': 'text/css',
+};
+const server: Server = createServer((request, response) => {
+  const path = join(app, decodeURIComponent(new URL(request.url ?? '/', 'http://x').pathname));
+  try {
+    const file = statSync(path).isDirectory() ? join(path, 'index.html') : path;
+    response.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream' });
+    response.end(readFileSync(file));
+  } catch {
+    response.writeHead(404).end();
+  }
+});
+await new Promise<void>((done) => server.listen(0, '127.0.0.1', done));
+const address = server.address();
+const origin = `http://127.0.0.1:${typeof address === 'object' && address !== null ? address.port : 0}`;
+const browser = await chromium.launch({
+  executablePath: process.env['CHROMIUM_PATH'] ?? '/usr/bin/chromium',
+  args: [
+    '--no-sandbox',
+    '--disable-gpu',
+    '--disable-background-networking',
+    '--disable-component-update',
+    '--disable-sync',
+    '--no-first-run',
+  ],
+});
+
+async function probe<T>(page: Page, read: string): Promise<T> {
+  return (await page.evaluate(`window.probe.${read}`)) as T;
+}
+
+for (const name of pages) {
+  await check(`${name} page in Chromium: falls, collides, drags`, async () => {
+    const page = await browser.newPage({ viewport: { width: 900, height: 400 } });
+    const errors: string[] = [];
+    page.on('pageerror', (error) => errors.push(error.message));
+    try {
+      await page.goto(`${origin}/${name}/dist/index.html`);
+      await page.waitForFunction('window.probe !== undefined', undefined, { timeout: 30_000 });
+      const startY = await probe<number>(page, 'startY');
+      // The box starts at y = 1 m and rests on the wall at y = 5 m (its centre at 4.5 m).
+      await page.waitForFunction('window.probe.y() > 4.3', undefined, { timeout: 30_000 });
+      await page.waitForFunction('window.probe.collisions() > 0', undefined, { timeout: 30_000 });
+      const fallen = await probe<number>(page, 'y()');
+      if (!(fallen > startY + 3)) throw new Error(`did not fall: y ${startY} -> ${fallen}`);
+      // Drag it 3 m (150 px at 50 px/m) to the right.
+      const startX = await probe<number>(page, 'x()');
+      const grab = await probe<{ x: number; y: number }>(page, 'screenPoint()');
+      await page.mouse.move(grab.x, grab.y);
+      await page.mouse.down();
+      for (let i = 1; i <= 10; i++) await page.mouse.move(grab.x + 15 * i, grab.y - 2 * i);
+      await page.waitForFunction(`window.probe.x() > ${startX + 2}`, undefined, {
+        timeout: 15_000,
+      });
+      await page.mouse.up();
+      // A tap (press and release without moving) reaches the typed bodytap listener.
+      await page.waitForFunction('window.probe.y() > 4.3', undefined, { timeout: 30_000 });
+      const tap = await probe<{ x: number; y: number }>(page, 'screenPoint()');
+      await page.mouse.click(tap.x, tap.y);
+      await page.waitForFunction('window.probe.screenPoint().taps > 0', undefined, {
+        timeout: 15_000,
+      });
+      if (errors.length > 0) throw new Error(`page errors: ${errors.join('; ')}`);
+    } finally {
+      await page.close();
+    }
+  });
+}
+await browser.close();
+server.close();
+
+if (failures.length === 0) rmSync(work, { recursive: true, force: true });
+else console.log(`Kept ${work} for inspection.`);
+console.log(
+  `consumer test: ${failures.length === 0 ? 'passed' : `FAILED (${failures.join(', ')})`} in ${((Date.now() - started) / 1000).toFixed(0)} s`,
+);
+process.exitCode = failures.length === 0 ? 0 : 1;
