@@ -14,35 +14,47 @@ export function useAnnouncer(name: string): {
   region: ReactElement;
 } {
   const [text, setText] = useState('');
-  const queue = useRef<string[]>([]);
-  const lastAt = useRef(-Infinity);
-  const timer = useRef<ReturnType<typeof setTimeout> | null>(null);
+  const state = useRef({
+    queue: [] as string[],
+    lastAt: -Infinity,
+    timer: null as ReturnType<typeof setTimeout> | null,
+  });
 
-  const flush = useCallback((): void => {
-    timer.current = null;
-    const next = queue.current.shift();
-    if (next === undefined) return;
-    lastAt.current = performance.now();
-    setText(next);
-    if (queue.current.length > 0) timer.current = setTimeout(flush, ANNOUNCE_GAP_MS);
+  // Speaks the next message once the gap since the last one (as it reached the page) is over.
+  const pump = useCallback((): void => {
+    const current = state.current;
+    current.timer = null;
+    if (current.queue.length === 0) return;
+    const wait = current.lastAt + ANNOUNCE_GAP_MS - performance.now();
+    if (wait > 0) {
+      current.timer = setTimeout(pump, wait);
+      return;
+    }
+    current.lastAt = performance.now();
+    setText(current.queue.shift()!);
+    if (current.queue.length > 0) current.timer = setTimeout(pump, ANNOUNCE_GAP_MS);
   }, []);
 
   const announce = useCallback(
     (message: string): void => {
-      queue.current = [...queue.current.filter((item) => item !== message), message].slice(-2);
-      if (timer.current !== null) return;
-      const wait = Math.max(0, lastAt.current + ANNOUNCE_GAP_MS - performance.now());
-      timer.current = setTimeout(flush, wait);
+      const current = state.current;
+      current.queue = [...current.queue.filter((item) => item !== message), message].slice(-2);
+      if (current.timer === null) current.timer = setTimeout(pump, 0);
     },
-    [flush],
+    [pump],
   );
 
-  useEffect(
-    () => () => {
-      if (timer.current !== null) clearTimeout(timer.current);
-    },
-    [],
-  );
+  // The gap counts from when the text reached the page (a busy frame delays the commit).
+  useEffect(() => {
+    if (text !== '') state.current.lastAt = performance.now();
+  }, [text]);
+
+  useEffect(() => {
+    const current = state.current;
+    return () => {
+      if (current.timer !== null) clearTimeout(current.timer);
+    };
+  }, []);
 
   const region = (
     <Box

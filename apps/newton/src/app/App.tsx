@@ -87,7 +87,10 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
       <AppBar position="static" elevation={0} color="transparent" sx={{ bgcolor: '#1e1e1e' }}>
         <Toolbar variant="dense" sx={{ gap: 1, minHeight: 52 }}>
           <Typography variant="h6" component="h1" sx={{ flex: 1, fontSize: '1.15rem' }} noWrap>
-            <Box component="span" sx={{ color: 'text.secondary', fontWeight: 400 }}>
+            <Box
+              component="span"
+              sx={{ color: 'text.secondary', fontWeight: 400, display: wide ? 'inline' : 'none' }}
+            >
               {t('app.title')} ·{' '}
             </Box>
             {t(current.label)}
@@ -97,6 +100,7 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
               aria-label={t('app.hint')}
               onClick={() => setHintOpen(true)}
               data-action="hint"
+              sx={{ width: 48, height: 48 }}
             >
               <HintIcon sx={{ color: '#ffd54f' }} />
             </IconButton>
@@ -113,7 +117,7 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
                 key={item}
                 value={item}
                 lang={item}
-                sx={{ px: 1.25, py: 0.25 }}
+                sx={{ minWidth: 48, minHeight: 48, px: 1.25, py: 0.25 }}
                 data-locale={item}
               >
                 {item.toUpperCase()}
