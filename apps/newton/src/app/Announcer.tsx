@@ -1,5 +1,6 @@
 import { Box } from '@mui/material';
 import { useCallback, useEffect, useRef, useState, type ReactElement } from 'react';
+import { playEventTone } from './sound.ts';
 
 /** Shortest time between two announcements (ms): a screen reader finishes a short sentence. */
 export const ANNOUNCE_GAP_MS = 1500;
@@ -37,6 +38,7 @@ export function useAnnouncer(name: string): {
 
   const announce = useCallback(
     (message: string): void => {
+      playEventTone();
       const current = state.current;
       current.queue = [...current.queue.filter((item) => item !== message), message].slice(-2);
       if (current.timer === null) current.timer = setTimeout(pump, 0);

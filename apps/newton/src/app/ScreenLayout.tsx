@@ -1,5 +1,5 @@
 import { Box, Typography } from '@mui/material';
-import type { ReactNode } from 'react';
+import { useEffect, type ReactNode } from 'react';
 import { SimControls, type SimControlsProps } from './SimControls.tsx';
 
 /** Canvas and panel side by side: a wide screen, or a phone held sideways. */
@@ -24,6 +24,10 @@ export interface ScreenLayoutProps {
  * reach. Side by side (canvas left, panel right) when the screen is wide and short.
  */
 export function ScreenLayout({ id, active, law, stage, panel, controls }: ScreenLayoutProps) {
+  // The first screen is on the page (its code loaded on demand): the app is ready.
+  useEffect(() => {
+    if (active) document.documentElement.dataset['ready'] = 'true';
+  }, [active]);
   return (
     <Box
       component="section"

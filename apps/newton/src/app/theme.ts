@@ -1,7 +1,12 @@
 import { createTheme } from '@mui/material';
 
+/** The learner asked for less motion: no transitions, no ripples, no fading arrows. */
+export const REDUCED_MOTION =
+  typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
+
 /** Material Design's dark theme, as the thesis chose; system fonts keep the download small. */
 export const theme = createTheme({
+  ...(REDUCED_MOTION ? { transitions: { create: () => 'none' } } : {}),
   palette: {
     mode: 'dark',
     primary: { main: '#82b1ff' },
@@ -17,6 +22,7 @@ export const theme = createTheme({
   shape: { borderRadius: 12 },
   components: {
     MuiButton: { defaultProps: { disableElevation: true } },
+    MuiButtonBase: { defaultProps: { disableRipple: REDUCED_MOTION } },
   },
 });
 

@@ -17,6 +17,7 @@ import {
   useState,
 } from 'react';
 import { useAnnouncer } from '../../app/Announcer.tsx';
+import { REDUCED_MOTION } from '../../app/theme.ts';
 import { AddIcon, DeleteIcon, PhoneTiltIcon } from '../../app/icons.tsx';
 import { useOrientationRebuild } from '../../app/use-orientation-rebuild.ts';
 import { Readout } from '../../app/Readout.tsx';
@@ -210,7 +211,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           {
             kind: 'force',
             width: 3,
-            opacity,
+            opacity: REDUCED_MOTION ? 1 : opacity,
           },
         );
         drawArrow(
@@ -221,7 +222,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           {
             kind: 'impulse',
             width: 3,
-            opacity,
+            opacity: REDUCED_MOTION ? 1 : opacity,
           },
         );
       }
