@@ -211,7 +211,15 @@ test('newton: idle, nothing draws while nothing changes, on the shown screen or 
         new DeviceOrientationEvent('deviceorientation', { alpha: 0, beta: 0, gamma: 30 }),
       ),
     );
-    assert.ok((await framesIn(500)) > 10, 'a moving particle is drawn');
+    await page.waitForFunction(
+      () =>
+        (document.querySelector('#reactions physical-canvas') as unknown as { isRunning: boolean })
+          .isRunning,
+      undefined,
+      { timeout: 5000 },
+    );
+    const drawn = await framesIn(1000);
+    assert.ok(drawn > 5, `a moving particle is drawn (${drawn} frames in 1 s)`);
     assertQuiet(app);
   } finally {
     await closeApp(app);

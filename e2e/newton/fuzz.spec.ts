@@ -4,7 +4,7 @@ import { test } from '../harness.ts';
 import { closeApp, openApp } from './phone.ts';
 
 /** Seconds of random input per screen: short, so CI stays quick; the seed makes it repeatable. */
-const SECONDS_PER_SCREEN = 7;
+const SECONDS_PER_SCREEN = 5;
 const KEYS = [
   'ArrowLeft',
   'ArrowRight',
@@ -36,6 +36,17 @@ async function heapUsed(page: Page): Promise<number> {
   const { usedSize } = await session.send('Runtime.getHeapUsage');
   await session.detach();
   return usedSize;
+}
+
+async function closeDialogs(page: Page): Promise<void> {
+  for (let i = 0; i < 3 && (await page.getByRole('dialog').count()) > 0; i++) {
+    await page.keyboard.press('Escape');
+    await page
+      .getByRole('dialog')
+      .first()
+      .waitFor({ state: 'detached', timeout: 2000 })
+      .catch(() => undefined);
+  }
 }
 
 async function fuzzStep(page: Page, screen: string, next: () => number): Promise<void> {
@@ -86,6 +97,7 @@ test('newton: fuzz, random taps, drags, keys and dialog input on every screen: n
     const heaps: number[] = [];
     for (const round of [0, 1]) {
       for (const screen of ['inertia', 'forces', 'reactions']) {
+        await closeDialogs(page);
         await page.locator(`[data-nav="${screen}"]`).click();
         await page.locator(`#${screen}`).waitFor({ state: 'visible' });
         const end = Date.now() + (SECONDS_PER_SCREEN * 1000) / 2;
@@ -97,7 +109,7 @@ test('newton: fuzz, random taps, drags, keys and dialog input on every screen: n
         );
         assert.deepEqual(bad, [], `${screen}: readouts that are not numbers`);
       }
-      if ((await page.getByRole('dialog').count()) > 0) await page.keyboard.press('Escape');
+      await closeDialogs(page);
       heaps.push(await heapUsed(page));
       void round;
     }

@@ -114,8 +114,13 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
   return (
     <Box sx={{ height: '100dvh', display: 'flex', flexDirection: 'column', overflow: 'hidden' }}>
       <AppBar position="static" elevation={0} color="transparent" sx={{ bgcolor: '#1e1e1e' }}>
-        <Toolbar variant="dense" sx={{ gap: 1, minHeight: 52 }}>
-          <Typography variant="h6" component="h1" sx={{ flex: 1, fontSize: '1.15rem' }} noWrap>
+        <Toolbar variant="dense" sx={{ gap: 0.5, minHeight: 52, px: { xs: 1.5, sm: 2 } }}>
+          <Typography
+            variant="h6"
+            component="h1"
+            sx={{ flex: 1, minWidth: 0, fontSize: wide ? '1.15rem' : '1.05rem' }}
+            noWrap
+          >
             <Box
               component="span"
               sx={{ color: 'text.secondary', fontWeight: 400, display: wide ? 'inline' : 'none' }}
