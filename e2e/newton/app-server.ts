@@ -72,3 +72,26 @@ export async function serveStatic(root: string): Promise<AppServer> {
       }),
   };
 }
+
+/**
+ * Serves the built app with `vite preview`, the server `npm start` runs (it sends `Vary: Origin`
+ * and its own caching headers), on 127.0.0.1 and a free port.
+ */
+export async function startPreviewServer(): Promise<AppServer> {
+  if (!hasBuild()) {
+    throw new Error(`the Newton app is not built: run npm run build -w @physical/newton`);
+  }
+  const { preview } = await import('vite');
+  const config = fileURLToPath(new URL('../../apps/newton/vite.config.ts', import.meta.url));
+  const server = await preview({
+    configFile: config,
+    logLevel: 'error',
+    preview: { host: '127.0.0.1', port: 0, strictPort: false, open: false },
+  });
+  const address = server.httpServer.address();
+  if (address === null || typeof address === 'string') throw new Error('no TCP address');
+  return {
+    url: `http://127.0.0.1:${address.port}`,
+    close: () => server.close(),
+  };
+}

@@ -40,8 +40,12 @@ test('newton: the language switch changes the texts (English, German)', async ({
   }
 });
 
-test('newton: after one visit the app reloads with the network off', async ({ browser }) => {
-  const app = await openApp(browser, '#forces');
+test('newton: after one visit the app reloads with the network off (served by npm start)', async ({
+  browser,
+}) => {
+  // vite preview, the server npm start runs: it sends Vary: Origin, which a cache lookup without
+  // ignoreVary misses for module scripts.
+  const app = await openApp(browser, '#forces', PHONE, 'preview');
   const { page, context } = app;
   try {
     await page.evaluate(async () => {

@@ -2,7 +2,17 @@ import assert from 'node:assert/strict';
 import { mkdirSync } from 'node:fs';
 import { createRequire } from 'node:module';
 import type { Browser, BrowserContext, BrowserContextOptions, Page } from 'playwright-core';
-import { startAppServer, type AppServer } from './app-server.ts';
+import { startAppServer, startPreviewServer, type AppServer } from './app-server.ts';
+
+/** The same phone turned sideways: landscape. */
+export const LANDSCAPE: BrowserContextOptions = {
+  viewport: { width: 844, height: 390 },
+  deviceScaleFactor: 3,
+  isMobile: true,
+  hasTouch: true,
+  locale: 'en-US',
+  serviceWorkers: 'allow',
+};
 
 /** A phone: portrait, touch, three device pixels per CSS pixel. */
 export const PHONE: BrowserContextOptions = {
@@ -33,11 +43,16 @@ export async function openApp(
   browser: Browser,
   hash = '',
   options: BrowserContextOptions = PHONE,
+  /** 'preview': the server `npm start` runs (vite preview); 'static': a plain file server. */
+  serverKind: 'static' | 'preview' = 'static',
+  /** Source text run in the page before any page script. */
+  initScript?: string,
 ): Promise<AppPage> {
-  const server = await startAppServer();
+  const server = serverKind === 'preview' ? await startPreviewServer() : await startAppServer();
   const context = await browser.newContext(options);
   // tsx compiles specs with keepNames: functions passed to page.evaluate call __name.
   await context.addInitScript('globalThis.__name = (target) => target;');
+  if (initScript !== undefined) await context.addInitScript(initScript);
   const page = await context.newPage();
   const problems: string[] = [];
   page.on('console', (message) => {

@@ -1,6 +1,8 @@
 // Newton's service worker: precaches every built file on install (the list and its version come
 // from precache-manifest.js, written by the build), answers from the cache first, and falls back
 // to the cached page for navigations, so the app reloads with the network off after one visit.
+// Lookups ignore Vary: `vite preview` (npm start) answers with `Vary: Origin`, and a module
+// script's request carries an Origin header the cached copy was not fetched with.
 /* global self, caches, fetch, URL, Request, Response */
 self.importScripts('./precache-manifest.js');
 
@@ -47,7 +49,7 @@ self.addEventListener('fetch', (event) => {
         })
         .catch(() =>
           caches
-            .match('./index.html', { ignoreSearch: true })
+            .match('./index.html', { ignoreSearch: true, ignoreVary: true })
             .then((cached) => cached ?? Response.error()),
         ),
     );
@@ -55,7 +57,7 @@ self.addEventListener('fetch', (event) => {
   }
   // Hashed assets and icons: the cache first, then the network (and keep a copy).
   event.respondWith(
-    caches.match(request, { ignoreSearch: true }).then(
+    caches.match(request, { ignoreSearch: true, ignoreVary: true }).then(
       (cached) =>
         cached ??
         fetch(request).then((response) => {

@@ -5,6 +5,7 @@ import {
   createInertiaScene,
   forceVector,
   sceneSizeFor,
+  updateFloorFriction,
   screenAngle,
 } from '../src/screens/inertia/inertia-scene.ts';
 
@@ -15,19 +16,48 @@ function sequence(...values: number[]): () => number {
 }
 
 describe('Inertia scene', () => {
-  it('puts a 5- or 6-sided polygon at rest in the centre, with random restitution and friction', () => {
-    const scene = createInertiaScene(6, 8, sequence(0.7, 0.25, 0.9));
+  it('puts a 5- or 6-sided polygon at rest in the centre, asleep, with elastic walls on ice by default', () => {
+    const scene = createInertiaScene(6, 8, {}, sequence(0.7));
     expect(scene.sides).toBe(6);
-    expect(scene.restitution).toBe(0.25);
-    expect(scene.friction).toBe(0.9);
+    expect(scene.elasticity).toBe(1);
+    expect(scene.surface).toBe('ice');
     expect(scene.body.position.x).toBeCloseTo(3, 12);
     expect(scene.body.position.y).toBeCloseTo(4, 12);
     expect(scene.body.mass).toBeCloseTo(POLYGON_MASS, 9);
-    expect(createInertiaScene(6, 8, sequence(0.2, 0.5, 0.5)).sides).toBe(5);
+    expect(scene.body.isAwake).toBe(false);
+    expect(createInertiaScene(6, 8, {}, sequence(0.2)).sides).toBe(5);
     expect(scene.world.gravity).toEqual({ x: 0, y: 0 });
     for (let i = 0; i < 120; i++) scene.world.step(1 / 60);
     expect(scene.body.linearVelocity.x).toBe(0);
     expect(scene.body.linearVelocity.y).toBe(0);
+  });
+
+  it('keeps the speed through wall bounces by default (perfectly elastic, frictionless walls)', () => {
+    const scene = createInertiaScene(6, 8, { sides: 6 });
+    scene.body.linearVelocity = { x: 2, y: 0.7 };
+    const speed = Math.hypot(2, 0.7);
+    let hits = 0;
+    scene.world.on('collision', () => hits++);
+    for (let i = 0; i < 240; i++) scene.world.step(1 / 60);
+    const v = scene.body.linearVelocity;
+    expect(hits).toBeGreaterThanOrEqual(2);
+    expect(Math.hypot(v.x, v.y)).toBeCloseTo(speed, 2);
+  });
+
+  it('with bounciness 0 the body stops at the wall; on wood friction mu m g slows and stops it', () => {
+    const dead = createInertiaScene(6, 8, { sides: 6, elasticity: 0 });
+    dead.body.linearVelocity = { x: 2, y: 0 };
+    for (let i = 0; i < 120; i++) dead.world.step(1 / 60);
+    expect(Math.abs(dead.body.linearVelocity.x)).toBeLessThan(0.05);
+    const wood = createInertiaScene(60, 60, { sides: 6, surface: 'wood' });
+    wood.body.linearVelocity = { x: 1, y: 0 };
+    updateFloorFriction(wood);
+    for (let i = 0; i < 60; i++) wood.world.step(1 / 60);
+    // a = mu g = 0.05 * 9.81 m/s^2 for 1 s.
+    expect(wood.body.linearVelocity.x).toBeCloseTo(1 - 0.05 * 9.81, 2);
+    for (let i = 0; i < 180; i++) wood.world.step(1 / 60);
+    expect(wood.body.linearVelocity.x).toBe(0);
+    expect(wood.body.isAwake).toBe(false);
   });
 
   it('points 0 degrees right and 90 degrees up on screen (the world is y-down)', () => {
@@ -38,7 +68,7 @@ describe('Inertia scene', () => {
   });
 
   it('accelerates while the force acts and keeps a constant velocity after it stops', () => {
-    const scene = createInertiaScene(6, 8, sequence(0.7, 0.5, 0.5));
+    const scene = createInertiaScene(6, 8, {}, sequence(0.7));
     const force = applyConstantForce(scene, 0, 1);
     for (let i = 0; i < 30; i++) scene.world.step(1 / 60);
     force.remove();

@@ -5,8 +5,11 @@ import {
   PUSH_FORCE,
   clearParticles,
   createReactionsScene,
+  pushFor,
+  setElasticity,
   setTilt,
   spawnParticle,
+  totalMomentum,
 } from '../src/screens/reactions/reactions-scene.ts';
 import { tiltFromOrientation } from '../src/sensors/device-tilt.ts';
 
@@ -66,5 +69,28 @@ describe('device tilt', () => {
     const tilt = tiltFromOrientation(0, 90, 90);
     expect(tilt.x).toBeCloseTo(0, 9);
     expect(tilt.y).toBeCloseTo(-1, 9);
+  });
+});
+
+describe('Reactions push, elasticity and momentum', () => {
+  it('caps the push at 1 N in any direction: a diagonal full tilt is 1 N, not 1.41 N', () => {
+    const diagonal = pushFor({ x: 1, y: 1 });
+    expect(Math.hypot(diagonal.x, diagonal.y)).toBeCloseTo(1, 12);
+    expect(diagonal.x).toBeCloseTo(Math.SQRT1_2, 12);
+    expect(pushFor({ x: 0.5, y: 0 })).toEqual({ x: 0.5, y: 0 });
+  });
+
+  it('gives new particles the chosen elasticity and sums their momentum', () => {
+    const scene = createReactionsScene(6, 9, 0.3);
+    const a = spawnParticle(scene, { x: 2, y: 2 }, () => 0.5);
+    expect(a.shapes[0]!.restitution).toBe(0.3);
+    setElasticity(scene, 1);
+    expect(a.shapes[0]!.restitution).toBe(1);
+    a.linearVelocity = { x: 2, y: 0 };
+    const b = spawnParticle(scene, { x: 4, y: 4 }, () => 0);
+    b.linearVelocity = { x: 0, y: -1 };
+    const p = totalMomentum(scene);
+    expect(p.x).toBeCloseTo(2 * a.mass, 12);
+    expect(p.y).toBeCloseTo(-b.mass, 12);
   });
 });

@@ -17,17 +17,33 @@ import {
   Typography,
   useMediaQuery,
 } from '@mui/material';
-import { useEffect, useState } from 'react';
+import { Suspense, lazy, useEffect, useState } from 'react';
 import { I18nProvider, LOCALES, preferredLocale, useI18n, type Locale } from '../i18n/i18n.tsx';
-import { ForcesScreen } from '../screens/forces/ForcesScreen.tsx';
-import { InertiaScreen } from '../screens/inertia/InertiaScreen.tsx';
-import { ReactionsScreen } from '../screens/reactions/ReactionsScreen.tsx';
-import { HintIcon } from './icons.tsx';
+import { HintIcon, SoundOffIcon, SoundOnIcon } from './icons.tsx';
+import { onSoundChange, setSoundEnabled, soundEnabled } from './sound.ts';
 import { BottomNav, NavRail } from './Navigation.tsx';
 import { SCREENS, screenFromHash, type ScreenId } from './screens.ts';
 import { theme } from './theme.ts';
 
 const LOCALE_KEY = 'newton.locale';
+
+// Each screen is its own chunk, fetched the first time it is shown: the first screen paints
+// without the code of the other two.
+const InertiaScreen = lazy(() =>
+  import('../screens/inertia/InertiaScreen.tsx').then((module) => ({
+    default: module.InertiaScreen,
+  })),
+);
+const ForcesScreen = lazy(() =>
+  import('../screens/forces/ForcesScreen.tsx').then((module) => ({
+    default: module.ForcesScreen,
+  })),
+);
+const ReactionsScreen = lazy(() =>
+  import('../screens/reactions/ReactionsScreen.tsx').then((module) => ({
+    default: module.ReactionsScreen,
+  })),
+);
 
 function initialLocale(): Locale {
   try {
@@ -65,7 +81,21 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
   const wide = useMediaQuery('(min-width: 600px)', { noSsr: true });
   const [screen, setScreen] = useState<ScreenId>(() => screenFromHash(location.hash));
   const [hintOpen, setHintOpen] = useState(false);
+  // Screens stay mounted once shown (their worlds keep their state), hidden when not current.
+  const [visited, setVisited] = useState<ReadonlySet<ScreenId>>(() => new Set([screen]));
+  useEffect(() => {
+    setVisited((old) => (old.has(screen) ? old : new Set([...old, screen])));
+  }, [screen]);
   const current = SCREENS.find((item) => item.id === screen)!;
+  // Once the first screen is up, fetch the others' code while idle: switching is then instant.
+  useEffect(() => {
+    const id = setTimeout(() => {
+      void import('../screens/inertia/InertiaScreen.tsx');
+      void import('../screens/forces/ForcesScreen.tsx');
+      void import('../screens/reactions/ReactionsScreen.tsx');
+    }, 2500);
+    return () => clearTimeout(id);
+  }, []);
 
   useEffect(() => {
     const onHash = (): void => setScreen(screenFromHash(location.hash));
@@ -74,7 +104,6 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
   }, []);
   useEffect(() => {
     document.title = `${t(current.label)} · ${t('app.title')}`;
-    document.documentElement.dataset['ready'] = 'true';
   }, [current, t]);
 
   const go = (id: ScreenId): void => {
@@ -85,9 +114,17 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
   return (
     <Box sx={{ height: '100dvh', display: 'flex', flexDirection: 'column', overflow: 'hidden' }}>
       <AppBar position="static" elevation={0} color="transparent" sx={{ bgcolor: '#1e1e1e' }}>
-        <Toolbar variant="dense" sx={{ gap: 1, minHeight: 52 }}>
-          <Typography variant="h6" component="h1" sx={{ flex: 1, fontSize: '1.15rem' }} noWrap>
-            <Box component="span" sx={{ color: 'text.secondary', fontWeight: 400 }}>
+        <Toolbar variant="dense" sx={{ gap: 0.5, minHeight: 52, px: { xs: 1.5, sm: 2 } }}>
+          <Typography
+            variant="h6"
+            component="h1"
+            sx={{ flex: 1, minWidth: 0, fontSize: wide ? '1.15rem' : '1.05rem' }}
+            noWrap
+          >
+            <Box
+              component="span"
+              sx={{ color: 'text.secondary', fontWeight: 400, display: wide ? 'inline' : 'none' }}
+            >
               {t('app.title')} ·{' '}
             </Box>
             {t(current.label)}
@@ -97,10 +134,12 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
               aria-label={t('app.hint')}
               onClick={() => setHintOpen(true)}
               data-action="hint"
+              sx={{ width: 48, height: 48 }}
             >
               <HintIcon sx={{ color: '#ffd54f' }} />
             </IconButton>
           </Tooltip>
+          <SoundToggle />
           <ToggleButtonGroup
             value={locale}
             exclusive
@@ -113,7 +152,7 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
                 key={item}
                 value={item}
                 lang={item}
-                sx={{ px: 1.25, py: 0.25 }}
+                sx={{ minWidth: 48, minHeight: 48, px: 1.25, py: 0.25 }}
                 data-locale={item}
               >
                 {item.toUpperCase()}
@@ -125,9 +164,11 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
       <Box sx={{ flex: 1, minHeight: 0, display: 'flex' }}>
         {wide && <NavRail current={screen} onChange={go} />}
         <Box component="main" sx={{ flex: 1, minWidth: 0, minHeight: 0 }}>
-          <InertiaScreen active={screen === 'inertia'} />
-          <ForcesScreen active={screen === 'forces'} />
-          <ReactionsScreen active={screen === 'reactions'} />
+          <Suspense fallback={<ScreenLoading />}>
+            {visited.has('inertia') && <InertiaScreen active={screen === 'inertia'} />}
+            {visited.has('forces') && <ForcesScreen active={screen === 'forces'} />}
+            {visited.has('reactions') && <ReactionsScreen active={screen === 'reactions'} />}
+          </Suspense>
         </Box>
       </Box>
       {!wide && <BottomNav current={screen} onChange={go} />}
@@ -137,11 +178,50 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
         </DialogTitle>
         <DialogContent>
           <DialogContentText>{t(current.hint)}</DialogContentText>
+          <DialogContentText sx={{ mt: 2 }}>
+            <a href="./teacher.html" style={{ color: '#82b1ff' }} data-action="teacher">
+              {t('app.teacher')}
+            </a>
+          </DialogContentText>
         </DialogContent>
         <DialogActions>
           <Button onClick={() => setHintOpen(false)}>{t('app.close')}</Button>
         </DialogActions>
       </Dialog>
     </Box>
+  );
+}
+
+/** Shown while a screen's code arrives; marks the app ready once it has. */
+function ScreenLoading() {
+  return (
+    <Box
+      role="progressbar"
+      aria-busy="true"
+      sx={{ height: '100%', display: 'grid', placeItems: 'center', color: 'text.secondary' }}
+    >
+      …
+    </Box>
+  );
+}
+
+/** Sound on events: off until the learner turns it on. */
+function SoundToggle() {
+  const { t } = useI18n();
+  const [on, setOn] = useState(soundEnabled);
+  useEffect(() => onSoundChange(() => setOn(soundEnabled())), []);
+  const label = on ? t('app.soundOff') : t('app.soundOn');
+  return (
+    <Tooltip title={label}>
+      <IconButton
+        aria-label={t('app.sound')}
+        aria-pressed={on}
+        onClick={() => setSoundEnabled(!on)}
+        data-action="sound"
+        sx={{ width: 48, height: 48 }}
+      >
+        {on ? <SoundOnIcon /> : <SoundOffIcon />}
+      </IconButton>
+    </Tooltip>
   );
 }

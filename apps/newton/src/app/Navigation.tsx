@@ -41,7 +41,11 @@ export function BottomNav({ current, onChange }: NavigationProps) {
             aria-current={current === id ? 'page' : undefined}
             href={`#${id}`}
             data-nav={id}
-            sx={{ '&.Mui-selected': { color: 'primary.main' } }}
+            sx={{
+              '&.Mui-selected': { color: 'primary.main' },
+              '& .MuiBottomNavigationAction-label, & .MuiBottomNavigationAction-label.Mui-selected':
+                { fontSize: '0.875rem' },
+            }}
           />
         ))}
       </BottomNavigation>

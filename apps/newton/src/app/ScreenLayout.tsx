@@ -1,6 +1,11 @@
 import { Box, Typography } from '@mui/material';
-import type { ReactNode } from 'react';
+import { useEffect, type ReactNode } from 'react';
 import { SimControls, type SimControlsProps } from './SimControls.tsx';
+
+/** Canvas and panel side by side: a wide screen, or a phone held sideways. */
+export const SIDE_BY_SIDE = '(min-width: 960px), (orientation: landscape) and (min-width: 640px)';
+/** A short landscape phone: the law's text shrinks to one line. */
+const SHORT = '(orientation: landscape) and (max-height: 500px)';
 
 export interface ScreenLayoutProps {
   readonly id: string;
@@ -19,6 +24,10 @@ export interface ScreenLayoutProps {
  * reach. Side by side (canvas left, panel right) when the screen is wide and short.
  */
 export function ScreenLayout({ id, active, law, stage, panel, controls }: ScreenLayoutProps) {
+  // The first screen is on the page (its code loaded on demand): the app is ready.
+  useEffect(() => {
+    if (active) document.documentElement.dataset['ready'] = 'true';
+  }, [active]);
   return (
     <Box
       component="section"
@@ -42,7 +51,14 @@ export function ScreenLayout({ id, active, law, stage, panel, controls }: Screen
           color: 'text.primary',
           bgcolor: 'rgba(130, 177, 255, 0.08)',
           borderBottom: '1px solid rgba(255, 255, 255, 0.08)',
+          [`@media ${SHORT}`]: {
+            py: 0.5,
+            whiteSpace: 'nowrap',
+            overflow: 'hidden',
+            textOverflow: 'ellipsis',
+          },
         }}
+        title={law}
       >
         {law}
       </Typography>
@@ -52,7 +68,7 @@ export function ScreenLayout({ id, active, law, stage, panel, controls }: Screen
           minHeight: 0,
           display: 'flex',
           flexDirection: 'column',
-          '@media (min-width: 960px), (orientation: landscape) and (min-width: 640px)': {
+          [`@media ${SIDE_BY_SIDE}`]: {
             flexDirection: 'row',
           },
         }}
@@ -67,8 +83,10 @@ export function ScreenLayout({ id, active, law, stage, panel, controls }: Screen
             gap: 0.5,
             px: 1,
             pt: 0.5,
-            '@media (min-width: 960px), (orientation: landscape) and (min-width: 640px)': {
+            [`@media ${SIDE_BY_SIDE}`]: {
               width: 360,
+              flexShrink: 0,
+              pb: 1,
               overflowY: 'auto',
               borderLeft: '1px solid rgba(255, 255, 255, 0.08)',
             },

@@ -1,6 +1,6 @@
 import { Box, IconButton, ToggleButton, Tooltip, Typography } from '@mui/material';
 import { useI18n } from '../i18n/i18n.tsx';
-import { PauseIcon, PlayIcon, ResetIcon, SlowIcon, StepIcon } from './icons.tsx';
+import { PauseIcon, PlayIcon, ResetAllIcon, ResetIcon, SlowIcon, StepIcon } from './icons.tsx';
 
 export interface SimControlsProps {
   readonly paused: boolean;
@@ -10,7 +10,10 @@ export interface SimControlsProps {
   readonly onTogglePlay: () => void;
   readonly onStep: () => void;
   readonly onToggleSlow: () => void;
+  /** Restart: this setup again from the start. */
   readonly onReset: () => void;
+  /** Reset all: every setting back to its default too. */
+  readonly onResetAll?: () => void;
 }
 
 /** Play / pause, single step, slow motion and reset, with the simulated time. */
@@ -22,7 +25,7 @@ export function SimControls(props: SimControlsProps) {
     <Box
       role="toolbar"
       aria-label={t('controls.label')}
-      sx={{ display: 'flex', alignItems: 'center', gap: 0.5, px: 1, minHeight: 52 }}
+      sx={{ display: 'flex', alignItems: 'center', gap: 0.25, px: 0.5, minHeight: 52 }}
     >
       <Tooltip title={playLabel}>
         <IconButton
@@ -56,7 +59,7 @@ export function SimControls(props: SimControlsProps) {
           aria-label={t('controls.slow')}
           size="small"
           color="primary"
-          sx={{ border: 0, borderRadius: '50%', p: 1.25 }}
+          sx={{ border: 0, borderRadius: '50%', p: 1.5, minWidth: 48, minHeight: 48 }}
           data-action="slow"
         >
           <SlowIcon />
@@ -72,6 +75,18 @@ export function SimControls(props: SimControlsProps) {
           <ResetIcon />
         </IconButton>
       </Tooltip>
+      {props.onResetAll !== undefined && (
+        <Tooltip title={t('controls.resetAll')}>
+          <IconButton
+            aria-label={t('controls.resetAll')}
+            onClick={props.onResetAll}
+            size="large"
+            data-action="reset-all"
+          >
+            <ResetAllIcon />
+          </IconButton>
+        </Tooltip>
+      )}
       <Typography
         variant="body2"
         sx={{ ml: 'auto', fontVariantNumeric: 'tabular-nums', color: 'text.secondary', pr: 1 }}

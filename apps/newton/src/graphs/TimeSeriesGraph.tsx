@@ -30,7 +30,8 @@ const TEXT = 'rgba(255, 255, 255, 0.7)';
 
 /**
  * A small live time-series graph on a canvas: each line's samples against simulated time, with
- * a grid, ticks and a legend. Redraws on animation frames only when a series changed.
+ * a grid, ticks and a legend. Draws one animation frame after a series, the size or the locale
+ * changed, and nothing otherwise: no loop runs while nothing changes.
  */
 export function TimeSeriesGraph({
   title,
@@ -45,12 +46,17 @@ export function TimeSeriesGraph({
   const latest = useRef({ lines, window, minSpan, number, unit });
   latest.current = { lines, window, minSpan, number, unit };
 
+  const scheduleRef = useRef<() => void>(() => undefined);
   useEffect(() => {
     const canvas = canvasRef.current!;
     let frame = 0;
     let drawn = '';
+    const schedule = (): void => {
+      if (frame === 0) frame = requestAnimationFrame(draw);
+    };
+    scheduleRef.current = schedule;
     const draw = (): void => {
-      frame = requestAnimationFrame(draw);
+      frame = 0;
       const { lines, window, minSpan, number, unit } = latest.current;
       const width = canvas.clientWidth;
       const heightPx = canvas.clientHeight;
@@ -90,7 +96,7 @@ export function TimeSeriesGraph({
       const xOf = (t: number): number => left + ((t - tStart) / window) * plotW;
       const yOf = (v: number): number => top + (1 - (v - low) / (high - low)) * plotH;
 
-      context.font = '11px system-ui, sans-serif';
+      context.font = '12px system-ui, sans-serif';
       context.lineWidth = 1;
       // Horizontal grid and value ticks.
       const vStep = niceStep(high - low, 4);
@@ -150,9 +156,24 @@ export function TimeSeriesGraph({
       }
       context.restore();
     };
-    frame = requestAnimationFrame(draw);
-    return () => cancelAnimationFrame(frame);
+    const resize = new ResizeObserver(schedule);
+    resize.observe(canvas);
+    schedule();
+    return () => {
+      resize.disconnect();
+      if (frame !== 0) cancelAnimationFrame(frame);
+      scheduleRef.current = () => undefined;
+    };
   }, []);
+
+  // Redraw when a line's samples change (and after renders: locale, unit, lines).
+  useEffect(() => {
+    const stops = lines.map((line) => line.series.subscribe(() => scheduleRef.current()));
+    scheduleRef.current();
+    return () => {
+      for (const stop of stops) stop();
+    };
+  });
 
   const summary = lines
     .map((line) =>

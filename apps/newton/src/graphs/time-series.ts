@@ -4,6 +4,18 @@ export class TimeSeries {
   readonly values: number[] = [];
   /** Changes whenever a sample is added or the series is cleared (graphs redraw on change). */
   version = 0;
+  private readonly listeners = new Set<() => void>();
+
+  /** Calls `listener` after every change; returns the function that stops it. */
+  subscribe(listener: () => void): () => void {
+    this.listeners.add(listener);
+    return () => this.listeners.delete(listener);
+  }
+
+  private changed(): void {
+    this.version++;
+    for (const listener of this.listeners) listener();
+  }
 
   constructor(
     /** Seconds of history kept. */
@@ -25,13 +37,13 @@ export class TimeSeries {
       this.times.splice(0, drop);
       this.values.splice(0, drop);
     }
-    this.version++;
+    this.changed();
   }
 
   clear(): void {
     this.times.length = 0;
     this.values.length = 0;
-    this.version++;
+    this.changed();
   }
 
   get last(): number | null {

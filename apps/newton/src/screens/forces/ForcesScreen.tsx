@@ -1,8 +1,9 @@
-import { Box, Button, Typography } from '@mui/material';
+import { Box, Button, FormControlLabel, Switch, Typography, useMediaQuery } from '@mui/material';
 import type { PhysicalCanvasElement } from '@physical/canvas';
 import type { Force } from '@physical/engine';
 import { useCallback, useMemo, useRef, useState } from 'react';
-import { ScreenLayout } from '../../app/ScreenLayout.tsx';
+import { useAnnouncer } from '../../app/Announcer.tsx';
+import { SIDE_BY_SIDE, ScreenLayout } from '../../app/ScreenLayout.tsx';
 import { SQUARE_COLORS } from '../../app/theme.ts';
 import { simulatedTime, useSimulation } from '../../app/use-simulation.ts';
 import { useTicker } from '../../app/use-ticker.ts';
@@ -11,6 +12,7 @@ import { TimeSeriesGraph } from '../../graphs/TimeSeriesGraph.tsx';
 import { useI18n } from '../../i18n/i18n.tsx';
 import {
   createForcesTrack,
+  forceFor,
   startTrack,
   type ForcesTrack,
   type SquareSettings,
@@ -24,15 +26,29 @@ const DEFAULTS: readonly SquareSettings[] = [
   { mass: 2, acceleration: 2 },
 ];
 
+/** What each square gets: with "same force", B is pushed by A's force, whatever its mass. */
+function effectiveSettings(
+  settings: readonly SquareSettings[],
+  sameForce: boolean,
+): readonly SquareSettings[] {
+  if (!sameForce) return settings;
+  const force = forceFor(settings[0]!.mass, settings[0]!.acceleration);
+  const b = settings[1]!;
+  return [settings[0]!, { mass: b.mass, acceleration: force / b.mass }];
+}
+
 /** The second law: two squares, each pushed by F = m a, moving side by side. */
 export function ForcesScreen({ active }: { active: boolean }) {
-  const { t } = useI18n();
+  const { t, unit } = useI18n();
   const sim = useSimulation();
+  const sideBySide = useMediaQuery(SIDE_BY_SIDE, { noSsr: true });
   const [settings, setSettings] = useState<readonly SquareSettings[]>(DEFAULTS);
+  const [sameForce, setSameForce] = useState(false);
   const [tracks, setTracks] = useState<readonly ForcesTrack[]>(() =>
     DEFAULTS.map((value) => createForcesTrack(value)),
   );
   const [started, setStarted] = useState(false);
+  const [finished, setFinished] = useState(0);
   const [editing, setEditing] = useState<number | null>(null);
   const forces = useRef<Force[]>([]);
   const canvases = useRef<(PhysicalCanvasElement | null)[]>([null, null]);
@@ -40,10 +56,15 @@ export function ForcesScreen({ active }: { active: boolean }) {
     () => NAMES.map(() => ({ position: new TimeSeries(6), velocity: new TimeSeries(6) })),
     [],
   );
-  useTicker(active && !sim.paused);
+  const { announce, region } = useAnnouncer('forces');
+  const tracksRef = useRef(tracks);
+  tracksRef.current = tracks;
+  useTicker(active && !sim.paused && started, 100, () =>
+    tracksRef.current.map((track) => `${track.world.steps}:${track.finishedAt}`).join(','),
+  );
 
   const rebuild = useCallback(
-    (next: readonly SquareSettings[]) => {
+    (next: readonly SquareSettings[], same: boolean) => {
       for (const force of forces.current) force.remove();
       forces.current = [];
       for (const { position, velocity } of series) {
@@ -51,15 +72,32 @@ export function ForcesScreen({ active }: { active: boolean }) {
         velocity.clear();
       }
       setStarted(false);
-      setTracks(next.map((value) => createForcesTrack(value)));
+      setFinished(0);
+      setTracks(effectiveSettings(next, same).map((value) => createForcesTrack(value)));
     },
     [series],
   );
 
   const start = (): void => {
     if (started) return;
-    forces.current = tracks.map((track) => startTrack(track));
+    forces.current = tracks.map((track, index) =>
+      startTrack(track, () => {
+        setFinished((count) => count + 1);
+        announce(
+          t('forces.reachedEnd', {
+            name: NAMES[index]!,
+            time: unit(track.finishedAt ?? 0, 's', 2, 2),
+          }),
+        );
+      }),
+    );
     setStarted(true);
+    announce(
+      t('forces.started', {
+        a: unit(tracks[0]!.force, 'N', 2),
+        b: unit(tracks[1]!.force, 'N', 2),
+      }),
+    );
     for (const canvas of canvases.current) canvas?.invalidate();
   };
 
@@ -68,8 +106,47 @@ export function ForcesScreen({ active }: { active: boolean }) {
     const next = settings.map((old, index) => (index === editing ? value : old));
     setSettings(next);
     setEditing(null);
-    rebuild(next);
+    rebuild(next, sameForce);
   };
+
+  const allFinished = finished >= tracks.length;
+  const time = simulatedTime(tracks[0]!.world);
+  const graphs = (
+    <Box
+      sx={{
+        display: 'flex',
+        gap: 1,
+        px: 1,
+        pt: 0.5,
+        flexDirection: sideBySide ? 'column' : 'row',
+      }}
+    >
+      <TimeSeriesGraph
+        title={t('forces.position')}
+        unit="m"
+        window={6}
+        height={sideBySide ? 96 : 120}
+        lines={series.map((item, index) => ({
+          series: item.position,
+          color: SQUARE_COLORS[index]!,
+          label: NAMES[index]!,
+          dashed: index === 1,
+        }))}
+      />
+      <TimeSeriesGraph
+        title={t('forces.velocity')}
+        unit="m/s"
+        window={6}
+        height={sideBySide ? 96 : 120}
+        lines={series.map((item, index) => ({
+          series: item.velocity,
+          color: SQUARE_COLORS[index]!,
+          label: NAMES[index]!,
+          dashed: index === 1,
+        }))}
+      />
+    </Box>
+  );
 
   return (
     <ScreenLayout
@@ -87,58 +164,56 @@ export function ForcesScreen({ active }: { active: boolean }) {
               name={NAMES[index]!}
               track={track}
               color={SQUARE_COLORS[index]!}
-              paused={sim.paused}
+              // The clock starts with the motion: the tracks do not step before Start.
+              paused={sim.paused || !started}
               timeScale={sim.timeScale}
               position={series[index]!.position}
               velocity={series[index]!.velocity}
               onEdit={() => setEditing(index)}
               onPauseChange={sim.setPaused}
+              forceOn={started && track.finishedAt === null}
+              time={time}
             />
           ))}
-          <Box sx={{ display: 'flex', gap: 1, px: 1, pt: 0.5, mt: 'auto' }}>
-            <TimeSeriesGraph
-              title={t('forces.position')}
-              unit="m"
-              window={6}
-              height={140}
-              lines={series.map((item, index) => ({
-                series: item.position,
-                color: SQUARE_COLORS[index]!,
-                label: NAMES[index]!,
-                dashed: index === 1,
-              }))}
-            />
-            <TimeSeriesGraph
-              title={t('forces.velocity')}
-              unit="m/s"
-              window={6}
-              height={140}
-              lines={series.map((item, index) => ({
-                series: item.velocity,
-                color: SQUARE_COLORS[index]!,
-                label: NAMES[index]!,
-                dashed: index === 1,
-              }))}
-            />
-          </Box>
+          {!sideBySide && graphs}
         </Box>
       }
       panel={
         <>
-          <Box sx={{ display: 'flex', gap: 1, alignItems: 'center', py: 0.5 }}>
-            <Typography variant="caption" sx={{ flex: 1, color: 'text.secondary' }}>
-              {t('forces.edit')}
-            </Typography>
+          {region}
+          {sideBySide && graphs}
+          <Box sx={{ display: 'flex', gap: 1, alignItems: 'center', py: 0.5, flexWrap: 'wrap' }}>
+            <FormControlLabel
+              sx={{ flex: 1, minHeight: 48, mr: 0 }}
+              control={
+                <Switch
+                  checked={sameForce}
+                  onChange={(_event, value) => {
+                    setSameForce(value);
+                    rebuild(settings, value);
+                  }}
+                  slotProps={{ input: { 'data-control': 'same-force' } as object }}
+                />
+              }
+              label={<Typography variant="body2">{t('forces.sameForce')}</Typography>}
+            />
             <Button
               variant="contained"
               onClick={start}
               disabled={started}
-              sx={{ minHeight: 44, minWidth: 120 }}
+              sx={{ minHeight: 48, minWidth: 120 }}
               data-action="start"
             >
-              {started ? t('forces.running') : t('forces.start')}
+              {allFinished
+                ? t('forces.finished')
+                : started
+                  ? t('forces.running')
+                  : t('forces.start')}
             </Button>
           </Box>
+          <Typography variant="body2" sx={{ color: 'text.secondary', px: 0.5 }}>
+            {t('forces.edit')}
+          </Typography>
           <SquareDialog
             open={editing !== null}
             name={editing === null ? '' : NAMES[editing]!}
@@ -151,17 +226,24 @@ export function ForcesScreen({ active }: { active: boolean }) {
       controls={{
         paused: sim.paused,
         slow: sim.slow,
-        time: simulatedTime(tracks[0]!.world),
+        time,
         onTogglePlay: sim.togglePlay,
         onToggleSlow: sim.toggleSlow,
-        onStep: () =>
+        onStep: () => {
+          if (!started) return;
           sim.step(
             tracks.map((track, index) => ({
               world: track.world,
               canvas: canvases.current[index] ?? null,
             })),
-          ),
-        onReset: () => rebuild(settings),
+          );
+        },
+        onReset: () => rebuild(settings, sameForce),
+        onResetAll: () => {
+          setSettings(DEFAULTS);
+          setSameForce(false);
+          rebuild(DEFAULTS, false);
+        },
       }}
     />
   );

@@ -3,6 +3,7 @@ import {
   Button,
   Dialog,
   DialogActions,
+  IconButton,
   DialogContent,
   DialogTitle,
   Slider,
@@ -10,6 +11,8 @@ import {
   Typography,
 } from '@mui/material';
 import { useEffect, useState } from 'react';
+import { AddIcon, MinusIcon } from '../../app/icons.tsx';
+import { parseDecimal } from '../../app/parse-decimal.ts';
 import { useI18n } from '../../i18n/i18n.tsx';
 import {
   MAX_ACCELERATION,
@@ -35,51 +38,87 @@ interface FieldProps {
   readonly id: string;
   readonly label: string;
   readonly unit: string;
-  readonly value: number;
+  readonly text: string;
   readonly min: number;
   readonly max: number;
   readonly step: number;
-  readonly onChange: (value: number) => void;
+  readonly onText: (text: string) => void;
 }
 
-/** A number with a slider and a text field, kept in step. */
-function NumberField({ id, label, unit, value, min, max, step, onChange }: FieldProps) {
-  const [text, setText] = useState(String(value));
-  useEffect(() => {
-    setText((current) => (Number(current.replace(',', '.')) === value ? current : String(value)));
-  }, [value]);
+/**
+ * A number three ways, kept in step: a slider, a text field validated as you type (the error
+ * and the range show under it) and minus / plus buttons that step it (PhET's number spinner).
+ */
+function NumberField({ id, label, unit, text, min, max, step, onText }: FieldProps) {
+  const { t, number } = useI18n();
+  const parsed = parseDecimal(text, min, max);
+  const range = t('field.range', { min: number(min, 2), max: number(max, 2), unit });
+  const error = parsed.ok
+    ? null
+    : parsed.reason === 'outOfRange'
+      ? t('field.outOfRange', { min: number(min, 2), max: number(max, 2), unit })
+      : parsed.reason === 'empty'
+        ? t('field.empty')
+        : t('field.notANumber');
+  const current = parsed.ok ? parsed.value : null;
+  const stepBy = (direction: number): void => {
+    const from = current ?? min;
+    const next = clamp(Math.round((from + direction * step) / step) * step, min, max);
+    onText(String(Math.round(next * 100) / 100));
+  };
   return (
-    <Box sx={{ mb: 2 }}>
+    <Box sx={{ mb: 1.5 }}>
       <Typography id={`${id}-label`} variant="body2" gutterBottom>
         {label}
       </Typography>
-      <Box sx={{ display: 'flex', gap: 2, alignItems: 'center' }}>
-        <Slider
-          value={value}
-          min={min}
-          max={max}
-          step={step}
-          onChange={(_event, next) => onChange(next as number)}
-          aria-labelledby={`${id}-label`}
-          sx={{ flex: 1 }}
-        />
+      <Slider
+        value={current ?? min}
+        min={min}
+        max={max}
+        step={step}
+        onChange={(_event, next) => onText(String(next as number))}
+        aria-labelledby={`${id}-label`}
+        getAriaValueText={(value) => `${number(value, 2)} ${unit}`}
+        sx={{ mx: 1, width: 'calc(100% - 16px)' }}
+      />
+      <Box sx={{ display: 'flex', gap: 1, alignItems: 'flex-start' }}>
+        <IconButton
+          aria-label={t('field.decrease', { label })}
+          onClick={() => stepBy(-1)}
+          disabled={current !== null && current <= min}
+          data-action={`${id}-minus`}
+          sx={{ width: 48, height: 48 }}
+        >
+          <MinusIcon />
+        </IconButton>
         <TextField
           id={id}
           value={text}
           size="small"
-          sx={{ width: 120 }}
-          onChange={(event) => {
-            setText(event.target.value);
-            const parsed = Number(event.target.value.replace(',', '.'));
-            if (event.target.value.trim() !== '' && Number.isFinite(parsed)) {
-              onChange(clamp(parsed, min, max));
-            }
-          }}
+          error={error !== null}
+          helperText={error ?? range}
+          sx={{ flex: 1 }}
+          onChange={(event) => onText(event.target.value)}
           slotProps={{
-            htmlInput: { inputMode: 'decimal', 'aria-label': `${label} (${unit})` },
+            htmlInput: {
+              inputMode: 'decimal',
+              'aria-label': `${label} (${unit})`,
+              'aria-invalid': error !== null,
+              'aria-describedby': `${id}-helper-text`,
+            },
             input: { endAdornment: <Typography variant="body2">{unit}</Typography> },
+            formHelperText: { id: `${id}-helper-text`, 'data-helper': id } as object,
           }}
         />
+        <IconButton
+          aria-label={t('field.increase', { label })}
+          onClick={() => stepBy(1)}
+          disabled={current !== null && current >= max}
+          data-action={`${id}-plus`}
+          sx={{ width: 48, height: 48 }}
+        >
+          <AddIcon />
+        </IconButton>
       </Box>
     </Box>
   );
@@ -88,15 +127,17 @@ function NumberField({ id, label, unit, value, min, max, step, onChange }: Field
 /** Sets a square's mass and desired acceleration; shows the force F = m a the app will apply. */
 export function SquareDialog({ open, name, settings, onClose, onConfirm }: SquareDialogProps) {
   const { t, unit } = useI18n();
-  const [mass, setMass] = useState(settings.mass);
-  const [acceleration, setAcceleration] = useState(settings.acceleration);
+  const [massText, setMassText] = useState(String(settings.mass));
+  const [accelerationText, setAccelerationText] = useState(String(settings.acceleration));
   useEffect(() => {
     if (open) {
-      setMass(settings.mass);
-      setAcceleration(settings.acceleration);
+      setMassText(String(settings.mass));
+      setAccelerationText(String(settings.acceleration));
     }
   }, [open, settings]);
-  const force = forceFor(mass, acceleration);
+  const mass = parseDecimal(massText, MIN_MASS, MAX_MASS);
+  const acceleration = parseDecimal(accelerationText, MIN_ACCELERATION, MAX_ACCELERATION);
+  const valid = mass.ok && acceleration.ok;
   return (
     <Dialog
       open={open}
@@ -111,37 +152,52 @@ export function SquareDialog({ open, name, settings, onClose, onConfirm }: Squar
           id="square-mass"
           label={t('forces.mass')}
           unit="kg"
-          value={mass}
+          text={massText}
           min={MIN_MASS}
           max={MAX_MASS}
           step={0.1}
-          onChange={setMass}
+          onText={setMassText}
         />
         <NumberField
           id="square-acceleration"
           label={t('forces.acceleration')}
           unit="m/s²"
-          value={acceleration}
+          text={accelerationText}
           min={MIN_ACCELERATION}
           max={MAX_ACCELERATION}
           step={0.1}
-          onChange={setAcceleration}
+          onText={setAccelerationText}
         />
-        <Box
-          sx={{ p: 1.5, borderRadius: 2, bgcolor: 'rgba(255, 138, 101, 0.12)' }}
-          aria-live="polite"
-        >
+        <Box sx={{ p: 1.5, borderRadius: 2, bgcolor: 'rgba(255, 138, 101, 0.12)' }}>
           <Typography variant="body2" sx={{ color: 'text.secondary' }}>
             {t('forces.force')}
           </Typography>
           <Typography variant="h6" component="p" data-readout="dialog-force">
-            {unit(mass, 'kg', 2)} · {unit(acceleration, 'm/s²', 2)} = <b>{unit(force, 'N', 2)}</b>
+            {mass.ok && acceleration.ok ? (
+              <>
+                {unit(mass.value, 'kg', 2)} · {unit(acceleration.value, 'm/s²', 2)} ={' '}
+                <b>{unit(forceFor(mass.value, acceleration.value), 'N', 2)}</b>
+              </>
+            ) : (
+              '–'
+            )}
           </Typography>
         </Box>
       </DialogContent>
       <DialogActions>
-        <Button onClick={onClose}>{t('app.cancel')}</Button>
-        <Button variant="contained" onClick={() => onConfirm({ mass, acceleration })}>
+        <Button onClick={onClose} sx={{ minHeight: 48 }}>
+          {t('app.cancel')}
+        </Button>
+        <Button
+          variant="contained"
+          disabled={!valid}
+          sx={{ minHeight: 48, minWidth: 64 }}
+          onClick={() => {
+            if (mass.ok && acceleration.ok) {
+              onConfirm({ mass: mass.value, acceleration: acceleration.value });
+            }
+          }}
+        >
           {t('app.ok')}
         </Button>
       </DialogActions>

@@ -13,6 +13,7 @@ import {
   TRACK_LENGTH,
   arrowLength,
   displacement,
+  measuredAcceleration,
   opacityFor,
   type ForcesTrack,
 } from './forces-scene.ts';
@@ -27,6 +28,10 @@ export interface TrackViewProps {
   readonly velocity: TimeSeries;
   readonly onEdit: () => void;
   readonly onPauseChange: (paused: boolean) => void;
+  /** True while the force F = m a acts (after Start, before the stop). */
+  readonly forceOn: boolean;
+  /** Simulated time since Start (s). */
+  readonly time: number;
 }
 
 const VIEW_BOX = { x: -0.15, y: 0, width: TRACK_LENGTH + 0.3, height: TRACK_HEIGHT };
@@ -40,6 +45,16 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
     useImperativeHandle(ref, () => canvasRef.current!, []);
     const trackRef = useRef(track);
     trackRef.current = track;
+    const forceOnRef = useRef(props.forceOn);
+    forceOnRef.current = props.forceOn;
+    const labelsRef = useRef({ force: '', balanced: '' });
+    labelsRef.current = {
+      force: `F = ΣF = ${unit(track.force, 'N', 2)}`,
+      balanced: t('forces.balanced'),
+    };
+    useEffect(() => {
+      canvasRef.current?.invalidate();
+    }, [props.forceOn]);
 
     useEffect(() => {
       canvasRef.current?.setStyle(track.square, {
@@ -78,88 +93,128 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
         const ratio = canvas.viewport.devicePixelRatio;
         context.setTransform(ratio, 0, 0, ratio, 0, 0);
         context.fillStyle = 'rgba(255, 255, 255, 0.7)';
-        context.font = '11px system-ui, sans-serif';
+        context.font = '13px system-ui, sans-serif';
         context.textAlign = 'center';
         context.textBaseline = 'bottom';
         for (let metre = 2; START_X + metre <= TRACK_LENGTH - 0.5; metre += 2) {
           const point = canvas.worldToScreen({ x: START_X + metre, y: base - 0.24 });
           context.fillText(`${metre} m`, point.x, point.y);
         }
-        context.restore();
         const square = current.square.position;
-        drawArrow(
-          context,
-          scale,
-          { x: square.x + SQUARE_SIZE / 2, y: square.y },
-          { x: arrowLength(current.force), y: 0 },
-          { kind: 'force', width: 4 },
+        const on = forceOnRef.current && current.force > 0;
+        // The force and the sum of forces, labelled with their values.
+        const label = canvas.worldToScreen({ x: square.x, y: square.y - SQUARE_SIZE / 2 - 0.08 });
+        context.font = '600 14px system-ui, sans-serif';
+        context.textAlign = 'left';
+        context.fillStyle = on ? '#ff8a65' : 'rgba(255, 255, 255, 0.85)';
+        const text = on ? labelsRef.current.force : labelsRef.current.balanced;
+        const room = context.canvas.width / ratio - context.measureText(text).width - 4;
+        context.fillText(
+          text,
+          Math.max(4, Math.min(room, label.x - SQUARE_SIZE * scale * 0.5)),
+          label.y,
         );
+        context.restore();
+        if (on) {
+          drawArrow(
+            context,
+            scale,
+            { x: square.x + SQUARE_SIZE / 2, y: square.y },
+            { x: arrowLength(current.force), y: 0 },
+            { kind: 'force', width: 4 },
+          );
+        }
       },
       [position, velocity],
     );
 
     const settings = track.settings;
     const forceText = unit(track.force, 'N', 2);
+    const measured = measuredAcceleration(track, props.time);
     return (
-      <Box sx={{ position: 'relative', flex: 1, minHeight: 96, maxHeight: 180, display: 'flex' }}>
-        <PhysicalCanvas
-          ref={canvasRef}
-          paused={paused}
-          world={track.world}
-          fit="contain"
-          viewBox={VIEW_BOX}
-          timeScale={timeScale}
-          drawOverlay={drawOverlay}
-          onBodyTap={onEdit}
-          onBackgroundTap={onEdit}
-          onPauseChange={({ paused: value }) => props.onPauseChange(value)}
-          aria-label={t('forces.canvas', {
-            name,
-            mass: unit(settings.mass, 'kg', 2),
-            force: forceText,
-          })}
-          style={{ flex: 1, height: 'auto' }}
-        />
-        <ButtonBase
-          onClick={onEdit}
-          data-action={`edit-${name}`}
+      <Box
+        sx={{
+          position: 'relative',
+          flex: 1,
+          minHeight: 120,
+          maxHeight: 200,
+          display: 'flex',
+          flexDirection: 'column',
+        }}
+        data-track={name}
+      >
+        <Box
           sx={{
-            position: 'absolute',
-            top: 4,
-            left: 4,
-            px: 1,
-            py: 0.25,
-            gap: 0.75,
-            borderRadius: 2,
-            bgcolor: 'rgba(0, 0, 0, 0.55)',
-            border: `1px solid ${color}`,
-            typography: 'body2',
+            display: 'flex',
+            flexWrap: 'wrap',
+            alignItems: 'center',
+            gap: 0.5,
+            px: 0.5,
+            pt: 0.5,
           }}
         >
-          <Box component="span" sx={{ color, fontWeight: 700 }}>
-            {name}
-          </Box>
-          <span>
-            {unit(settings.mass, 'kg', 2)} · {unit(settings.acceleration, 'm/s²', 2)} · F ={' '}
-            <b data-readout={`force-${name}`}>{forceText}</b>
-          </span>
-          <EditIcon sx={{ fontSize: 16 }} />
-        </ButtonBase>
-        <Typography
-          variant="caption"
-          sx={{
-            position: 'absolute',
-            right: 6,
-            top: 6,
-            px: 0.75,
-            borderRadius: 1,
-            bgcolor: 'rgba(0, 0, 0, 0.55)',
-            fontVariantNumeric: 'tabular-nums',
-          }}
-        >
-          x = <span data-readout={`x-${name}`}>{unit(displacement(track), 'm', 3, 3)}</span>
-          {'  '}v = {unit(track.square.linearVelocity.x, 'm/s', 2, 2)}
-        </Typography>
+          <ButtonBase
+            onClick={onEdit}
+            data-action={`edit-${name}`}
+            sx={{
+              minHeight: 48,
+              px: 1,
+              gap: 0.75,
+              borderRadius: 2,
+              bgcolor: 'rgba(0, 0, 0, 0.55)',
+              border: `1px solid ${color}`,
+              typography: 'body2',
+            }}
+          >
+            <Box component="span" sx={{ color, fontWeight: 700 }}>
+              {name}
+            </Box>
+            <span>
+              {unit(settings.mass, 'kg', 2)} · {unit(settings.acceleration, 'm/s²', 2)} · F ={' '}
+              <b data-readout={`force-${name}`}>{forceText}</b>
+            </span>
+            <EditIcon sx={{ fontSize: 18 }} />
+          </ButtonBase>
+          <Typography
+            variant="body2"
+            component="div"
+            data-readout={`motion-${name}`}
+            sx={{
+              ml: 'auto',
+              px: 0.75,
+              borderRadius: 1,
+              fontVariantNumeric: 'tabular-nums',
+              whiteSpace: 'nowrap',
+            }}
+          >
+            x = <span data-readout={`x-${name}`}>{unit(displacement(track), 'm', 2, 2)}</span>
+            {' · '}v = {unit(track.square.linearVelocity.x, 'm/s', 2, 2)}
+            {' · '}a ={' '}
+            <span data-readout={`a-${name}`}>
+              {measured === null ? '–' : unit(measured, 'm/s²', 2, 2)}
+            </span>
+          </Typography>
+        </Box>
+        <Box sx={{ flex: 1, minHeight: 64, display: 'flex' }}>
+          <PhysicalCanvas
+            ref={canvasRef}
+            paused={paused}
+            world={track.world}
+            fit="contain"
+            viewBox={VIEW_BOX}
+            timeScale={timeScale}
+            drawOverlay={drawOverlay}
+            onBodyTap={onEdit}
+            onBackgroundTap={onEdit}
+            onPauseChange={({ paused: value }) => props.onPauseChange(value)}
+            aria-label={t('forces.canvas', {
+              name,
+              mass: unit(settings.mass, 'kg', 2),
+              force: forceText,
+            })}
+            style={{ flex: 1, height: 'auto' }}
+          />
+        </Box>
       </Box>
     );
   },

@@ -27,6 +27,10 @@ export interface ForcesTrack {
   readonly settings: SquareSettings;
   /** The force that gives the square the desired acceleration: F = m a (N). */
   readonly force: number;
+  /** Simulated time (s) the square reached the stop at the end, or null while it has not. */
+  finishedAt: number | null;
+  /** The acceleration measured over the whole run (2 x / t^2 at the stop), once finished. */
+  finalAcceleration: number | null;
 }
 
 /** Newton's second law solved for the force (N) from a mass (kg) and an acceleration (m/s^2). */
@@ -69,12 +73,44 @@ export function createForcesTrack(settings: SquareSettings): ForcesTrack {
     }),
   );
   square.mass = settings.mass;
-  return { world, square, settings, force: forceFor(settings.mass, settings.acceleration) };
+  return {
+    world,
+    square,
+    settings,
+    force: forceFor(settings.mass, settings.acceleration),
+    finishedAt: null,
+    finalAcceleration: null,
+  };
 }
 
-/** Applies the constant force F = m a to the square, to the right. */
-export function startTrack(track: ForcesTrack): Force {
-  return track.square.applyForce({ x: track.force, y: 0 }, { duration: 'constant' });
+/**
+ * Applies the constant force F = m a to the square, to the right, until the square reaches the
+ * stop at the end: there the run ends (the force is removed and the square rests against the
+ * stop), so no force acts that the screen does not show. `onFinish` hears of it.
+ */
+export function startTrack(track: ForcesTrack, onFinish: () => void = () => undefined): Force {
+  const force = track.square.applyForce({ x: track.force, y: 0 }, { duration: 'constant' });
+  const stop = track.world.on('contactBegin', (event) => {
+    if (event.bodyA !== track.square && event.bodyB !== track.square) return;
+    stop();
+    force.remove();
+    track.finishedAt = track.world.steps / 60;
+    track.finalAcceleration = (2 * displacement(track)) / track.finishedAt ** 2;
+    track.square.linearVelocity = { x: 0, y: 0 };
+    track.square.sleep();
+    onFinish();
+  });
+  return force;
+}
+
+/**
+ * The acceleration measured from the motion since the start, 2 x / t^2 (m/s^2), as a student
+ * would from the ruler and the clock (from rest under a constant force); null at t = 0.
+ */
+export function measuredAcceleration(track: ForcesTrack, time: number): number | null {
+  if (track.finishedAt !== null) return track.finalAcceleration;
+  if (time <= 0) return null;
+  return (2 * displacement(track)) / (time * time);
 }
 
 /** The square's displacement from its start (m), as the ruler shows it. */

@@ -1,8 +1,10 @@
-import { Box, Button } from '@mui/material';
+import { Box, Button, Slider, ToggleButton, ToggleButtonGroup, Typography } from '@mui/material';
 import { drawArrow, type OverlayDrawer, type PhysicalCanvasElement } from '@physical/canvas';
 import type { Force } from '@physical/engine';
 import { PhysicalCanvas } from '@physical/react';
-import { useCallback, useLayoutEffect, useMemo, useRef, useState } from 'react';
+import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
+import { useAnnouncer } from '../../app/Announcer.tsx';
+import { useOrientationRebuild } from '../../app/use-orientation-rebuild.ts';
 import { Readout } from '../../app/Readout.tsx';
 import { ScreenLayout } from '../../app/ScreenLayout.tsx';
 import { simulatedTime, useSimulation } from '../../app/use-simulation.ts';
@@ -10,14 +12,20 @@ import { useTicker } from '../../app/use-ticker.ts';
 import { TimeSeries } from '../../graphs/time-series.ts';
 import { TimeSeriesGraph } from '../../graphs/TimeSeriesGraph.tsx';
 import { useI18n } from '../../i18n/i18n.tsx';
+import { directionName } from './direction-name.ts';
 import { ForceDialog } from './ForceDialog.tsx';
 import {
+  REST_SPEED,
+  WALL_NAMES,
   applyConstantForce,
   createInertiaScene,
   forceVector,
   sceneSizeFor,
   screenAngle,
+  setElasticity,
+  setSurface,
   type InertiaScene,
+  type Surface,
 } from './inertia-scene.ts';
 
 /** Metres of arrow per newton, and seconds of motion a velocity arrow shows. */
@@ -39,8 +47,19 @@ export function InertiaScreen({ active }: { active: boolean }) {
   const forceRef = useRef<Force | null>(null);
   const [applied, setApplied] = useState(false);
   const [dialogOpen, setDialogOpen] = useState(false);
+  const [elasticity, setElasticityState] = useState(1);
+  const [surface, setSurfaceState] = useState<Surface>('ice');
+  const settingsRef = useRef({ elasticity, surface });
+  settingsRef.current = { elasticity, surface };
   const speed = useMemo(() => new TimeSeries(10), []);
-  useTicker(active && !sim.paused);
+  const { announce, region } = useAnnouncer('inertia');
+  // Re-render only when what the readouts show changed: nothing renders at rest.
+  useTicker(active && !sim.paused, 100, () => {
+    const body = sceneRef.current?.body;
+    if (body === undefined) return '';
+    const v = body.linearVelocity;
+    return `${v.x.toFixed(3)},${v.y.toFixed(3)}`;
+  });
 
   const build = useCallback(() => {
     const host = hostRef.current;
@@ -48,12 +67,39 @@ export function InertiaScreen({ active }: { active: boolean }) {
     forceRef.current = null;
     setApplied(false);
     speed.clear();
-    setScene(createInertiaScene(size.width, size.height));
+    setScene(createInertiaScene(size.width, size.height, settingsRef.current));
   }, [speed]);
+
+  const resetAll = useCallback(() => {
+    setAngle(0);
+    setMagnitude(1);
+    setElasticityState(1);
+    setSurfaceState('ice');
+    settingsRef.current = { elasticity: 1, surface: 'ice' };
+    build();
+  }, [build]);
 
   useLayoutEffect(() => {
     if (active && scene === null) build();
   }, [active, scene, build]);
+  useOrientationRebuild(hostRef, active ? scene : null, build);
+
+  // Described state: what just happened, at a human pace.
+  useEffect(() => {
+    if (scene === null) return;
+    return scene.world.on('collision', (event) => {
+      const wallIndex = scene.walls.findIndex(
+        (item) => item === event.bodyA || item === event.bodyB,
+      );
+      if (wallIndex < 0 || event.approachSpeed < 0.02) return;
+      announce(
+        t('inertia.hitWall', {
+          wall: t(`wall.${WALL_NAMES[wallIndex]!}`),
+          speed: unit(event.approachSpeed, 'm/s', 2),
+        }),
+      );
+    });
+  }, [scene, announce, t, unit]);
 
   const drawOverlay = useCallback<OverlayDrawer>(
     (context, canvas) => {
@@ -66,6 +112,11 @@ export function InertiaScreen({ active }: { active: boolean }) {
       }
       const scale = canvas.viewport.scale;
       const centre = current.body.position;
+      // Arrows stay inside the walls.
+      context.save();
+      context.beginPath();
+      context.rect(0, 0, current.width, current.height);
+      context.clip();
       drawArrow(
         context,
         scale,
@@ -83,6 +134,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
           { kind: 'force', width: 3 },
         );
       }
+      context.restore();
     },
     [speed],
   );
@@ -93,9 +145,17 @@ export function InertiaScreen({ active }: { active: boolean }) {
       forceRef.current.remove();
       forceRef.current = null;
       setApplied(false);
+      announce(t('inertia.forceStopped'));
     } else {
       forceRef.current = applyConstantForce(scene, angle, magnitude);
       setApplied(true);
+      announce(
+        t('inertia.forceStarted', {
+          force: unit(magnitude, 'N', 1),
+          angle: number(angle, 0),
+          name: t(directionName(angle)),
+        }),
+      );
     }
     canvasRef.current?.invalidate();
   };
@@ -109,8 +169,30 @@ export function InertiaScreen({ active }: { active: boolean }) {
   };
 
   const velocity = scene?.body.linearVelocity ?? { x: 0, y: 0 };
-  const currentSpeed = Math.hypot(velocity.x, velocity.y);
-  const moving = currentSpeed > 1e-4;
+  const rawSpeed = Math.hypot(velocity.x, velocity.y);
+  // Pressed against a wall the solver leaves a jitter of a few mm/s: that is rest.
+  const moving = rawSpeed > REST_SPEED;
+  const currentSpeed = moving ? rawSpeed : 0;
+  const description =
+    scene === null
+      ? t('inertia.canvas')
+      : t('inertia.describe', {
+          sides: scene.sides,
+          width: number(scene.width, 1),
+          height: number(scene.height, 1),
+          motion: moving
+            ? t('inertia.describeMoving', {
+                speed: unit(currentSpeed, 'm/s', 2),
+                angle: number(screenAngle(velocity), 0),
+              })
+            : t('inertia.describeRest'),
+          force: applied
+            ? t('inertia.describeForce', {
+                force: unit(magnitude, 'N', 1),
+                angle: number(angle, 0),
+              })
+            : t('inertia.describeNoForce'),
+        });
   const viewBox =
     scene === null
       ? null
@@ -137,13 +219,14 @@ export function InertiaScreen({ active }: { active: boolean }) {
             timeScale={sim.timeScale}
             drawOverlay={drawOverlay}
             onPauseChange={({ paused }) => sim.setPaused(paused)}
-            aria-label={t('inertia.canvas')}
+            aria-label={description}
             style={{ flex: 1, height: 'auto', minHeight: 0 }}
           />
         </Box>
       }
       panel={
         <>
+          {region}
           <Box sx={{ display: 'grid', gridTemplateColumns: 'repeat(4, auto)', gap: 1.5, px: 0.5 }}>
             <Readout
               name="speed"
@@ -172,13 +255,56 @@ export function InertiaScreen({ active }: { active: boolean }) {
             title={t('inertia.graph')}
             unit="m/s"
             lines={[{ series: speed, color: '#64ffda', label: t('inertia.speed') }]}
-            height={110}
+            height={90}
           />
+          <Box sx={{ display: 'flex', gap: 1.5, alignItems: 'center', px: 0.5 }}>
+            <Box sx={{ flex: 1, minWidth: 0 }}>
+              <Typography id="inertia-elasticity-label" variant="caption" component="div">
+                {t('inertia.elasticity')}: {number(elasticity * 100, 0)} %
+              </Typography>
+              <Slider
+                value={Math.round(elasticity * 100)}
+                min={0}
+                max={100}
+                step={5}
+                onChange={(_event, value) => {
+                  const next = (value as number) / 100;
+                  setElasticityState(next);
+                  if (scene !== null) setElasticity(scene, next);
+                }}
+                aria-labelledby="inertia-elasticity-label"
+                getAriaValueText={(value) => `${value} %`}
+                data-control="elasticity"
+                sx={{ py: 1.5 }}
+              />
+            </Box>
+            <ToggleButtonGroup
+              exclusive
+              value={surface}
+              aria-label={t('inertia.surface')}
+              onChange={(_event, value: Surface | null) => {
+                if (value === null) return;
+                setSurfaceState(value);
+                if (scene !== null) {
+                  setSurface(scene, value);
+                  canvasRef.current?.invalidate();
+                }
+                announce(t(value === 'ice' ? 'inertia.onIce' : 'inertia.onWood'));
+              }}
+            >
+              <ToggleButton value="ice" data-surface="ice" sx={{ minHeight: 48, minWidth: 56 }}>
+                {t('inertia.ice')}
+              </ToggleButton>
+              <ToggleButton value="wood" data-surface="wood" sx={{ minHeight: 48, minWidth: 56 }}>
+                {t('inertia.wood')}
+              </ToggleButton>
+            </ToggleButtonGroup>
+          </Box>
           <Box sx={{ display: 'flex', gap: 1, py: 0.5 }}>
             <Button
               variant="outlined"
               onClick={() => setDialogOpen(true)}
-              sx={{ flex: 1, minHeight: 44 }}
+              sx={{ flex: 1, minHeight: 48 }}
               data-action="change-force"
             >
               {t('inertia.changeForce')}
@@ -187,7 +313,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
               variant="contained"
               color={applied ? 'secondary' : 'primary'}
               onClick={toggleForce}
-              sx={{ flex: 1, minHeight: 44 }}
+              sx={{ flex: 1, minHeight: 48 }}
               data-action="toggle-force"
               aria-pressed={applied}
             >
@@ -213,6 +339,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
         onStep: () =>
           scene !== null && sim.step([{ world: scene.world, canvas: canvasRef.current }]),
         onReset: build,
+        onResetAll: resetAll,
       }}
     />
   );

@@ -8,6 +8,25 @@ export const POLYGON_MASS = 1;
 export const MIN_FORCE = 0.1;
 export const MAX_FORCE = 5;
 
+/** The floor under the body: ice has no friction, wood slows a gliding body down. */
+export type Surface = 'ice' | 'wood';
+/** Kinetic friction coefficient of each surface against the body. */
+export const SURFACE_FRICTION: Record<Surface, number> = { ice: 0, wood: 0.05 };
+/** m/s^2: friction on the floor is mu m g. */
+export const GRAVITY = 9.81;
+/** The walls' names, in the order of {@link InertiaScene.walls}. */
+export const WALL_NAMES = ['top', 'right', 'bottom', 'left'] as const;
+
+/** What the learner chooses for the Inertia screen. */
+export interface InertiaOptions {
+  /** Bounciness of the walls, 0 (the body stops at a wall) to 1 (perfectly elastic). Default 1. */
+  readonly elasticity?: number;
+  /** The floor. Default ice (no friction). */
+  readonly surface?: Surface;
+  /** Sides of the polygon; random (5 or 6) when left out. */
+  readonly sides?: 5 | 6;
+}
+
 /** The Inertia screen's world: four walls around a regular polygon at rest in the centre. */
 export interface InertiaScene {
   readonly world: World;
@@ -15,8 +34,13 @@ export interface InertiaScene {
   readonly width: number;
   readonly height: number;
   readonly sides: 5 | 6;
-  readonly restitution: number;
-  readonly friction: number;
+  /** The walls: top, right, bottom, left. */
+  readonly walls: readonly Body[];
+  /** Wall bounciness (0..1), shown and set on screen: nothing about the motion is hidden. */
+  elasticity: number;
+  surface: Surface;
+  /** The floor's friction force on the body (zero on ice or at rest). */
+  readonly friction: Force;
 }
 
 /** Area of a regular polygon with `sides` sides and circumradius `radius`. */
@@ -25,14 +49,19 @@ export function regularPolygonArea(sides: number, radius: number): number {
 }
 
 /**
- * Builds the scene in a `width` x `height` metre box (y-down): no gravity, no drag, and the
- * polygon's restitution and friction drawn from [0, 1] with `random`.
+ * Builds the scene in a `width` x `height` metre box (y-down): no gravity in the plane, no drag,
+ * frictionless walls with the chosen bounciness (perfectly elastic by default) and the chosen
+ * floor. The body does not spin, so the readouts show its motion plainly; it sleeps while at
+ * rest with no force on it, so nothing redraws.
  */
 export function createInertiaScene(
   width: number,
   height: number,
+  options: InertiaOptions = {},
   random: () => number = Math.random,
 ): InertiaScene {
+  const elasticity = options.elasticity ?? 1;
+  // Every bounce is resolved with the chosen restitution, however slow (threshold 0).
   const world = new World({ gravity: { x: 0, y: 0 }, restitutionThreshold: 0, enableSleep: false });
   const corners = [
     { x: 0, y: 0 },
@@ -40,13 +69,21 @@ export function createInertiaScene(
     { x: width, y: height },
     { x: 0, y: height },
   ];
+  const walls: Body[] = [];
   for (let i = 0; i < 4; i++) {
-    // Walls take their material from the body: friction 1 and restitution 0 mix to the body's.
-    world.add(wall({ from: corners[i]!, to: corners[(i + 1) % 4]!, friction: 1, restitution: 0 }));
+    // Wall and body carry the same values, so any mixing rule gives them.
+    walls.push(
+      world.add(
+        wall({
+          from: corners[i]!,
+          to: corners[(i + 1) % 4]!,
+          friction: 0,
+          restitution: elasticity,
+        }),
+      ),
+    );
   }
-  const sides = random() < 0.5 ? 5 : 6;
-  const restitution = random();
-  const friction = random();
+  const sides = options.sides ?? (random() < 0.5 ? 5 : 6);
   const body = world.add(
     regularPolygon({
       position: { x: width / 2, y: height / 2 },
@@ -54,14 +91,70 @@ export function createInertiaScene(
       sides,
       radius: POLYGON_RADIUS,
       density: POLYGON_MASS / regularPolygonArea(sides, POLYGON_RADIUS),
-      restitution,
-      friction,
+      restitution: elasticity,
+      friction: 0,
       drag: 0,
       linearDamping: 0,
       angularDamping: 0,
+      fixedRotation: true,
     }),
   );
-  return { world, body, width, height, sides, restitution, friction };
+  const friction = body.applyForce({ x: 0, y: 0 }, { duration: 'constant' });
+  body.sleep();
+  const scene: InertiaScene = {
+    world,
+    body,
+    width,
+    height,
+    sides,
+    walls,
+    elasticity,
+    surface: options.surface ?? 'ice',
+    friction,
+  };
+  // After each step the body moved in, the friction for the next step.
+  world.on('move', (moved) => {
+    if (moved === body) updateFloorFriction(scene);
+  });
+  return scene;
+}
+
+/** Sets the walls' bounciness (0..1) on walls and body. */
+export function setElasticity(scene: InertiaScene, elasticity: number): void {
+  scene.elasticity = elasticity;
+  for (const item of scene.world.bodies) {
+    for (const shape of item.shapes) shape.restitution = elasticity;
+  }
+}
+
+/** Chooses the floor. */
+export function setSurface(scene: InertiaScene, surface: Surface): void {
+  scene.surface = surface;
+  updateFloorFriction(scene);
+  scene.body.wake();
+}
+
+/**
+ * Kinetic friction from the floor, mu m g against the velocity, for the next step. A body it
+ * would stop within the step (and with no other force) is stopped and put to sleep.
+ */
+export function updateFloorFriction(scene: InertiaScene, dt = 1 / 60): void {
+  const { body } = scene;
+  const mu = SURFACE_FRICTION[scene.surface];
+  const v = body.linearVelocity;
+  const speed = Math.hypot(v.x, v.y);
+  if (mu === 0 || speed === 0) {
+    if (scene.friction.x !== 0 || scene.friction.y !== 0) scene.friction.setVector({ x: 0, y: 0 });
+    return;
+  }
+  const size = mu * body.mass * GRAVITY;
+  if (speed <= (size / body.mass) * dt && body.forces.length <= 1) {
+    scene.friction.setVector({ x: 0, y: 0 });
+    body.linearVelocity = { x: 0, y: 0 };
+    body.sleep();
+    return;
+  }
+  scene.friction.setVector({ x: (-size * v.x) / speed, y: (-size * v.y) / speed });
 }
 
 /**
@@ -75,6 +168,9 @@ export function forceVector(angleDegrees: number, magnitude: number): { x: numbe
   // Exact zeros for the axis directions (no 6e-17 components).
   return { x: Math.abs(x) < 1e-12 ? 0 : x, y: Math.abs(y) < 1e-12 ? 0 : y };
 }
+
+/** Speeds below this (m/s) read as rest: a body pressed on a wall jitters by less. */
+export const REST_SPEED = 0.005;
 
 /** Starts a constant force on the polygon; `.remove()` it to stop. */
 export function applyConstantForce(

@@ -1,9 +1,25 @@
-import { Box, Button, IconButton, Tooltip, Typography } from '@mui/material';
-import { drawArrow, type OverlayDrawer, type PhysicalCanvasElement } from '@physical/canvas';
+import { Box, Button, IconButton, Slider, Tooltip, Typography } from '@mui/material';
+import {
+  ARROW_COLORS,
+  drawArrow,
+  type OverlayDrawer,
+  type PhysicalCanvasElement,
+} from '@physical/canvas';
 import type { Body } from '@physical/engine';
 import { PhysicalCanvas } from '@physical/react';
-import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
-import { DeleteIcon, PhoneTiltIcon } from '../../app/icons.tsx';
+import {
+  useCallback,
+  useEffect,
+  useLayoutEffect,
+  useMemo,
+  useReducer,
+  useRef,
+  useState,
+} from 'react';
+import { useAnnouncer } from '../../app/Announcer.tsx';
+import { REDUCED_MOTION } from '../../app/theme.ts';
+import { AddIcon, DeleteIcon, PhoneTiltIcon } from '../../app/icons.tsx';
+import { useOrientationRebuild } from '../../app/use-orientation-rebuild.ts';
 import { Readout } from '../../app/Readout.tsx';
 import { ScreenLayout } from '../../app/ScreenLayout.tsx';
 import { STEP, simulatedTime, useSimulation } from '../../app/use-simulation.ts';
@@ -15,14 +31,17 @@ import {
   watchDeviceTilt,
   type Tilt,
 } from '../../sensors/device-tilt.ts';
-import { sceneSizeFor } from '../inertia/inertia-scene.ts';
+import { sceneSizeFor, screenAngle } from '../inertia/inertia-scene.ts';
 import { CollisionArrows, reactionArrowLength } from './collision-arrows.ts';
 import {
+  DEFAULT_ELASTICITY,
   clearParticles,
   createReactionsScene,
   pushFor,
+  setElasticity,
   setTilt,
   spawnParticle,
+  totalMomentum,
   type ReactionsScene,
 } from './reactions-scene.ts';
 import { TILT_STEP, TiltPad } from './TiltPad.tsx';
@@ -31,6 +50,17 @@ const MARGIN = 0.1;
 const clampTilt = (value: number): number =>
   Math.round(Math.min(1, Math.max(-1, value)) * 100) / 100;
 const SELECTED_STYLE = { stroke: '#ffffff', lineWidth: 3 } as const;
+/** Metres of arrow per kg m/s of momentum. */
+const MOMENTUM_ARROW_SCALE = 0.5;
+
+/** Where tilt can be asked for and makes sense: a touch device whose browser asks first (iOS). */
+function tiltButtonUseful(): boolean {
+  return (
+    tiltNeedsPermission() &&
+    typeof matchMedia === 'function' &&
+    matchMedia('(pointer: coarse)').matches
+  );
+}
 
 /** Keys that must keep their own meaning (text fields, sliders, dialogs). */
 function ownsArrowKeys(target: EventTarget | null): boolean {
@@ -54,8 +84,17 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   const [selected, setSelected] = useState<Body | null>(null);
   const [tilt, setTiltState] = useState<Tilt>({ x: 0, y: 0 });
   const [sensorOn, setSensorOn] = useState(false);
-  const [needsPermission] = useState(tiltNeedsPermission);
-  useTicker(active && !sim.paused);
+  const [needsPermission] = useState(tiltButtonUseful);
+  const [elasticity, setElasticityState] = useState(DEFAULT_ELASTICITY);
+  const elasticityRef = useRef(elasticity);
+  elasticityRef.current = elasticity;
+  const { announce, region } = useAnnouncer('reactions');
+  const [, rerender] = useReducer((count: number) => count + 1, 0);
+  useTicker(active && !sim.paused, 100, () => {
+    const current = sceneRef.current;
+    if (current === null) return '';
+    return `${current.world.steps}:${current.particles.size}:${current.world.awakeBodyCount}`;
+  });
 
   const build = useCallback(() => {
     const host = hostRef.current;
@@ -63,25 +102,33 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     arrows.clear();
     setSelected(null);
     setTiltState({ x: 0, y: 0 });
-    setScene(createReactionsScene(size.width, size.height));
+    setScene(createReactionsScene(size.width, size.height, elasticityRef.current));
   }, [arrows]);
 
   useLayoutEffect(() => {
     if (active && scene === null) build();
   }, [active, scene, build]);
+  useOrientationRebuild(hostRef, active ? scene : null, build);
 
   // The thesis's onCollision: record the arrows and each particle's last impulse.
   useEffect(() => {
     if (scene === null) return;
     return scene.world.on('collision', (event) => {
       arrows.record(event, STEP, simulatedTime(scene.world));
+      if (
+        event.normalImpulse > 0.02 &&
+        scene.particles.has(event.bodyA) &&
+        scene.particles.has(event.bodyB)
+      ) {
+        announce(t('reactions.collided', { force: unit(event.normalImpulse / STEP, 'N', 1) }));
+      }
       for (const body of [event.bodyA, event.bodyB]) {
         const info = scene.particles.get(body);
         if (info !== undefined && event.normalImpulse > 1e-4)
           info.lastImpulse = event.normalImpulse;
       }
     });
-  }, [scene, arrows]);
+  }, [scene, arrows, announce, t, unit]);
 
   const changeTilt = useCallback((next: Tilt) => {
     const current = sceneRef.current;
@@ -138,6 +185,21 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       if (current === null) return;
       const visible = arrows.visible(simulatedTime(current.world));
       const scale = canvas.viewport.scale;
+      // Momentum arrows: m v of each particle.
+      for (const body of current.particles.keys()) {
+        const v = body.linearVelocity;
+        if (Math.hypot(v.x, v.y) < 0.02) continue;
+        drawArrow(
+          context,
+          scale,
+          body.position,
+          {
+            x: body.mass * v.x * MOMENTUM_ARROW_SCALE,
+            y: body.mass * v.y * MOMENTUM_ARROW_SCALE,
+          },
+          { kind: 'velocity', width: 2 },
+        );
+      }
       for (const { arrow, opacity } of visible) {
         const length = reactionArrowLength(arrow.force);
         const from = { x: arrow.x, y: arrow.y };
@@ -149,7 +211,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           {
             kind: 'force',
             width: 3,
-            opacity,
+            opacity: REDUCED_MOTION ? 1 : opacity,
           },
         );
         drawArrow(
@@ -160,7 +222,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           {
             kind: 'impulse',
             width: 3,
-            opacity,
+            opacity: REDUCED_MOTION ? 1 : opacity,
           },
         );
       }
@@ -171,18 +233,42 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     [arrows],
   );
 
+  const add = (point: { x: number; y: number }): void => {
+    if (scene === null) return;
+    const body = spawnParticle(scene, point);
+    canvasRef.current?.invalidate();
+    rerender();
+    announce(
+      t('reactions.added', {
+        mass: unit(body.mass, 'kg', 2),
+        count: scene.particles.size,
+      }),
+    );
+  };
+
   const onTap = (point: { x: number; y: number }, body: Body | null): void => {
     if (scene === null) return;
     if (body !== null && scene.particles.has(body)) {
       select(body);
       return;
     }
-    spawnParticle(scene, point);
+    add(point);
+  };
+
+  /** The keyboard's way to add: a random free-looking spot inside the box. */
+  const addAnywhere = (): void => {
+    if (scene === null) return;
+    add({
+      x: scene.width * (0.15 + 0.7 * Math.random()),
+      y: scene.height * (0.15 + 0.7 * Math.random()),
+    });
   };
 
   const info = selected === null ? undefined : scene?.particles.get(selected);
   const push = pushFor(tilt);
   const pushSize = Math.hypot(push.x, push.y);
+  const momentum = scene === null ? { x: 0, y: 0 } : totalMomentum(scene);
+  const momentumSize = Math.hypot(momentum.x, momentum.y);
   const viewBox =
     scene === null
       ? null
@@ -218,9 +304,9 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       }
       panel={
         <>
+          {region}
           <Box
             sx={{ minHeight: 44, px: 0.5, display: 'flex', alignItems: 'center' }}
-            aria-live="polite"
             data-readout="particle-info"
           >
             {selected !== null && info !== undefined ? (
@@ -264,6 +350,17 @@ export function ReactionsScreen({ active }: { active: boolean }) {
             )}
           </Box>
           <Box sx={{ display: 'flex', alignItems: 'center', gap: 1.5 }}>
+            <Tooltip title={t('reactions.add')}>
+              <IconButton
+                aria-label={t('reactions.add')}
+                onClick={addAnywhere}
+                data-action="add"
+                color="primary"
+                sx={{ width: 48, height: 48 }}
+              >
+                <AddIcon />
+              </IconButton>
+            </Tooltip>
             <TiltPad
               onNudge={(dx, dy) =>
                 changeTilt({ x: clampTilt(tilt.x + dx), y: clampTilt(tilt.y + dy) })
@@ -277,7 +374,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                 value={
                   pushSize < 1e-6
                     ? unit(0, 'N')
-                    : `${unit(pushSize, 'N', 2)}, ${number((Math.atan2(-push.y, push.x) * 180) / Math.PI, 0)}°`
+                    : `${unit(pushSize, 'N', 2)}, ${number(screenAngle(push), 0)}°`
                 }
               />
               <Readout
@@ -285,14 +382,23 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                 label={t('reactions.count')}
                 value={String(scene?.particles.size ?? 0)}
               />
+              <Readout
+                name="momentum"
+                label={t('reactions.momentum')}
+                value={
+                  momentumSize < 0.005
+                    ? unit(0, 'kg·m/s', 2)
+                    : `${unit(momentumSize, 'kg·m/s', 2)}, ${number(screenAngle(momentum), 0)}°`
+                }
+              />
             </Box>
             <Box
               sx={{ display: 'flex', flexDirection: 'column', alignItems: 'flex-end', gap: 0.5 }}
             >
               {needsPermission && !sensorOn && (
                 <Button
-                  size="small"
                   variant="outlined"
+                  sx={{ minHeight: 48 }}
                   startIcon={<PhoneTiltIcon />}
                   onClick={() => void requestTiltPermission()}
                 >
@@ -309,12 +415,47 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                     arrows.clear();
                   }}
                   data-action="clear"
+                  sx={{ width: 48, height: 48 }}
                 >
                   <DeleteIcon />
                 </IconButton>
               </Tooltip>
             </Box>
           </Box>
+          <Box sx={{ display: 'flex', gap: 1.5, alignItems: 'center', px: 0.5 }}>
+            <Box sx={{ flex: 1, minWidth: 0 }}>
+              <Typography id="reactions-elasticity-label" variant="caption" component="div">
+                {t('reactions.elasticity')}: {number(elasticity * 100, 0)} %
+              </Typography>
+              <Slider
+                value={Math.round(elasticity * 100)}
+                min={0}
+                max={100}
+                step={5}
+                onChange={(_event, value) => {
+                  const next = (value as number) / 100;
+                  setElasticityState(next);
+                  if (scene !== null) setElasticity(scene, next);
+                }}
+                aria-labelledby="reactions-elasticity-label"
+                getAriaValueText={(value) => `${value} %`}
+                sx={{ py: 1.5 }}
+              />
+            </Box>
+          </Box>
+          <Typography variant="caption" component="p" sx={{ px: 0.5, m: 0 }} data-legend="arrows">
+            <Box component="span" sx={{ color: ARROW_COLORS.force, fontWeight: 700 }}>
+              →
+            </Box>
+            <Box component="span" sx={{ color: ARROW_COLORS.impulse, fontWeight: 700 }}>
+              ←
+            </Box>{' '}
+            {t('reactions.legend')}{' '}
+            <Box component="span" sx={{ color: ARROW_COLORS.velocity, fontWeight: 700 }}>
+              →
+            </Box>{' '}
+            {t('reactions.legendMomentum')}
+          </Typography>
         </>
       }
       controls={{

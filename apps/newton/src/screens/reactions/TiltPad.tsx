@@ -41,8 +41,8 @@ export function TiltPad({ onNudge, onLevel }: TiltPadProps) {
       sx={{
         display: 'grid',
         gridTemplateAreas: '". up ." "left level right" ". down ."',
-        gridTemplateColumns: 'repeat(3, 36px)',
-        gridTemplateRows: 'repeat(3, 32px)',
+        gridTemplateColumns: 'repeat(3, 48px)',
+        gridTemplateRows: 'repeat(3, 48px)',
         placeItems: 'center',
       }}
     >
@@ -50,9 +50,8 @@ export function TiltPad({ onNudge, onLevel }: TiltPadProps) {
         <Tooltip key={key} title={t(key)}>
           <IconButton
             aria-label={t(key)}
-            size="small"
             onClick={() => onNudge(dx * TILT_STEP, dy * TILT_STEP)}
-            sx={{ gridArea: area }}
+            sx={{ gridArea: area, width: 48, height: 48 }}
             data-action={`tilt-${area}`}
           >
             {icon}
@@ -62,9 +61,8 @@ export function TiltPad({ onNudge, onLevel }: TiltPadProps) {
       <Tooltip title={t('reactions.tiltLevel')}>
         <IconButton
           aria-label={t('reactions.tiltLevel')}
-          size="small"
           onClick={onLevel}
-          sx={{ gridArea: 'level' }}
+          sx={{ gridArea: 'level', width: 48, height: 48 }}
           data-action="tilt-level"
         >
           <LevelIcon fontSize="small" />

@@ -14,15 +14,16 @@ export interface ReactionArrow {
   time: number;
 }
 
-/** Seconds of simulated time an arrow pair stays visible. */
-export const ARROW_LIFETIME = 0.8;
+/** Seconds of simulated time an arrow pair stays fully visible, then fades over the same again. */
+export const ARROW_HOLD = 0.5;
+export const ARROW_LIFETIME = 1;
 /** Impulses below this (N s) are resting contact noise, not drawn. */
 const MIN_IMPULSE = 1e-4;
 
 /**
  * The thesis's onCollision drawing: every collision leaves two arrows at the contact, the force
  * on A and the force on B, equal in size and opposite in direction. One pair per pair of bodies
- * (the newest), fading after {@link ARROW_LIFETIME}.
+ * (the newest), held for {@link ARROW_HOLD} and gone after {@link ARROW_LIFETIME}.
  */
 export class CollisionArrows {
   private readonly pairs = new Map<string, ReactionArrow>();
@@ -67,7 +68,8 @@ export class CollisionArrows {
         this.pairs.delete(key);
         continue;
       }
-      result.push({ arrow, opacity: 1 - age / ARROW_LIFETIME });
+      const fade = (age - ARROW_HOLD) / (ARROW_LIFETIME - ARROW_HOLD);
+      result.push({ arrow, opacity: fade <= 0 ? 1 : 1 - fade });
     }
     return result;
   }

@@ -7,6 +7,8 @@ export const MIN_RADIUS = 0.15;
 export const MAX_RADIUS = 0.45;
 /** kg/m^2: one density for all, so a particle's size shows its mass. */
 export const PARTICLE_DENSITY = 1;
+/** Default bounciness of collisions (the slider's start). */
+export const DEFAULT_ELASTICITY = 0.8;
 
 /** What the app keeps about a particle besides the body. */
 export interface ParticleInfo {
@@ -22,10 +24,17 @@ export interface ReactionsScene {
   readonly height: number;
   readonly particles: Map<Body, ParticleInfo>;
   tilt: Tilt;
+  /** Restitution of particle collisions, 0 (they stick) to 1 (perfectly elastic). */
+  elasticity: number;
 }
 
 /** Builds the walls of a `width` x `height` metre box (y-down), with two slanted walls inside. */
-export function createReactionsScene(width: number, height: number): ReactionsScene {
+export function createReactionsScene(
+  width: number,
+  height: number,
+  elasticity = DEFAULT_ELASTICITY,
+): ReactionsScene {
+  // Set here, not left to the engine's defaults: slow bounces below 5 cm/s are resolved as rest.
   const world = new World({ gravity: { x: 0, y: 0 }, restitutionThreshold: 0.05 });
   const corners = [
     { x: 0, y: 0 },
@@ -51,17 +60,41 @@ export function createReactionsScene(width: number, height: number): ReactionsSc
       friction: 0.3,
     }),
   );
-  return { world, width, height, particles: new Map(), tilt: { x: 0, y: 0 } };
+  for (const body of world.bodies) for (const shape of body.shapes) shape.restitution = elasticity;
+  return { world, width, height, particles: new Map(), tilt: { x: 0, y: 0 }, elasticity };
 }
 
-/** The push (N) on each particle for a tilt: the same force for every mass. */
+/**
+ * The push (N) on each particle for a tilt: the same force for every mass, at most
+ * {@link PUSH_FORCE} in any direction (a diagonal full tilt is 1 N, not 1.41 N).
+ */
 export function pushFor(tilt: Tilt): { x: number; y: number } {
-  return { x: PUSH_FORCE * tilt.x, y: PUSH_FORCE * tilt.y };
+  const size = Math.hypot(tilt.x, tilt.y);
+  const scale = size > 1 ? PUSH_FORCE / size : PUSH_FORCE;
+  return { x: scale * tilt.x, y: scale * tilt.y };
+}
+
+/** Sets the bounciness (0..1) of every particle and wall. */
+export function setElasticity(scene: ReactionsScene, elasticity: number): void {
+  scene.elasticity = elasticity;
+  for (const body of scene.world.bodies)
+    for (const shape of body.shapes) shape.restitution = elasticity;
+}
+
+/** The total momentum of the particles (kg m/s). */
+export function totalMomentum(scene: ReactionsScene): { x: number; y: number } {
+  let x = 0;
+  let y = 0;
+  for (const body of scene.particles.keys()) {
+    x += body.mass * body.linearVelocity.x;
+    y += body.mass * body.linearVelocity.y;
+  }
+  return { x, y };
 }
 
 /**
  * Adds a particle at `point` (moved inside the box if needed) with a random radius (so a random
- * mass) and a random restitution, pushed by the current tilt.
+ * mass) and the scene's bounciness, pushed by the current tilt.
  */
 export function spawnParticle(
   scene: ReactionsScene,
@@ -69,7 +102,7 @@ export function spawnParticle(
   random: () => number = Math.random,
 ): Body {
   const radius = MIN_RADIUS + (MAX_RADIUS - MIN_RADIUS) * random();
-  const restitution = random();
+  const restitution = scene.elasticity;
   const x = Math.min(Math.max(point.x, radius + 0.01), scene.width - radius - 0.01);
   const y = Math.min(Math.max(point.y, radius + 0.01), scene.height - radius - 0.01);
   const body = scene.world.add(

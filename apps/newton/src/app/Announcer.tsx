@@ -1,0 +1,80 @@
+import { Box } from '@mui/material';
+import { useCallback, useEffect, useRef, useState, type ReactElement } from 'react';
+import { playEventTone } from './sound.ts';
+
+/** Shortest time between two announcements (ms): a screen reader finishes a short sentence. */
+export const ANNOUNCE_GAP_MS = 1500;
+
+/**
+ * A polite live region that speaks at a human pace: messages wait their turn, at least
+ * {@link ANNOUNCE_GAP_MS} apart, and only the newest two waiting are kept (a burst of
+ * collisions becomes one sentence, not a stream).
+ */
+export function useAnnouncer(name: string): {
+  announce: (message: string) => void;
+  region: ReactElement;
+} {
+  const [text, setText] = useState('');
+  const state = useRef({
+    queue: [] as string[],
+    lastAt: -Infinity,
+    timer: null as ReturnType<typeof setTimeout> | null,
+  });
+
+  // Speaks the next message once the gap since the last one (as it reached the page) is over.
+  const pump = useCallback((): void => {
+    const current = state.current;
+    current.timer = null;
+    if (current.queue.length === 0) return;
+    const wait = current.lastAt + ANNOUNCE_GAP_MS - performance.now();
+    if (wait > 0) {
+      current.timer = setTimeout(pump, wait);
+      return;
+    }
+    current.lastAt = performance.now();
+    setText(current.queue.shift()!);
+    if (current.queue.length > 0) current.timer = setTimeout(pump, ANNOUNCE_GAP_MS);
+  }, []);
+
+  const announce = useCallback(
+    (message: string): void => {
+      playEventTone();
+      const current = state.current;
+      current.queue = [...current.queue.filter((item) => item !== message), message].slice(-2);
+      if (current.timer === null) current.timer = setTimeout(pump, 0);
+    },
+    [pump],
+  );
+
+  // The gap counts from when the text reached the page (a busy frame delays the commit).
+  useEffect(() => {
+    if (text !== '') state.current.lastAt = performance.now();
+  }, [text]);
+
+  useEffect(() => {
+    const current = state.current;
+    return () => {
+      if (current.timer !== null) clearTimeout(current.timer);
+    };
+  }, []);
+
+  const region = (
+    <Box
+      role="status"
+      aria-live="polite"
+      aria-atomic="true"
+      data-announcer={name}
+      sx={{
+        position: 'absolute',
+        width: 1,
+        height: 1,
+        overflow: 'hidden',
+        clip: 'rect(0 0 0 0)',
+        whiteSpace: 'nowrap',
+      }}
+    >
+      {text}
+    </Box>
+  );
+  return { announce, region };
+}

@@ -1,0 +1,117 @@
+import assert from 'node:assert/strict';
+import type { Page } from 'playwright-core';
+import { test } from '../harness.ts';
+import {
+  LANDSCAPE,
+  PHONE,
+  assertQuiet,
+  closeApp,
+  numberIn,
+  openApp,
+  readout,
+  screenshot,
+} from './phone.ts';
+
+const sleep = (ms: number): Promise<void> => new Promise((resolve) => setTimeout(resolve, ms));
+
+type Box = { x: number; y: number; width: number; height: number };
+const overlaps = (a: Box, b: Box): boolean =>
+  a.x < b.x + b.width && b.x < a.x + a.width && a.y < b.y + b.height && b.y < a.y + a.height;
+
+async function helper(page: Page): Promise<string> {
+  return ((await page.locator('[data-helper="square-mass"]').textContent()) ?? '').replace(
+    /\u00a0/g,
+    ' ',
+  );
+}
+
+for (const [orientation, options] of [
+  ['portrait', PHONE],
+  ['landscape', LANDSCAPE],
+] as const) {
+  test(`newton: forces (${orientation}), typed values are validated, the clock starts at Start, the run ends at the stop, readouts never overlap`, async ({
+    browser,
+  }) => {
+    const app = await openApp(browser, '#forces', options);
+    const { page } = app;
+    try {
+      // Before Start nothing moves and the clock stands at zero.
+      await sleep(600);
+      assert.equal(await readout(page, 'time', '#forces'), 't = 0.00 s');
+
+      // Typed input: rejected with the reason and the range shown, OK disabled until valid.
+      await page.locator('[data-action="edit-A"]').click();
+      const dialog = page.getByRole('dialog');
+      await dialog.waitFor();
+      const ok = dialog.getByRole('button', { name: 'OK' });
+      const mass = page.locator('#square-mass');
+      for (const [typed, reason] of [
+        ['0', /between 0\.5 and 5 kg/],
+        ['-3', /Not a number/],
+        ['abc', /Not a number/],
+        ['0x10', /Not a number/],
+        ['1e9', /Not a number/],
+        ['9', /between 0\.5 and 5 kg/],
+      ] as const) {
+        await mass.fill(typed);
+        assert.match(await helper(page), reason, `"${typed}" is refused`);
+        assert.equal(await mass.getAttribute('aria-invalid'), 'true');
+        assert.equal(await ok.isDisabled(), true, `OK disabled for "${typed}"`);
+      }
+      await mass.fill('1,5');
+      assert.match(await helper(page), /0\.5 to 5 kg/);
+      assert.equal(await ok.isDisabled(), false);
+      // Stepped entry: + adds 0.1 kg.
+      await page.locator('[data-action="square-mass-plus"]').click();
+      assert.equal(await mass.inputValue(), '1.6');
+      assert.match(await readout(page, 'dialog-force'), /= 3\.2 N$/);
+      await ok.click();
+      await dialog.waitFor({ state: 'detached' });
+      assert.equal(await readout(page, 'force-A'), '3.2 N');
+
+      await page.locator('#forces [data-action="start"]').click();
+      // Both squares reach the stop after t = sqrt(2 d / a) = sqrt(2 * 10.8 / 2) = 3.29 s.
+      await page.waitForFunction(
+        () => document.querySelector('#forces [data-action="start"]')!.textContent === 'Run over',
+        undefined,
+        { timeout: 10_000, polling: 100 },
+      );
+      const end = numberIn(await readout(page, 'time', '#forces'));
+      assert.ok(Math.abs(end - 3.29) < 0.1, `clock timed from Start: ${end} s`);
+      await sleep(500);
+      assert.equal(numberIn(await readout(page, 'time', '#forces')), end, 'clock stops at the end');
+      for (const name of ['A', 'B']) {
+        const a = numberIn(await readout(page, `a-${name}`));
+        assert.ok(Math.abs(a - 2) < 0.05, `measured acceleration of ${name}: ${a}`);
+        const chip = (await page.locator(`[data-action="edit-${name}"]`).boundingBox())!;
+        const motion = (await page.locator(`[data-readout="motion-${name}"]`).boundingBox())!;
+        assert.ok(!overlaps(chip, motion), `${name}: the label chip and the readout overlap`);
+      }
+      assert.match(
+        (await page.locator('[data-announcer="forces"]').textContent())!,
+        /reached the stop/,
+      );
+      // Nothing sits under the bottom toolbar, and every control is on screen.
+      const toolbar = (await page.locator('#forces [role="toolbar"]').boundingBox())!;
+      const viewport = page.viewportSize()!;
+      for (const graph of await page.locator('#forces figure canvas').all()) {
+        const box = (await graph.boundingBox())!;
+        assert.ok(box.y + box.height <= toolbar.y + 1, `a graph runs under the toolbar`);
+      }
+      for (const control of await page.locator('#forces [data-action]').all()) {
+        const box = (await control.boundingBox())!;
+        assert.ok(box.y >= 0 && box.y + box.height <= viewport.height + 1, 'control off screen');
+      }
+      for (const name of ['A', 'B']) {
+        const track = (await page
+          .locator(`#forces [data-track="${name}"] physical-canvas`)
+          .boundingBox())!;
+        assert.ok(track.height >= 56, `track ${name} canvas is ${track.height} px tall`);
+      }
+      await screenshot(page, `forces-finished-${orientation}`);
+      assertQuiet(app);
+    } finally {
+      await closeApp(app);
+    }
+  });
+}
