@@ -50,7 +50,9 @@ export type BodyDefinition<UserData = unknown> =
   | ({ readonly kind: 'wall' } & Crossing<WallOptions<UserData>>);
 
 /** Replaces the joint options' bodies by ids. */
-type WithIds<T, Keys extends string> = Omit<T, Keys | 'userData'> & { readonly [K in Keys]: BodyId };
+type WithIds<T, Keys extends string> = Omit<T, Keys | 'userData'> & {
+  readonly [K in Keys]: BodyId;
+};
 
 /**
  * A joint for a worker world: the name of an engine joint factory (`kind`) and its options, with
@@ -71,7 +73,10 @@ function requireDefinition(
   kinds: readonly string[],
 ): asserts definition is { kind: string } {
   if (definition === null || typeof definition !== 'object') {
-    throw new PhysicalError('definition', `must be an object with a kind, got ${String(definition)}.`);
+    throw new PhysicalError(
+      'definition',
+      `must be an object with a kind, got ${String(definition)}.`,
+    );
   }
   const kind = (definition as { kind?: unknown }).kind;
   if (typeof kind !== 'string' || !kinds.includes(kind)) {
@@ -119,8 +124,8 @@ export function buildBody(definition: BodyDefinition): Body {
 export function buildJoint(definition: JointDefinition, bodyOf: (id: BodyId) => Body): Joint {
   requireDefinition(definition, JOINT_KINDS);
   if (definition.kind === 'mouse') {
-    const { kind: _kind, body, ...rest } = definition;
-    return mouseJoint({ ...rest, body: resolve('body', body, bodyOf) });
+    const { body, ...rest } = definition;
+    return mouseJoint({ ...withoutKind(rest), body: resolve('body', body, bodyOf) });
   }
   const { kind, bodyA, bodyB, ...rest } = definition;
   const bodies = {
@@ -129,14 +134,20 @@ export function buildJoint(definition: JointDefinition, bodyOf: (id: BodyId) => 
   };
   switch (kind) {
     case 'revolute':
-      return revoluteJoint({ ...(rest as Omit<RevoluteJointOptions, 'bodyA' | 'bodyB'>), ...bodies });
+      return revoluteJoint({
+        ...(rest as Omit<RevoluteJointOptions, 'bodyA' | 'bodyB'>),
+        ...bodies,
+      });
     case 'prismatic':
       return prismaticJoint({
         ...(rest as Omit<PrismaticJointOptions, 'bodyA' | 'bodyB'>),
         ...bodies,
       });
     case 'distance':
-      return distanceJoint({ ...(rest as Omit<DistanceJointOptions, 'bodyA' | 'bodyB'>), ...bodies });
+      return distanceJoint({
+        ...(rest as Omit<DistanceJointOptions, 'bodyA' | 'bodyB'>),
+        ...bodies,
+      });
     case 'weld':
       return weldJoint({ ...(rest as Omit<WeldJointOptions, 'bodyA' | 'bodyB'>), ...bodies });
   }
@@ -147,12 +158,22 @@ function resolve(field: string, id: BodyId, bodyOf: (id: BodyId) => Body): Body 
 }
 
 function missing(field: string, id: unknown): never {
-  throw new PhysicalError(field, `must be the id of a body in this worker world, got ${String(id)}.`);
+  throw new PhysicalError(
+    field,
+    `must be the id of a body in this worker world, got ${String(id)}.`,
+  );
 }
 
 /** The definition as posted: without `userData`, which stays on the page. */
 export function postable<T extends object>(definition: T): T {
   if (!('userData' in definition)) return definition;
-  const { userData: _userData, ...rest } = definition as T & { userData?: unknown };
+  const rest = { ...definition } as Record<string, unknown>;
+  delete rest['userData'];
   return rest as T;
+}
+
+function withoutKind<T extends object>(options: T): Omit<T, 'kind'> {
+  const rest = { ...options } as Record<string, unknown>;
+  delete rest['kind'];
+  return rest as Omit<T, 'kind'>;
 }

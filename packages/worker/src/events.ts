@@ -44,10 +44,7 @@ export interface WorkerMoveEvent {
 
 /** Any event of a step. */
 export type WorkerEvent =
-  | WorkerCollisionEvent
-  | WorkerContactEvent
-  | WorkerSensorEvent
-  | WorkerMoveEvent;
+  WorkerCollisionEvent | WorkerContactEvent | WorkerSensorEvent | WorkerMoveEvent;
 
 /** Events of a {@link WorkerWorld}: name to listener. */
 export interface WorkerWorldEvents {

@@ -7,17 +7,23 @@ import type { BodyDefinition, JointDefinition } from './definitions.ts';
 
 /** Events the page can listen to; the worker records only those listened to. */
 export type StreamedEvent =
-  | 'collision'
-  | 'contactBegin'
-  | 'contactEnd'
-  | 'sensorBegin'
-  | 'sensorEnd'
-  | 'move';
+  'collision' | 'contactBegin' | 'contactEnd' | 'sensorBegin' | 'sensorEnd' | 'move';
 
 /** A body operation that takes the body's id and plain arguments. */
 export type BodyOperation =
-  | { readonly op: 'applyForce'; readonly force: Vec2Like; readonly duration?: unknown; readonly point?: Vec2Like; readonly forceId: number }
-  | { readonly op: 'applyTorque'; readonly torque: number; readonly duration?: unknown; readonly forceId: number }
+  | {
+      readonly op: 'applyForce';
+      readonly force: Vec2Like;
+      readonly duration?: unknown;
+      readonly point?: Vec2Like;
+      readonly forceId: number;
+    }
+  | {
+      readonly op: 'applyTorque';
+      readonly torque: number;
+      readonly duration?: unknown;
+      readonly forceId: number;
+    }
   | { readonly op: 'removeForce'; readonly forceId: number }
   | { readonly op: 'clearForces' }
   | { readonly op: 'applyImpulse'; readonly impulse: Vec2Like; readonly point?: Vec2Like }
@@ -82,7 +88,12 @@ export type ToWorker =
       readonly toX: number;
       readonly toY: number;
     }
-  | { readonly type: 'grabMove'; readonly pointerId: number; readonly x: number; readonly y: number }
+  | {
+      readonly type: 'grabMove';
+      readonly pointerId: number;
+      readonly x: number;
+      readonly y: number;
+    }
   | {
       readonly type: 'grabEnd';
       readonly pointerId: number;

@@ -133,7 +133,8 @@ class WorldServer {
         return;
       case 'grabMove': {
         const joint = this.grabs.get(message.pointerId);
-        if (joint !== undefined && joint.world !== null) joint.target = { x: message.x, y: message.y };
+        if (joint !== undefined && joint.world !== null)
+          joint.target = { x: message.x, y: message.y };
         return;
       }
       case 'grabEnd':

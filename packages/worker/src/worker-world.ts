@@ -10,7 +10,13 @@ import {
   type WorldOptions,
 } from '@physical/engine';
 import type { DrawingSource, Pose, RemoteDrawing } from '@physical/canvas';
-import { buildBody, buildJoint, postable, type BodyDefinition, type JointDefinition } from './definitions.ts';
+import {
+  buildBody,
+  buildJoint,
+  postable,
+  type BodyDefinition,
+  type JointDefinition,
+} from './definitions.ts';
 import type { WorkerEvent, WorkerWorldEvents } from './events.ts';
 import type { BodyId, ForceId, JointId } from './ids.ts';
 import { createSharedPoses, POSE_STRIDE, SharedPoses } from './pose-stream.ts';
@@ -102,7 +108,10 @@ export class WorkerWorld implements DrawingSource {
   private readonly idByBody = new Map<Body, number>();
   private readonly jointById = new Map<number, Joint>();
   private readonly listeners = new Map<keyof WorkerWorldEvents, Set<Listener>>();
-  private readonly pending = new Map<number, { resolve: (value: unknown) => void; reject: (error: Error) => void }>();
+  private readonly pending = new Map<
+    number,
+    { resolve: (value: unknown) => void; reject: (error: Error) => void }
+  >();
   private readonly shared: SharedPoses | null;
   private nextBodyId = 1;
   private nextJointId = 1;
@@ -138,17 +147,24 @@ export class WorkerWorld implements DrawingSource {
       (globalThis as { crossOriginIsolated?: boolean }).crossOriginIsolated === true;
     const capacity = options.sharedCapacity ?? 4096;
     if (!Number.isInteger(capacity) || capacity < 1) {
-      throw new PhysicalError('sharedCapacity', `must be a positive integer, got ${String(capacity)}.`);
+      throw new PhysicalError(
+        'sharedCapacity',
+        `must be a positive integer, got ${String(capacity)}.`,
+      );
     }
     const memory = options.shared !== false && isolated ? createSharedPoses(capacity) : null;
     this.shared = memory === null ? null : new SharedPoses(memory);
     this.isShared = memory !== null;
-    worker.addEventListener('message', (event) => this.receive((event as MessageEvent).data as FromWorker));
+    worker.addEventListener('message', (event) =>
+      this.receive((event as MessageEvent).data as FromWorker),
+    );
     worker.addEventListener('error', (event) => {
       const message = (event as ErrorEvent).message;
       this.fail(new Error(`the physics worker failed: ${message || 'an error (see the console)'}`));
     });
-    worker.addEventListener('messageerror', () => this.fail(new Error('a message from the physics worker could not be read')));
+    worker.addEventListener('messageerror', () =>
+      this.fail(new Error('a message from the physics worker could not be read')),
+    );
     this.post({ type: 'init', options: options.world ?? {}, shared: memory });
   }
 
@@ -240,7 +256,11 @@ export class WorkerWorld implements DrawingSource {
    * Applies a force (N) for a duration (see `Body.applyForce`); returns its id, for
    * {@link removeForce}.
    */
-  applyForce(id: BodyId, force: Vec2Like, options: { duration?: Duration; point?: Vec2Like } = {}): ForceId {
+  applyForce(
+    id: BodyId,
+    force: Vec2Like,
+    options: { duration?: Duration; point?: Vec2Like } = {},
+  ): ForceId {
     const body = this.requireBody(id);
     body.removeForce(body.applyForce(force, options));
     const forceId = this.nextForceId++;
@@ -390,7 +410,10 @@ export class WorkerWorld implements DrawingSource {
    */
   step(dt: number = 1 / 60): void {
     if (!(dt > 0) || !Number.isFinite(dt)) {
-      throw new PhysicalError('dt', `must be a positive, finite number of seconds, got ${String(dt)}.`);
+      throw new PhysicalError(
+        'dt',
+        `must be a positive, finite number of seconds, got ${String(dt)}.`,
+      );
     }
     this.applyArrived();
     this.sentSteps++;
@@ -455,7 +478,11 @@ export class WorkerWorld implements DrawingSource {
   /** The first body hit by a ray, read from the worker. */
   rayCast(from: Vec2Like, to: Vec2Like): Promise<WorkerRayCastHit | null> {
     this.mirror.rayCast(from, to); // checks the points
-    return this.ask({ kind: 'rayCast', from: { x: from.x, y: from.y }, to: { x: to.x, y: to.y } }) as Promise<WorkerRayCastHit | null>;
+    return this.ask({
+      kind: 'rayCast',
+      from: { x: from.x, y: from.y },
+      to: { x: to.x, y: to.y },
+    }) as Promise<WorkerRayCastHit | null>;
   }
 
   /** Bodies whose boxes overlap a box (m), read from the worker. */
@@ -728,7 +755,10 @@ export class WorkerWorld implements DrawingSource {
     this.post({ type: 'listen', events });
   }
 
-  private emit<K extends keyof WorkerWorldEvents>(type: K, ...args: Parameters<WorkerWorldEvents[K]>): void {
+  private emit<K extends keyof WorkerWorldEvents>(
+    type: K,
+    ...args: Parameters<WorkerWorldEvents[K]>
+  ): void {
     const set = this.listeners.get(type);
     if (set === undefined) return;
     for (const listener of set) (listener as (...a: unknown[]) => void)(...args);

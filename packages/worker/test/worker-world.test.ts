@@ -29,7 +29,12 @@ describe('WorkerWorld', () => {
     remote.add({ kind: 'wall', from: { x: -5, y: 5 }, to: { x: 5, y: 5 } });
     const ids = [];
     for (let i = 0; i < 20; i++) {
-      const options = { width: 0.5, height: 0.4, position: { x: (i % 5) * 0.6 - 1.5, y: 4 - Math.floor(i / 5) * 0.5 }, angle: i * 0.01 };
+      const options = {
+        width: 0.5,
+        height: 0.4,
+        position: { x: (i % 5) * 0.6 - 1.5, y: 4 - Math.floor(i / 5) * 0.5 },
+        angle: i * 0.01,
+      };
       local.add(box(options));
       ids.push(remote.add({ kind: 'box', ...options }));
     }
@@ -100,16 +105,27 @@ describe('WorkerWorld', () => {
     );
     const other = world.add({ kind: 'box', width: 1, height: 1 });
     expect(
-      fieldOf(() => world.addJoint({ kind: 'revolute', bodyA: id, bodyB: other, anchor: { x: Number.NaN, y: 0 } })),
+      fieldOf(() =>
+        world.addJoint({
+          kind: 'revolute',
+          bodyA: id,
+          bodyB: other,
+          anchor: { x: Number.NaN, y: 0 },
+        }),
+      ),
     ).toBe(
       inThread(() =>
-        revoluteJoint({ bodyA: box({ width: 1, height: 1 }), bodyB: box({ width: 1, height: 1 }), anchor: { x: Number.NaN, y: 0 } }),
+        revoluteJoint({
+          bodyA: box({ width: 1, height: 1 }),
+          bodyB: box({ width: 1, height: 1 }),
+          anchor: { x: Number.NaN, y: 0 },
+        }),
       ),
     );
     expect(fieldOf(() => world.remove(999 as never))).toBe('id');
-    expect(fieldOf(() => world.add({ kind: 'box', width: 1, height: 1, onMove: () => {} } as never))).toBe(
-      'onMove',
-    );
+    expect(
+      fieldOf(() => world.add({ kind: 'box', width: 1, height: 1, onMove: () => {} } as never)),
+    ).toBe('onMove');
   });
 
   it('is a drawing source for <physical-canvas>, as World is', () => {

@@ -90,7 +90,10 @@ export class CanvasRenderer {
   }
 
   /** Draws a frame of `world`, then `overlay` (app drawings in world metres). */
-  draw(world: DrawingSource | null, overlay: ((context: CanvasRenderingContext2D) => void) | null): void {
+  draw(
+    world: DrawingSource | null,
+    overlay: ((context: CanvasRenderingContext2D) => void) | null,
+  ): void {
     const context = this.context;
     if (context === null) return;
     this.updateViewport();

@@ -178,12 +178,15 @@ export class PhysicalCanvasElement extends ElementBase {
    * {@link DrawingSource} (a `WorkerWorld` of `@physical/worker`, drawn from its pose stream).
    * The element steps it (do not also call `world.step`), subscribes to its events while
    * connected, and drops them when disconnected or replaced.
+   *
+   * Reads back typed as a `World` (what nearly every page sets); after setting another source,
+   * read {@link source} for its honest type.
    */
-  get world(): DrawingSource | null {
-    return this.worldValue;
+  get world(): World | null {
+    return this.worldValue as World | null;
   }
 
-  set world(value: DrawingSource | null) {
+  set world(value: World | DrawingSource | null) {
     if (value !== null && (typeof value !== 'object' || !('step' in value))) {
       throw new CanvasSettingError(
         'world',
@@ -201,6 +204,11 @@ export class PhysicalCanvasElement extends ElementBase {
     this.loop.reset();
     if (this.isConnectedValue) this.subscribe();
     this.invalidate();
+  }
+
+  /** The world being drawn, as the {@link DrawingSource} it was set as, or null. */
+  get source(): DrawingSource | null {
+    return this.worldValue;
   }
 
   /**
