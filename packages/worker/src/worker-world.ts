@@ -533,9 +533,13 @@ export class WorkerWorld implements DrawingSource {
 
   // ------------------------------------------------------------------ DrawingSource
 
-  /** The page copies of the bodies (for `<physical-canvas>`). */
+  /**
+   * The page copies of the bodies (for `<physical-canvas>`): their shapes, type and userData;
+   * their own poses lag (read {@link position}).
+   */
   get bodies(): readonly Body[] {
-    this.syncCopies();
+    // Not synced: the canvas draws them at `remote.poseOf`, and syncing 2,000 copies each frame
+    // would cost the main thread what the worker saves it.
     return this.mirror.bodies;
   }
 
