@@ -252,3 +252,37 @@ for (const isolated of [false, true]) {
     assert.ok(Math.abs(result.streamed.y - result.pose.y) < 1e-5, JSON.stringify(result));
   });
 }
+
+test('worker: with an OffscreenCanvas the worker draws the world itself, stepped by run()', async ({
+  open,
+}) => {
+  const page = await open('/worker/fixture.html', { viewport: { width: 400, height: 300 } });
+  await page.evaluate(async () => {
+    document.querySelector('physical-canvas')!.remove();
+    const element = document.createElement('canvas');
+    element.width = 400;
+    element.height = 300;
+    element.style.cssText = 'display: block; width: 400px; height: 300px;';
+    document.body.append(element);
+    const world = window.physicalWorker.createWorkerWorld({
+      offscreen: { canvas: element.transferControlToOffscreen(), pixelsPerMeter: 40 },
+    });
+    world.add({ kind: 'box', type: 'static', position: { x: 5, y: 7.5 }, width: 10, height: 1 });
+    const ball = world.add({ kind: 'particle', radius: 0.5, position: { x: 3, y: 1 } });
+    world.run();
+    // Falls about 5.5 m onto the floor (y = 7 m): wait until it rests there.
+    for (let i = 0; i < 100 && world.position(ball).y < 6.4; i++) {
+      await new Promise((resolve) => setTimeout(resolve, 50));
+    }
+  });
+  await waitFrames(page, 5);
+  // The ball rests centred at (3, 6.5) m = (120, 260) px; (300, 100) is empty.
+  const [ball, empty, floor] = await screenPixels(page, [
+    { x: 120, y: 260 },
+    { x: 300, y: 100 },
+    { x: 200, y: 290 },
+  ]);
+  assert.ok(!isBackground(ball!), `ball drawn: ${ball}`);
+  assert.ok(isBackground(empty!), `empty: ${empty}`);
+  assert.ok(!isBackground(floor!), `floor drawn: ${floor}`);
+});

@@ -23,3 +23,4 @@ export type {
 } from './events.ts';
 export type { BodyProperty } from './protocol.ts';
 export { worldStateHash } from './state-hash.ts';
+export type { OffscreenView } from './offscreen-renderer.ts';

@@ -1,5 +1,6 @@
 import type { Vec2Like, WorldOptions } from '@physical/engine';
 import type { BodyDefinition, JointDefinition } from './definitions.ts';
+import type { OffscreenView } from './offscreen-renderer.ts';
 
 // The messages between a WorkerWorld (page) and serveWorld (worker). One ordered channel: the
 // worker applies changes and steps in exactly the order the page made them, so the worker's
@@ -69,6 +70,8 @@ export type ToWorker =
       readonly options: WorldOptions;
       /** Shared pose memory when the page is cross-origin isolated. */
       readonly shared: SharedArrayBuffer | null;
+      /** Draw in the worker into this canvas (transferred). */
+      readonly offscreen: OffscreenView | null;
     }
   | { readonly type: 'add'; readonly id: number; readonly definition: BodyDefinition }
   | { readonly type: 'remove'; readonly id: number }

@@ -11,6 +11,7 @@ import {
   type SensorEvent,
 } from '@physical/engine';
 import { buildBody, buildJoint } from './definitions.ts';
+import { OffscreenRenderer } from './offscreen-renderer.ts';
 import type { WorkerEvent } from './events.ts';
 import type { BodyId } from './ids.ts';
 import { POSE_STRIDE, SharedPoses } from './pose-stream.ts';
@@ -51,6 +52,7 @@ class WorldServer {
   private readonly forces = new Map<number, Force>();
   private readonly grabs = new Map<number, MouseJoint>();
   private shared: SharedPoses | null = null;
+  private renderer: OffscreenRenderer | null = null;
   /** Bodies sent in the last frame (a body that falls asleep is sent once more, at rest). */
   private sentLast = new Set<Body>();
   private sentNow = new Set<Body>();
@@ -86,6 +88,8 @@ class WorldServer {
       case 'init':
         this.world = new World(message.options);
         this.shared = message.shared === null ? null : new SharedPoses(message.shared);
+        this.renderer =
+          message.offscreen === null ? null : new OffscreenRenderer(message.offscreen);
         return;
       case 'add': {
         const body = buildBody(message.definition);
@@ -121,6 +125,8 @@ class WorldServer {
         return;
       case 'step':
         for (let i = 0; i < message.count; i++) this.step(message.dt);
+        // One drawing per step request: the page asks at most its frame rate's worth.
+        this.renderer?.draw(this.world);
         return;
       case 'listen':
         this.listen(message.events);

@@ -18,6 +18,7 @@ import {
   type JointDefinition,
 } from './definitions.ts';
 import type { WorkerEvent, WorkerWorldEvents } from './events.ts';
+import type { OffscreenView } from './offscreen-renderer.ts';
 import type { BodyId, ForceId, JointId } from './ids.ts';
 import { createSharedPoses, POSE_STRIDE, SharedPoses } from './pose-stream.ts';
 import type {
@@ -39,6 +40,12 @@ export interface WorkerWorldOptions {
    * isolated, `false` never (each step transfers one typed array instead).
    */
   readonly shared?: 'auto' | false;
+  /**
+   * Draw in the worker instead: the canvas from `canvasElement.transferControlToOffscreen()` and
+   * its view. The worker then draws after each step, in `<physical-canvas>`'s default look; drive
+   * the steps with {@link WorkerWorld.run} (do not also give the world to a `<physical-canvas>`).
+   */
+  readonly offscreen?: OffscreenView;
   /** Bodies the shared pose memory holds (more fall back to transferred poses). Default 4096. */
   readonly sharedCapacity?: number;
 }
@@ -165,7 +172,11 @@ export class WorkerWorld implements DrawingSource {
     worker.addEventListener('messageerror', () =>
       this.fail(new Error('a message from the physics worker could not be read')),
     );
-    this.post({ type: 'init', options: options.world ?? {}, shared: memory });
+    const offscreen = options.offscreen ?? null;
+    this.post(
+      { type: 'init', options: options.world ?? {}, shared: memory, offscreen },
+      offscreen === null ? [] : [offscreen.canvas],
+    );
   }
 
   // ------------------------------------------------------------------ bodies and joints
@@ -418,6 +429,35 @@ export class WorkerWorld implements DrawingSource {
     this.applyArrived();
     this.sentSteps++;
     this.post({ type: 'step', dt, count: 1 });
+  }
+
+  /**
+   * Steps the world at `stepsPerSecond` from the page's animation frames, without a
+   * `<physical-canvas>` (for a world drawn in the worker, see `offscreen`); at most 4 steps a
+   * frame. Returns a function that stops it.
+   */
+  run(stepsPerSecond = 60): () => void {
+    if (!(stepsPerSecond > 0) || !Number.isFinite(stepsPerSecond)) {
+      throw new PhysicalError(
+        'stepsPerSecond',
+        `must be a positive number, got ${String(stepsPerSecond)}.`,
+      );
+    }
+    const dt = 1 / stepsPerSecond;
+    let last = -1;
+    let debt = 0;
+    let handle = 0;
+    const frame = (now: number): void => {
+      debt = last < 0 ? dt : Math.min(debt + (now - last) / 1000, 4 * dt);
+      last = now;
+      while (debt >= dt && this.failure === null) {
+        this.step(dt);
+        debt -= dt;
+      }
+      if (this.failure === null) handle = requestAnimationFrame(frame);
+    };
+    handle = requestAnimationFrame(frame);
+    return () => cancelAnimationFrame(handle);
   }
 
   /** Steps whose poses the page has applied. */
