@@ -30,13 +30,16 @@ interface Run {
   tap(): () => number;
   /** Pose bytes received so far. */
   bytes(): number;
+  /** Frames drawn so far (page canvas), or steps applied (drawn in the worker). */
+  frames(): number;
 }
 
 let run: Run | null = null;
 
 /** Builds the pile on the page (`'page'`) or in a worker (`'worker'`) and lets the canvas run it. */
-function start(where: 'page' | 'worker'): { shared: boolean } {
+function start(where: 'page' | 'worker' | 'offscreen'): { shared: boolean } {
   const canvas = document.querySelector('physical-canvas')!;
+  let frames = (): number => canvas.frameCount;
   if (where === 'page') {
     const world = new World();
     for (const wall of WALLS) world.add(box(wall));
@@ -50,19 +53,43 @@ function start(where: 'page' | 'worker'): { shared: boolean } {
         return () => top.position.y;
       },
       bytes: () => 0,
+      frames: () => frames(),
     };
     return { shared: false };
   }
   const worker = new Worker(new URL('./worker-bench.worker.ts', import.meta.url), {
     type: 'module',
   });
-  const world = new WorkerWorld(worker);
+  let offscreen: OffscreenCanvas | null = null;
+  if (where === 'offscreen') {
+    // The worker draws: a plain canvas of the same size and density takes the element's place.
+    const element = document.createElement('canvas');
+    element.width = 800 * devicePixelRatio;
+    element.height = 600 * devicePixelRatio;
+    element.style.cssText = 'display: block; width: 800px; height: 600px;';
+    canvas.replaceWith(element);
+    offscreen = element.transferControlToOffscreen();
+  }
+  const world = new WorkerWorld(
+    worker,
+    offscreen === null
+      ? {}
+      : { offscreen: { canvas: offscreen, pixelsPerMeter: 40, devicePixelRatio } },
+  );
   for (const wall of WALLS) world.add({ kind: 'box', ...wall });
   let top = 0 as BodyId;
   for (let i = 0; i < BOXES; i++) top = world.add({ kind: 'box', ...boxOptions(i) });
   let bytes = 0;
-  world.on('frame', () => (bytes += world.lastPoseBytes));
-  canvas.world = world;
+  let applied = 0;
+  world.on('frame', () => {
+    bytes += world.lastPoseBytes;
+    applied++;
+  });
+  if (offscreen === null) canvas.world = world;
+  else {
+    world.run();
+    frames = () => applied;
+  }
   const mass = 0.25 * 0.25;
   run = {
     steps: () => world.steps,
@@ -71,14 +98,14 @@ function start(where: 'page' | 'worker'): { shared: boolean } {
       return () => world.position(top).y;
     },
     bytes: () => bytes,
+    frames: () => frames(),
   };
   return { shared: world.isShared };
 }
 
 /** Frames drawn, steps and pose bytes so far. */
 function counters(): { frames: number; steps: number; bytes: number } {
-  const canvas = document.querySelector('physical-canvas')!;
-  return { frames: canvas.frameCount, steps: run!.steps(), bytes: run!.bytes() };
+  return { frames: run!.frames(), steps: run!.steps(), bytes: run!.bytes() };
 }
 
 let tapResult: Promise<number> | null = null;
@@ -89,7 +116,7 @@ let tapResult: Promise<number> | null = null;
  * with {@link tapLatency}.
  */
 function armTap(): void {
-  const canvas = document.querySelector('physical-canvas')!;
+  const canvas = document.querySelector('physical-canvas') ?? document.querySelector('canvas')!;
   tapResult = new Promise((resolve) => {
     canvas.addEventListener(
       'pointerdown',

@@ -8,7 +8,7 @@ import { chromium } from 'playwright-core';
 import { startServer } from '../server.ts';
 
 interface Bench {
-  start(where: 'page' | 'worker'): { shared: boolean };
+  start(where: 'page' | 'worker' | 'offscreen'): { shared: boolean };
   counters(): { frames: number; steps: number; bytes: number };
   armTap(): void;
   tapLatency(): Promise<number>;
@@ -33,7 +33,7 @@ const median = (values: number[]): number => {
   return sorted[Math.floor(sorted.length / 2)] ?? Number.NaN;
 };
 
-async function measure(where: 'page' | 'worker', isolated: boolean): Promise<string> {
+async function measure(where: 'page' | 'worker' | 'offscreen', isolated: boolean): Promise<string> {
   const context = await browser.newContext({
     viewport: { width: 800, height: 600 },
     deviceScaleFactor: 2,
@@ -44,10 +44,11 @@ async function measure(where: 'page' | 'worker', isolated: boolean): Promise<str
   await page.waitForFunction(() => document.documentElement.dataset['ready'] === 'true');
   const session = await context.newCDPSession(page);
   await session.send('Performance.enable');
-  const taskSeconds = async (): Promise<number> => {
+  const metric = async (name: string): Promise<number> => {
     const { metrics } = await session.send('Performance.getMetrics');
-    return metrics.find((entry) => entry.name === 'TaskDuration')?.value ?? Number.NaN;
+    return metrics.find((entry) => entry.name === name)?.value ?? Number.NaN;
   };
+  const taskSeconds = (): Promise<number> => metric('TaskDuration');
   const counters = (): Promise<{ frames: number; steps: number; bytes: number }> =>
     page.evaluate(() => (window as unknown as { bench: Bench }).bench.counters());
   const { shared } = await page.evaluate(
@@ -64,15 +65,18 @@ async function measure(where: 'page' | 'worker', isolated: boolean): Promise<str
   process.stderr.write(`  (${where} started)\n`);
   const c0 = await counters();
   const t0 = await taskSeconds();
+  const s0 = await metric('ScriptDuration');
   const w0 = performance.now();
   await page.waitForTimeout(seconds * 1000);
   const t1 = await taskSeconds();
+  const s1 = await metric('ScriptDuration');
   const w1 = performance.now();
   const c1 = await counters();
   const wall = (w1 - w0) / 1000;
   const frames = c1.frames - c0.frames;
   const steps = c1.steps - c0.steps;
   const perFrame = ((t1 - t0) * 1000) / frames;
+  const scriptPerFrame = ((s1 - s0) * 1000) / frames;
   process.stderr.write(`  (${where}: ${frames} frames, ${steps} steps)\n`);
   // Taps on the pile, each after the last one's body has moved.
   const latencies: number[] = [];
@@ -91,9 +95,9 @@ async function measure(where: 'page' | 'worker', isolated: boolean): Promise<str
   await context.close();
   const bytes = frames > 0 ? (c1.bytes - c0.bytes) / Math.max(1, steps) : 0;
   return (
-    `${where === 'page' ? 'world on the page' : `world in a worker (${shared ? 'shared memory' : 'transferred poses'})`}, ` +
+    `${where === 'page' ? 'world on the page' : `world in a worker (${shared ? 'shared memory' : 'transferred poses'}${where === 'offscreen' ? ', drawn in the worker' : ''})`}, ` +
     `${isolated ? 'cross-origin isolated' : 'not isolated'}:\n` +
-    `  main thread ${perFrame.toFixed(2)} ms/frame, ${(frames / wall).toFixed(1)} fps, ` +
+    `  main thread ${perFrame.toFixed(2)} ms/frame (script ${scriptPerFrame.toFixed(2)}), ${(frames / wall).toFixed(1)} fps, ` +
     `${(steps / wall).toFixed(1)} steps/s, tap-to-move median ${median(latencies).toFixed(1)} ms ` +
     `(${latencies.map((l) => l.toFixed(0)).join(', ')}), pose bytes/step ${bytes.toFixed(0)}\n`
   );
@@ -104,7 +108,7 @@ try {
     `2,000 boxes falling into a pile, 800x600 CSS px at DPR 2, rAF loop, ${seconds} s per run after 0.5 s:\n`,
   );
   for (const isolated of [false, true]) {
-    for (const where of ['page', 'worker'] as const) {
+    for (const where of ['page', 'worker', 'offscreen'] as const) {
       process.stdout.write(await measure(where, isolated));
     }
   }
