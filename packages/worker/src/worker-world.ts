@@ -623,9 +623,16 @@ export class WorkerWorld implements DrawingSource {
       this.changed();
       return true;
     },
-    moveGrab: (pointerId, x, y) => this.post({ type: 'grabMove', pointerId, x, y }),
-    releaseGrab: (pointerId, vx, vy, isThrow) =>
-      this.post({ type: 'grabEnd', pointerId, vx, vy, isThrow }),
+    // A held body may have fallen asleep (and the canvas gone idle): moving or letting go
+    // wakes it in the worker, and the canvas here.
+    moveGrab: (pointerId, x, y) => {
+      this.post({ type: 'grabMove', pointerId, x, y });
+      this.changed();
+    },
+    releaseGrab: (pointerId, vx, vy, isThrow) => {
+      this.post({ type: 'grabEnd', pointerId, vx, vy, isThrow });
+      this.changed();
+    },
   };
 
   // ------------------------------------------------------------------ internals
