@@ -13,6 +13,7 @@ export default defineConfig({
       '@physical/react': fileURLToPath(new URL('./packages/react/src/index.ts', import.meta.url)),
       '@physical/scenes': fileURLToPath(new URL('./packages/scenes/src/index.ts', import.meta.url)),
       '@physical/dom': fileURLToPath(new URL('./packages/dom/src/index.ts', import.meta.url)),
+      '@physical/worker': fileURLToPath(new URL('./packages/worker/src/index.ts', import.meta.url)),
     },
   },
   test: {

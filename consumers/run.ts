@@ -16,7 +16,7 @@ import { publint } from 'publint';
 import { formatMessage } from 'publint/utils';
 
 const root = resolve(fileURLToPath(new URL('..', import.meta.url)));
-const libraries = ['engine', 'canvas', 'dom', 'react'] as const;
+const libraries = ['engine', 'canvas', 'dom', 'react', 'worker'] as const;
 const work = mkdtempSync(join(tmpdir(), 'physical-consumers-'));
 const failures: string[] = [];
 const started = Date.now();

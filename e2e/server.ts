@@ -1,6 +1,6 @@
 import { dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { createServer } from 'vite';
+import { createServer, type Plugin } from 'vite';
 
 const here = dirname(fileURLToPath(import.meta.url));
 
@@ -9,6 +9,26 @@ export interface TestServer {
   /** Base address, for example `http://127.0.0.1:41234`. */
   readonly url: string;
   close(): Promise<void>;
+}
+
+/**
+ * A page opened with `?coi` in its address is cross-origin isolated (SharedArrayBuffer): it and
+ * what it loads (its workers) get COOP and COEP headers.
+ */
+function crossOriginIsolation(): Plugin {
+  return {
+    name: 'cross-origin-isolation',
+    configureServer(server) {
+      server.middlewares.use((request, response, next) => {
+        const referer = request.headers.referer ?? '';
+        if (/[?&]coi\b/.test(request.url ?? '') || /[?&]coi\b/.test(referer)) {
+          response.setHeader('Cross-Origin-Opener-Policy', 'same-origin');
+          response.setHeader('Cross-Origin-Embedder-Policy', 'require-corp');
+        }
+        next();
+      });
+    },
+  };
 }
 
 /**
@@ -34,8 +54,12 @@ export async function startServer(): Promise<TestServer> {
           new URL('../packages/react/src/index.ts', import.meta.url),
         ),
         '@physical/dom': fileURLToPath(new URL('../packages/dom/src/index.ts', import.meta.url)),
+        '@physical/worker': fileURLToPath(
+          new URL('../packages/worker/src/index.ts', import.meta.url),
+        ),
       },
     },
+    plugins: [crossOriginIsolation()],
     server: {
       host: '127.0.0.1',
       port: 0,

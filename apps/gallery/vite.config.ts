@@ -12,8 +12,10 @@ export default defineConfig({
       '@physical/canvas': source('../../packages/canvas/src/index.ts'),
       '@physical/scenes': source('../../packages/scenes/src/index.ts'),
       '@physical/dom': source('../../packages/dom/src/index.ts'),
+      '@physical/worker': source('../../packages/worker/src/index.ts'),
     },
   },
+  worker: { format: 'es' },
   build: { outDir: source('dist'), emptyOutDir: true, target: 'es2022' },
   preview: { host: '127.0.0.1', port: 4174 },
 });

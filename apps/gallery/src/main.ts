@@ -3,6 +3,7 @@ import { findScene } from '@physical/scenes';
 import { renderList } from './list-page.ts';
 import { PHYSICAL_UI_ROUTE, renderPhysicalUI } from './physical-ui-page.ts';
 import { renderSample } from './sample-page.ts';
+import { WORKER_ROUTE, renderWorkerPage } from './worker-page.ts';
 
 define();
 const root = document.getElementById('app')!;
@@ -14,6 +15,7 @@ function route(): void {
   const id = decodeURIComponent(location.hash.replace(/^#\/?/, ''));
   const scene = id === '' ? undefined : findScene(id);
   if (id === PHYSICAL_UI_ROUTE) leave = renderPhysicalUI(root);
+  else if (id === WORKER_ROUTE) leave = renderWorkerPage(root);
   else leave = scene === undefined ? renderList(root) : renderSample(root, scene);
   window.scrollTo(0, 0);
   document.documentElement.dataset['ready'] = 'true';

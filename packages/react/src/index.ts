@@ -4,3 +4,4 @@
 
 export { PhysicalCanvas } from './physical-canvas.ts';
 export type { PhysicalCanvasProps } from './physical-canvas.ts';
+export { useWorkerWorld } from './use-worker-world.ts';

@@ -1,6 +1,7 @@
 import type {
   AttributeErrorDetail,
   DebugOverlays,
+  DrawingSource,
   FitMode,
   FrameScheduler,
   OverlayDrawer,
@@ -26,8 +27,11 @@ import {
 
 /** Props of {@link PhysicalCanvas}: the element's attributes and properties, and its events. */
 export interface PhysicalCanvasProps {
-  /** The world to run and draw (the element steps it). */
-  world: World | null;
+  /**
+   * The world to run and draw (the element steps it): a `World`, or a `WorkerWorld` of
+   * `@physical/worker` (see {@link useWorkerWorld}).
+   */
+  world: World | DrawingSource | null;
   /** CSS px per metre with `fit="none"`. Default 50. */
   pixelsPerMeter?: number;
   /** World point (m) at the top-left corner with `fit="none"`. Default (0, 0). */

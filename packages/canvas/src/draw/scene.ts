@@ -1,6 +1,7 @@
-import type { Body, World } from '@physical/engine';
+import type { Body } from '@physical/engine';
 import type { ResolvedBodyStyle } from './body-style.ts';
 import type { DebugOverlays } from './debug-overlays.ts';
+import type { DrawingSource } from './drawing-source.ts';
 import type { CollisionArrowView } from './draw-collision-arrows.ts';
 import type { Pose } from './pose.ts';
 import type { Viewport } from './viewport.ts';
@@ -14,7 +15,7 @@ export interface Scene {
   /** Background colour, or `'transparent'`. */
   readonly background: string;
   /** The world, for contact overlays; null draws only the background. */
-  readonly world: World | null;
+  readonly world: DrawingSource | null;
   /** The bodies, as `world.bodies`. */
   readonly bodies: readonly Body[];
   /** The pose to draw `bodies[index]` at (interpolated). Writes and returns `out`. */

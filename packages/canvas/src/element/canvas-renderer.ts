@@ -1,7 +1,8 @@
-import type { Body, World } from '@physical/engine';
+import type { Body } from '@physical/engine';
 import { DEFAULT_BACKGROUND } from '../draw/body-style.ts';
 import { BodyBatches } from '../draw/draw-bodies.ts';
 import { drawScene } from '../draw/draw-scene.ts';
+import type { DrawingSource } from '../draw/drawing-source.ts';
 import type { Pose } from '../draw/pose.ts';
 import type { Scene } from '../draw/scene.ts';
 import { computeViewport, type Viewport } from '../draw/viewport.ts';
@@ -54,8 +55,13 @@ export class CanvasRenderer {
       }),
       world: null,
       bodies: [],
-      poseOf: (body: Body, index: number, out: Pose): Pose =>
-        poses.interpolate(body, index, this.alpha, out),
+      // A remote source (a worker's world) holds its own last two states.
+      poseOf: (body: Body, index: number, out: Pose): Pose => {
+        const remote = this.scene.world?.remote;
+        return remote === undefined
+          ? poses.interpolate(body, index, this.alpha, out)
+          : remote.poseOf(body, index, this.alpha, out);
+      },
       styleOf: (body: Body) => styles.resolve(body),
       background: DEFAULT_BACKGROUND,
       debug: settings.debug,
@@ -84,7 +90,10 @@ export class CanvasRenderer {
   }
 
   /** Draws a frame of `world`, then `overlay` (app drawings in world metres). */
-  draw(world: World | null, overlay: ((context: CanvasRenderingContext2D) => void) | null): void {
+  draw(
+    world: DrawingSource | null,
+    overlay: ((context: CanvasRenderingContext2D) => void) | null,
+  ): void {
     const context = this.context;
     if (context === null) return;
     this.updateViewport();

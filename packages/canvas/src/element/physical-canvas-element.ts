@@ -1,5 +1,6 @@
 import type { Body, Vec2, Vec2Like, World } from '@physical/engine';
 import type { BodyStyle } from '../draw/body-style.ts';
+import type { DrawingSource } from '../draw/drawing-source.ts';
 import type { DebugOverlays } from '../draw/debug-overlays.ts';
 import {
   screenToWorld,
@@ -88,7 +89,9 @@ export class PhysicalCanvasElement extends ElementBase {
   /** The attributes the element reacts to. */
   static readonly observedAttributes: readonly string[] = SETTING_ATTRIBUTES;
 
-  private worldValue: World | null = null;
+  private worldValue: DrawingSource | null = null;
+  /** Pointers whose drag went to the remote source (the others hold a local mouse joint). */
+  private readonly remoteDrags = new Set<number>();
   private drawOverlayValue: OverlayDrawer | null = null;
   private schedulerValue: FrameScheduler | null = null;
   private readonly settings = new CanvasSettings();
@@ -112,10 +115,23 @@ export class PhysicalCanvasElement extends ElementBase {
     dragStart: (pointerId, body, x, y, toX, toY) => {
       const world = this.worldValue;
       if (world === null || !this.settings.drag) return false;
-      return this.drags.start(world, pointerId, body, x, y, toX, toY);
+      if (world.remote !== undefined) {
+        if (!world.remote.grab(pointerId, body, x, y, toX, toY)) return false;
+        this.remoteDrags.add(pointerId);
+        return true;
+      }
+      // A source without `remote` steps its bodies itself: a World, which takes mouse joints.
+      return this.drags.start(world as World, pointerId, body, x, y, toX, toY);
     },
-    dragMove: (pointerId, x, y) => this.drags.move(pointerId, x, y),
-    dragEnd: (pointerId, vx, vy, isThrow) => this.drags.end(pointerId, vx, vy, isThrow),
+    dragMove: (pointerId, x, y) => {
+      if (this.remoteDrags.has(pointerId)) this.worldValue?.remote?.moveGrab(pointerId, x, y);
+      else this.drags.move(pointerId, x, y);
+    },
+    dragEnd: (pointerId, vx, vy, isThrow) => {
+      if (this.remoteDrags.delete(pointerId)) {
+        this.worldValue?.remote?.releaseGrab(pointerId, vx, vy, isThrow);
+      } else this.drags.end(pointerId, vx, vy, isThrow);
+    },
   });
   private readonly renderer: CanvasRenderer;
   private canvasElement: HTMLCanvasElement | null = null;
@@ -158,18 +174,28 @@ export class PhysicalCanvasElement extends ElementBase {
   // ------------------------------------------------------------------ world and styles
 
   /**
-   * The world to run and draw, or null. The element steps it (do not also call `world.step`),
-   * subscribes to its events while connected, and drops them when disconnected or replaced.
+   * The world to run and draw, or null: a `World` of `@physical/engine`, or any
+   * {@link DrawingSource} (a `WorkerWorld` of `@physical/worker`, drawn from its pose stream).
+   * The element steps it (do not also call `world.step`), subscribes to its events while
+   * connected, and drops them when disconnected or replaced.
+   *
+   * Reads back typed as a `World` (what nearly every page sets); after setting another source,
+   * read {@link source} for its honest type.
    */
   get world(): World | null {
-    return this.worldValue;
+    return this.worldValue as World | null;
   }
 
-  set world(value: World | null) {
+  set world(value: World | DrawingSource | null) {
     if (value !== null && (typeof value !== 'object' || !('step' in value))) {
-      throw new CanvasSettingError('world', value, 'a World from @physical/engine, or null');
+      throw new CanvasSettingError(
+        'world',
+        value,
+        'a World from @physical/engine, a WorkerWorld from @physical/worker, or null',
+      );
     }
     if (value === this.worldValue) return;
+    this.releaseRemoteDrags();
     this.drags.clear();
     this.unsubscribe();
     this.worldValue = value;
@@ -178,6 +204,11 @@ export class PhysicalCanvasElement extends ElementBase {
     this.loop.reset();
     if (this.isConnectedValue) this.subscribe();
     this.invalidate();
+  }
+
+  /** The world being drawn, as the {@link DrawingSource} it was set as, or null. */
+  get source(): DrawingSource | null {
+    return this.worldValue;
   }
 
   /**
@@ -484,6 +515,7 @@ export class PhysicalCanvasElement extends ElementBase {
     this.loop.suspend('detached');
     this.unsubscribe();
     this.input.detach();
+    this.releaseRemoteDrags();
     this.drags.clear();
     for (const undo of this.teardown) undo();
     this.teardown = [];
@@ -508,7 +540,8 @@ export class PhysicalCanvasElement extends ElementBase {
   private stepWorld(dt: number): void {
     const world = this.worldValue;
     if (world === null) return;
-    this.poses.snapshot(world.bodies);
+    // A remote source keeps its own last two states (see DrawingSource.remote).
+    if (world.remote === undefined) this.poses.snapshot(world.bodies);
     this.stepDuration = dt;
     world.step(dt);
   }
@@ -546,7 +579,10 @@ export class PhysicalCanvasElement extends ElementBase {
     loop.fixedStep = 1 / settings.stepsPerSecond;
     loop.maxStepsPerFrame = settings.maxStepsPerFrame;
     this.arrows.duration = settings.collisionArrowDuration;
-    if (name === 'drag' && !settings.drag) this.drags.clear();
+    if (name === 'drag' && !settings.drag) {
+      this.releaseRemoteDrags();
+      this.drags.clear();
+    }
     if (name === 'collision-arrows') {
       // Listen to collisions only while arrows are on: the events cost the engine time.
       this.unsubscribe();
@@ -566,6 +602,13 @@ export class PhysicalCanvasElement extends ElementBase {
     const value = (this as Record<string, unknown>)[name];
     Reflect.deleteProperty(this, name);
     (this as Record<string, unknown>)[name] = value;
+  }
+
+  /** Lets go of drags held by a remote source, without throwing. */
+  private releaseRemoteDrags(): void {
+    const remote = this.worldValue?.remote;
+    for (const pointerId of this.remoteDrags) remote?.releaseGrab(pointerId, 0, 0, false);
+    this.remoteDrags.clear();
   }
 
   private subscribe(): void {

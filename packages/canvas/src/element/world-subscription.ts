@@ -1,4 +1,5 @@
 import type { CollisionEvent, World } from '@physical/engine';
+import type { DrawingSource } from '../draw/drawing-source.ts';
 
 /** What a {@link WorldSubscription} reports to its element. */
 export interface WorldListener {
@@ -24,16 +25,19 @@ export class WorldSubscription {
 
   /**
    * Listens to `world` (nothing with null); collision events only when `collisions` is true,
-   * since the engine builds them only for listeners. Does nothing while already listening.
+   * since the engine builds them only for listeners (and only from a local World: a remote
+   * source's collisions are its own events). Does nothing while already listening.
    */
-  start(world: World | null, collisions: boolean): void {
+  start(world: DrawingSource | null, collisions: boolean): void {
     if (world === null || this.offs.length > 0) return;
     this.offs.push(
       world.on('wake', this.onChange),
       world.on('bodyAdded', this.onChange),
       world.on('bodyRemoved', this.onChange),
     );
-    if (collisions) this.offs.push(world.on('collision', this.onCollision));
+    if (collisions && world.remote === undefined) {
+      this.offs.push((world as World).on('collision', this.onCollision));
+    }
   }
 
   /** Removes every listener. */

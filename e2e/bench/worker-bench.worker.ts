@@ -1,0 +1,4 @@
+// The benchmark's physics worker.
+import { serveWorld } from '@physical/worker';
+
+serveWorld();

@@ -1,0 +1,42 @@
+import type { Body, ContactView, Joint, Vec2Like } from '@physical/engine';
+import type { Pose } from '../draw/pose.ts';
+
+/**
+ * What `<physical-canvas>` needs from a world to run and draw it. A `World` of
+ * `@physical/engine` is one; so is a world that lives elsewhere (a worker) and keeps page copies
+ * of its bodies: such a source adds {@link RemoteDrawing} as `remote`.
+ */
+export interface DrawingSource {
+  /** The bodies to draw, in drawing order (the engine's `world.bodies`). */
+  readonly bodies: readonly Body[];
+  /** The joints to draw. */
+  readonly joints: readonly Joint[];
+  /** Bodies awake: 0 lets the element stop asking for frames. */
+  readonly awakeBodyCount: number;
+  /** Advances time by `dt` seconds (the element calls it at its fixed step). */
+  step(dt: number): void;
+  /** The body under a world point (m), for dragging and pointer events. */
+  bodyAt(point: Vec2Like): Body | null;
+  /** Visits the contacts (for the `contacts` and `normals` overlays). */
+  forEachContact(visitor: (contact: ContactView) => void): void;
+  /** Listens to changes that need a frame; returns the remover. */
+  on(type: 'wake' | 'bodyAdded' | 'bodyRemoved', listener: () => void): () => void;
+  /** Present when the bodies' poses come from elsewhere (see {@link RemoteDrawing}). */
+  readonly remote?: RemoteDrawing;
+}
+
+/**
+ * A source whose bodies are stepped elsewhere: it supplies the poses to draw (interpolated
+ * between its last two states) and takes the element's pointer drags. The bodies in `bodies` are
+ * page copies whose own pose may lag; only `poseOf` is drawn.
+ */
+export interface RemoteDrawing {
+  /** The pose to draw `body` at, `alpha` of the way from its previous to its current state. */
+  poseOf(body: Body, index: number, alpha: number, out: Pose): Pose;
+  /** A pointer pressed `body` at (x, y) and pulls that point to (toX, toY); false refuses. */
+  grab(pointerId: number, body: Body, x: number, y: number, toX: number, toY: number): boolean;
+  /** The pointer moved the pulled point to (x, y). */
+  moveGrab(pointerId: number, x: number, y: number): void;
+  /** The pointer let go, throwing with velocity (vx, vy) when `isThrow`. */
+  releaseGrab(pointerId: number, vx: number, vy: number, isThrow: boolean): void;
+}

@@ -1,0 +1,179 @@
+import {
+  Body,
+  PhysicalError,
+  box,
+  capsule,
+  distanceJoint,
+  mouseJoint,
+  particle,
+  polygon,
+  prismaticJoint,
+  regularPolygon,
+  revoluteJoint,
+  wall,
+  weldJoint,
+  type BodyOptions,
+  type BoxOptions,
+  type CapsuleOptions,
+  type DistanceJointOptions,
+  type Joint,
+  type MouseJointOptions,
+  type ParticleOptions,
+  type PolygonOptions,
+  type PrismaticJointOptions,
+  type RegularPolygonOptions,
+  type RevoluteJointOptions,
+  type WallOptions,
+  type WeldJointOptions,
+} from '@physical/engine';
+import type { BodyId } from './ids.ts';
+
+// A body or joint crosses to the worker as its definition (the factory's name and options), and
+// both sides build it with the same engine factory: the page first, so bad input throws the
+// engine's own PhysicalError there, then the worker, so both worlds hold the very same body.
+
+/** Listener options cannot cross to a worker (functions do not clone). */
+type Crossing<T> = Omit<T, 'onMove' | 'onCollision'>;
+
+/**
+ * A body for a worker world: the name of an engine factory (`kind`) and its options. `'body'` is
+ * `new Body(options)`; the others are `box`, `particle`, `capsule`, `regularPolygon`, `polygon`
+ * and `wall`. `userData` stays on the page (it is never posted).
+ */
+export type BodyDefinition<UserData = unknown> =
+  | ({ readonly kind: 'body' } & Crossing<BodyOptions<UserData>>)
+  | ({ readonly kind: 'box' } & Crossing<BoxOptions<UserData>>)
+  | ({ readonly kind: 'particle' } & Crossing<ParticleOptions<UserData>>)
+  | ({ readonly kind: 'capsule' } & Crossing<CapsuleOptions<UserData>>)
+  | ({ readonly kind: 'regularPolygon' } & Crossing<RegularPolygonOptions<UserData>>)
+  | ({ readonly kind: 'polygon' } & Crossing<PolygonOptions<UserData>>)
+  | ({ readonly kind: 'wall' } & Crossing<WallOptions<UserData>>);
+
+/** Replaces the joint options' bodies by ids. */
+type WithIds<T, Keys extends string> = Omit<T, Keys | 'userData'> & {
+  readonly [K in Keys]: BodyId;
+};
+
+/**
+ * A joint for a worker world: the name of an engine joint factory (`kind`) and its options, with
+ * body ids in place of bodies.
+ */
+export type JointDefinition =
+  | ({ readonly kind: 'revolute' } & WithIds<RevoluteJointOptions, 'bodyA' | 'bodyB'>)
+  | ({ readonly kind: 'prismatic' } & WithIds<PrismaticJointOptions, 'bodyA' | 'bodyB'>)
+  | ({ readonly kind: 'distance' } & WithIds<DistanceJointOptions, 'bodyA' | 'bodyB'>)
+  | ({ readonly kind: 'weld' } & WithIds<WeldJointOptions, 'bodyA' | 'bodyB'>)
+  | ({ readonly kind: 'mouse' } & WithIds<MouseJointOptions, 'body'>);
+
+const BODY_KINDS = ['body', 'box', 'particle', 'capsule', 'regularPolygon', 'polygon', 'wall'];
+const JOINT_KINDS = ['revolute', 'prismatic', 'distance', 'weld', 'mouse'];
+
+function requireDefinition(
+  definition: unknown,
+  kinds: readonly string[],
+): asserts definition is { kind: string } {
+  if (definition === null || typeof definition !== 'object') {
+    throw new PhysicalError(
+      'definition',
+      `must be an object with a kind, got ${String(definition)}.`,
+    );
+  }
+  const kind = (definition as { kind?: unknown }).kind;
+  if (typeof kind !== 'string' || !kinds.includes(kind)) {
+    throw new PhysicalError('kind', `must be one of ${kinds.join(', ')}, got ${String(kind)}.`);
+  }
+  for (const field of ['onMove', 'onCollision']) {
+    if ((definition as Record<string, unknown>)[field] !== undefined) {
+      throw new PhysicalError(
+        field,
+        `cannot cross to a worker (functions do not clone): listen with workerWorld.on(...).`,
+      );
+    }
+  }
+}
+
+/**
+ * Builds the engine body a definition describes, with the engine's factory (throws its
+ * PhysicalError on bad input). The page and the worker both call it.
+ */
+export function buildBody(definition: BodyDefinition): Body {
+  requireDefinition(definition, BODY_KINDS);
+  const { kind, ...options } = definition;
+  switch (kind) {
+    case 'body':
+      return new Body(options as BodyOptions);
+    case 'box':
+      return box(options as BoxOptions);
+    case 'particle':
+      return particle(options as ParticleOptions);
+    case 'capsule':
+      return capsule(options as CapsuleOptions);
+    case 'regularPolygon':
+      return regularPolygon(options as RegularPolygonOptions);
+    case 'polygon':
+      return polygon(options as PolygonOptions);
+    case 'wall':
+      return wall(options as WallOptions);
+  }
+}
+
+/**
+ * Builds the engine joint a definition describes between the bodies `bodyOf` resolves (throws the
+ * engine's PhysicalError on bad input, or for an unknown body id).
+ */
+export function buildJoint(definition: JointDefinition, bodyOf: (id: BodyId) => Body): Joint {
+  requireDefinition(definition, JOINT_KINDS);
+  if (definition.kind === 'mouse') {
+    const { body, ...rest } = definition;
+    return mouseJoint({ ...withoutKind(rest), body: resolve('body', body, bodyOf) });
+  }
+  const { kind, bodyA, bodyB, ...rest } = definition;
+  const bodies = {
+    bodyA: resolve('bodyA', bodyA, bodyOf),
+    bodyB: resolve('bodyB', bodyB, bodyOf),
+  };
+  switch (kind) {
+    case 'revolute':
+      return revoluteJoint({
+        ...(rest as Omit<RevoluteJointOptions, 'bodyA' | 'bodyB'>),
+        ...bodies,
+      });
+    case 'prismatic':
+      return prismaticJoint({
+        ...(rest as Omit<PrismaticJointOptions, 'bodyA' | 'bodyB'>),
+        ...bodies,
+      });
+    case 'distance':
+      return distanceJoint({
+        ...(rest as Omit<DistanceJointOptions, 'bodyA' | 'bodyB'>),
+        ...bodies,
+      });
+    case 'weld':
+      return weldJoint({ ...(rest as Omit<WeldJointOptions, 'bodyA' | 'bodyB'>), ...bodies });
+  }
+}
+
+function resolve(field: string, id: BodyId, bodyOf: (id: BodyId) => Body): Body {
+  return bodyOf(id) ?? missing(field, id);
+}
+
+function missing(field: string, id: unknown): never {
+  throw new PhysicalError(
+    field,
+    `must be the id of a body in this worker world, got ${String(id)}.`,
+  );
+}
+
+/** The definition as posted: without `userData`, which stays on the page. */
+export function postable<T extends object>(definition: T): T {
+  if (!('userData' in definition)) return definition;
+  const rest = { ...definition } as Record<string, unknown>;
+  delete rest['userData'];
+  return rest as T;
+}
+
+function withoutKind<T extends object>(options: T): Omit<T, 'kind'> {
+  const rest = { ...options } as Record<string, unknown>;
+  delete rest['kind'];
+  return rest as Omit<T, 'kind'>;
+}

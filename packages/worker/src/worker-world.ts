@@ -1,0 +1,839 @@
+import {
+  PhysicalError,
+  World,
+  type Body,
+  type ContactView,
+  type Duration,
+  type Joint,
+  type Vec2,
+  type Vec2Like,
+  type WorldOptions,
+} from '@physical/engine';
+import type { DrawingSource, Pose, RemoteDrawing } from '@physical/canvas';
+import {
+  buildBody,
+  buildJoint,
+  postable,
+  type BodyDefinition,
+  type JointDefinition,
+} from './definitions.ts';
+import type { WorkerEvent, WorkerWorldEvents } from './events.ts';
+import type { OffscreenView } from './offscreen-renderer.ts';
+import type { BodyId, ForceId, JointId } from './ids.ts';
+import { createSharedPoses, POSE_STRIDE, SharedPoses } from './pose-stream.ts';
+import type {
+  BodyOperation,
+  BodyProperty,
+  FromWorker,
+  Query,
+  StreamedEvent,
+  ToWorker,
+  WorldSetting,
+} from './protocol.ts';
+
+/** Options of a {@link WorkerWorld}. */
+export interface WorkerWorldOptions {
+  /** The world's options, as for `new World(options)`. */
+  readonly world?: WorldOptions;
+  /**
+   * Share poses through a SharedArrayBuffer: `'auto'` (default) when the page is cross-origin
+   * isolated, `false` never (each step transfers one typed array instead).
+   */
+  readonly shared?: 'auto' | false;
+  /**
+   * Draw in the worker instead: the canvas from `canvasElement.transferControlToOffscreen()` and
+   * its view. The worker then draws after each step, in `<physical-canvas>`'s default look; drive
+   * the steps with {@link WorkerWorld.run} (do not also give the world to a `<physical-canvas>`).
+   */
+  readonly offscreen?: OffscreenView;
+  /** Bodies the shared pose memory holds (more fall back to transferred poses). Default 4096. */
+  readonly sharedCapacity?: number;
+}
+
+/** A body's full state, as {@link WorkerWorld.getBody} reads it from the worker. */
+export interface WorkerBodyState {
+  readonly position: Vec2;
+  readonly angle: number;
+  readonly linearVelocity: Vec2;
+  readonly angularVelocity: number;
+  readonly isAwake: boolean;
+}
+
+/** A ray hit, as {@link WorkerWorld.rayCast} reads it from the worker. */
+export interface WorkerRayCastHit {
+  readonly body: BodyId;
+  readonly point: Vec2;
+  readonly normal: Vec2;
+  readonly fraction: number;
+}
+
+/** The part of a `Worker` a {@link WorkerWorld} uses (a `MessagePort` works too, in tests). */
+export interface WorkerLike {
+  postMessage(message: unknown, transfer?: Transferable[]): void;
+  addEventListener(type: string, listener: (event: Event) => void): void;
+  terminate?(): void;
+}
+
+const STREAMED: readonly StreamedEvent[] = [
+  'collision',
+  'contactBegin',
+  'contactEnd',
+  'sensorBegin',
+  'sensorEnd',
+  'move',
+];
+
+type Listener = (...args: never[]) => void;
+
+/**
+ * A world that lives in a Web Worker, driven from the page with the API of `World` for what a page
+ * does. Bodies and joints are plain ids ({@link BodyId}, {@link JointId}); every call is checked
+ * on the page with the engine's own factories and setters (the same `PhysicalError`, the same
+ * field, thrown synchronously), then posted, and the worker replays the calls in order: it steps
+ * exactly as the same world would on the page.
+ *
+ * Each step, the worker sends the poses of the bodies that moved (one transferred `Float32Array`,
+ * or shared memory when the page is cross-origin isolated) and the step's events, batched. Give it
+ * to `<physical-canvas>` (`canvas.world = workerWorld`) to draw it: the canvas drives its steps
+ * and interpolates between the last two.
+ *
+ * ```ts
+ * const world = new WorkerWorld(new Worker(new URL('./physics.worker.ts', import.meta.url), { type: 'module' }));
+ * const ball = world.add({ kind: 'particle', radius: 0.2, position: { x: 1, y: 0 } });
+ * world.applyImpulse(ball, { x: 2, y: 0 });
+ * ```
+ */
+export class WorkerWorld implements DrawingSource {
+  /** True when poses come through shared memory (the page is cross-origin isolated). */
+  readonly isShared: boolean;
+  /** Bytes of pose data received in the last applied step(s) (transferred mode; 0 when shared). */
+  lastPoseBytes = 0;
+  private readonly worker: WorkerLike;
+  /** Page copies of the bodies and joints: for checking input, drawing and hit-testing. */
+  private readonly mirror: World;
+  private readonly bodyById = new Map<number, Body>();
+  private readonly idByBody = new Map<Body, number>();
+  private readonly jointById = new Map<number, Joint>();
+  private readonly listeners = new Map<keyof WorkerWorldEvents, Set<Listener>>();
+  private readonly pending = new Map<
+    number,
+    { resolve: (value: unknown) => void; reject: (error: Error) => void }
+  >();
+  private readonly shared: SharedPoses | null;
+  private nextBodyId = 1;
+  private nextJointId = 1;
+  private nextForceId = 1;
+  private nextQueryId = 1;
+  // Poses by id: the current (last applied step) and the one before, for interpolation.
+  private current = new Float64Array(0);
+  private previous = new Float64Array(0);
+  private readonly touched: number[] = [];
+  /** The batch in which each id was last touched. */
+  private stamps = new Int32Array(0);
+  private batch = 0;
+  /** Requested steps when the page last changed the world: it counts as awake until then. */
+  private changedAt = 0;
+  /** Bodies whose mirror pose is behind `current` (synced before a page-side query). */
+  private readonly stale = new Set<number>();
+  private readonly frames: Float32Array[] = [];
+  private sharedFrame = 0;
+  private awake = 0;
+  private stepsValue = 0;
+  private sentSteps = 0;
+  private failure: Error | null = null;
+  private listening = '';
+
+  constructor(worker: WorkerLike, options: WorkerWorldOptions = {}) {
+    if (options === null || typeof options !== 'object') {
+      throw new PhysicalError('options', `must be an object, got ${String(options)}.`);
+    }
+    this.worker = worker;
+    this.mirror = new World(options.world ?? {});
+    const isolated =
+      typeof SharedArrayBuffer !== 'undefined' &&
+      (globalThis as { crossOriginIsolated?: boolean }).crossOriginIsolated === true;
+    const capacity = options.sharedCapacity ?? 4096;
+    if (!Number.isInteger(capacity) || capacity < 1) {
+      throw new PhysicalError(
+        'sharedCapacity',
+        `must be a positive integer, got ${String(capacity)}.`,
+      );
+    }
+    const memory = options.shared !== false && isolated ? createSharedPoses(capacity) : null;
+    this.shared = memory === null ? null : new SharedPoses(memory);
+    this.isShared = memory !== null;
+    worker.addEventListener('message', (event) =>
+      this.receive((event as MessageEvent).data as FromWorker),
+    );
+    worker.addEventListener('error', (event) => {
+      const message = (event as ErrorEvent).message;
+      this.fail(new Error(`the physics worker failed: ${message || 'an error (see the console)'}`));
+    });
+    worker.addEventListener('messageerror', () =>
+      this.fail(new Error('a message from the physics worker could not be read')),
+    );
+    const offscreen = options.offscreen ?? null;
+    this.post(
+      { type: 'init', options: options.world ?? {}, shared: memory, offscreen },
+      offscreen === null ? [] : [offscreen.canvas],
+    );
+  }
+
+  // ------------------------------------------------------------------ bodies and joints
+
+  /**
+   * Adds a body built from `definition` (a factory name and its options) and returns its id.
+   * Bad options throw the engine's PhysicalError here, before anything is posted.
+   */
+  add<UserData>(definition: BodyDefinition<UserData>): BodyId {
+    const body = buildBody(definition);
+    this.mirror.add(body);
+    const id = this.nextBodyId++;
+    this.bodyById.set(id, body);
+    this.idByBody.set(body, id);
+    this.ensureCapacity(id);
+    const position = body.position;
+    for (const poses of [this.current, this.previous]) {
+      poses[3 * id] = position.x;
+      poses[3 * id + 1] = position.y;
+      poses[3 * id + 2] = body.angle;
+    }
+    this.post({ type: 'add', id, definition: postable(definition) });
+    this.changed();
+    this.emit('bodyAdded');
+    return id as BodyId;
+  }
+
+  /** Removes a body (and its joints). Unknown ids throw a PhysicalError naming `id`. */
+  remove(id: BodyId): void {
+    const body = this.requireBody(id);
+    for (const [jointId, joint] of this.jointById) {
+      if (joint.bodyA === body || joint.bodyB === body) this.jointById.delete(jointId);
+    }
+    this.mirror.remove(body);
+    this.bodyById.delete(id);
+    this.idByBody.delete(body);
+    this.stale.delete(id);
+    this.post({ type: 'remove', id });
+    this.emit('bodyRemoved');
+  }
+
+  /** True while the body is in the world. */
+  has(id: BodyId): boolean {
+    return this.bodyById.has(id);
+  }
+
+  /** Ids of the bodies, in the world's order. */
+  get bodyIds(): BodyId[] {
+    return this.mirror.bodies.map((body) => this.idByBody.get(body)! as BodyId);
+  }
+
+  /** Adds a joint between bodies of this world (ids in place of bodies) and returns its id. */
+  addJoint(definition: JointDefinition): JointId {
+    const joint = buildJoint(definition, (id) => this.requireBody(id, 'body'));
+    this.mirror.addJoint(joint);
+    const id = this.nextJointId++;
+    this.jointById.set(id, joint);
+    this.post({ type: 'addJoint', id, definition });
+    this.changed();
+    return id as JointId;
+  }
+
+  /** Removes a joint. */
+  removeJoint(id: JointId): void {
+    const joint = this.jointById.get(id);
+    if (joint === undefined) throw new PhysicalError('id', `no joint ${String(id)} in this world.`);
+    this.jointById.delete(id);
+    if (joint.world !== null) this.mirror.removeJoint(joint);
+    this.post({ type: 'removeJoint', id });
+  }
+
+  /**
+   * The page's copy of a body, for styles (`canvas.setStyle(world.bodyOf(id), style)`), its
+   * shapes, type and `userData`. Its pose is not kept up to date: read {@link position}.
+   */
+  bodyOf(id: BodyId): Body {
+    return this.requireBody(id);
+  }
+
+  /** The id of a page copy of a body (as `<physical-canvas>` events report bodies), or null. */
+  idOf(body: Body): BodyId | null {
+    return (this.idByBody.get(body) ?? null) as BodyId | null;
+  }
+
+  // ------------------------------------------------------------------ forces and velocities
+
+  /**
+   * Applies a force (N) for a duration (see `Body.applyForce`); returns its id, for
+   * {@link removeForce}.
+   */
+  applyForce(
+    id: BodyId,
+    force: Vec2Like,
+    options: { duration?: Duration; point?: Vec2Like } = {},
+  ): ForceId {
+    const body = this.requireBody(id);
+    body.removeForce(body.applyForce(force, options));
+    const forceId = this.nextForceId++;
+    this.operate(id, {
+      op: 'applyForce',
+      force: { x: force.x, y: force.y },
+      duration: options.duration,
+      ...(options.point === undefined ? {} : { point: { x: options.point.x, y: options.point.y } }),
+      forceId,
+    });
+    return forceId as ForceId;
+  }
+
+  /** Applies a torque (N m) for a duration; returns its id. */
+  applyTorque(id: BodyId, torque: number, options: { duration?: Duration } = {}): ForceId {
+    const body = this.requireBody(id);
+    body.removeForce(body.applyTorque(torque, options));
+    const forceId = this.nextForceId++;
+    this.operate(id, { op: 'applyTorque', torque, duration: options.duration, forceId });
+    return forceId as ForceId;
+  }
+
+  /** Stops a force or torque before its duration ends. */
+  removeForce(id: BodyId, force: ForceId): void {
+    this.requireBody(id);
+    this.operate(id, { op: 'removeForce', forceId: force });
+  }
+
+  /** Removes every force of a body. */
+  clearForces(id: BodyId): void {
+    this.requireBody(id);
+    this.operate(id, { op: 'clearForces' });
+  }
+
+  /** Applies an impulse (N s) at a world point (default: the centre of mass). */
+  applyImpulse(id: BodyId, impulse: Vec2Like, point?: Vec2Like): void {
+    const body = this.requireBody(id);
+    checkOnCopy(body, (copy) => copy.applyImpulse(impulse, point));
+    this.operate(id, {
+      op: 'applyImpulse',
+      impulse: { x: impulse.x, y: impulse.y },
+      ...(point === undefined ? {} : { point: { x: point.x, y: point.y } }),
+    });
+  }
+
+  /** Applies an angular impulse (N m s). */
+  applyAngularImpulse(id: BodyId, impulse: number): void {
+    const body = this.requireBody(id);
+    checkOnCopy(body, (copy) => copy.applyAngularImpulse(impulse));
+    this.operate(id, { op: 'applyAngularImpulse', impulse });
+  }
+
+  /** Sets the velocity of the centre of mass (m/s). */
+  setLinearVelocity(id: BodyId, velocity: Vec2Like): void {
+    this.set(id, 'linearVelocity', { x: velocity.x, y: velocity.y });
+  }
+
+  /** Sets the angular velocity (rad/s). */
+  setAngularVelocity(id: BodyId, velocity: number): void {
+    this.set(id, 'angularVelocity', velocity);
+  }
+
+  /** Teleports a body (m); it is drawn there at once. */
+  setPosition(id: BodyId, position: Vec2Like): void {
+    this.set(id, 'position', { x: position.x, y: position.y });
+  }
+
+  /** Turns a body (rad); it is drawn so at once. */
+  setAngle(id: BodyId, angle: number): void {
+    this.set(id, 'angle', angle);
+  }
+
+  /**
+   * Sets a property of a body as `body[property] = value` would (checked on the page copy first:
+   * the same PhysicalError).
+   */
+  set(id: BodyId, property: BodyProperty, value: unknown): void {
+    const body = this.requireBody(id);
+    (body as unknown as Record<string, unknown>)[property] = value;
+    if (property === 'position' || property === 'angle') {
+      const position = body.position;
+      for (const poses of [this.current, this.previous]) {
+        poses[3 * id] = position.x;
+        poses[3 * id + 1] = position.y;
+        poses[3 * id + 2] = body.angle;
+      }
+    }
+    this.operate(id, { op: 'set', property, value });
+  }
+
+  /** Wakes a body. */
+  wake(id: BodyId): void {
+    this.requireBody(id);
+    this.operate(id, { op: 'wake' });
+  }
+
+  /** Puts a body to sleep. */
+  sleep(id: BodyId): void {
+    this.requireBody(id);
+    this.operate(id, { op: 'sleep' });
+  }
+
+  // ------------------------------------------------------------------ settings
+
+  /** Gravity (m/s^2). */
+  get gravity(): Readonly<Vec2> {
+    return this.mirror.gravity;
+  }
+
+  set gravity(value: Vec2Like) {
+    this.setting('gravity', value, { x: value.x, y: value.y });
+  }
+
+  /** Sub-steps per step. */
+  get subSteps(): number {
+    return this.mirror.subSteps;
+  }
+
+  set subSteps(value: number) {
+    this.setting('subSteps', value, value);
+  }
+
+  /** Restitution threshold (m/s). */
+  get restitutionThreshold(): number {
+    return this.mirror.restitutionThreshold;
+  }
+
+  set restitutionThreshold(value: number) {
+    this.setting('restitutionThreshold', value, value);
+  }
+
+  /** Whether resting bodies sleep. */
+  get enableSleep(): boolean {
+    return this.mirror.enableSleep;
+  }
+
+  set enableSleep(value: boolean) {
+    this.setting('enableSleep', value, value);
+  }
+
+  // ------------------------------------------------------------------ time
+
+  /**
+   * Asks the worker for one step of `dt` seconds (default 1/60), after every change made so far.
+   * Applies the poses of the steps that arrived since the last call first: the page is drawn one
+   * step behind the worker, and never waits for it.
+   */
+  step(dt: number = 1 / 60): void {
+    if (!(dt > 0) || !Number.isFinite(dt)) {
+      throw new PhysicalError(
+        'dt',
+        `must be a positive, finite number of seconds, got ${String(dt)}.`,
+      );
+    }
+    this.applyArrived();
+    this.sentSteps++;
+    this.post({ type: 'step', dt, count: 1 });
+  }
+
+  /**
+   * Steps the world at `stepsPerSecond` from the page's animation frames, without a
+   * `<physical-canvas>` (for a world drawn in the worker, see `offscreen`); at most 4 steps a
+   * frame. Returns a function that stops it.
+   */
+  run(stepsPerSecond = 60): () => void {
+    if (!(stepsPerSecond > 0) || !Number.isFinite(stepsPerSecond)) {
+      throw new PhysicalError(
+        'stepsPerSecond',
+        `must be a positive number, got ${String(stepsPerSecond)}.`,
+      );
+    }
+    const dt = 1 / stepsPerSecond;
+    let last = -1;
+    let debt = 0;
+    let handle = 0;
+    const frame = (now: number): void => {
+      debt = last < 0 ? dt : Math.min(debt + (now - last) / 1000, 4 * dt);
+      last = now;
+      while (debt >= dt && this.failure === null) {
+        this.step(dt);
+        debt -= dt;
+      }
+      if (this.failure === null) handle = requestAnimationFrame(frame);
+    };
+    handle = requestAnimationFrame(frame);
+    return () => cancelAnimationFrame(handle);
+  }
+
+  /** Steps whose poses the page has applied. */
+  get steps(): number {
+    return this.stepsValue;
+  }
+
+  /** Steps asked for so far. */
+  get requestedSteps(): number {
+    return this.sentSteps;
+  }
+
+  /**
+   * Resolves once the worker has handled everything posted so far, with its poses applied: after
+   * `await world.flush()`, {@link position} reads the state after the last {@link step}.
+   */
+  async flush(): Promise<void> {
+    await this.ask({ kind: 'hash' });
+    this.applyArrived();
+  }
+
+  /** Awake bodies after the last applied step. */
+  get awakeBodyCount(): number {
+    // Until a step asked for after the page's last change has come back, the change may have
+    // woken something: count one, so a canvas keeps stepping.
+    if (this.awake === 0 && this.stepsValue <= this.changedAt) return 1;
+    return this.awake;
+  }
+
+  // ------------------------------------------------------------------ poses and queries
+
+  /** Position (m) of a body after the last applied step (a new object). */
+  position(id: BodyId): Vec2 {
+    this.requireBody(id);
+    return { x: this.current[3 * id]!, y: this.current[3 * id + 1]! };
+  }
+
+  /** Angle (rad) of a body after the last applied step. */
+  angle(id: BodyId): number {
+    this.requireBody(id);
+    return this.current[3 * id + 2]!;
+  }
+
+  /**
+   * The body under a world point (m) at the last applied step, or null; answered on the page at
+   * once (from the poses), as `World.bodyAt`.
+   */
+  bodyIdAt(point: Vec2Like): BodyId | null {
+    const body = this.bodyAt(point);
+    return body === null ? null : (this.idByBody.get(body)! as BodyId);
+  }
+
+  /** The full state of a body, read from the worker. */
+  getBody(id: BodyId): Promise<WorkerBodyState | null> {
+    return this.ask({ kind: 'body', id }) as Promise<WorkerBodyState | null>;
+  }
+
+  /** The first body hit by a ray, read from the worker. */
+  rayCast(from: Vec2Like, to: Vec2Like): Promise<WorkerRayCastHit | null> {
+    this.mirror.rayCast(from, to); // checks the points
+    return this.ask({
+      kind: 'rayCast',
+      from: { x: from.x, y: from.y },
+      to: { x: to.x, y: to.y },
+    }) as Promise<WorkerRayCastHit | null>;
+  }
+
+  /** Bodies whose boxes overlap a box (m), read from the worker. */
+  bodiesInAABB(box: { minX: number; minY: number; maxX: number; maxY: number }): Promise<BodyId[]> {
+    this.mirror.bodiesInAABB(box);
+    const { minX, minY, maxX, maxY } = box;
+    return this.ask({ kind: 'bodiesInAABB', box: { minX, minY, maxX, maxY } }) as Promise<BodyId[]>;
+  }
+
+  /**
+   * The worker world's state hash (FNV-1a over every body's float64 position, angle and
+   * velocities; see `worldStateHash`), after everything posted so far.
+   */
+  stateHash(): Promise<string> {
+    return this.ask({ kind: 'hash' }) as Promise<string>;
+  }
+
+  // ------------------------------------------------------------------ events
+
+  /**
+   * Listens to an event. Step events (`collision`, `contactBegin`, `contactEnd`, `sensorBegin`,
+   * `sensorEnd`, `move`) arrive batched, once per step, in the engine's order; the worker records
+   * only the kinds someone listens to. Returns a function that removes the listener.
+   */
+  on<K extends keyof WorkerWorldEvents>(type: K, listener: WorkerWorldEvents[K]): () => void {
+    let set = this.listeners.get(type);
+    if (set === undefined) {
+      set = new Set();
+      this.listeners.set(type, set);
+    }
+    set.add(listener as Listener);
+    this.updateListening();
+    return () => this.off(type, listener);
+  }
+
+  /** Removes a listener added with {@link on}. */
+  off<K extends keyof WorkerWorldEvents>(type: K, listener: WorkerWorldEvents[K]): void {
+    this.listeners.get(type)?.delete(listener as Listener);
+    this.updateListening();
+  }
+
+  /** Stops the worker. The world cannot be used afterwards. */
+  terminate(): void {
+    this.post({ type: 'close' });
+    this.worker.terminate?.();
+    this.fail(new Error('the worker world was terminated'), false);
+  }
+
+  // ------------------------------------------------------------------ DrawingSource
+
+  /**
+   * The page copies of the bodies (for `<physical-canvas>`): their shapes, type and userData;
+   * their own poses lag (read {@link position}).
+   */
+  get bodies(): readonly Body[] {
+    // Not synced: the canvas draws them at `remote.poseOf`, and syncing 2,000 copies each frame
+    // would cost the main thread what the worker saves it.
+    return this.mirror.bodies;
+  }
+
+  /** The page copies of the joints (for `<physical-canvas>`). */
+  get joints(): readonly Joint[] {
+    return this.mirror.joints;
+  }
+
+  /** The page copy under a world point (m), or null (for `<physical-canvas>`'s hit-testing). */
+  bodyAt(point: Vec2Like): Body | null {
+    this.syncCopies();
+    return this.mirror.bodyAt(point);
+  }
+
+  /** Contacts are not streamed: visits none. */
+  forEachContact(_visitor: (contact: ContactView) => void): void {}
+
+  /** How `<physical-canvas>` draws and drags this world. */
+  readonly remote: RemoteDrawing = {
+    poseOf: (body: Body, _index: number, alpha: number, out: Pose): Pose => {
+      const id = this.idByBody.get(body);
+      if (id === undefined) {
+        out.x = body.position.x;
+        out.y = body.position.y;
+        out.angle = body.angle;
+        return out;
+      }
+      const k = 3 * id;
+      const beta = 1 - alpha;
+      const current = this.current;
+      const previous = this.previous;
+      out.x = beta * previous[k]! + alpha * current[k]!;
+      out.y = beta * previous[k + 1]! + alpha * current[k + 1]!;
+      out.angle = beta * previous[k + 2]! + alpha * current[k + 2]!;
+      return out;
+    },
+    grab: (pointerId, body, x, y, toX, toY) => {
+      const id = this.idByBody.get(body);
+      if (id === undefined || body.type !== 'dynamic') return false;
+      this.post({ type: 'grab', pointerId, id, x, y, toX, toY });
+      this.changed();
+      return true;
+    },
+    // A held body may have fallen asleep (and the canvas gone idle): moving or letting go
+    // wakes it in the worker, and the canvas here.
+    moveGrab: (pointerId, x, y) => {
+      this.post({ type: 'grabMove', pointerId, x, y });
+      this.changed();
+    },
+    releaseGrab: (pointerId, vx, vy, isThrow) => {
+      this.post({ type: 'grabEnd', pointerId, vx, vy, isThrow });
+      this.changed();
+    },
+  };
+
+  // ------------------------------------------------------------------ internals
+
+  private requireBody(id: BodyId, field = 'id'): Body {
+    const body = this.bodyById.get(id);
+    if (body === undefined) {
+      throw new PhysicalError(field, `must be the id of a body in this world, got ${String(id)}.`);
+    }
+    return body;
+  }
+
+  private operate(id: number, operation: BodyOperation): void {
+    this.post({ type: 'body', id, operation });
+    this.changed();
+  }
+
+  /** The page changed the world: a sleeping canvas wakes up. */
+  private changed(): void {
+    this.changedAt = this.sentSteps;
+    this.emit('wake');
+  }
+
+  private setting(name: WorldSetting, value: unknown, posted: unknown): void {
+    (this.mirror as unknown as Record<string, unknown>)[name] = value;
+    this.post({ type: 'setting', name, value: posted });
+    this.changed();
+  }
+
+  private post(message: ToWorker, transfer: Transferable[] = []): void {
+    if (this.failure !== null) throw this.failure;
+    this.worker.postMessage(message, transfer);
+  }
+
+  private ask(query: Query): Promise<unknown> {
+    if (this.failure !== null) return Promise.reject(this.failure);
+    const queryId = this.nextQueryId++;
+    return new Promise((resolve, reject) => {
+      this.pending.set(queryId, { resolve, reject });
+      this.post({ type: 'query', queryId, query });
+    });
+  }
+
+  private receive(message: FromWorker): void {
+    switch (message.type) {
+      case 'frame':
+        if (message.poses !== null) this.frames.push(message.poses);
+        this.awake = message.awake;
+        if (message.events !== null) this.dispatch(message.events as WorkerEvent[]);
+        if (message.poses === null) this.frames.push(EMPTY); // a shared frame: read at apply
+        return;
+      case 'reply': {
+        const entry = this.pending.get(message.queryId);
+        this.pending.delete(message.queryId);
+        entry?.resolve(message.value);
+        return;
+      }
+      case 'failure': {
+        const error =
+          message.field === null
+            ? new Error(message.message)
+            : new PhysicalError(message.field, message.message.replace(`${message.field}: `, ''));
+        this.emit('error', error);
+        return;
+      }
+    }
+  }
+
+  private dispatch(events: readonly WorkerEvent[]): void {
+    for (const event of events) {
+      const set = this.listeners.get(event.type);
+      if (set === undefined) continue;
+      for (const listener of set) (listener as (event: WorkerEvent) => void)(event);
+    }
+  }
+
+  /** Applies the poses of every step that arrived since the last call. */
+  private applyArrived(): void {
+    const frames = this.frames;
+    if (frames.length === 0) return;
+    const current = this.current;
+    const previous = this.previous;
+    // Bodies that moved in the last applied batch stop blending (their previous catches up).
+    for (const id of this.touched) {
+      const k = 3 * id;
+      previous[k] = current[k]!;
+      previous[k + 1] = current[k + 1]!;
+      previous[k + 2] = current[k + 2]!;
+    }
+    this.touched.length = 0;
+    this.batch++;
+    let bytes = 0;
+    for (const frame of frames) {
+      if (frame === EMPTY) {
+        if (this.shared !== null) this.readShared();
+        continue;
+      }
+      bytes += frame.byteLength;
+      this.applyPoses(frame, frame.length / POSE_STRIDE);
+    }
+    this.stepsValue += frames.length;
+    frames.length = 0;
+    this.lastPoseBytes = bytes;
+    this.emit('frame', this.stepsValue);
+  }
+
+  private readShared(): void {
+    const shared = this.shared!;
+    const frame = shared.frame;
+    if (frame === this.sharedFrame) return;
+    this.sharedFrame = frame;
+    const { poses, count } = shared.read(frame);
+    this.applyPoses(poses, count);
+  }
+
+  private applyPoses(poses: Float32Array, count: number): void {
+    const current = this.current;
+    const previous = this.previous;
+    for (let i = 0; i < count; i++) {
+      const n = POSE_STRIDE * i;
+      const id = poses[n]!;
+      if (!this.bodyById.has(id)) continue; // removed since
+      const k = 3 * id;
+      if (this.stamps[id] !== this.batch) {
+        this.stamps[id] = this.batch;
+        this.touched.push(id);
+      }
+      this.stale.add(id);
+      previous[k] = current[k]!;
+      previous[k + 1] = current[k + 1]!;
+      previous[k + 2] = current[k + 2]!;
+      current[k] = poses[n + 1]!;
+      current[k + 1] = poses[n + 2]!;
+      current[k + 2] = poses[n + 3]!;
+    }
+  }
+
+  /** Brings the page copies' poses up to date (only for queries: drawing reads `current`). */
+  private syncCopies(): void {
+    if (this.stale.size === 0) return;
+    const current = this.current;
+    for (const id of this.stale) {
+      const body = this.bodyById.get(id);
+      if (body === undefined) continue;
+      const k = 3 * id;
+      body.position = { x: current[k]!, y: current[k + 1]! };
+      body.angle = current[k + 2]!;
+    }
+    this.stale.clear();
+  }
+
+  private ensureCapacity(id: number): void {
+    if (this.current.length >= 3 * (id + 1)) return;
+    const size = Math.max(3 * (id + 1), 2 * this.current.length, 3 * 64);
+    const current = new Float64Array(size);
+    current.set(this.current);
+    const previous = new Float64Array(size);
+    previous.set(this.previous);
+    this.current = current;
+    this.previous = previous;
+    const stamps = new Int32Array(size / 3 + 1);
+    stamps.set(this.stamps);
+    this.stamps = stamps;
+  }
+
+  private updateListening(): void {
+    const events = STREAMED.filter((type) => (this.listeners.get(type)?.size ?? 0) > 0);
+    const key = events.join(',');
+    if (key === this.listening) return;
+    this.listening = key;
+    this.post({ type: 'listen', events });
+  }
+
+  private emit<K extends keyof WorkerWorldEvents>(
+    type: K,
+    ...args: Parameters<WorkerWorldEvents[K]>
+  ): void {
+    const set = this.listeners.get(type);
+    if (set === undefined) return;
+    for (const listener of set) (listener as (...a: unknown[]) => void)(...args);
+  }
+
+  private fail(error: Error, report = true): void {
+    if (this.failure !== null) return;
+    this.failure = error;
+    for (const { reject } of this.pending.values()) reject(error);
+    this.pending.clear();
+    if (report) this.emit('error', error);
+  }
+}
+
+/** Marks a frame whose poses are in shared memory. */
+const EMPTY = new Float32Array(0);
+
+/** Runs a check that changes the body on the page copy, then puts its velocity back. */
+function checkOnCopy(body: Body, change: (copy: Body) => void): void {
+  const v = body.linearVelocity;
+  const vx = v.x;
+  const vy = v.y;
+  const w = body.angularVelocity;
+  change(body);
+  body.linearVelocity = { x: vx, y: vy };
+  body.angularVelocity = w;
+}

@@ -1,0 +1,140 @@
+import { MessageChannel, type MessagePort } from 'node:worker_threads';
+import { afterEach, describe, expect, it } from 'vitest';
+import { PhysicalError, World, box, revoluteJoint, wall } from '@physical/engine';
+import type { DrawingSource } from '@physical/canvas';
+import { serveWorld, WorkerWorld, worldStateHash, type WorkerLike } from '@physical/worker';
+
+// The page and the worker joined by a MessageChannel in one Node process: the same messages,
+// clones and transfers as a real worker, without a browser.
+const ports: MessagePort[] = [];
+afterEach(() => {
+  for (const port of ports.splice(0)) port.close();
+});
+
+function connect(): WorkerWorld {
+  const { port1, port2 } = new MessageChannel();
+  ports.push(port1, port2);
+  serveWorld(port2 as unknown as Parameters<typeof serveWorld>[0]);
+  port2.start();
+  const world = new WorkerWorld(port1 as unknown as WorkerLike);
+  port1.start();
+  return world;
+}
+
+describe('WorkerWorld', () => {
+  // Up to 30 s: a busy machine delays the channel's messages, never the result.
+  it(
+    'steps exactly as the same world on the page (same state hash after 120 steps)',
+    { timeout: 30_000 },
+    async () => {
+      const local = new World();
+      const remote = connect();
+      local.add(wall({ from: { x: -5, y: 5 }, to: { x: 5, y: 5 } }));
+      remote.add({ kind: 'wall', from: { x: -5, y: 5 }, to: { x: 5, y: 5 } });
+      const ids = [];
+      for (let i = 0; i < 20; i++) {
+        const options = {
+          width: 0.5,
+          height: 0.4,
+          position: { x: (i % 5) * 0.6 - 1.5, y: 4 - Math.floor(i / 5) * 0.5 },
+          angle: i * 0.01,
+        };
+        local.add(box(options));
+        ids.push(remote.add({ kind: 'box', ...options }));
+      }
+      local.bodies[3]!.applyForce({ x: 5, y: 0 }, { duration: 0.5 });
+      remote.applyForce(ids[2]!, { x: 5, y: 0 }, { duration: 0.5 });
+      local.bodies[5]!.applyImpulse({ x: 0, y: -2 });
+      remote.applyImpulse(ids[4]!, { x: 0, y: -2 });
+      for (let i = 0; i < 120; i++) {
+        local.step(1 / 60);
+        remote.step(1 / 60);
+      }
+      expect(await remote.stateHash()).toBe(worldStateHash(local));
+      // A changed world hashes differently: the comparison can fail.
+      local.step(1 / 60);
+      expect(await remote.stateHash()).not.toBe(worldStateHash(local));
+    },
+  );
+
+  it('streams the poses of moved bodies and applies them at the next step', async () => {
+    const world = connect();
+    const ball = world.add({ kind: 'particle', radius: 0.2, position: { x: 0, y: 0 } });
+    world.add({ kind: 'wall', from: { x: -5, y: 5 }, to: { x: 5, y: 5 } });
+    for (let i = 0; i < 30; i++) world.step(1 / 60);
+    await world.flush();
+    expect(world.steps).toBe(30);
+    // Free fall for 0.5 s, 4 sub-steps of h = dt / 4 with symplectic Euler: y = g h^2 m(m+1)/2
+    // after m = 120 sub-steps (float32 poses: 6 digits).
+    const h = 1 / 240;
+    expect(world.position(ball).y).toBeCloseTo((9.81 * h * h * 120 * 121) / 2, 5);
+    // Only the ball moves: 16 bytes (id, x, y, angle as float32) per step.
+    world.step(1 / 60);
+    await world.flush();
+    expect(world.lastPoseBytes).toBe(16);
+  });
+
+  it('refuses bad input on the page with the engine’s PhysicalError and field', () => {
+    const world = connect();
+    const inThread = (build: () => unknown): string => {
+      try {
+        build();
+      } catch (error) {
+        return (error as PhysicalError).field;
+      }
+      return 'none';
+    };
+    const fieldOf = (call: () => unknown): string => {
+      try {
+        call();
+      } catch (error) {
+        expect(error).toBeInstanceOf(PhysicalError);
+        return (error as PhysicalError).field;
+      }
+      return 'none';
+    };
+    expect(fieldOf(() => world.add({ kind: 'box', width: -1, height: 1 }))).toBe(
+      inThread(() => box({ width: -1, height: 1 })),
+    );
+    const id = world.add({ kind: 'box', width: 1, height: 1 });
+    expect(fieldOf(() => world.setLinearVelocity(id, { x: Number.NaN, y: 0 }))).toBe(
+      inThread(() => {
+        box({ width: 1, height: 1 }).linearVelocity = { x: Number.NaN, y: 0 };
+      }),
+    );
+    expect(fieldOf(() => world.applyForce(id, { x: 1, y: 0 }, { duration: -2 }))).toBe(
+      inThread(() => box({ width: 1, height: 1 }).applyForce({ x: 1, y: 0 }, { duration: -2 })),
+    );
+    expect(fieldOf(() => (world.gravity = { x: Number.POSITIVE_INFINITY, y: 0 }))).toBe(
+      inThread(() => (new World().gravity = { x: Number.POSITIVE_INFINITY, y: 0 })),
+    );
+    const other = world.add({ kind: 'box', width: 1, height: 1 });
+    expect(
+      fieldOf(() =>
+        world.addJoint({
+          kind: 'revolute',
+          bodyA: id,
+          bodyB: other,
+          anchor: { x: Number.NaN, y: 0 },
+        }),
+      ),
+    ).toBe(
+      inThread(() =>
+        revoluteJoint({
+          bodyA: box({ width: 1, height: 1 }),
+          bodyB: box({ width: 1, height: 1 }),
+          anchor: { x: Number.NaN, y: 0 },
+        }),
+      ),
+    );
+    expect(fieldOf(() => world.remove(999 as never))).toBe('id');
+    expect(
+      fieldOf(() => world.add({ kind: 'box', width: 1, height: 1, onMove: () => {} } as never)),
+    ).toBe('onMove');
+  });
+
+  it('is a drawing source for <physical-canvas>, as World is', () => {
+    const sources: DrawingSource[] = [new World(), connect()];
+    expect(sources.every((source) => typeof source.step === 'function')).toBe(true);
+  });
+});
