@@ -55,6 +55,6 @@ describe('shape queries accept polygons', () => {
     expect(w.overlapShape(triangle, { position: { x: 0, y: 1 } }).length).toBe(0);
     // Only the L's vertical arm reaches down to the box at y = 2.5 .. 3.5.
     expect(w.overlapShape(ell, { position: { x: 0, y: 1.2 } }).length).toBe(1);
-    expect(w.overlapShape(ell, { position: { x: 1, y: 1.2 } }).length).toBe(0);
+    expect(w.overlapShape(ell, { position: { x: 1.2, y: 1.2 } }).length).toBe(0);
   });
 });
