@@ -1,6 +1,7 @@
 import { LINEAR_SLOP, MAX_POLYGON_VERTICES } from '../core/constants.ts';
 import { PhysicalError } from '../core/errors.ts';
 import {
+  describeValue,
   MAX_SIZE,
   requireAngle,
   requireCoordinate,
@@ -85,7 +86,7 @@ export function prepareOutline(points: ArrayLike<Vec2Like>, field: string): Outl
   if (points === null || typeof points !== 'object' || typeof points.length !== 'number') {
     throw new PhysicalError(
       verticesField,
-      `must be a list of points { x, y } in metres, got ${String(points)}.`,
+      `must be a list of points { x, y } in metres, got ${describeValue(points)}.`,
     );
   }
   const inputCount = points.length;

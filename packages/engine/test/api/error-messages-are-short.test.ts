@@ -18,7 +18,7 @@ describe('error messages are short', () => {
       () => particle({ radius: 1 }).applyForce({ x: 1, y: 0 }, { duration: huge as never }),
     ],
     ['a vector', () => particle({ radius: 1, position: huge as never })],
-    ['an event name', () => new World().on(huge as never, () => {})],
+    ['an event name', () => new World().on(huge as never, (() => {}) as never)],
     ['a flag', () => particle({ radius: 1, bullet: huge as never })],
     ['world options', () => new World(huge as never)],
     ['a body to add', () => new World().add(huge as never)],

@@ -67,7 +67,7 @@ describe('snapshots restore every world', () => {
         world.step();
         roundTrip(world);
       }),
-      { seed: 15, numRuns: 300 },
+      { seed: 15, numRuns: 100 },
     );
   });
 

@@ -6,16 +6,16 @@ import { physicalErrorOf } from './expect-physical-error.ts';
 
 describe('typos are errors', () => {
   it('world.on with an unknown event name', () => {
-    const error = physicalErrorOf(() => new World().on('colision' as never, () => {}));
+    const error = physicalErrorOf(() => new World().on('colision' as never, (() => {}) as never));
     expect(error.field).toBe('type');
     expect(error.message).toContain("'collision'");
   });
 
   it('body.on and off with an unknown event name', () => {
     const body = particle({ radius: 1 });
-    physicalErrorOf(() => body.on('moved' as never, () => {}));
-    physicalErrorOf(() => body.off('moved' as never, () => {}));
-    physicalErrorOf(() => body.on('bodyAdded' as never, () => {}));
+    physicalErrorOf(() => body.on('moved' as never, (() => {}) as never));
+    physicalErrorOf(() => body.off('moved' as never, (() => {}) as never));
+    physicalErrorOf(() => body.on('bodyAdded' as never, (() => {}) as never));
   });
 
   it('a listener that is not a function', () => {

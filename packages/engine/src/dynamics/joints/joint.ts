@@ -360,7 +360,8 @@ export function jointMax(field: string): number {
   return JOINT_MAX[field] ?? MAX_COORDINATE;
 }
 
-const JOINT_MAX: Readonly<Record<string, number>> = {
+/** @internal */
+export const JOINT_MAX: Readonly<Record<string, number>> = {
   hertz: MAX_HERTZ,
   linearHertz: MAX_HERTZ,
   angularHertz: MAX_HERTZ,
