@@ -6,7 +6,7 @@ import { PhysicalError } from './errors.ts';
 // and every public mutator runs them all before it changes anything (a refused call is a no-op).
 
 // ---------------------------------------------------------------- physical ranges
-// The documented ranges (docs/guides/valid-ranges.md). They are far wider than any real scene
+// The documented ranges (packages/engine/README.md, "Valid ranges"). They are far wider than any real scene
 // needs; what they rule out are magnitudes whose squares or products overflow a double inside a
 // step (a radius of 1e50, a speed of 1e300), which would otherwise surface later as NaN.
 

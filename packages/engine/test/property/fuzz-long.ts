@@ -1,0 +1,21 @@
+import fc from 'fast-check';
+import { publicApiProperty } from './public-api-fuzz.ts';
+
+// Long mode of the public API fuzz suite: `npm run fuzz -- --runs N [--seed S]`. A new seed each
+// run unless given; a failure prints the seed and the shrunk call sequence to replay it.
+
+function option(name: string): string | undefined {
+  const i = process.argv.indexOf(`--${name}`);
+  return i >= 0 ? process.argv[i + 1] : undefined;
+}
+
+const runs = Number(option('runs') ?? 20000);
+const seed = Number(option('seed') ?? Date.now() % 2 ** 31);
+if (!Number.isInteger(runs) || runs < 1)
+  throw new Error(`--runs must be a whole number, got ${runs}`);
+const start = performance.now();
+console.log(`fuzzing the public API: ${runs} runs, seed ${seed}`);
+fc.assert(publicApiProperty, { seed, numRuns: runs });
+console.log(
+  `${runs} runs passed in ${((performance.now() - start) / 1000).toFixed(1)} s (seed ${seed})`,
+);
