@@ -14,7 +14,7 @@ const seed = Number(option('seed') ?? Date.now() % 2 ** 31);
 if (!Number.isInteger(runs) || runs < 1)
   throw new Error(`--runs must be a whole number, got ${runs}`);
 const start = performance.now();
-console.log(`fuzzing the public API: ${runs} runs, seed ${seed}`);
+process.stdout.write(`fuzzing the public API: ${runs} runs, seed ${seed}\n`);
 fc.assert(publicApiProperty, { seed, numRuns: runs });
 console.log(
   `${runs} runs passed in ${((performance.now() - start) / 1000).toFixed(1)} s (seed ${seed})`,
