@@ -228,10 +228,16 @@ const setter = (
   key: string,
   value: fc.Arbitrary<unknown>,
 ): fc.Arbitrary<Call> =>
-  fc.tuple(index, value).map(([i, v]) => (ctx: Context) => {
-    const object = target(ctx, i);
-    if (object !== undefined) (object as Record<string, unknown>)[key] = v;
-  });
+  fc.tuple(index, value).map(([i, v]) =>
+    // Counterexamples print as `set <key> = <value> on #<i>` rather than as function source.
+    Object.assign(
+      (ctx: Context) => {
+        const object = target(ctx, i);
+        if (object !== undefined) (object as Record<string, unknown>)[key] = v;
+      },
+      { [fc.toStringMethod]: () => `set ${key} = ${fc.stringify(v)} on #${i}` },
+    ),
+  );
 
 const body = (ctx: Context, i: number): Body | undefined => pick(ctx.world.bodies, i);
 const shape = (ctx: Context, i: number): object | undefined => {
