@@ -40,7 +40,11 @@ export const MAX_RESTITUTION = 10;
 /** Largest spring or contact stiffness (Hz) and damping ratio. */
 export const MAX_HERTZ = 1e4;
 export const MAX_DAMPING_RATIO = 1e4;
-/** Largest time step (s) and largest duration of a force or time to sleep (s). */
+/**
+ * Smallest non-zero and largest time step (s), and largest duration of a force or time to sleep
+ * (s). A step far below a microsecond would turn a joint's impulse into an infinite force.
+ */
+export const MIN_TIME_STEP = 1e-6;
 export const MAX_TIME_STEP = 1;
 export const MAX_DURATION = 1e9;
 

@@ -53,6 +53,7 @@ import {
   MAX_RESTITUTION,
   MAX_SPEED,
   MAX_TIME_STEP,
+  MIN_TIME_STEP,
 } from '../core/validate.ts';
 import { World } from './world.ts';
 
@@ -687,7 +688,7 @@ function loadWorld(w: WorldInternals, snapshot: unknown): void {
   w.lastStep = ranged(
     'world.lastStep',
     positive('world.lastStep', field(counters, 'world', 'lastStep')),
-    0,
+    MIN_TIME_STEP,
     MAX_TIME_STEP,
   );
   w.nextBodyId = int('world.nextBodyId', field(counters, 'world', 'nextBodyId'), 0, MAX_ID);

@@ -4,6 +4,7 @@ import {
   describeValue,
   MAX_ACCELERATION,
   MAX_TIME_STEP,
+  MIN_TIME_STEP,
   requireBoolean,
   requireCoordinate,
   requireFunction,
@@ -350,6 +351,12 @@ export class World {
     }
     requireRange('dt', dt, 0, MAX_TIME_STEP, 's');
     if (dt === 0) return;
+    if (dt < MIN_TIME_STEP) {
+      throw new PhysicalError(
+        'dt',
+        `must be 0 or from ${MIN_TIME_STEP} to ${MAX_TIME_STEP} s, got ${dt}.`,
+      );
+    }
     this.locked = true;
     try {
       this.broadPhase.updatePairs(this.onPair);
