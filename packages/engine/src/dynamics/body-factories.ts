@@ -1,5 +1,5 @@
 import { PhysicalError } from '../core/errors.ts';
-import { requireFinite, requirePositive } from '../core/validate.ts';
+import { requireFinite, requireObject, requireSize } from '../core/validate.ts';
 import { LINEAR_SLOP, MAX_POLYGON_VERTICES } from '../core/constants.ts';
 import type { Vec2Like } from '../math/vec2.ts';
 import { Body, type BodyOptions } from './body.ts';
@@ -91,6 +91,7 @@ function material(options: MaterialOptions): MaterialOptions {
 
 /** A circle body: the thesis's particle. Dynamic unless `type` says otherwise. */
 export function particle<UserData = unknown>(options: ParticleOptions<UserData>): Body<UserData> {
+  requireObject('options', options, 'an object of particle options');
   return new Body<UserData>({
     ...options,
     shapes: [{ type: 'circle', radius: options.radius, ...material(options) }],
@@ -99,6 +100,7 @@ export function particle<UserData = unknown>(options: ParticleOptions<UserData>)
 
 /** A rectangle body of `width` x `height` metres, centred on its position. */
 export function box<UserData = unknown>(options: BoxOptions<UserData>): Body<UserData> {
+  requireObject('options', options, 'an object of box options');
   return new Body<UserData>({
     ...options,
     shapes: [
@@ -119,6 +121,7 @@ export function box<UserData = unknown>(options: BoxOptions<UserData>): Body<Use
  * position. Mass and inertia are exact.
  */
 export function capsule<UserData = unknown>(options: CapsuleOptions<UserData>): Body<UserData> {
+  requireObject('options', options, 'an object of capsule options');
   const length = requireFinite('length', options.length);
   if (!(length >= LINEAR_SLOP)) {
     throw new PhysicalError(
@@ -149,6 +152,7 @@ export function capsule<UserData = unknown>(options: CapsuleOptions<UserData>): 
 export function regularPolygon<UserData = unknown>(
   options: RegularPolygonOptions<UserData>,
 ): Body<UserData> {
+  requireObject('options', options, 'an object of regularPolygon options');
   const sides = requireFinite('sides', options.sides);
   if (!Number.isInteger(sides) || sides < 3 || sides > MAX_POLYGON_VERTICES) {
     throw new PhysicalError(
@@ -156,7 +160,7 @@ export function regularPolygon<UserData = unknown>(
       `must be a whole number from 3 to ${MAX_POLYGON_VERTICES}, got ${sides}.`,
     );
   }
-  const radius = requirePositive('radius', options.radius);
+  const radius = requireSize('radius', options.radius);
   const vertices: Vec2Like[] = [];
   for (let i = 0; i < sides; i++) {
     const angle = (2 * Math.PI * i) / sides;
@@ -175,6 +179,7 @@ export function regularPolygon<UserData = unknown>(
  * mass and inertia. A self-intersecting outline is an error.
  */
 export function polygon<UserData = unknown>(options: PolygonOptions<UserData>): Body<UserData> {
+  requireObject('options', options, 'an object of polygon options');
   return new Body<UserData>({
     ...options,
     shapes: [
@@ -193,6 +198,7 @@ export function polygon<UserData = unknown>(options: PolygonOptions<UserData>): 
  * coordinates.
  */
 export function wall<UserData = unknown>(options: WallOptions<UserData>): Body<UserData> {
+  requireObject('options', options, 'an object of wall options');
   return new Body<UserData>({
     ...options,
     type: options.type ?? 'static',

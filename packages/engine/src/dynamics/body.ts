@@ -1,9 +1,23 @@
 import { PhysicalError } from '../core/errors.ts';
 import { Listeners } from '../core/listeners.ts';
 import {
-  requireFinite,
+  describeValue,
+  MAX_ANGULAR_SPEED,
+  MAX_DAMPING,
+  MAX_FORCE,
+  MAX_GRAVITY_SCALE,
+  MAX_INERTIA,
+  MAX_MASS,
+  MAX_SPEED,
+  MIN_INERTIA,
+  MIN_MASS,
+  optionalBoolean,
+  optionalObject,
+  requireAngle,
+  requireBoolean,
   requireNonNegative,
-  requirePositive,
+  requireOneOf,
+  requireRange,
   requireVector,
 } from '../core/validate.ts';
 import { computeCapsuleMass } from '../geometry/capsule.ts';
@@ -14,7 +28,7 @@ import { Transform } from '../math/transform.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { World } from '../world/world.ts';
 import type { Contact } from './contact.ts';
-import type { BodyEvents } from './events.ts';
+import { BODY_EVENT_NAMES, type BodyEvents } from './events.ts';
 import { Force, validateDuration, type ForceOptions, type TorqueOptions } from './force.ts';
 import type { Joint } from './joints/joint.ts';
 import { createGeometries, Shape, type ShapeOptions } from './shape.ts';
@@ -79,6 +93,34 @@ export interface BodyOptions<UserData = unknown> {
 }
 
 const BODY_TYPES: readonly BodyType[] = ['dynamic', 'static', 'kinematic'];
+
+/** A body's mass properties, computed before they are installed. */
+interface MassResult {
+  mass: number;
+  inertia: number;
+  centerX: number;
+  centerY: number;
+}
+
+function requireMass(value: number): number {
+  return requireRange('mass', value, MIN_MASS, MAX_MASS, 'kg');
+}
+
+function requireInertia(value: number): number {
+  return requireRange('inertia', value, MIN_INERTIA, MAX_INERTIA, 'kg m^2');
+}
+
+function requireAngularSpeed(value: number): number {
+  return requireRange('angularVelocity', value, -MAX_ANGULAR_SPEED, MAX_ANGULAR_SPEED, 'rad/s');
+}
+
+function requireGravityScale(value: number): number {
+  return requireRange('gravityScale', value, -MAX_GRAVITY_SCALE, MAX_GRAVITY_SCALE);
+}
+
+function requireDamping(field: string, value: number): number {
+  return requireNonNegative(field, value, MAX_DAMPING);
+}
 const scratchMass = new MassData();
 
 /**
@@ -104,44 +146,67 @@ export class Body<UserData = unknown> {
   angleValue = 0;
   /** @internal Centre of mass, world (m). */
   centerX = 0;
+  /** @internal */
   centerY = 0;
   /** @internal Centre of mass, body-local (m). */
   localCenterX = 0;
+  /** @internal */
   localCenterY = 0;
   /** @internal Centre of mass and angle at the start of the step, for continuous collision. */
   center0X = 0;
+  /** @internal */
   center0Y = 0;
+  /** @internal */
   angle0 = 0;
   /** @internal Velocity of the centre of mass (m/s) and angular velocity (rad/s). */
   velocityX = 0;
+  /** @internal */
   velocityY = 0;
+  /** @internal */
   angularVelocityValue = 0;
   /** @internal Mass properties. */
   massValue = 0;
+  /** @internal */
   invMass = 0;
+  /** @internal */
   inertiaValue = 0;
+  /** @internal */
   invInertia = 0;
+  /** @internal */
   massOverride = 0;
+  /** @internal */
   inertiaOverride = 0;
   /** @internal Force and torque to apply this step (N, N m), gathered from `forces`. */
   forceX = 0;
+  /** @internal */
   forceY = 0;
+  /** @internal */
   torqueValue = 0;
+  /** @internal */
   gravityScaleValue = 1;
+  /** @internal */
   linearDampingValue = 0;
+  /** @internal */
   angularDampingValue = 0;
+  /** @internal */
   dragValue = 0;
+  /** @internal */
   fixedRotationValue = false;
+  /** @internal */
   allowSleepValue = true;
+  /** @internal */
   bulletValue = false;
   /** @internal */
   awake = true;
+  /** @internal */
   sleepTime = 0;
   /** @internal Largest and smallest distance from the centre of mass to the surface (m). */
   maxExtent = 0;
+  /** @internal */
   minExtent = 0;
   /** @internal */
   readonly shapeList: Shape[] = [];
+  /** @internal */
   readonly forceList: Force[] = [];
   /** @internal Contacts touching this body's shapes (both touching and merely overlapping boxes). */
   readonly contacts: Contact[] = [];
@@ -160,48 +225,35 @@ export class Body<UserData = unknown> {
   /** @internal A removal was requested during a step; no more events. */
   removalPending = false;
   /** @internal */
-  readonly listeners: Listeners<BodyEvents> = new Listeners<BodyEvents>();
+  readonly listeners: Listeners<BodyEvents> = new Listeners<BodyEvents>(BODY_EVENT_NAMES);
 
   private readonly positionView: Vec2 = { x: 0, y: 0 };
   private readonly velocityView: Vec2 = { x: 0, y: 0 };
   private readonly centerView: Vec2 = { x: 0, y: 0 };
 
   constructor(options: BodyOptions<UserData> = {}) {
-    if (options === null || typeof options !== 'object') {
-      throw new PhysicalError(
-        'options',
-        `must be an object of body options, got ${String(options)}.`,
-      );
-    }
-    const type = options.type ?? 'dynamic';
-    if (!BODY_TYPES.includes(type)) {
-      throw new PhysicalError(
-        'type',
-        `must be 'dynamic', 'static' or 'kinematic', got ${String(type)}.`,
-      );
-    }
+    optionalObject('options', options, 'an object of body options');
+    const type = requireOneOf('type', options.type ?? 'dynamic', BODY_TYPES);
     this.type = type;
     const position = options.position ?? { x: 0, y: 0 };
     requireVector('position', position);
-    this.angleValue = requireFinite('angle', options.angle ?? 0);
+    this.angleValue = requireAngle('angle', options.angle ?? 0);
     this.transform.set(position.x, position.y, this.angleValue);
     const velocity = options.linearVelocity ?? { x: 0, y: 0 };
-    requireVector('linearVelocity', velocity);
-    const angularVelocity = requireFinite('angularVelocity', options.angularVelocity ?? 0);
-    this.gravityScaleValue = requireFinite('gravityScale', options.gravityScale ?? 1);
-    this.linearDampingValue = requireNonNegative('linearDamping', options.linearDamping ?? 0);
-    this.angularDampingValue = requireNonNegative('angularDamping', options.angularDamping ?? 0);
-    this.dragValue = requireNonNegative('drag', options.drag ?? 0);
-    this.fixedRotationValue = options.fixedRotation ?? false;
-    this.allowSleepValue = options.allowSleep ?? true;
-    if (options.bullet !== undefined && typeof options.bullet !== 'boolean') {
-      throw new PhysicalError('bullet', `must be true or false, got ${String(options.bullet)}.`);
-    }
-    this.bulletValue = options.bullet === true;
-    this.awake = type !== 'static' && !(options.asleep ?? false);
-    if (options.mass !== undefined) this.massOverride = requirePositive('mass', options.mass);
-    if (options.inertia !== undefined)
-      this.inertiaOverride = requirePositive('inertia', options.inertia);
+    requireVector('linearVelocity', velocity, MAX_SPEED);
+    const angularVelocity = requireAngularSpeed(options.angularVelocity ?? 0);
+    this.gravityScaleValue = requireGravityScale(options.gravityScale ?? 1);
+    this.linearDampingValue = requireDamping('linearDamping', options.linearDamping ?? 0);
+    this.angularDampingValue = requireDamping('angularDamping', options.angularDamping ?? 0);
+    this.dragValue = requireDamping('drag', options.drag ?? 0);
+    this.fixedRotationValue = optionalBoolean('fixedRotation', options.fixedRotation, false);
+    this.allowSleepValue = optionalBoolean('allowSleep', options.allowSleep, true);
+    this.bulletValue = optionalBoolean('bullet', options.bullet, false);
+    this.awake = type !== 'static' && !optionalBoolean('asleep', options.asleep, false);
+    if (options.mass !== undefined) this.massOverride = requireMass(options.mass);
+    if (options.inertia !== undefined) this.inertiaOverride = requireInertia(options.inertia);
+    if (options.onMove !== undefined) this.listeners.on('move', options.onMove);
+    if (options.onCollision !== undefined) this.listeners.on('collision', options.onCollision);
     this.userData = options.userData;
 
     const shapes = options.shapes ?? [];
@@ -217,8 +269,6 @@ export class Body<UserData = unknown> {
       this.velocityY = velocity.y;
       this.angularVelocityValue = this.fixedRotationValue ? 0 : angularVelocity;
     }
-    if (options.onMove !== undefined) this.listeners.on('move', options.onMove);
-    if (options.onCollision !== undefined) this.listeners.on('collision', options.onCollision);
   }
 
   // ---------------------------------------------------------------- pose and velocity
@@ -252,7 +302,7 @@ export class Body<UserData = unknown> {
   }
 
   set angle(value: number) {
-    this.angleValue = requireFinite('angle', value);
+    this.angleValue = requireAngle('angle', value);
     this.transform.set(this.transform.x, this.transform.y, value);
     this.syncCenter();
     this.worldRef?.bodyMoved(this);
@@ -273,7 +323,7 @@ export class Body<UserData = unknown> {
   }
 
   set linearVelocity(value: Vec2Like) {
-    requireVector('linearVelocity', value);
+    requireVector('linearVelocity', value, MAX_SPEED);
     if (this.type === 'static') return;
     this.velocityX = value.x;
     this.velocityY = value.y;
@@ -286,7 +336,7 @@ export class Body<UserData = unknown> {
   }
 
   set angularVelocity(value: number) {
-    requireFinite('angularVelocity', value);
+    requireAngularSpeed(value);
     if (this.type === 'static' || this.fixedRotationValue) return;
     this.angularVelocityValue = value;
     this.wake();
@@ -301,6 +351,7 @@ export class Body<UserData = unknown> {
 
   /** Converts a body-local point to world coordinates (m). */
   getWorldPoint(local: Vec2Like, out: Vec2 = { x: 0, y: 0 }): Vec2 {
+    requireVector('local', local);
     const { c, s, x, y } = this.transform;
     const lx = local.x;
     const ly = local.y;
@@ -311,6 +362,7 @@ export class Body<UserData = unknown> {
 
   /** Converts a world point to body-local coordinates (m). */
   getLocalPoint(world: Vec2Like, out: Vec2 = { x: 0, y: 0 }): Vec2 {
+    requireVector('world', world);
     const { c, s, x, y } = this.transform;
     const dx = world.x - x;
     const dy = world.y - y;
@@ -321,6 +373,7 @@ export class Body<UserData = unknown> {
 
   /** Velocity of the body's material at a world point (m/s): v + w x r. */
   getVelocityAt(world: Vec2Like, out: Vec2 = { x: 0, y: 0 }): Vec2 {
+    requireVector('world', world);
     const w = this.angularVelocityValue;
     out.x = this.velocityX - w * (world.y - this.centerY);
     out.y = this.velocityY + w * (world.x - this.centerX);
@@ -336,8 +389,9 @@ export class Body<UserData = unknown> {
 
   set mass(value: number) {
     this.requireDynamic('mass');
-    this.massOverride = requirePositive('mass', value);
-    this.updateMassData();
+    requireMass(value);
+    this.commitMass(this.computeMass(this.shapeList, value, this.inertiaOverride));
+    this.massOverride = value;
     this.wake();
   }
 
@@ -348,16 +402,17 @@ export class Body<UserData = unknown> {
 
   set inertia(value: number) {
     this.requireDynamic('inertia');
-    this.inertiaOverride = requirePositive('inertia', value);
-    this.updateMassData();
+    requireInertia(value);
+    this.commitMass(this.computeMass(this.shapeList, this.massOverride, value));
+    this.inertiaOverride = value;
     this.wake();
   }
 
   /** Forgets `mass` and `inertia` set by hand and computes them from the shapes again. */
   resetMass(): void {
+    this.commitMass(this.computeMass(this.shapeList, 0, 0));
     this.massOverride = 0;
     this.inertiaOverride = 0;
-    this.updateMassData();
     this.wake();
   }
 
@@ -374,7 +429,7 @@ export class Body<UserData = unknown> {
   }
 
   set gravityScale(value: number) {
-    this.gravityScaleValue = requireFinite('gravityScale', value);
+    this.gravityScaleValue = requireGravityScale(value);
     this.wake();
   }
 
@@ -384,7 +439,7 @@ export class Body<UserData = unknown> {
   }
 
   set linearDamping(value: number) {
-    this.linearDampingValue = requireNonNegative('linearDamping', value);
+    this.linearDampingValue = requireDamping('linearDamping', value);
   }
 
   /** Angular damping (1/s). */
@@ -393,7 +448,7 @@ export class Body<UserData = unknown> {
   }
 
   set angularDamping(value: number) {
-    this.angularDampingValue = requireNonNegative('angularDamping', value);
+    this.angularDampingValue = requireDamping('angularDamping', value);
   }
 
   /** Quadratic drag coefficient (N s^2/m^2): F = -drag |v| v. */
@@ -402,7 +457,7 @@ export class Body<UserData = unknown> {
   }
 
   set drag(value: number) {
-    this.dragValue = requireNonNegative('drag', value);
+    this.dragValue = requireDamping('drag', value);
   }
 
   /** True when the body cannot rotate. */
@@ -411,9 +466,11 @@ export class Body<UserData = unknown> {
   }
 
   set fixedRotation(value: boolean) {
+    requireBoolean('fixedRotation', value);
+    const mass = this.computeMass(this.shapeList, this.massOverride, this.inertiaOverride, value);
     this.fixedRotationValue = value;
+    this.commitMass(mass);
     if (value) this.angularVelocityValue = 0;
-    this.updateMassData();
     this.wake();
   }
 
@@ -423,10 +480,7 @@ export class Body<UserData = unknown> {
   }
 
   set bullet(value: boolean) {
-    if (typeof value !== 'boolean') {
-      throw new PhysicalError('bullet', `must be true or false, got ${String(value)}.`);
-    }
-    this.bulletValue = value;
+    this.bulletValue = requireBoolean('bullet', value);
   }
 
   /** Whether the body may fall asleep when it rests. Turning it off wakes the body. */
@@ -435,7 +489,7 @@ export class Body<UserData = unknown> {
   }
 
   set allowSleep(value: boolean) {
-    this.allowSleepValue = value;
+    this.allowSleepValue = requireBoolean('allowSleep', value);
     if (!value) this.wake();
   }
 
@@ -475,8 +529,10 @@ export class Body<UserData = unknown> {
   addShape(options: ShapeOptions): Shape {
     this.worldRef?.requireUnlocked('addShape');
     const added = this.createShapes(options, 'shape');
+    // Check, then change: the new mass is computed (and may be refused) before the shape joins.
+    const mass = this.computeMass([...this.shapeList, ...added]);
     this.shapeList.push(...added);
-    this.updateMassData();
+    this.commitMass(mass);
     for (const shape of added) this.worldRef?.shapeAdded(shape);
     this.wake();
     return added[0]!;
@@ -487,9 +543,11 @@ export class Body<UserData = unknown> {
     this.worldRef?.requireUnlocked('removeShape');
     const index = this.shapeList.indexOf(shape);
     if (index < 0) throw new PhysicalError('shape', 'is not a shape of this body.');
+    const remaining = this.shapeList.filter((s) => s !== shape);
+    const mass = this.computeMass(remaining);
     this.worldRef?.shapeRemoved(shape);
     this.shapeList.splice(index, 1);
-    this.updateMassData();
+    this.commitMass(mass);
     this.wake();
   }
 
@@ -517,10 +575,16 @@ export class Body<UserData = unknown> {
    */
   applyForce(force: Vec2Like, options: ForceOptions = {}): Force {
     this.requireDynamic('applyForce');
-    requireVector('force', force);
-    const result = new Force(force.x, force.y, 0, validateDuration(options.duration ?? 'instant'));
+    requireVector('force', force, MAX_FORCE);
+    optionalObject(
+      'options',
+      options,
+      "an object { duration?, point? }, for example { duration: 'constant' }",
+    );
+    const duration = validateDuration(options.duration ?? 'instant');
+    if (options.point !== undefined) requireVector('point', options.point);
+    const result = new Force(force.x, force.y, 0, duration);
     if (options.point !== undefined) {
-      requireVector('point', options.point);
       // Attach the point to the body so it turns with it.
       const local = this.getLocalPoint(options.point);
       result.localPointX = local.x;
@@ -534,7 +598,12 @@ export class Body<UserData = unknown> {
   /** Applies a torque (N m) for a {@link Duration}, like {@link applyForce}. */
   applyTorque(torque: number, options: TorqueOptions = {}): Force {
     this.requireDynamic('applyTorque');
-    requireFinite('torque', torque);
+    requireRange('torque', torque, -MAX_FORCE, MAX_FORCE, 'N m');
+    optionalObject(
+      'options',
+      options,
+      "an object { duration? }, for example { duration: 'constant' }",
+    );
     const result = new Force(0, 0, torque, validateDuration(options.duration ?? 'instant'));
     this.attachForce(result);
     return result;
@@ -542,6 +611,9 @@ export class Body<UserData = unknown> {
 
   /** Removes a force or torque. Removing one that already ended is harmless. */
   removeForce(force: Force): void {
+    if (!(force instanceof Force)) {
+      throw new PhysicalError('force', `must be a Force, got ${describeValue(force)}.`);
+    }
     const index = this.forceList.indexOf(force);
     if (index < 0) return;
     this.forceList.splice(index, 1);
@@ -564,11 +636,11 @@ export class Body<UserData = unknown> {
    */
   applyImpulse(impulse: Vec2Like, point?: Vec2Like): void {
     this.requireDynamic('applyImpulse');
-    requireVector('impulse', impulse);
+    requireVector('impulse', impulse, MAX_FORCE);
+    if (point !== undefined) requireVector('point', point);
     this.velocityX += this.invMass * impulse.x;
     this.velocityY += this.invMass * impulse.y;
     if (point !== undefined) {
-      requireVector('point', point);
       const rx = point.x - this.centerX;
       const ry = point.y - this.centerY;
       this.angularVelocityValue += this.invInertia * (rx * impulse.y - ry * impulse.x);
@@ -579,7 +651,7 @@ export class Body<UserData = unknown> {
   /** Changes the angular velocity at once by an angular impulse (N m s): Δω = L / I. */
   applyAngularImpulse(impulse: number): void {
     this.requireDynamic('applyAngularImpulse');
-    requireFinite('impulse', impulse);
+    requireRange('impulse', impulse, -MAX_FORCE, MAX_FORCE, 'N m s');
     this.angularVelocityValue += this.invInertia * impulse;
     this.wake();
   }
@@ -608,28 +680,30 @@ export class Body<UserData = unknown> {
     this.centerY = s * this.localCenterX + c * this.localCenterY + y;
   }
 
-  /**
-   * @internal Mass, centre of mass and inertia from the shapes (parallel-axis theorem to combine
-   * them about the common centre), then the overrides.
-   */
+  /** @internal Mass, centre of mass and inertia from the shapes and overrides, installed. */
   updateMassData(): void {
-    this.massValue = 0;
-    this.invMass = 0;
-    this.inertiaValue = 0;
-    this.invInertia = 0;
-    this.localCenterX = 0;
-    this.localCenterY = 0;
-    this.computeExtents();
-    if (this.type !== 'dynamic') {
-      this.syncCenter();
-      return;
-    }
+    this.commitMass(this.computeMass(this.shapeList));
+  }
+
+  /**
+   * Mass, centre of mass and inertia of a list of shapes (parallel-axis theorem to combine them
+   * about the common centre), then the overrides; throws, changing nothing, when a dynamic body
+   * would get no valid mass. Callers compute first and commit only a valid result.
+   */
+  private computeMass(
+    shapes: readonly Shape[],
+    massOverride: number = this.massOverride,
+    inertiaOverride: number = this.inertiaOverride,
+    fixedRotation: boolean = this.fixedRotationValue,
+  ): MassResult {
+    const result: MassResult = { mass: 0, inertia: 0, centerX: 0, centerY: 0 };
+    if (this.type !== 'dynamic') return result;
     let mass = 0;
     let cx = 0;
     let cy = 0;
     let inertiaAtOrigin = 0;
-    for (let i = 0; i < this.shapeList.length; i++) {
-      const shape = this.shapeList[i]!;
+    for (let i = 0; i < shapes.length; i++) {
+      const shape = shapes[i]!;
       const g = shape.geometry;
       if (g.kind === 'segment') {
         throw new PhysicalError(
@@ -637,7 +711,7 @@ export class Body<UserData = unknown> {
           'a segment has no area and so no mass: put walls on a static or kinematic body.',
         );
       }
-      if (shape.density <= 0 && this.massOverride === 0) {
+      if (shape.density <= 0 && massOverride === 0) {
         throw new PhysicalError(
           `shapes[${i}].density`,
           `must be greater than zero on a dynamic body, got ${shape.density} (or set the body's mass).`,
@@ -661,10 +735,10 @@ export class Body<UserData = unknown> {
       cy /= mass;
     }
     let inertia = inertiaAtOrigin - mass * (cx * cx + cy * cy);
-    if (this.massOverride > 0) {
+    if (massOverride > 0) {
       // Same shape, different density: inertia scales with mass. A point mass has none.
-      inertia = mass > 0 ? (inertia * this.massOverride) / mass : 0;
-      mass = this.massOverride;
+      inertia = mass > 0 ? (inertia * massOverride) / mass : 0;
+      mass = massOverride;
     }
     if (!(mass > 0)) {
       throw new PhysicalError(
@@ -672,15 +746,32 @@ export class Body<UserData = unknown> {
         'a dynamic body needs a positive mass: give it a shape with density > 0, or set `mass`.',
       );
     }
-    if (this.inertiaOverride > 0) inertia = this.inertiaOverride;
-    this.massValue = mass;
-    this.invMass = 1 / mass;
-    this.localCenterX = cx;
-    this.localCenterY = cy;
-    if (!this.fixedRotationValue && inertia > 0) {
-      this.inertiaValue = inertia;
-      this.invInertia = 1 / inertia;
+    if (mass < MIN_MASS || mass > MAX_MASS || !Number.isFinite(cx) || !Number.isFinite(cy)) {
+      throw new PhysicalError(
+        'mass',
+        `must be from ${MIN_MASS} to ${MAX_MASS} kg; the shapes and density give ${mass}. ` +
+          'Change the density or the sizes, or set `mass`.',
+      );
     }
+    if (inertiaOverride > 0) inertia = inertiaOverride;
+    result.mass = mass;
+    result.centerX = cx;
+    result.centerY = cy;
+    // Below the smallest inertia the rotation would be numerically free: treat it as none.
+    if (!fixedRotation && inertia >= MIN_INERTIA && Number.isFinite(inertia)) {
+      result.inertia = inertia;
+    }
+    return result;
+  }
+
+  /** Installs a mass computed by {@link computeMass} for the current shapes and settings. */
+  private commitMass(data: MassResult): void {
+    this.massValue = data.mass;
+    this.invMass = data.mass > 0 ? 1 / data.mass : 0;
+    this.inertiaValue = data.inertia;
+    this.invInertia = data.inertia > 0 ? 1 / data.inertia : 0;
+    this.localCenterX = data.centerX;
+    this.localCenterY = data.centerY;
     this.syncCenter();
     this.computeExtents();
   }

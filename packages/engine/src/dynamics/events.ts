@@ -83,6 +83,16 @@ export interface BodyEvents {
   sensorEnd: (event: SensorEvent) => void;
 }
 
+/** @internal The names of {@link BodyEvents}, checked by `body.on`. */
+export const BODY_EVENT_NAMES: readonly (keyof BodyEvents)[] = [
+  'move',
+  'collision',
+  'contactBegin',
+  'contactEnd',
+  'sensorBegin',
+  'sensorEnd',
+];
+
 /** Events only a world has. */
 export interface WorldOnlyEvents {
   /** A body joined the world (after `add`, or at the end of the step it was added in). */
@@ -94,6 +104,15 @@ export interface WorldOnlyEvents {
   /** A sleeping body woke up (a renderer that stopped drawing a sleeping world starts again). */
   wake: (body: Body) => void;
 }
+
+/** @internal The names of a world's events, checked by `world.on`. */
+export const WORLD_EVENT_NAMES: readonly (keyof BodyEvents | keyof WorldOnlyEvents)[] = [
+  ...BODY_EVENT_NAMES,
+  'bodyAdded',
+  'bodyRemoved',
+  'jointRemoved',
+  'wake',
+];
 
 /** Mutable point behind {@link ContactPoint}. */
 export class ContactPointData implements ContactPoint {

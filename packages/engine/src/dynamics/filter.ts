@@ -1,4 +1,5 @@
 import { PhysicalError } from '../core/errors.ts';
+import { describeValue } from '../core/validate.ts';
 
 /**
  * Which shapes collide, by bits and groups (Box2D's collision filter semantics):
@@ -34,7 +35,7 @@ export function resolveFilter(field: string, options: FilterOptions | undefined)
   if (options === null || typeof options !== 'object') {
     throw new PhysicalError(
       field,
-      `must be an object { category?, mask?, group? }, got ${String(options)}.`,
+      `must be an object { category?, mask?, group? }, got ${describeValue(options)}.`,
     );
   }
   return {
@@ -48,7 +49,7 @@ function requireBits(field: string, value: number): number {
   if (typeof value !== 'number' || !Number.isInteger(value) || value < 0 || value > 0xffffffff) {
     throw new PhysicalError(
       field,
-      `must be a whole number from 0 to 0xFFFFFFFF (32 bits), got ${String(value)}.`,
+      `must be a whole number from 0 to 0xFFFFFFFF (32 bits), got ${describeValue(value)}.`,
     );
   }
   return value;
@@ -63,7 +64,7 @@ function requireGroup(field: string, value: number): number {
   ) {
     throw new PhysicalError(
       field,
-      `must be a whole number from -2147483648 to 2147483647, got ${String(value)}.`,
+      `must be a whole number from -2147483648 to 2147483647, got ${describeValue(value)}.`,
     );
   }
   return value;

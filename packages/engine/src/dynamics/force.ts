@@ -1,5 +1,11 @@
 import { PhysicalError } from '../core/errors.ts';
-import { requireFinite, requirePositive, requireVector } from '../core/validate.ts';
+import {
+  describeValue,
+  MAX_DURATION,
+  MAX_FORCE,
+  requireRange,
+  requireVector,
+} from '../core/validate.ts';
 import type { Vec2Like } from '../math/vec2.ts';
 
 /**
@@ -39,44 +45,96 @@ const DURATION_EPSILON = 1e-9;
  * {@link Body.applyForce} and {@link Body.applyTorque}; keep it to change or remove it later.
  */
 export class Force {
-  /** Force in world coordinates (N). */
-  x = 0;
-  y = 0;
-  /** Torque (N m), positive turns +x towards +y (clockwise on a y-down screen). */
-  torque = 0;
-  /** Point of application in body-local coordinates (m); used only when `hasPoint` (else the centre of mass). */
+  /** @internal Force in world coordinates (N), behind {@link x} and {@link y}. */
+  xValue = 0;
+  /** @internal */
+  yValue = 0;
+  /** @internal Torque (N m), behind {@link torque}. */
+  torqueValue = 0;
+  /**
+   * @internal Point of application in body-local coordinates (m); used only when `hasPoint`
+   * (else the centre of mass).
+   */
   localPointX = 0;
+  /** @internal */
   localPointY = 0;
+  /** @internal */
   hasPoint = false;
   /** The duration it was created with. */
   readonly duration: Duration;
-  /** Seconds left for a timed force; Infinity for `'constant'`; one step for `'instant'`. */
-  remaining = 0;
+  /** @internal Seconds left, behind {@link remaining}; -1 for an `'instant'` force not yet applied. */
+  remainingValue = 0;
   /** @internal Removal hook set by the owning body. */
   onRemove: ((force: Force) => void) | null = null;
   /** @internal Change hook set by the owning body (wakes it). */
   onChange: ((force: Force) => void) | null = null;
 
+  /** Usually made by {@link Body.applyForce} or {@link Body.applyTorque}; a Force on no body does nothing. */
   constructor(x: number, y: number, torque: number, duration: Duration) {
-    this.x = x;
-    this.y = y;
-    this.torque = torque;
-    this.duration = duration;
-    this.remaining = duration === 'constant' ? Infinity : duration === 'instant' ? -1 : duration;
+    this.xValue = requireRange('x', x, -MAX_FORCE, MAX_FORCE, 'N');
+    this.yValue = requireRange('y', y, -MAX_FORCE, MAX_FORCE, 'N');
+    this.torqueValue = requireRange('torque', torque, -MAX_FORCE, MAX_FORCE, 'N m');
+    this.duration = validateDuration(duration);
+    this.remainingValue =
+      duration === 'constant' ? Infinity : duration === 'instant' ? -1 : duration;
+  }
+
+  /** The force's x component in world coordinates (N). Setting it wakes the body. */
+  get x(): number {
+    return this.xValue;
+  }
+
+  set x(value: number) {
+    this.xValue = requireRange('x', value, -MAX_FORCE, MAX_FORCE, 'N');
+    this.onChange?.(this);
+  }
+
+  /** The force's y component in world coordinates (N). Setting it wakes the body. */
+  get y(): number {
+    return this.yValue;
+  }
+
+  set y(value: number) {
+    this.yValue = requireRange('y', value, -MAX_FORCE, MAX_FORCE, 'N');
+    this.onChange?.(this);
+  }
+
+  /** Torque (N m), positive turns +x towards +y (clockwise on a y-down screen). Setting it wakes the body. */
+  get torque(): number {
+    return this.torqueValue;
+  }
+
+  set torque(value: number) {
+    this.torqueValue = requireRange('torque', value, -MAX_FORCE, MAX_FORCE, 'N m');
+    this.onChange?.(this);
+  }
+
+  /**
+   * Seconds left for a timed force; Infinity for `'constant'`; -1 for an `'instant'` force not yet
+   * applied, 0 once used up. Setting it (seconds, from 0 to 1e9, or Infinity) extends or shortens
+   * the force; 0 ends it at the next step.
+   */
+  get remaining(): number {
+    return this.remainingValue;
+  }
+
+  set remaining(value: number) {
+    if (value !== Infinity) requireRange('remaining', value, 0, MAX_DURATION, 's');
+    this.remainingValue = value;
+    this.onChange?.(this);
   }
 
   /** Changes the force vector (N, world). Wakes the body. */
   setVector(force: Vec2Like): void {
-    requireVector('force', force);
-    this.x = force.x;
-    this.y = force.y;
+    requireVector('force', force, MAX_FORCE);
+    this.xValue = force.x;
+    this.yValue = force.y;
     this.onChange?.(this);
   }
 
   /** Changes the torque (N m). Wakes the body. */
   setTorque(torque: number): void {
-    this.torque = requireFinite('torque', torque);
-    this.onChange?.(this);
+    this.torque = torque;
   }
 
   /** Stops the force now. Removing a force twice is harmless. */
@@ -85,26 +143,26 @@ export class Force {
   }
 
   /**
-   * Fraction of this step during which the force acts (0..1), and consumes that time.
+   * @internal Fraction of this step during which the force acts (0..1), and consumes that time.
    * Returns 0 once the force is used up.
    */
   consume(dt: number): number {
-    if (this.remaining === Infinity) return 1;
-    if (this.remaining < 0) {
+    if (this.remainingValue === Infinity) return 1;
+    if (this.remainingValue < 0) {
       // 'instant': exactly one step.
-      this.remaining = 0;
+      this.remainingValue = 0;
       return 1;
     }
-    if (this.remaining <= DURATION_EPSILON) return 0;
-    const fraction = this.remaining >= dt ? 1 : this.remaining / dt;
-    this.remaining -= dt;
-    if (this.remaining < DURATION_EPSILON) this.remaining = 0;
+    if (this.remainingValue <= DURATION_EPSILON) return 0;
+    const fraction = this.remainingValue >= dt ? 1 : this.remainingValue / dt;
+    this.remainingValue -= dt;
+    if (this.remainingValue < DURATION_EPSILON) this.remainingValue = 0;
     return fraction;
   }
 
   /** True when the force has acted for its whole duration. */
   get isExpired(): boolean {
-    return this.remaining === 0;
+    return this.remainingValue === 0;
   }
 }
 
@@ -113,8 +171,10 @@ export function validateDuration(duration: Duration): Duration {
   if (typeof duration !== 'number') {
     throw new PhysicalError(
       'duration',
-      `must be 'constant', 'instant' or a number of seconds, got ${String(duration)}.`,
+      `must be 'constant', 'instant' or a number of seconds, got ${describeValue(duration)}.`,
     );
   }
-  return requirePositive('duration', duration);
+  requireRange('duration', duration, 0, MAX_DURATION, 's');
+  if (duration === 0) throw new PhysicalError('duration', 'must be greater than zero, got 0.');
+  return duration;
 }

@@ -1,14 +1,21 @@
 import { PhysicalError } from '../core/errors.ts';
 import {
-  requireFinite,
+  describeValue,
+  MAX_DENSITY,
+  MAX_FRICTION,
+  MAX_RESTITUTION,
+  MAX_SIZE,
+  optionalBoolean,
+  requireAngle,
   requireNonNegative,
-  requirePositive,
+  requireObject,
+  requireSize,
   requireVector,
 } from '../core/validate.ts';
 import { AABB } from '../geometry/aabb.ts';
 import { computeCapsuleAABB, makeCapsule, type Capsule } from '../geometry/capsule.ts';
 import { computeCircleAABB, makeCircle, type Circle } from '../geometry/circle.ts';
-import { computePolygonAABB, makeBox, type Polygon } from '../geometry/polygon.ts';
+import { computePolygonAABB, makeBox, makeConvexPart, type Polygon } from '../geometry/polygon.ts';
 import { makePolygonParts } from '../geometry/polygon-decomposition.ts';
 import { computeSegmentAABB, makeSegment, type Segment } from '../geometry/segment.ts';
 import type { Transform } from '../math/transform.ts';
@@ -129,15 +136,17 @@ export class Shape {
   readonly geometry: Geometry;
   /** Mass per area (kg/m^2). Change it through {@link Body.setShapeDensity}-free rebuild: read-only here. */
   readonly density: number = 1;
-  /** Coulomb friction coefficient. */
-  friction = 0.6;
-  /** Coefficient of restitution. */
-  restitution = 0;
+  /** @internal Friction behind {@link friction}. */
+  frictionValue = 0.6;
+  /** @internal Restitution behind {@link restitution}. */
+  restitutionValue = 0;
   /** True for a sensor: it reports overlaps and never collides. Fixed at creation. */
   readonly sensor: boolean = false;
   /** @internal Filter bits (see {@link filter}). */
   categoryBits = 1;
+  /** @internal */
   maskBits = 0xffffffff;
+  /** @internal */
   groupIndex = 0;
   /** @internal Index in the world's sensor list, -1 when not a sensor in a world. */
   sensorIndex = -1;
@@ -154,21 +163,31 @@ export class Shape {
   /** `geometry` is built from `options` unless given (a part of a split polygon). */
   constructor(body: Body, options: ShapeOptions, field: string, geometry?: Geometry) {
     this.body = body;
-    if (options === null || typeof options !== 'object') {
-      throw new PhysicalError(field, `must be a shape description object, got ${String(options)}.`);
-    }
-    this.density = requireNonNegative(`${field}.density`, options.density ?? 1);
-    this.friction = requireNonNegative(`${field}.friction`, options.friction ?? 0.6);
-    this.restitution = requireNonNegative(`${field}.restitution`, options.restitution ?? 0);
+    requireObject(field, options, 'a shape description object');
+    this.density = requireNonNegative(`${field}.density`, options.density ?? 1, MAX_DENSITY);
+    this.frictionValue = requireFriction(`${field}.friction`, options.friction ?? 0.6);
+    this.restitutionValue = requireRestitution(`${field}.restitution`, options.restitution ?? 0);
     this.geometry = geometry ?? createGeometries(options, field)[0]!;
-    if (options.sensor !== undefined && typeof options.sensor !== 'boolean') {
-      throw new PhysicalError(
-        `${field}.sensor`,
-        `must be true or false, got ${String(options.sensor)}.`,
-      );
-    }
-    this.sensor = options.sensor === true;
+    this.sensor = optionalBoolean(`${field}.sensor`, options.sensor, false);
     this.setFilter(resolveFilter(`${field}.filter`, options.filter));
+  }
+
+  /** Coulomb friction coefficient, 0 to 100. Two shapes mix as sqrt(fA * fB). */
+  get friction(): number {
+    return this.frictionValue;
+  }
+
+  set friction(value: number) {
+    this.frictionValue = requireFriction('friction', value);
+  }
+
+  /** Coefficient of restitution (bounciness), 0 to 10, usually 0..1. Two shapes mix as max. */
+  get restitution(): number {
+    return this.restitutionValue;
+  }
+
+  set restitution(value: number) {
+    this.restitutionValue = requireRestitution('restitution', value);
   }
 
   /**
@@ -230,24 +249,35 @@ export class Shape {
  * polygon outline.
  */
 export function createGeometries(options: ShapeOptions, field: string): Geometry[] {
-  if (options === null || typeof options !== 'object') {
-    throw new PhysicalError(field, `must be a shape description object, got ${String(options)}.`);
-  }
+  requireObject(field, options, 'a shape description object');
   if (options.type === 'polygon') {
     if (!Array.isArray(options.vertices)) {
-      throw new PhysicalError(`${field}.vertices`, 'must be an array of points { x, y } (m).');
+      throw new PhysicalError(
+        `${field}.vertices`,
+        `must be an array of points { x, y } (m), got ${describeValue(options.vertices)}.`,
+      );
     }
-    return makePolygonParts(
-      options.vertices,
-      requireNonNegative(`${field}.radius`, options.radius ?? 0),
-      field,
-    );
+    const radius = requireNonNegative(`${field}.radius`, options.radius ?? 0, MAX_SIZE);
+    if ((options as { [CONVEX_PART]?: boolean })[CONVEX_PART] === true) {
+      return [makeConvexPart(options.vertices, radius, field)];
+    }
+    return makePolygonParts(options.vertices, radius, field);
   }
   return [createGeometry(options, field)];
 }
 
-/** @internal Validates a shape description and builds its geometry (body frame). */
+/**
+ * @internal Marks polygon options as one saved convex part (a snapshot's): built exactly as given,
+ * checked for convexity but not cleaned or split.
+ */
+export const CONVEX_PART: unique symbol = Symbol('convexPart');
+
+/**
+ * @internal Validates a shape description that makes one geometry (every kind but a polygon
+ * outline, which may make several: see {@link createGeometries}) and builds it (body frame).
+ */
 export function createGeometry(options: ShapeOptions, field: string): Geometry {
+  requireObject(field, options, 'a shape description object');
   switch (options.type) {
     case 'circle': {
       const offset = options.offset ?? ORIGIN;
@@ -269,15 +299,15 @@ export function createGeometry(options: ShapeOptions, field: string): Geometry {
     case 'box': {
       const offset = options.offset ?? ORIGIN;
       requireVector(`${field}.offset`, offset);
-      const width = requirePositive(`${field}.width`, options.width);
-      const height = requirePositive(`${field}.height`, options.height);
+      const width = requireSize(`${field}.width`, options.width);
+      const height = requireSize(`${field}.height`, options.height);
       return makeBox(
         width / 2,
         height / 2,
         offset.x,
         offset.y,
-        requireFinite(`${field}.angle`, options.angle ?? 0),
-        requireNonNegative(`${field}.radius`, options.radius ?? 0),
+        requireAngle(`${field}.angle`, options.angle ?? 0),
+        requireNonNegative(`${field}.radius`, options.radius ?? 0, MAX_SIZE),
         field,
       );
     }
@@ -289,16 +319,24 @@ export function createGeometry(options: ShapeOptions, field: string): Geometry {
         options.from.y,
         options.to.x,
         options.to.y,
-        options.oneSided ?? false,
+        optionalBoolean(`${field}.oneSided`, options.oneSided, false),
         field,
       );
     }
     default:
       throw new PhysicalError(
         `${field}.type`,
-        `must be 'circle', 'polygon', 'box', 'capsule' or 'segment', got ${String((options as { type?: unknown }).type)}.`,
+        `must be 'circle', 'polygon', 'box', 'capsule' or 'segment', got ${describeValue((options as { type?: unknown }).type)}.`,
       );
   }
 }
 
 const ORIGIN: Vec2Like = { x: 0, y: 0 };
+
+function requireFriction(field: string, value: number): number {
+  return requireNonNegative(field, value, MAX_FRICTION);
+}
+
+function requireRestitution(field: string, value: number): number {
+  return requireNonNegative(field, value, MAX_RESTITUTION);
+}

@@ -1,6 +1,6 @@
 import { LINEAR_SLOP } from '../core/constants.ts';
 import { PhysicalError } from '../core/errors.ts';
-import { requireFinite, requirePositive } from '../core/validate.ts';
+import { requireCoordinate, requireSize } from '../core/validate.ts';
 import type { Transform } from '../math/transform.ts';
 import type { AABB } from './aabb.ts';
 import type { MassData } from './mass-data.ts';
@@ -37,11 +37,11 @@ export function makeCapsule(
   radius: number,
   field: string,
 ): Capsule {
-  requireFinite(`${field}.center1.x`, x1);
-  requireFinite(`${field}.center1.y`, y1);
-  requireFinite(`${field}.center2.x`, x2);
-  requireFinite(`${field}.center2.y`, y2);
-  requirePositive(`${field}.radius`, radius);
+  requireCoordinate(`${field}.center1.x`, x1);
+  requireCoordinate(`${field}.center1.y`, y1);
+  requireCoordinate(`${field}.center2.x`, x2);
+  requireCoordinate(`${field}.center2.y`, y2);
+  requireSize(`${field}.radius`, radius);
   const length = Math.hypot(x2 - x1, y2 - y1);
   if (length < LINEAR_SLOP) {
     throw new PhysicalError(

@@ -1,4 +1,4 @@
-import { requireFinite, requirePositive } from '../core/validate.ts';
+import { requireCoordinate, requireSize } from '../core/validate.ts';
 import type { Transform } from '../math/transform.ts';
 import type { AABB } from './aabb.ts';
 import type { MassData } from './mass-data.ts';
@@ -25,9 +25,9 @@ export function makeCircle(
   radius: number,
   field: string,
 ): Circle {
-  requireFinite(`${field}.centerX`, centerX);
-  requireFinite(`${field}.centerY`, centerY);
-  requirePositive(`${field}.radius`, radius);
+  requireCoordinate(`${field}.centerX`, centerX);
+  requireCoordinate(`${field}.centerY`, centerY);
+  requireSize(`${field}.radius`, radius);
   return { kind: 'circle', centerX, centerY, radius };
 }
 

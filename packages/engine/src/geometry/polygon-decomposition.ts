@@ -1,6 +1,6 @@
 import { MAX_POLYGON_VERTICES } from '../core/constants.ts';
 import { PhysicalError } from '../core/errors.ts';
-import { requireNonNegative } from '../core/validate.ts';
+import { MAX_SIZE, requireNonNegative } from '../core/validate.ts';
 import type { Vec2Like } from '../math/vec2.ts';
 import {
   findConcaveVertex,
@@ -33,7 +33,7 @@ export function makePolygonParts(
   field: string,
 ): Polygon[] {
   const outline = prepareOutline(points, field);
-  requireNonNegative(`${field}.radius`, radius);
+  requireNonNegative(`${field}.radius`, radius, MAX_SIZE);
   if (findConcaveVertex(outline) < 0 && outline.count <= MAX_POLYGON_VERTICES) {
     return [makePolygonFromOutline(outline.xs, outline.ys, outline.count, radius)];
   }

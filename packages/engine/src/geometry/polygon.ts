@@ -1,9 +1,12 @@
 import { LINEAR_SLOP, MAX_POLYGON_VERTICES } from '../core/constants.ts';
 import { PhysicalError } from '../core/errors.ts';
 import {
-  requireFinite,
+  describeValue,
+  MAX_SIZE,
+  requireAngle,
+  requireCoordinate,
   requireNonNegative,
-  requirePositive,
+  requireSize,
   requireVector,
 } from '../core/validate.ts';
 import type { Transform } from '../math/transform.ts';
@@ -83,7 +86,7 @@ export function prepareOutline(points: ArrayLike<Vec2Like>, field: string): Outl
   if (points === null || typeof points !== 'object' || typeof points.length !== 'number') {
     throw new PhysicalError(
       verticesField,
-      `must be a list of points { x, y } in metres, got ${String(points)}.`,
+      `must be a list of points { x, y } in metres, got ${describeValue(points)}.`,
     );
   }
   const inputCount = points.length;
@@ -201,7 +204,7 @@ export function makePolygon(
 ): Polygon {
   const verticesField = `${field}.vertices`;
   const outline = prepareOutline(points, field);
-  requireNonNegative(`${field}.radius`, radius);
+  requireNonNegative(`${field}.radius`, radius, MAX_SIZE);
   const { xs, ys, count } = outline;
   const concave = findConcaveVertex(outline);
   if (concave >= 0) {
@@ -220,6 +223,54 @@ export function makePolygon(
     );
   }
   return makePolygonFromOutline(xs, ys, count, radius, out);
+}
+
+/**
+ * Validates and builds one convex part exactly as given (body-local, m), without cleaning: 3 to
+ * MAX_POLYGON_VERTICES finite points, counter-clockwise, every vertex turning left and every
+ * vertex on the inner side of every edge (so convex and simple), no zero-length edge. This is
+ * how a snapshot restores the parts a concave outline was split into: a part may hold a vertex
+ * that outline cleaning would call straight (its neighbours came from the split), and it must
+ * come back as it was saved.
+ * @throws PhysicalError with field `${field}.vertices` or `${field}.radius`.
+ */
+export function makeConvexPart(
+  points: ArrayLike<Vec2Like>,
+  radius: number,
+  field: string,
+): Polygon {
+  const verticesField = `${field}.vertices`;
+  const count = points.length;
+  if (count < MIN_POLYGON_VERTICES || count > MAX_POLYGON_VERTICES) {
+    throw new PhysicalError(
+      verticesField,
+      `must hold ${MIN_POLYGON_VERTICES} to ${MAX_POLYGON_VERTICES} points, got ${count}.`,
+    );
+  }
+  const xs = new Float64Array(count);
+  const ys = new Float64Array(count);
+  for (let i = 0; i < count; i++) {
+    requireVector(`${verticesField}[${i}]`, points[i]!);
+    xs[i] = points[i]!.x;
+    ys[i] = points[i]!.y;
+  }
+  requireNonNegative(`${field}.radius`, radius, MAX_SIZE);
+  for (let i = 0; i < count; i++) {
+    const next = i === count - 1 ? 0 : i + 1;
+    if (!(distance(xs[i]!, ys[i]!, xs[next]!, ys[next]!) > 0)) {
+      throw new PhysicalError(verticesField, `edge ${i} has no length.`);
+    }
+    for (let j = 0; j < count; j++) {
+      if (j === i || j === next) continue;
+      if (!(orientation(xs[i]!, ys[i]!, xs[next]!, ys[next]!, xs[j]!, ys[j]!) > 0)) {
+        throw new PhysicalError(
+          verticesField,
+          `is not a convex counter-clockwise part: point ${j} is not inside edge ${i}.`,
+        );
+      }
+    }
+  }
+  return makePolygonFromOutline(xs, ys, count, radius);
 }
 
 /**
@@ -261,12 +312,12 @@ export function makeBox(
   field: string,
   out?: Polygon,
 ): Polygon {
-  requirePositive(`${field}.halfWidth`, halfWidth);
-  requirePositive(`${field}.halfHeight`, halfHeight);
-  requireFinite(`${field}.centerX`, centerX);
-  requireFinite(`${field}.centerY`, centerY);
-  requireFinite(`${field}.angle`, angle);
-  requireNonNegative(`${field}.radius`, radius);
+  requireSize(`${field}.halfWidth`, halfWidth);
+  requireSize(`${field}.halfHeight`, halfHeight);
+  requireCoordinate(`${field}.centerX`, centerX);
+  requireCoordinate(`${field}.centerY`, centerY);
+  requireAngle(`${field}.angle`, angle);
+  requireNonNegative(`${field}.radius`, radius, MAX_SIZE);
   const polygon = out ?? createEmptyPolygon();
   const c = Math.cos(angle);
   const s = Math.sin(angle);

@@ -1,6 +1,6 @@
 import { LINEAR_SLOP } from '../core/constants.ts';
 import { PhysicalError } from '../core/errors.ts';
-import { requireFinite } from '../core/validate.ts';
+import { requireCoordinate } from '../core/validate.ts';
 import type { Transform } from '../math/transform.ts';
 import type { AABB } from './aabb.ts';
 import type { RayHit, RayInput } from './ray.ts';
@@ -36,10 +36,10 @@ export function makeSegment(
   oneSided: boolean,
   field: string,
 ): Segment {
-  requireFinite(`${field}.x1`, x1);
-  requireFinite(`${field}.y1`, y1);
-  requireFinite(`${field}.x2`, x2);
-  requireFinite(`${field}.y2`, y2);
+  requireCoordinate(`${field}.x1`, x1);
+  requireCoordinate(`${field}.y1`, y1);
+  requireCoordinate(`${field}.x2`, x2);
+  requireCoordinate(`${field}.y2`, y2);
   const length = Math.hypot(x2 - x1, y2 - y1);
   if (length < LINEAR_SLOP) {
     throw new PhysicalError(

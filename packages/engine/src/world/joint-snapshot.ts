@@ -1,6 +1,7 @@
 import type { Body } from '../dynamics/body.ts';
 import { DistanceJoint, DISTANCE_STATE } from '../dynamics/joints/distance-joint.ts';
 import {
+  JOINT_MAX,
   JOINT_STATE,
   type Joint,
   type JointState,
@@ -149,7 +150,13 @@ export function readJoint(path: string, entry: unknown, bodies: readonly Body[])
   }
   const state: JointState = {};
   for (const [key, kind] of fieldsOf(type)) {
-    state[key] = readValue(`${path}.${key}`, kind, field(o, path, key));
+    const value = readValue(`${path}.${key}`, kind, field(o, path, key));
+    // A user setting (stiffness, damping, motor, limits) within the range its setter allows.
+    const max = JOINT_MAX[key];
+    if (max !== undefined && typeof value === 'number' && Math.abs(value) > max) {
+      fail(`${path}.${key}`, `must be at most ${max} in size, got ${value}.`);
+    }
+    state[key] = value;
   }
   for (const [lower, upper] of LAYOUTS[type].ordered) {
     if ((state[lower] as number) > (state[upper] as number)) {

@@ -12,8 +12,7 @@ import {
   getSweepTransform,
   timeOfImpact,
 } from '../collision/time-of-impact.ts';
-import { PhysicalError } from '../core/errors.ts';
-import { requireFinite, requireVector } from '../core/validate.ts';
+import { requireAngle, requireObject, requireVector } from '../core/validate.ts';
 import { AABB } from '../geometry/aabb.ts';
 import { computeCapsuleAABB } from '../geometry/capsule.ts';
 import { computeCircleAABB } from '../geometry/circle.ts';
@@ -23,7 +22,12 @@ import { Transform } from '../math/transform.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
 import { setGeometryProxy, setShapeProxy } from '../dynamics/shape-proxy.ts';
-import { createGeometry, type Geometry, type Shape, type ShapeOptions } from '../dynamics/shape.ts';
+import {
+  createGeometries,
+  type Geometry,
+  type Shape,
+  type ShapeOptions,
+} from '../dynamics/shape.ts';
 
 /** Where a query shape is placed: position of its origin (m) and rotation (rad, default 0). */
 export interface QueryPose {
@@ -66,6 +70,9 @@ export class ShapeQueries {
   private readonly scratch = new AABB();
   private best: Shape | null = null;
   private bestFraction = 1;
+  /** The part of the cast shape being swept, and the part that made the best hit. */
+  private current: Geometry | null = null;
+  private bestGeometry: Geometry | null = null;
   private readonly found: Body[] = [];
 
   constructor(
@@ -74,33 +81,20 @@ export class ShapeQueries {
   ) {}
 
   shapeCast(options: ShapeOptions, pose: QueryPose, translation: Vec2Like): ShapeCastHit | null {
-    const geometry = createGeometry(options, 'shape');
+    // A concave polygon outline makes several convex parts: each is swept, the earliest hit wins.
+    const geometries = createGeometries(options, 'shape');
     const angle = readPose(pose);
     requireVector('translation', translation);
-    const xf = this.xf.set(pose.position.x, pose.position.y, angle);
-    setGeometryProxy(this.castProxy, geometry);
-    const sweep = this.castSweep;
-    sweep.localCenterX = 0;
-    sweep.localCenterY = 0;
-    sweep.c1X = xf.x;
-    sweep.c1Y = xf.y;
-    sweep.c2X = xf.x + translation.x;
-    sweep.c2Y = xf.y + translation.y;
-    sweep.a1 = angle;
-    sweep.a2 = angle;
-    const start = geometryAABB(geometry, xf, this.scratch);
-    this.box.set(
-      start.minX + Math.min(0, translation.x),
-      start.minY + Math.min(0, translation.y),
-      start.maxX + Math.max(0, translation.x),
-      start.maxY + Math.max(0, translation.y),
-    );
     this.best = null;
     this.bestFraction = 1;
-    this.broadPhase.query(this.box, this.castCallback);
+    this.bestGeometry = null;
+    for (const geometry of geometries) this.castPart(geometry, pose, angle, translation);
     const shape = this.best as Shape | null;
     if (shape === null) return null;
-
+    const xf = this.xf.set(pose.position.x, pose.position.y, angle);
+    const sweep = this.castSweep;
+    this.setSweep(xf, angle, translation);
+    setGeometryProxy(this.castProxy, this.bestGeometry!);
     // Contact point and normal at the hit pose.
     const fraction = this.bestFraction;
     getSweepTransform(sweep, fraction, this.xf);
@@ -133,15 +127,51 @@ export class ShapeQueries {
     };
   }
 
-  overlapShape(options: ShapeOptions, pose: QueryPose): Body[] {
-    const geometry = createGeometry(options, 'shape');
-    const angle = readPose(pose);
+  /** Sweeps one convex part of the cast shape, keeping the best hit over all parts so far. */
+  private castPart(
+    geometry: Geometry,
+    pose: QueryPose,
+    angle: number,
+    translation: Vec2Like,
+  ): void {
     const xf = this.xf.set(pose.position.x, pose.position.y, angle);
     setGeometryProxy(this.castProxy, geometry);
-    const box = geometryAABB(geometry, xf, this.scratch);
-    this.box.set(box.minX, box.minY, box.maxX, box.maxY);
+    this.setSweep(xf, angle, translation);
+    const start = geometryAABB(geometry, xf, this.scratch);
+    this.box.set(
+      start.minX + Math.min(0, translation.x),
+      start.minY + Math.min(0, translation.y),
+      start.maxX + Math.max(0, translation.x),
+      start.maxY + Math.max(0, translation.y),
+    );
+    this.current = geometry;
+    this.broadPhase.query(this.box, this.castCallback);
+    this.current = null;
+  }
+
+  private setSweep(xf: Transform, angle: number, translation: Vec2Like): void {
+    const sweep = this.castSweep;
+    sweep.localCenterX = 0;
+    sweep.localCenterY = 0;
+    sweep.c1X = xf.x;
+    sweep.c1Y = xf.y;
+    sweep.c2X = xf.x + translation.x;
+    sweep.c2Y = xf.y + translation.y;
+    sweep.a1 = angle;
+    sweep.a2 = angle;
+  }
+
+  overlapShape(options: ShapeOptions, pose: QueryPose): Body[] {
+    const geometries = createGeometries(options, 'shape');
+    const angle = readPose(pose);
+    const xf = this.xf.set(pose.position.x, pose.position.y, angle);
     this.found.length = 0;
-    this.broadPhase.query(this.box, this.overlapCallback);
+    for (const geometry of geometries) {
+      setGeometryProxy(this.castProxy, geometry);
+      const box = geometryAABB(geometry, xf, this.scratch);
+      this.box.set(box.minX, box.minY, box.maxX, box.maxY);
+      this.broadPhase.query(this.box, this.overlapCallback);
+    }
     const result = this.found.slice();
     result.sort((a, b) => a.worldIndex - b.worldIndex);
     return result;
@@ -168,6 +198,7 @@ export class ShapeQueries {
     if (better) {
       this.best = other;
       this.bestFraction = out.fraction;
+      this.bestGeometry = this.current;
     }
     return true;
   };
@@ -186,11 +217,9 @@ export class ShapeQueries {
 }
 
 function readPose(pose: QueryPose): number {
-  if (pose === null || typeof pose !== 'object') {
-    throw new PhysicalError('pose', `must be { position: { x, y }, angle? }, got ${String(pose)}.`);
-  }
+  requireObject('pose', pose, '{ position: { x, y }, angle? }');
   requireVector('pose.position', pose.position);
-  return requireFinite('pose.angle', pose.angle ?? 0);
+  return requireAngle('pose.angle', pose.angle ?? 0);
 }
 
 function geometryAABB(g: Geometry, xf: Transform, out: AABB): AABB {

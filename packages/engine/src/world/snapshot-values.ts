@@ -1,4 +1,5 @@
 import { PhysicalError } from '../core/errors.ts';
+import { describeValue } from '../core/validate.ts';
 
 // How numbers are written into a snapshot, and the checked readers every section's loader uses:
 // each names the offending field as `snapshot.<path>` in its PhysicalError.
@@ -47,10 +48,7 @@ export function fail(path: string, message: string): never {
 
 /** @internal */
 export function describe(v: unknown): string {
-  if (typeof v === 'string') return `'${v}'`;
-  if (Array.isArray(v)) return 'an array';
-  if (typeof v === 'object' && v !== null) return 'an object';
-  return String(v);
+  return describeValue(v);
 }
 
 /** @internal */
@@ -86,6 +84,13 @@ export function num(path: string, v: unknown): number {
 export function finite(path: string, v: unknown): number {
   const x = num(path, v);
   if (!Number.isFinite(x)) fail(path, `must be finite, got ${x}.`);
+  return x;
+}
+
+/** @internal A finite number from `min` to `max`: the range the public setters allow. */
+export function ranged(path: string, v: unknown, min: number, max: number): number {
+  const x = finite(path, v);
+  if (x < min || x > max) fail(path, `must be from ${min} to ${max}, got ${x}.`);
   return x;
 }
 

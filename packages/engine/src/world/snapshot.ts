@@ -14,7 +14,7 @@ import type { ContactManager } from '../dynamics/contact-manager.ts';
 import type { Duration } from '../dynamics/force.ts';
 import type { Islands } from '../dynamics/island.ts';
 import type { Sensors } from '../dynamics/sensor.ts';
-import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
+import { CONVEX_PART, type Shape, type ShapeOptions } from '../dynamics/shape.ts';
 import type { Joint } from '../dynamics/joints/joint.ts';
 import { buildJoint, readJoint, saveJoint, type JointPlan } from './joint-snapshot.ts';
 import {
@@ -33,10 +33,28 @@ import {
   num,
   obj,
   positive,
+  ranged,
   type Obj,
   type SnapshotValue,
 } from './snapshot-values.ts';
 import type { ResolvedWorldOptions } from './world-options.ts';
+import {
+  MAX_ACCELERATION,
+  MAX_DAMPING,
+  MAX_DAMPING_RATIO,
+  MAX_DENSITY,
+  MAX_DURATION,
+  MAX_FORCE,
+  MAX_FRICTION,
+  MAX_GRAVITY_SCALE,
+  MAX_HERTZ,
+  MAX_INERTIA,
+  MAX_MASS,
+  MAX_RESTITUTION,
+  MAX_SPEED,
+  MAX_TIME_STEP,
+  MIN_TIME_STEP,
+} from '../core/validate.ts';
 import { World } from './world.ts';
 
 // World snapshots: everything that decides future steps, as plain JSON-compatible data, so that
@@ -113,6 +131,9 @@ export interface WorldInternals {
  * const copy = restoreSnapshot(JSON.parse(saved));
  */
 export function takeSnapshot(world: World): WorldSnapshot {
+  if (!(world instanceof World)) {
+    throw new PhysicalError('world', `must be a World, got ${describe(world)}.`);
+  }
   if (world.isStepping) {
     throw new PhysicalError(
       'snapshot',
@@ -293,24 +314,45 @@ const PROXY_TYPE: Record<BodyType, number> = { static: 0, kinematic: 1, dynamic:
 
 function readSettings(s: Obj): ResolvedWorldOptions {
   const p = 'settings';
-  const gravity = finites(`${p}.gravity`, field(s, p, 'gravity'), 2);
+  const gravity = finites(`${p}.gravity`, field(s, p, 'gravity'), 2).map((g, i) =>
+    ranged(`${p}.gravity[${i}]`, g, -MAX_ACCELERATION, MAX_ACCELERATION),
+  );
   return {
     gravityX: gravity[0]!,
     gravityY: gravity[1]!,
     subSteps: int(`${p}.subSteps`, field(s, p, 'subSteps'), 1, 64),
-    restitutionThreshold: nonNegative(
+    restitutionThreshold: ranged(
       `${p}.restitutionThreshold`,
       field(s, p, 'restitutionThreshold'),
+      0,
+      MAX_SPEED,
     ),
-    contactHertz: positive(`${p}.contactHertz`, field(s, p, 'contactHertz')),
-    contactDampingRatio: nonNegative(
+    contactHertz: ranged(
+      `${p}.contactHertz`,
+      positive(`${p}.contactHertz`, field(s, p, 'contactHertz')),
+      0,
+      MAX_HERTZ,
+    ),
+    contactDampingRatio: ranged(
       `${p}.contactDampingRatio`,
       field(s, p, 'contactDampingRatio'),
+      0,
+      MAX_DAMPING_RATIO,
     ),
-    maxContactPushSpeed: positive(`${p}.maxContactPushSpeed`, field(s, p, 'maxContactPushSpeed')),
-    maxLinearSpeed: positive(`${p}.maxLinearSpeed`, field(s, p, 'maxLinearSpeed')),
+    maxContactPushSpeed: ranged(
+      `${p}.maxContactPushSpeed`,
+      positive(`${p}.maxContactPushSpeed`, field(s, p, 'maxContactPushSpeed')),
+      0,
+      MAX_SPEED,
+    ),
+    maxLinearSpeed: ranged(
+      `${p}.maxLinearSpeed`,
+      positive(`${p}.maxLinearSpeed`, field(s, p, 'maxLinearSpeed')),
+      0,
+      MAX_SPEED,
+    ),
     enableSleep: bool(`${p}.enableSleep`, field(s, p, 'enableSleep')),
-    timeToSleep: nonNegative(`${p}.timeToSleep`, field(s, p, 'timeToSleep')),
+    timeToSleep: ranged(`${p}.timeToSleep`, field(s, p, 'timeToSleep'), 0, MAX_DURATION),
     enableContinuous: bool(`${p}.enableContinuous`, field(s, p, 'enableContinuous')),
   };
 }
@@ -347,7 +389,9 @@ function geometryOptions(path: string, g: Obj): { options: ShapeOptions; exact: 
         type: 'polygon',
         vertices: points,
         radius: finite(`${path}.radius`, field(g, path, 'radius')),
-      },
+        // A saved part comes back exactly (see makeConvexPart), not cleaned as an outline.
+        [CONVEX_PART]: true,
+      } as ShapeOptions,
       exact: [...xy, ...normals, ...centroid],
     };
   }
@@ -439,9 +483,9 @@ function readBody(path: string, o: Obj): { body: Body; contacts: number[] } {
     const filter = arr(`${sp}.filter`, field(so, sp, 'filter'), 3);
     const options = {
       ...geometry.options,
-      density: nonNegative(`${sp}.density`, field(so, sp, 'density')),
-      friction: nonNegative(`${sp}.friction`, field(so, sp, 'friction')),
-      restitution: nonNegative(`${sp}.restitution`, field(so, sp, 'restitution')),
+      density: ranged(`${sp}.density`, field(so, sp, 'density'), 0, MAX_DENSITY),
+      friction: ranged(`${sp}.friction`, field(so, sp, 'friction'), 0, MAX_FRICTION),
+      restitution: ranged(`${sp}.restitution`, field(so, sp, 'restitution'), 0, MAX_RESTITUTION),
       sensor: bool(`${sp}.sensor`, field(so, sp, 'sensor')),
       filter: {
         category: filter[0] as number,
@@ -451,8 +495,13 @@ function readBody(path: string, o: Obj): { body: Body; contacts: number[] } {
     } as ShapeOptions;
     return { so, sp, options, exact: geometry.exact };
   });
-  const massOverride = nonNegative(`${path}.massOverride`, field(o, path, 'massOverride'));
-  const inertiaOverride = nonNegative(`${path}.inertiaOverride`, field(o, path, 'inertiaOverride'));
+  const massOverride = ranged(`${path}.massOverride`, field(o, path, 'massOverride'), 0, MAX_MASS);
+  const inertiaOverride = ranged(
+    `${path}.inertiaOverride`,
+    field(o, path, 'inertiaOverride'),
+    0,
+    MAX_INERTIA,
+  );
   const fixedRotation = bool(`${path}.fixedRotation`, field(o, path, 'fixedRotation'));
   let body: Body;
   try {
@@ -486,6 +535,14 @@ function readBody(path: string, o: Obj): { body: Body; contacts: number[] } {
   body.updateMassData();
 
   const xf = finites(`${path}.transform`, field(o, path, 'transform'), 4);
+  // The saved cosine and sine are used as they are (the solver integrates them), so they must
+  // be a rotation: a unit vector, within what integration and normalization leave.
+  if (Math.abs(xf[2]! * xf[2]! + xf[3]! * xf[3]! - 1) > 1e-6) {
+    fail(
+      `${path}.transform`,
+      `must hold a rotation (cos^2 + sin^2 = 1), got cos ${xf[2]} and sin ${xf[3]}.`,
+    );
+  }
   body.transform.x = xf[0]!;
   body.transform.y = xf[1]!;
   body.transform.c = xf[2]!;
@@ -506,13 +563,25 @@ function readBody(path: string, o: Obj): { body: Body; contacts: number[] } {
   body.forceX = applied[0]!;
   body.forceY = applied[1]!;
   body.torqueValue = applied[2]!;
-  body.gravityScaleValue = finite(`${path}.gravityScale`, field(o, path, 'gravityScale'));
-  body.linearDampingValue = nonNegative(`${path}.linearDamping`, field(o, path, 'linearDamping'));
-  body.angularDampingValue = nonNegative(
+  body.gravityScaleValue = ranged(
+    `${path}.gravityScale`,
+    field(o, path, 'gravityScale'),
+    -MAX_GRAVITY_SCALE,
+    MAX_GRAVITY_SCALE,
+  );
+  body.linearDampingValue = ranged(
+    `${path}.linearDamping`,
+    field(o, path, 'linearDamping'),
+    0,
+    MAX_DAMPING,
+  );
+  body.angularDampingValue = ranged(
     `${path}.angularDamping`,
     field(o, path, 'angularDamping'),
+    0,
+    MAX_DAMPING,
   );
-  body.dragValue = nonNegative(`${path}.drag`, field(o, path, 'drag'));
+  body.dragValue = ranged(`${path}.drag`, field(o, path, 'drag'), 0, MAX_DAMPING);
   body.allowSleepValue = bool(`${path}.allowSleep`, field(o, path, 'allowSleep'));
   body.bulletValue = bool(`${path}.bullet`, field(o, path, 'bullet'));
   body.id = int(`${path}.id`, field(o, path, 'id'), 0, MAX_ID);
@@ -529,21 +598,28 @@ function readBody(path: string, o: Obj): { body: Body; contacts: number[] } {
   forces.forEach((f, i) => {
     const fp = `${path}.forces[${i}]`;
     const fo = obj(fp, f);
-    const vector = finites(`${fp}.vector`, field(fo, fp, 'vector'), 2);
-    const torque = finite(`${fp}.torque`, field(fo, fp, 'torque'));
+    const vector = finites(`${fp}.vector`, field(fo, fp, 'vector'), 2).map((v, k) =>
+      ranged(`${fp}.vector[${k}]`, v, -MAX_FORCE, MAX_FORCE),
+    );
+    const torque = ranged(`${fp}.torque`, field(fo, fp, 'torque'), -MAX_FORCE, MAX_FORCE);
     const durationValue = field(fo, fp, 'duration');
     let duration: Duration;
     if (durationValue === 'constant' || durationValue === 'instant') duration = durationValue;
-    else duration = positive(`${fp}.duration`, durationValue);
+    else duration = ranged(`${fp}.duration`, durationValue, Number.MIN_VALUE, MAX_DURATION);
     const remaining = num(`${fp}.remaining`, field(fo, fp, 'remaining'));
     if (remaining !== Infinity && !Number.isFinite(remaining))
       fail(`${fp}.remaining`, 'must be finite or Infinity.');
     const point = field(fo, fp, 'point');
+    if (remaining !== Infinity && remaining < 0 && (duration !== 'instant' || remaining !== -1))
+      fail(
+        `${fp}.remaining`,
+        `must be zero or more (or -1 for an instant force), got ${remaining}.`,
+      );
     const force = body.applyForce({ x: 0, y: 0 }, { duration });
-    force.x = vector[0]!;
-    force.y = vector[1]!;
-    force.torque = torque;
-    force.remaining = remaining;
+    force.xValue = vector[0]!;
+    force.yValue = vector[1]!;
+    force.torqueValue = torque;
+    force.remainingValue = remaining;
     if (point !== null) {
       const local = finites(`${fp}.point`, point, 2);
       force.localPointX = local[0]!;
@@ -609,7 +685,12 @@ function loadWorld(w: WorldInternals, snapshot: unknown): void {
 
   const counters = obj('world', field(root, '', 'world'));
   w.stepCount = int('world.steps', field(counters, 'world', 'steps'), 0, Number.MAX_SAFE_INTEGER);
-  w.lastStep = positive('world.lastStep', field(counters, 'world', 'lastStep'));
+  w.lastStep = ranged(
+    'world.lastStep',
+    positive('world.lastStep', field(counters, 'world', 'lastStep')),
+    MIN_TIME_STEP,
+    MAX_TIME_STEP,
+  );
   w.nextBodyId = int('world.nextBodyId', field(counters, 'world', 'nextBodyId'), 0, MAX_ID);
   w.islands.stamp = int(
     'world.islandStamp',

@@ -1,5 +1,12 @@
 import { PhysicalError } from '../core/errors.ts';
 import {
+  MAX_ACCELERATION,
+  MAX_DAMPING_RATIO,
+  MAX_DURATION,
+  MAX_HERTZ,
+  MAX_SPEED,
+  optionalBoolean,
+  optionalObject,
   requireFinite,
   requireNonNegative,
   requirePositive,
@@ -68,15 +75,10 @@ export interface ResolvedWorldOptions {
 
 /** @internal */
 export function resolveWorldOptions(options: WorldOptions): ResolvedWorldOptions {
-  if (options === null || typeof options !== 'object') {
-    throw new PhysicalError(
-      'options',
-      `must be an object of world options, got ${String(options)}.`,
-    );
-  }
+  optionalObject('options', options, 'an object of world options');
   const gravity = options.gravity ?? { x: 0, y: 9.81 };
-  requireVector('gravity', gravity);
-  return {
+  requireVector('gravity', gravity, MAX_ACCELERATION);
+  const resolved: ResolvedWorldOptions = {
     gravityX: gravity.x,
     gravityY: gravity.y,
     subSteps: validateSubSteps(options.subSteps ?? 4),
@@ -84,17 +86,29 @@ export function resolveWorldOptions(options: WorldOptions): ResolvedWorldOptions
       'restitutionThreshold',
       options.restitutionThreshold ?? DEFAULT_RESTITUTION_THRESHOLD,
     ),
-    contactHertz: requirePositive('contactHertz', options.contactHertz ?? 30),
+    contactHertz: requirePositive('contactHertz', options.contactHertz ?? 30, MAX_HERTZ),
     contactDampingRatio: requireNonNegative(
       'contactDampingRatio',
       options.contactDampingRatio ?? 10,
+      MAX_DAMPING_RATIO,
     ),
-    maxContactPushSpeed: requirePositive('maxContactPushSpeed', options.maxContactPushSpeed ?? 3),
-    maxLinearSpeed: requirePositive('maxLinearSpeed', options.maxLinearSpeed ?? 400),
-    enableSleep: options.enableSleep ?? true,
-    timeToSleep: requireNonNegative('timeToSleep', options.timeToSleep ?? 0.5),
-    enableContinuous: options.enableContinuous ?? true,
+    maxContactPushSpeed: requirePositive(
+      'maxContactPushSpeed',
+      options.maxContactPushSpeed ?? 3,
+      MAX_SPEED,
+    ),
+    maxLinearSpeed: requirePositive('maxLinearSpeed', options.maxLinearSpeed ?? 400, MAX_SPEED),
+    enableSleep: optionalBoolean('enableSleep', options.enableSleep, true),
+    timeToSleep: requireNonNegative('timeToSleep', options.timeToSleep ?? 0.5, MAX_DURATION),
+    enableContinuous: optionalBoolean('enableContinuous', options.enableContinuous, true),
   };
+  requireRestitutionThreshold(resolved.restitutionThreshold);
+  return resolved;
+}
+
+/** @internal The approach speed below which contacts do not bounce (m/s), 0 to MAX_SPEED. */
+export function requireRestitutionThreshold(value: number): number {
+  return requireNonNegative('restitutionThreshold', value, MAX_SPEED);
 }
 
 /** @internal */

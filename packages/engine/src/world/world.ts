@@ -1,6 +1,17 @@
 import { PhysicalError } from '../core/errors.ts';
-import { Listeners } from '../core/listeners.ts';
-import { requireFinite, requireNonNegative, requireVector } from '../core/validate.ts';
+import { callAll, Listeners } from '../core/listeners.ts';
+import {
+  describeValue,
+  MAX_ACCELERATION,
+  MAX_TIME_STEP,
+  MIN_TIME_STEP,
+  requireBoolean,
+  requireCoordinate,
+  requireFunction,
+  requireObject,
+  requireRange,
+  requireVector,
+} from '../core/validate.ts';
 import { BroadPhase, type ProxyType } from '../collision/broad-phase.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
@@ -26,6 +37,7 @@ import {
   CollisionEventData,
   ContactEventData,
   SensorEventData,
+  WORLD_EVENT_NAMES,
   type BodyEvents,
   type ContactView,
   type WorldOnlyEvents,
@@ -39,6 +51,7 @@ import { WorldQueries, type RayCastHit } from './queries.ts';
 import type { WorldInternals } from './snapshot.ts';
 import { ShapeQueries, type QueryPose, type ShapeCastHit } from './shape-queries.ts';
 import {
+  requireRestitutionThreshold,
   resolveWorldOptions,
   validateSubSteps,
   type ResolvedWorldOptions,
@@ -82,7 +95,7 @@ export class World {
   private readonly jointList: Joint[] = [];
   private readonly pendingJointAdds: Joint[] = [];
   private readonly pendingJointRemoves: Joint[] = [];
-  private readonly listeners = new Listeners<WorldEvents>();
+  private readonly listeners = new Listeners<WorldEvents>(WORLD_EVENT_NAMES);
   private readonly collisionEvent = new CollisionEventData();
   private readonly contactEvent = new ContactEventData();
   private readonly gravityView: Vec2 = { x: 0, y: 0 };
@@ -113,7 +126,7 @@ export class World {
   }
 
   set gravity(value: Vec2Like) {
-    requireVector('gravity', value);
+    requireVector('gravity', value, MAX_ACCELERATION);
     if (value.x === this.settings.gravityX && value.y === this.settings.gravityY) return;
     this.settings.gravityX = value.x;
     this.settings.gravityY = value.y;
@@ -135,7 +148,7 @@ export class World {
   }
 
   set restitutionThreshold(value: number) {
-    this.settings.restitutionThreshold = requireNonNegative('restitutionThreshold', value);
+    this.settings.restitutionThreshold = requireRestitutionThreshold(value);
   }
 
   /** Whether resting bodies fall asleep. Turning it off wakes every body. */
@@ -144,7 +157,7 @@ export class World {
   }
 
   set enableSleep(value: boolean) {
-    this.settings.enableSleep = value;
+    this.settings.enableSleep = requireBoolean('enableSleep', value);
     if (!value) for (const body of this.bodyList) this.islands.wake(body);
   }
 
@@ -173,7 +186,7 @@ export class World {
     if (body === null || typeof body !== 'object' || !('shapeList' in body)) {
       throw new PhysicalError(
         'body',
-        `must be a Body (for example particle({...})), got ${String(body)}.`,
+        `must be a Body (for example particle({...})), got ${describeValue(body)}.`,
       );
     }
     if (body.worldRef !== null) {
@@ -226,6 +239,7 @@ export class World {
 
   /** True if the body is in this world (or joins it at the end of the current step). */
   has(body: Body): boolean {
+    if (body === null || typeof body !== 'object') return false;
     return body.worldRef === this && !body.removalPending;
   }
 
@@ -251,7 +265,7 @@ export class World {
     if (!(joint instanceof Joint)) {
       throw new PhysicalError(
         'joint',
-        `must be a Joint (for example revoluteJoint({...})), got ${String(joint)}.`,
+        `must be a Joint (for example revoluteJoint({...})), got ${describeValue(joint)}.`,
       );
     }
     if (joint.worldRef !== null) {
@@ -335,9 +349,14 @@ export class World {
         'cannot be called while the world is stepping (from a listener).',
       );
     }
-    requireFinite('dt', dt);
-    if (dt < 0) throw new PhysicalError('dt', `must be zero or more seconds, got ${dt}.`);
+    requireRange('dt', dt, 0, MAX_TIME_STEP, 's');
     if (dt === 0) return;
+    if (dt < MIN_TIME_STEP) {
+      throw new PhysicalError(
+        'dt',
+        `must be 0 or from ${MIN_TIME_STEP} to ${MAX_TIME_STEP} s, got ${dt}.`,
+      );
+    }
     this.locked = true;
     try {
       this.broadPhase.updatePairs(this.onPair);
@@ -387,10 +406,11 @@ export class World {
     readonly maxX: number;
     readonly maxY: number;
   }): Body[] {
-    requireFinite('box.minX', box.minX);
-    requireFinite('box.minY', box.minY);
-    requireFinite('box.maxX', box.maxX);
-    requireFinite('box.maxY', box.maxY);
+    requireObject('box', box, 'a box { minX, minY, maxX, maxY } in metres');
+    requireCoordinate('box.minX', box.minX);
+    requireCoordinate('box.minY', box.minY);
+    requireCoordinate('box.maxX', box.maxX);
+    requireCoordinate('box.maxY', box.maxY);
     return this.queries.bodiesInAABB(box.minX, box.minY, box.maxX, box.maxY);
   }
 
@@ -445,6 +465,7 @@ export class World {
    * is reused between calls: copy what you keep.
    */
   forEachContact(visitor: (contact: ContactView) => void): void {
+    requireFunction('visitor', visitor);
     const event = this.collisionEvent;
     for (const contact of this.contactManager.contacts) {
       if (!contact.touching) continue;
@@ -891,9 +912,4 @@ export class World {
   get lastStepDuration(): number {
     return this.lastStep;
   }
-}
-
-function callAll<E>(listeners: readonly ((event: E) => void)[] | undefined, event: E): void {
-  if (listeners === undefined) return;
-  for (let i = 0; i < listeners.length; i++) listeners[i]!(event);
 }

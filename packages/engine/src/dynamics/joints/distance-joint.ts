@@ -1,5 +1,10 @@
 import { PhysicalError } from '../../core/errors.ts';
-import { requireFinite, requireNonNegative } from '../../core/validate.ts';
+import {
+  optionalBoolean,
+  requireBoolean,
+  requireNonNegative,
+  requireRange,
+} from '../../core/validate.ts';
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
@@ -13,6 +18,7 @@ import {
   optionalNonNegative,
   requireBodies,
   requireOrdered,
+  jointMax,
   requirePoint,
   stateBoolean,
   stateNumber,
@@ -74,8 +80,11 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   readonly type = 'distance' as const;
   /** @internal Anchors in each body's frame (relative to the body origin, m). */
   localAnchorAX = 0;
+  /** @internal */
   localAnchorAY = 0;
+  /** @internal */
   localAnchorBX = 0;
+  /** @internal */
   localAnchorBY = 0;
   private rest: number;
   private min: number;
@@ -121,10 +130,10 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
     this.max =
       options.maxLength === undefined
         ? Infinity
-        : requireNonNegative('maxLength', options.maxLength);
+        : requireNonNegative('maxLength', options.maxLength, jointMax('maxLength'));
     requireOrdered('minLength', this.min, 'maxLength', this.max);
     requireInRange(this.rest, this.min, this.max);
-    this.springEnabled = options.enableSpring ?? false;
+    this.springEnabled = optionalBoolean('enableSpring', options.enableSpring, false);
     this.springHertz = optionalNonNegative('hertz', options.hertz, 0);
     this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0);
   }
@@ -152,7 +161,7 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set length(value: number) {
-    requireNonNegative('length', value);
+    requireNonNegative('length', value, jointMax('length'));
     requireInRange(value, this.min, this.max);
     this.rest = value;
     this.wakeBodies();
@@ -170,8 +179,8 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
 
   /** Sets the length range (m; maxLength may be Infinity for none); wakes the bodies. */
   setLengthRange(minLength: number, maxLength: number): void {
-    requireNonNegative('minLength', minLength);
-    if (maxLength !== Infinity) requireNonNegative('maxLength', maxLength);
+    requireNonNegative('minLength', minLength, jointMax('minLength'));
+    if (maxLength !== Infinity) requireNonNegative('maxLength', maxLength, jointMax('maxLength'));
     requireOrdered('minLength', minLength, 'maxLength', maxLength);
     requireInRange(this.rest, minLength, maxLength);
     this.min = minLength;
@@ -185,6 +194,7 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set enableSpring(value: boolean) {
+    requireBoolean('enableSpring', value);
     if (value === this.springEnabled) return;
     this.springEnabled = value;
     this.impulse = 0;
@@ -197,7 +207,7 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set hertz(value: number) {
-    this.springHertz = requireNonNegative('hertz', value);
+    this.springHertz = requireNonNegative('hertz', value, jointMax('hertz'));
     this.wakeBodies();
   }
 
@@ -207,7 +217,7 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set dampingRatio(value: number) {
-    this.springDampingRatio = requireNonNegative('dampingRatio', value);
+    this.springDampingRatio = requireNonNegative('dampingRatio', value, jointMax('dampingRatio'));
     this.wakeBodies();
   }
 
@@ -469,7 +479,7 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
 const LENGTH_EPSILON = 1e-9;
 
 function requireInRange(length: number, min: number, max: number): void {
-  requireFinite('length', length);
+  requireRange('length', length, -jointMax('length'), jointMax('length'));
   if (length < min || length > max) {
     throw new PhysicalError(
       'length',

@@ -1,5 +1,17 @@
 import { PhysicalError } from '../../core/errors.ts';
-import { requireFinite, requireNonNegative, requireVector } from '../../core/validate.ts';
+import {
+  describeValue,
+  MAX_ANGLE,
+  MAX_COORDINATE,
+  MAX_DAMPING_RATIO,
+  MAX_FORCE,
+  MAX_HERTZ,
+  MAX_SPEED,
+  optionalBoolean,
+  requireNonNegative,
+  requireRange,
+  requireVector,
+} from '../../core/validate.ts';
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import type { World } from '../../world/world.ts';
 import type { Body } from '../body.ts';
@@ -126,19 +138,27 @@ export abstract class Joint<UserData = unknown> {
   removalPending = false;
   /** @internal State offsets (solverIndex * STATE_STRIDE) of the two bodies this step. */
   stateA = 0;
+  /** @internal */
   stateB = 0;
   /** @internal Inverse masses as the solver sees them (0 for static, sleeping, kinematic). */
   invMassA = 0;
+  /** @internal */
   invInertiaA = 0;
+  /** @internal */
   invMassB = 0;
+  /** @internal */
   invInertiaB = 0;
   /** @internal Impulses on body B summed over the sub-steps of the step (N s, N m s). */
   stepImpulseX = 0;
+  /** @internal */
   stepImpulseY = 0;
+  /** @internal */
   stepAngularImpulse = 0;
   /** @internal Reaction of the last step (N, N m). */
   reactionX = 0;
+  /** @internal */
   reactionY = 0;
+  /** @internal */
   reactionAngular = 0;
   /** @internal Sub-step duration of the last step (s), to turn a sub-step impulse into a force. */
   subStepDuration = 1 / 240;
@@ -149,7 +169,7 @@ export abstract class Joint<UserData = unknown> {
   constructor(options: JointOptions<UserData>, bodyA: Body, bodyB: Body) {
     this.bodyA = bodyA;
     this.bodyB = bodyB;
-    this.collideConnected = options.collideConnected ?? false;
+    this.collideConnected = optionalBoolean('collideConnected', options.collideConnected, false);
     this.userData = options.userData;
   }
 
@@ -307,7 +327,7 @@ export function requireBodies(options: JointOptions<unknown>): void {
   if (options === null || typeof options !== 'object') {
     throw new PhysicalError(
       'options',
-      `must be an object of joint options, got ${String(options)}.`,
+      `must be an object of joint options, got ${describeValue(options)}.`,
     );
   }
   requireBody('bodyA', options.bodyA);
@@ -320,7 +340,7 @@ export function requireBodies(options: JointOptions<unknown>): void {
 /** @internal */
 export function requireBody(field: string, body: Body): void {
   if (body === null || typeof body !== 'object' || !('shapeList' in body)) {
-    throw new PhysicalError(field, `must be a Body, got ${String(body)}.`);
+    throw new PhysicalError(field, `must be a Body, got ${describeValue(body)}.`);
   }
 }
 
@@ -332,18 +352,42 @@ export function requirePoint(field: string, point: Vec2Like | undefined): Vec2Li
   return point;
 }
 
+/**
+ * @internal The largest magnitude of a joint setting, by its name: the engine's documented ranges
+ * (stiffness in Hz, damping ratios, forces and torques, speeds, lengths and limits).
+ */
+export function jointMax(field: string): number {
+  return JOINT_MAX[field] ?? MAX_COORDINATE;
+}
+
+/** @internal */
+export const JOINT_MAX: Readonly<Record<string, number>> = {
+  hertz: MAX_HERTZ,
+  linearHertz: MAX_HERTZ,
+  angularHertz: MAX_HERTZ,
+  dampingRatio: MAX_DAMPING_RATIO,
+  maxForce: MAX_FORCE,
+  maxMotorForce: MAX_FORCE,
+  maxMotorTorque: MAX_FORCE,
+  motorSpeed: MAX_SPEED,
+  lowerAngle: MAX_ANGLE,
+  upperAngle: MAX_ANGLE,
+};
+
 /** @internal An optional non-negative number with a default. */
 export function optionalNonNegative(
   field: string,
   value: number | undefined,
   fallback: number,
 ): number {
-  return value === undefined ? fallback : requireNonNegative(field, value);
+  return value === undefined ? fallback : requireNonNegative(field, value, jointMax(field));
 }
 
 /** @internal An optional finite number with a default. */
 export function optionalFinite(field: string, value: number | undefined, fallback: number): number {
-  return value === undefined ? fallback : requireFinite(field, value);
+  return value === undefined
+    ? fallback
+    : requireRange(field, value, -jointMax(field), jointMax(field));
 }
 
 /** @internal Throws unless lower <= upper. */

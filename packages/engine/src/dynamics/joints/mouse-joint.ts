@@ -1,5 +1,10 @@
 import { PhysicalError } from '../../core/errors.ts';
-import { requireNonNegative, requirePositive, requireVector } from '../../core/validate.ts';
+import {
+  describeValue,
+  requireNonNegative,
+  requirePositive,
+  requireVector,
+} from '../../core/validate.ts';
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import type { Body } from '../body.ts';
 import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
@@ -11,6 +16,7 @@ import {
   type JointStep,
   optionalNonNegative,
   requireBody,
+  jointMax,
   requirePoint,
   stateNumber,
   stateVector,
@@ -64,6 +70,7 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
   readonly type = 'mouse' as const;
   /** @internal Grabbed point in the body's frame (relative to the origin, m). */
   localAnchorX = 0;
+  /** @internal */
   localAnchorY = 0;
   private targetX: number;
   private targetY: number;
@@ -85,7 +92,7 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
     if (options === null || typeof options !== 'object') {
       throw new PhysicalError(
         'options',
-        `must be an object of joint options, got ${String(options)}.`,
+        `must be an object of joint options, got ${describeValue(options)}.`,
       );
     }
     requireBody('body', options.body);
@@ -104,7 +111,8 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
     this.localAnchorX = local.x;
     this.localAnchorY = local.y;
     this.force = optionalNonNegative('maxForce', options.maxForce, 1000 * options.body.mass);
-    this.springHertz = options.hertz === undefined ? 5 : requirePositive('hertz', options.hertz);
+    this.springHertz =
+      options.hertz === undefined ? 5 : requirePositive('hertz', options.hertz, jointMax('hertz'));
     this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0.7);
   }
 
@@ -144,7 +152,7 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set maxForce(value: number) {
-    this.force = requireNonNegative('maxForce', value);
+    this.force = requireNonNegative('maxForce', value, jointMax('maxForce'));
     this.bodyB.wake();
   }
 
@@ -154,7 +162,7 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set hertz(value: number) {
-    this.springHertz = requirePositive('hertz', value);
+    this.springHertz = requirePositive('hertz', value, jointMax('hertz'));
     this.bodyB.wake();
   }
 
@@ -164,7 +172,7 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set dampingRatio(value: number) {
-    this.springDampingRatio = requireNonNegative('dampingRatio', value);
+    this.springDampingRatio = requireNonNegative('dampingRatio', value, jointMax('dampingRatio'));
     this.bodyB.wake();
   }
 

@@ -1,5 +1,10 @@
 import { PhysicalError } from '../../core/errors.ts';
-import { requireFinite, requireNonNegative } from '../../core/validate.ts';
+import {
+  optionalBoolean,
+  requireBoolean,
+  requireNonNegative,
+  requireRange,
+} from '../../core/validate.ts';
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
@@ -14,6 +19,7 @@ import {
   optionalNonNegative,
   requireBodies,
   requireOrdered,
+  jointMax,
   requirePoint,
   stateBoolean,
   stateNumber,
@@ -82,10 +88,15 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   readonly type = 'prismatic' as const;
   /** @internal Anchors in each body's frame (relative to the body origin, m) and A's axis. */
   localAnchorAX = 0;
+  /** @internal */
   localAnchorAY = 0;
+  /** @internal */
   localAnchorBX = 0;
+  /** @internal */
   localAnchorBY = 0;
+  /** @internal */
   localAxisX = 1;
+  /** @internal */
   localAxisY = 0;
   /** @internal angleB - angleA at creation (rad). */
   referenceAngle = 0;
@@ -134,14 +145,14 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
     this.localAxisX = c * ux + s * uy;
     this.localAxisY = -s * ux + c * uy;
     this.referenceAngle = this.bodyB.angle - this.bodyA.angle;
-    this.limitEnabled = options.enableLimit ?? false;
+    this.limitEnabled = optionalBoolean('enableLimit', options.enableLimit, false);
     this.lowerLimit = optionalFinite('lower', options.lower, 0);
     this.upperLimit = optionalFinite('upper', options.upper, 0);
     requireOrdered('lower', this.lowerLimit, 'upper', this.upperLimit);
-    this.motorEnabled = options.enableMotor ?? false;
+    this.motorEnabled = optionalBoolean('enableMotor', options.enableMotor, false);
     this.speed = optionalFinite('motorSpeed', options.motorSpeed, 0);
     this.maxForce = optionalNonNegative('maxMotorForce', options.maxMotorForce, 0);
-    this.springEnabled = options.enableSpring ?? false;
+    this.springEnabled = optionalBoolean('enableSpring', options.enableSpring, false);
     this.springHertz = optionalNonNegative('hertz', options.hertz, 0);
     this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0);
   }
@@ -172,6 +183,7 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set enableLimit(value: boolean) {
+    requireBoolean('enableLimit', value);
     if (value === this.limitEnabled) return;
     this.limitEnabled = value;
     this.lowerImpulse = 0;
@@ -199,8 +211,8 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
 
   /** Sets both translation limits (m); wakes the bodies. */
   setLimits(lower: number, upper: number): void {
-    requireFinite('lower', lower);
-    requireFinite('upper', upper);
+    requireRange('lower', lower, -jointMax('lower'), jointMax('lower'));
+    requireRange('upper', upper, -jointMax('upper'), jointMax('upper'));
     requireOrdered('lower', lower, 'upper', upper);
     this.lowerLimit = lower;
     this.upperLimit = upper;
@@ -213,6 +225,7 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set enableMotor(value: boolean) {
+    requireBoolean('enableMotor', value);
     if (value === this.motorEnabled) return;
     this.motorEnabled = value;
     this.motorImpulse = 0;
@@ -225,7 +238,7 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set motorSpeed(value: number) {
-    this.speed = requireFinite('motorSpeed', value);
+    this.speed = requireRange('motorSpeed', value, -jointMax('motorSpeed'), jointMax('motorSpeed'));
     this.wakeBodies();
   }
 
@@ -235,7 +248,7 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set maxMotorForce(value: number) {
-    this.maxForce = requireNonNegative('maxMotorForce', value);
+    this.maxForce = requireNonNegative('maxMotorForce', value, jointMax('maxMotorForce'));
     this.wakeBodies();
   }
 
@@ -250,6 +263,7 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set enableSpring(value: boolean) {
+    requireBoolean('enableSpring', value);
     if (value === this.springEnabled) return;
     this.springEnabled = value;
     this.springImpulse = 0;
@@ -262,7 +276,7 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set hertz(value: number) {
-    this.springHertz = requireNonNegative('hertz', value);
+    this.springHertz = requireNonNegative('hertz', value, jointMax('hertz'));
     this.wakeBodies();
   }
 
@@ -272,7 +286,7 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set dampingRatio(value: number) {
-    this.springDampingRatio = requireNonNegative('dampingRatio', value);
+    this.springDampingRatio = requireNonNegative('dampingRatio', value, jointMax('dampingRatio'));
     this.wakeBodies();
   }
 

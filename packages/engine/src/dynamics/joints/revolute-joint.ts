@@ -1,4 +1,9 @@
-import { requireFinite, requireNonNegative } from '../../core/validate.ts';
+import {
+  optionalBoolean,
+  requireBoolean,
+  requireNonNegative,
+  requireRange,
+} from '../../core/validate.ts';
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
@@ -13,6 +18,7 @@ import {
   optionalNonNegative,
   requireBodies,
   requireOrdered,
+  jointMax,
   requirePoint,
   stateBoolean,
   stateNumber,
@@ -78,8 +84,11 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   readonly type = 'revolute' as const;
   /** @internal Anchor in each body's frame (relative to the body origin, m). */
   localAnchorAX = 0;
+  /** @internal */
   localAnchorAY = 0;
+  /** @internal */
   localAnchorBX = 0;
+  /** @internal */
   localAnchorBY = 0;
   /** @internal angleB - angleA at creation (rad). */
   referenceAngle = 0;
@@ -121,14 +130,14 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
     this.localAnchorBX = localB.x;
     this.localAnchorBY = localB.y;
     this.referenceAngle = this.bodyB.angle - this.bodyA.angle;
-    this.limitEnabled = options.enableLimit ?? false;
+    this.limitEnabled = optionalBoolean('enableLimit', options.enableLimit, false);
     this.lower = optionalFinite('lowerAngle', options.lowerAngle, 0);
     this.upper = optionalFinite('upperAngle', options.upperAngle, 0);
     requireOrdered('lowerAngle', this.lower, 'upperAngle', this.upper);
-    this.motorEnabled = options.enableMotor ?? false;
+    this.motorEnabled = optionalBoolean('enableMotor', options.enableMotor, false);
     this.speed = optionalFinite('motorSpeed', options.motorSpeed, 0);
     this.maxTorque = optionalNonNegative('maxMotorTorque', options.maxMotorTorque, 0);
-    this.springEnabled = options.enableSpring ?? false;
+    this.springEnabled = optionalBoolean('enableSpring', options.enableSpring, false);
     this.springHertz = optionalNonNegative('hertz', options.hertz, 0);
     this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0);
   }
@@ -159,6 +168,7 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set enableLimit(value: boolean) {
+    requireBoolean('enableLimit', value);
     if (value === this.limitEnabled) return;
     this.limitEnabled = value;
     this.lowerImpulse = 0;
@@ -186,8 +196,8 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
 
   /** Sets both angle limits (rad) at once; wakes the bodies. */
   setLimits(lowerAngle: number, upperAngle: number): void {
-    requireFinite('lowerAngle', lowerAngle);
-    requireFinite('upperAngle', upperAngle);
+    requireRange('lowerAngle', lowerAngle, -jointMax('lowerAngle'), jointMax('lowerAngle'));
+    requireRange('upperAngle', upperAngle, -jointMax('upperAngle'), jointMax('upperAngle'));
     requireOrdered('lowerAngle', lowerAngle, 'upperAngle', upperAngle);
     this.lower = lowerAngle;
     this.upper = upperAngle;
@@ -200,6 +210,7 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set enableMotor(value: boolean) {
+    requireBoolean('enableMotor', value);
     if (value === this.motorEnabled) return;
     this.motorEnabled = value;
     this.motorImpulse = 0;
@@ -212,7 +223,7 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set motorSpeed(value: number) {
-    this.speed = requireFinite('motorSpeed', value);
+    this.speed = requireRange('motorSpeed', value, -jointMax('motorSpeed'), jointMax('motorSpeed'));
     this.wakeBodies();
   }
 
@@ -222,7 +233,7 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set maxMotorTorque(value: number) {
-    this.maxTorque = requireNonNegative('maxMotorTorque', value);
+    this.maxTorque = requireNonNegative('maxMotorTorque', value, jointMax('maxMotorTorque'));
     this.wakeBodies();
   }
 
@@ -237,6 +248,7 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set enableSpring(value: boolean) {
+    requireBoolean('enableSpring', value);
     if (value === this.springEnabled) return;
     this.springEnabled = value;
     this.springImpulse = 0;
@@ -249,7 +261,7 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set hertz(value: number) {
-    this.springHertz = requireNonNegative('hertz', value);
+    this.springHertz = requireNonNegative('hertz', value, jointMax('hertz'));
     this.wakeBodies();
   }
 
@@ -259,7 +271,7 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set dampingRatio(value: number) {
-    this.springDampingRatio = requireNonNegative('dampingRatio', value);
+    this.springDampingRatio = requireNonNegative('dampingRatio', value, jointMax('dampingRatio'));
     this.wakeBodies();
   }
 

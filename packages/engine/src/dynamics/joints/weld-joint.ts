@@ -11,6 +11,7 @@ import {
   importLocalAnchors,
   optionalNonNegative,
   requireBodies,
+  jointMax,
   requirePoint,
   stateNumber,
   stateVector,
@@ -54,8 +55,11 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
   readonly type = 'weld' as const;
   /** @internal Anchor in each body's frame (relative to the body origin, m). */
   localAnchorAX = 0;
+  /** @internal */
   localAnchorAY = 0;
+  /** @internal */
   localAnchorBX = 0;
+  /** @internal */
   localAnchorBY = 0;
   /** @internal angleB - angleA at creation (rad). */
   referenceAngle = 0;
@@ -108,7 +112,7 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set linearHertz(value: number) {
-    this.linearFrequency = requireNonNegative('linearHertz', value);
+    this.linearFrequency = requireNonNegative('linearHertz', value, jointMax('linearHertz'));
     this.wakeBodies();
   }
 
@@ -118,7 +122,7 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set angularHertz(value: number) {
-    this.angularFrequency = requireNonNegative('angularHertz', value);
+    this.angularFrequency = requireNonNegative('angularHertz', value, jointMax('angularHertz'));
     this.wakeBodies();
   }
 
@@ -128,7 +132,7 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set dampingRatio(value: number) {
-    this.ratio = requireNonNegative('dampingRatio', value);
+    this.ratio = requireNonNegative('dampingRatio', value, jointMax('dampingRatio'));
     this.wakeBodies();
   }
 
