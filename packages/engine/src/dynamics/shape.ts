@@ -134,7 +134,7 @@ export class Shape {
   readonly body: Body;
   /** Geometry in the body's frame (read-only: build a new shape to change it). */
   readonly geometry: Geometry;
-  /** Mass per area (kg/m^2). Change it through {@link Body.setShapeDensity}-free rebuild: read-only here. */
+  /** Mass per area (kg/m^2). Read-only: a shape keeps the density it was built with. */
   readonly density: number = 1;
   /** @internal Friction behind {@link friction}. */
   frictionValue = 0.6;
