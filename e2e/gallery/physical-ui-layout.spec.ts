@@ -43,3 +43,25 @@ test('gallery: the Physical UI card on the list keeps a gap to the grid below it
     await closeGallery(gallery);
   }
 });
+
+test('gallery: the list links the worker page, and its card keeps a gap to the next', async ({
+  browser,
+}) => {
+  const gallery = await openGallery(browser);
+  const { page } = gallery;
+  try {
+    const worker = (await page.locator('[data-page="worker"]').boundingBox())!;
+    const next = (await page.locator('[data-page="physical-ui"]').boundingBox())!;
+    const gap = next.y - (worker.y + worker.height);
+    assert.ok(gap >= 12, `${gap.toFixed(1)} px between the worker card and the next one`);
+    await page.locator('[data-page="worker"]').click();
+    await page.waitForFunction(() => location.hash === '#/worker');
+    assert.equal(
+      (await page.locator('h1').first().textContent())?.trim(),
+      '2,000 bodies in a worker',
+    );
+    assertQuiet(gallery);
+  } finally {
+    await closeGallery(gallery);
+  }
+});

@@ -48,7 +48,12 @@ export function renderList(root: HTMLElement): () => void {
       ),
       h(
         'a',
-        { class: 'card physical-ui-card', href: '#/physical-ui', 'data-page': 'physical-ui' },
+        { class: 'card page-card', href: '#/worker', 'data-page': 'worker' },
+        h('h2', {}, 'A world in a Web Worker: 2,000 boxes beside a busy page'),
+      ),
+      h(
+        'a',
+        { class: 'card page-card', href: '#/physical-ui', 'data-page': 'physical-ui' },
         h('h2', {}, 'Physical UI: a page\u2019s own buttons, falling, thrown, still buttons'),
       ),
       grid,
