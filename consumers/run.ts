@@ -216,6 +216,9 @@ async function drivePage(name: string): Promise<void> {
     await page.waitForFunction(`window.probe.x() > ${startX + 2}`, undefined, {
       timeout: 15_000,
     });
+    // Hold still before letting go: a release within the canvas's 80 ms velocity window would
+    // throw the box, possibly off the end of the wall, and the tap below would miss it.
+    await page.waitForTimeout(250);
     await page.mouse.up();
     // A tap (press and release without moving) reaches the typed bodytap listener.
     await page.waitForFunction('window.probe.y() > 4.3', undefined, { timeout: 30_000 });
