@@ -33,7 +33,7 @@ import type { BodyId } from './ids.ts';
 // engine's own PhysicalError there, then the worker, so both worlds hold the very same body.
 
 /** Listener options cannot cross to a worker (functions do not clone). */
-type Crossing<T> = Omit<T, 'onMove' | 'onCollision'>;
+export type Crossing<T> = Omit<T, 'onMove' | 'onCollision'>;
 
 /**
  * A body for a worker world: the name of an engine factory (`kind`) and its options. `'body'` is
@@ -50,7 +50,7 @@ export type BodyDefinition<UserData = unknown> =
   | ({ readonly kind: 'wall' } & Crossing<WallOptions<UserData>>);
 
 /** Replaces the joint options' bodies by ids. */
-type WithIds<T, Keys extends string> = Omit<T, Keys | 'userData'> & {
+export type WithIds<T, Keys extends string> = Omit<T, Keys | 'userData'> & {
   readonly [K in Keys]: BodyId;
 };
 

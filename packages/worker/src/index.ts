@@ -10,7 +10,7 @@ export type {
 export { serveWorld } from './serve-world.ts';
 export type { WorkerEndpoint } from './serve-world.ts';
 export { buildBody, buildJoint } from './definitions.ts';
-export type { BodyDefinition, JointDefinition } from './definitions.ts';
+export type { BodyDefinition, Crossing, JointDefinition, WithIds } from './definitions.ts';
 export type { BodyId, ForceId, JointId } from './ids.ts';
 export type {
   WorkerCollisionEvent,
