@@ -124,9 +124,11 @@ function armTap(): void {
         const t0 = event.timeStamp;
         const y = run!.tap();
         const y0 = y();
-        const check = (now: number): void => {
+        const check = (): void => {
           // rAF callbacks run in order: this one, requested after the canvas's, sees its frame.
-          if (y() !== y0) resolve(now - t0);
+          // The clock is read here, not taken from rAF's argument: that is the frame's start,
+          // which can precede an event dispatched in the same frame.
+          if (y() !== y0) resolve(performance.now() - t0);
           else requestAnimationFrame(check);
         };
         requestAnimationFrame(check);

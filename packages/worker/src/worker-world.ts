@@ -9,7 +9,12 @@ import {
   type Vec2Like,
   type WorldOptions,
 } from '@physical/engine';
-import type { DrawingSource, Pose, RemoteDrawing } from '@physical/canvas';
+import {
+  MAX_REMOTE_STEPS_IN_FLIGHT,
+  type DrawingSource,
+  type Pose,
+  type RemoteDrawing,
+} from '@physical/canvas';
 import {
   buildBody,
   buildJoint,
@@ -426,9 +431,14 @@ export class WorkerWorld implements DrawingSource {
         `must be a positive, finite number of seconds, got ${String(dt)}.`,
       );
     }
+    this.requestSteps(dt, 1);
+  }
+
+  /** Applies what arrived, then asks the worker for `count` steps of `dt` in one message. */
+  private requestSteps(dt: number, count: number): void {
     this.applyArrived();
-    this.sentSteps++;
-    this.post({ type: 'step', dt, count: 1 });
+    this.sentSteps += count;
+    this.post({ type: 'step', dt, count });
   }
 
   /**
@@ -450,10 +460,16 @@ export class WorkerWorld implements DrawingSource {
     const frame = (now: number): void => {
       debt = last < 0 ? dt : Math.min(debt + (now - last) / 1000, 4 * dt);
       last = now;
-      while (debt >= dt && this.failure === null) {
-        this.step(dt);
+      // The steps this frame owes, as far as the worker is not still busy with earlier ones
+      // (then the time is dropped rather than queued: see stepsInFlight).
+      let count = 0;
+      while (debt >= dt && this.stepsInFlight + count < MAX_REMOTE_STEPS_IN_FLIGHT) {
+        count++;
         debt -= dt;
       }
+      if (debt >= dt) debt %= dt;
+      // One message per frame: a worker that draws (offscreen) draws once for all of them.
+      if (count > 0 && this.failure === null) this.requestSteps(dt, count);
       if (this.failure === null) handle = requestAnimationFrame(frame);
     };
     handle = requestAnimationFrame(frame);
@@ -468,6 +484,16 @@ export class WorkerWorld implements DrawingSource {
   /** Steps asked for so far. */
   get requestedSteps(): number {
     return this.sentSteps;
+  }
+
+  /**
+   * Steps asked for whose results have not come back from the worker yet. {@link run} and
+   * `<physical-canvas>` take no new steps while {@link MAX_REMOTE_STEPS_IN_FLIGHT} are in flight,
+   * so a worker that cannot keep up slows the simulation down instead of falling ever further
+   * behind the page. {@link step} itself always queues.
+   */
+  get stepsInFlight(): number {
+    return this.sentSteps - this.stepsValue - this.frames.length;
   }
 
   /**
@@ -633,6 +659,7 @@ export class WorkerWorld implements DrawingSource {
       this.post({ type: 'grabEnd', pointerId, vx, vy, isThrow });
       this.changed();
     },
+    stepsInFlight: () => this.stepsInFlight,
   };
 
   // ------------------------------------------------------------------ internals

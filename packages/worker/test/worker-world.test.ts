@@ -57,6 +57,18 @@ describe('WorkerWorld', () => {
     },
   );
 
+  it('counts the steps in flight, which the canvas holds back on', async () => {
+    const world = connect();
+    world.add({ kind: 'box', width: 1, height: 1 });
+    expect(world.stepsInFlight).toBe(0);
+    for (let i = 0; i < 3; i++) world.step();
+    expect(world.stepsInFlight).toBe(3);
+    expect(world.remote.stepsInFlight?.()).toBe(3);
+    await world.flush();
+    expect(world.stepsInFlight).toBe(0);
+    expect(world.steps).toBe(3);
+  });
+
   it('streams the poses of moved bodies and applies them at the next step', async () => {
     const world = connect();
     const ball = world.add({ kind: 'particle', radius: 0.2, position: { x: 0, y: 0 } });

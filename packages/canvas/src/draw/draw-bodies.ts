@@ -2,6 +2,7 @@ import type { Body } from '@physical/engine';
 import type { BodyDrawInfo, ResolvedBodyStyle } from './body-style.ts';
 import type { Pose } from './pose.ts';
 import type { Scene } from './scene.ts';
+import { PATH_BATCH_SIZE } from './path-batch.ts';
 import { appendAreaPath, appendSegmentPath } from './shape-path.ts';
 
 /**
@@ -80,6 +81,9 @@ function drawBatch(
     if (pass === 1) context.globalAlpha = style.opacity * 0.4;
     let hasArea = false;
     let hasSegment = false;
+    let inPath = 0;
+    if (style.fill !== 'transparent') context.fillStyle = style.fill;
+    if (style.stroke !== 'transparent') context.strokeStyle = style.stroke;
     context.beginPath();
     for (let k = 0; k < list.length; k++) {
       const index = list[k]!;
@@ -90,20 +94,19 @@ function drawBatch(
       const sin = Math.sin(pose.angle);
       const shapes = body.shapes;
       for (let s = 0; s < shapes.length; s++) {
-        if (appendAreaPath(context, shapes[s]!.geometry, pose, cos, sin)) hasArea = true;
-        else hasSegment = true;
+        if (appendAreaPath(context, shapes[s]!.geometry, pose, cos, sin)) {
+          hasArea = true;
+          inPath++;
+        } else hasSegment = true;
+      }
+      // Software raster slows down on very long paths (see PATH_BATCH_SIZE): paint in chunks.
+      if (inPath >= PATH_BATCH_SIZE) {
+        paintArea(context, style);
+        context.beginPath();
+        inPath = 0;
       }
     }
-    if (hasArea) {
-      if (style.fill !== 'transparent') {
-        context.fillStyle = style.fill;
-        context.fill();
-      }
-      if (style.stroke !== 'transparent') {
-        context.strokeStyle = style.stroke;
-        context.stroke();
-      }
-    }
+    if (hasArea && inPath > 0) paintArea(context, style);
     if (hasSegment) {
       context.beginPath();
       for (let k = 0; k < list.length; k++) {
@@ -120,6 +123,12 @@ function drawBatch(
     }
   }
   context.globalAlpha = 1;
+}
+
+/** Fills and strokes the current path in the style's colours (already set on the context). */
+function paintArea(context: CanvasRenderingContext2D, style: ResolvedBodyStyle): void {
+  if (style.fill !== 'transparent') context.fill();
+  if (style.stroke !== 'transparent') context.stroke();
 }
 
 function drawCustom(

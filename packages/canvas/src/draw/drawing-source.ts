@@ -39,4 +39,17 @@ export interface RemoteDrawing {
   moveGrab(pointerId: number, x: number, y: number): void;
   /** The pointer let go, throwing with velocity (vx, vy) when `isThrow`. */
   releaseGrab(pointerId: number, vx: number, vy: number, isThrow: boolean): void;
+  /**
+   * Steps asked for whose results have not come back yet. While it is
+   * {@link MAX_REMOTE_STEPS_IN_FLIGHT} or more, the element takes no new steps and drops that
+   * time: a source that cannot keep up slows the simulation down, as a slow page world does,
+   * instead of queueing steps without bound (and lagging further behind every frame).
+   */
+  stepsInFlight?(): number;
 }
+
+/**
+ * Most steps a {@link RemoteDrawing} source may have in flight before the element waits for it:
+ * two, so one late result does not cost a step, and a tap shows within about three frames.
+ */
+export const MAX_REMOTE_STEPS_IN_FLIGHT = 4;

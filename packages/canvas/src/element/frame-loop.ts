@@ -15,6 +15,12 @@ export interface FrameLoopTarget {
    * the loop then stops requesting frames until {@link FrameLoop.invalidate}.
    */
   isSettled(): boolean;
+  /**
+   * False while the simulation cannot take another step yet (a worker world still busy with
+   * the last ones): the loop then takes no more steps this frame and drops the time, as after
+   * a stall. Absent means always.
+   */
+  canStep?(): boolean;
 }
 
 /** Reasons the loop may be suspended; it runs only when none holds. */
@@ -123,12 +129,14 @@ export class FrameLoop {
     this.accumulator += elapsed;
     let steps = 0;
     while (this.accumulator >= fixedStep - STEP_TOLERANCE && steps < this.maxStepsPerFrame) {
+      if (this.target.canStep?.() === false) break;
       this.target.step(fixedStep);
       this.accumulator -= fixedStep;
       steps++;
     }
     this.stepCount += steps;
-    // Catch-up cap reached: drop the whole steps of the backlog, keep the fraction.
+    // Catch-up cap reached (or the target is busy): drop the whole steps of the backlog, keep
+    // the fraction.
     if (this.accumulator >= fixedStep - STEP_TOLERANCE) this.accumulator %= fixedStep;
     const alpha = this.paused ? 1 : Math.min(1, Math.max(0, this.accumulator / fixedStep));
     this.target.render(alpha, elapsed);

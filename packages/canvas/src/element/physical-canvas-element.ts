@@ -1,6 +1,6 @@
 import type { Body, Vec2, Vec2Like, World } from '@physical/engine';
 import type { BodyStyle } from '../draw/body-style.ts';
-import type { DrawingSource } from '../draw/drawing-source.ts';
+import { MAX_REMOTE_STEPS_IN_FLIGHT, type DrawingSource } from '../draw/drawing-source.ts';
 import type { DebugOverlays } from '../draw/debug-overlays.ts';
 import {
   screenToWorld,
@@ -100,6 +100,7 @@ export class PhysicalCanvasElement extends ElementBase {
       step: (dt) => this.stepWorld(dt),
       render: (alpha, elapsed) => this.render(alpha, elapsed),
       isSettled: () => this.isSettled(),
+      canStep: () => this.canStepWorld(),
     } satisfies FrameLoopTarget,
     animationFrameScheduler,
   );
@@ -544,6 +545,12 @@ export class PhysicalCanvasElement extends ElementBase {
     if (world.remote === undefined) this.poses.snapshot(world.bodies);
     this.stepDuration = dt;
     world.step(dt);
+  }
+
+  /** A remote world still busy with {@link MAX_REMOTE_STEPS_IN_FLIGHT} steps takes no more. */
+  private canStepWorld(): boolean {
+    const inFlight = this.worldValue?.remote?.stepsInFlight?.();
+    return inFlight === undefined || inFlight < MAX_REMOTE_STEPS_IN_FLIGHT;
   }
 
   /** Draws the frame at `alpha` between the last two steps. */

@@ -50,6 +50,25 @@ describe('FrameLoop', () => {
     expect(steps.length).toBe(4);
   });
 
+  it('takes no steps while the target cannot step, and drops that time', () => {
+    const { steps, target } = recorder();
+    let busy = true;
+    const { scheduler } = started({ ...target, canStep: () => !busy });
+    for (let i = 0; i < 30; i++) scheduler.advance(1000 / 60);
+    expect(steps.length).toBe(0);
+    busy = false;
+    // The busy half second is not replayed: one frame gives one step.
+    scheduler.advance(1000 / 60);
+    expect(steps.length).toBe(1);
+  });
+
+  it('stops a catch-up as soon as the target becomes busy', () => {
+    const { steps, target } = recorder();
+    const { scheduler } = started({ ...target, canStep: () => steps.length < 1 });
+    scheduler.advance(4000 / 60); // four steps owed; the target is busy after the first
+    expect(steps.length).toBe(1);
+  });
+
   it('scales time: a quarter speed takes 15 steps per second', () => {
     const { steps, target } = recorder();
     const { loop, scheduler } = started(target);
