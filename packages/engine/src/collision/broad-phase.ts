@@ -270,15 +270,17 @@ export class BroadPhase {
 
   /**
    * Calls `callback(proxyKey, shapeId)` for every proxy in the three trees whose fat box
-   * overlaps `aabb` (m, world frame), static tree first, until it returns false.
+   * overlaps `aabb` (m, world frame), static tree first, until it returns false. With
+   * `staticOnly`, only the static tree is searched (a non-bullet's sweep: Box2D v3's order).
    */
-  query(aabb: AABB, callback: TreeQueryCallback): void {
+  query(aabb: AABB, callback: TreeQueryCallback, staticOnly = false): void {
     const savedCallback = this.userQuery;
     const savedType = this.currentType;
     const savedStopped = this.isQueryStopped;
     this.userQuery = callback;
     this.isQueryStopped = false;
-    for (let type = 0; type < 3 && !this.isQueryStopped; type++) {
+    const types = staticOnly ? 1 : 3;
+    for (let type = 0; type < types && !this.isQueryStopped; type++) {
       this.currentType = type;
       this.trees[type]!.query(aabb, this.forwardQueryCallback);
     }

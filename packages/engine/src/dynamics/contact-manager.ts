@@ -30,8 +30,15 @@ export class ContactManager {
 
   constructor(private readonly islands: Islands) {}
 
-  /** Broad-phase callback: a new pair of overlapping fat boxes. */
-  addPair(shapeA: Shape, shapeB: Shape): void {
+  /**
+   * Broad-phase callback: a pair of overlapping fat boxes, by shape id. Most pairs reported
+   * already have a contact (a moved box overlaps what it overlapped before): one hash lookup
+   * settles those before any shape or body is read.
+   */
+  addPair(shapeIdA: number, shapeIdB: number, shapesById: readonly (Shape | null)[]): void {
+    if (this.pairs.has(shapeIdA, shapeIdB)) return;
+    const shapeA = shapesById[shapeIdA]!;
+    const shapeB = shapesById[shapeIdB]!;
     const bodyA = shapeA.body;
     const bodyB = shapeB.body;
     if (bodyA === bodyB) return;
@@ -41,7 +48,7 @@ export class ContactManager {
     // Sensors never make contacts; filters may forbid the pair (see filter.ts).
     if (shapeA.sensor || shapeB.sensor || !filtersCollide(shapeA, shapeB)) return;
     if (jointPreventsCollision(bodyA, bodyB)) return;
-    if (!this.pairs.add(shapeA.id, shapeB.id)) return;
+    this.pairs.add(shapeA.id, shapeB.id);
     const contact = this.pool.pop() ?? new Contact();
     contact.index = this.contacts.length;
     this.slots.reserve(contact.index + 1);

@@ -99,7 +99,8 @@ export class ContinuousSolver {
         Math.max(box.maxY, start.maxY),
       );
       setShapeProxy(this.proxy, shape);
-      broadPhase.query(box, this.queryCallback);
+      // A non-bullet sweeps against static shapes only: the other trees need not be searched.
+      broadPhase.query(box, this.queryCallback, !bullet);
     }
     // Leave the shape's tight box at the end pose; the caller refreshes it after a move anyway.
     for (const shape of body.shapeList) shape.computeAABB(body.transform);

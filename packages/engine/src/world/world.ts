@@ -100,7 +100,7 @@ export class World {
   private readonly contactEvent = new ContactEventData();
   private readonly gravityView: Vec2 = { x: 0, y: 0 };
   private readonly onPair = (shapeIdA: number, shapeIdB: number): void => {
-    this.contactManager.addPair(this.shapesById[shapeIdA]!, this.shapesById[shapeIdB]!);
+    this.contactManager.addPair(shapeIdA, shapeIdB, this.shapesById);
   };
   private lastStep = 1 / 60;
   private stepCount = 0;
