@@ -21,7 +21,10 @@ import {
   RESTITUTION as C_RESTITUTION,
 } from './contact-data.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, STATE_STRIDE, V_X, V_Y, W } from './body-state.ts';
-import type { Softness } from './softness.ts';
+import { Softness } from './softness.ts';
+
+// Scratch for a heavy/light pair's softness (prepare), so the hot path allocates nothing.
+const pairSoftness = new Softness();
 
 // Contact constraints of one step, prepared once into flat arrays so the sub-step loops touch only
 // numbers (Box2D v3 prepares contact constraints the same way, "b2PrepareContactsTask").
@@ -194,6 +197,16 @@ export function prepareContacts(
     c[base + BIAS_RATE] = immovable ? staticBiasRate : contactBiasRate;
     c[base + MASS_SCALE] = immovable ? staticMassScale : contactMassScale;
     c[base + IMPULSE_SCALE] = immovable ? staticImpulseScale : contactImpulseScale;
+    // Heavy on light: the soft contact's stiffness follows the heavier body's mass (softness.ts).
+    if (!immovable) {
+      const ratio = mA > mB ? mA / mB : mB / mA;
+      if (ratio > 2) {
+        pairSoftness.setForMassRatio(contactSoftness, ratio);
+        c[base + BIAS_RATE] = pairSoftness.biasRate;
+        c[base + MASS_SCALE] = pairSoftness.massScale;
+        c[base + IMPULSE_SCALE] = pairSoftness.impulseScale;
+      }
+    }
     c[base + POINT_COUNT] = pointCount;
     const radiusA = contactData[m + C_RADIUS_A]!;
     const radiusB = contactData[m + C_RADIUS_B]!;

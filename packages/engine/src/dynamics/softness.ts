@@ -12,8 +12,26 @@ export class Softness {
   biasRate = 0;
   massScale = 1;
   impulseScale = 0;
+  /** The frequency, damping ratio and sub-step last given to set. */
+  hertz = 0;
+  zeta = 0;
+  h = 0;
+
+  /**
+   * This softness for a pair whose inverse masses differ by `ratio` (>= 1) from the light body's
+   * side: the spring's stiffness is k = m_eff omega^2 and m_eff is the light body's mass, so a heavy
+   * body on a light one sinks ratio times deeper. Scaling omega by sqrt(ratio) makes k the heavy
+   * body's, capped at a quarter of the sub-step rate as Box2D v3 caps its contact hertz (stiffer
+   * throws a heavy/light/heavy stack apart, measured in the issue #13 notes).
+   */
+  setForMassRatio(base: Softness, ratio: number): this {
+    return this.set(Math.min(base.hertz * Math.sqrt(ratio), 0.25 / base.h), base.zeta, base.h);
+  }
 
   set(hertz: number, zeta: number, h: number): this {
+    this.hertz = hertz;
+    this.zeta = zeta;
+    this.h = h;
     const omega = 2 * Math.PI * hertz;
     const a1 = 2 * zeta + h * omega;
     // No stiffness (also a frequency so small that a1 underflows when zeta is 0): no spring.
