@@ -23,8 +23,26 @@ const { values } = parseArgs({
     steps: { type: 'string' },
     'no-build': { type: 'boolean', default: false },
     'no-scaling': { type: 'boolean', default: false },
+    help: { type: 'boolean', short: 'h', default: false },
   },
 });
+
+if (values.help) {
+  process.stdout
+    .write(`npm run bench -- [options]: Box2D v3's benchmark scenes in Physical and the peer engines.
+  --scenes a,b      scenes to run (default: all)
+  --engines a,b     engines to compare (default: all)
+  --rounds N        sweeps over every scene and engine (default 3; 1 with --quick)
+  --quick           a smoke run: 10 steps, one round
+  --budget S        seconds each engine may spend on a scene (default 90)
+  --steps N         every engine times the same first N steps of each scene
+  --json FILE       also write the results as JSON
+  --browser         also time a 1,000-box pile of Physical in Chromium
+  --no-build        measure the engine's existing build (packages/engine/dist)
+  --no-scaling      skip Physical's per-body cost scaling run
+`);
+  process.exit(0);
+}
 
 const log = (line = ''): void => void process.stdout.write(`${line}\n`);
 const progress = (line: string): void => void process.stderr.write(`${line}\n`);

@@ -38,8 +38,14 @@ test('gallery: the list shows a drawn picture of every sample', async ({ browser
     for (const scene of scenes) {
       const selector = `[data-sample="${scene.id}"] physical-canvas`;
       await page.locator(selector).scrollIntoViewIfNeeded();
-      await sleep(50);
-      assert.ok((await paintedPixels(page, selector)) > 200, `${scene.id}: picture drawn`);
+      // A picture scrolled back into view is drawn on its next frame, which a loaded machine may
+      // take a while to give: poll for it (up to 3 s) rather than sleep a fixed time.
+      let painted = 0;
+      for (let waited = 0; waited < 3000 && painted <= 200; waited += 100) {
+        await sleep(waited === 0 ? 50 : 100);
+        painted = await paintedPixels(page, selector);
+      }
+      assert.ok(painted > 200, `${scene.id}: picture drawn (${painted} pixels)`);
     }
     await page.evaluate(() => window.scrollTo(0, 0));
     await sleep(100);

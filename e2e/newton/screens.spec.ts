@@ -1,5 +1,6 @@
 import assert from 'node:assert/strict';
 import { test } from '../harness.ts';
+import type { Page } from 'playwright-core';
 import {
   assertQuiet,
   closeApp,
@@ -212,6 +213,74 @@ test('newton: reactions, taps spawn particles, tilt pushes them, collisions show
     }
     await sleep(1500);
     await screenshot(page, 'reactions-collisions');
+    assertQuiet(app);
+  } finally {
+    await closeApp(app);
+  }
+});
+
+/** Pixels unlike the background below the box's bottom wall (-1 when no canvas shows there). */
+async function paintedBelowBottomWall(page: Page): Promise<number> {
+  return page.evaluate(() => {
+    const host = document.querySelector('#reactions physical-canvas') as HTMLElement & {
+      world: { bodies: { type: string; shapes: { geometry: { y1?: number; y2?: number } }[] }[] };
+      worldToScreen(point: { x: number; y: number }): { x: number; y: number };
+    };
+    let bottom = -Infinity;
+    for (const body of host.world.bodies) {
+      if (body.type !== 'static') continue;
+      for (const shape of body.shapes) {
+        bottom = Math.max(bottom, shape.geometry.y1 ?? -Infinity, shape.geometry.y2 ?? -Infinity);
+      }
+    }
+    const source = host.shadowRoot!.querySelector('canvas')!;
+    const ratio = source.width / source.clientWidth;
+    const wallY = host.worldToScreen({ x: 0, y: bottom }).y;
+    const top = Math.ceil((wallY + 3) * ratio);
+    if (top >= source.height) return -1;
+    const copy = document.createElement('canvas');
+    copy.width = source.width;
+    copy.height = source.height;
+    const context = copy.getContext('2d', { willReadFrequently: true })!;
+    context.drawImage(source, 0, 0);
+    const { data } = context.getImageData(0, top, copy.width, copy.height - top);
+    const [r0, g0, b0] = [data[0]!, data[1]!, data[2]!];
+    let count = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      if (Math.abs(data[i]! - r0) + Math.abs(data[i + 1]! - g0) + Math.abs(data[i + 2]! - b0) > 30)
+        count++;
+    }
+    return count;
+  });
+}
+
+test('newton: reactions, collision arrows at a wall stay inside the box', async ({ browser }) => {
+  const app = await openApp(browser, '#reactions');
+  const { page } = app;
+  try {
+    const canvas = page.locator('#reactions physical-canvas');
+    await sleep(200);
+    const box = (await canvas.boundingBox())!;
+    for (const fx of [0.3, 0.5, 0.7]) {
+      await page.touchscreen.tap(box.x + box.width * fx, box.y + box.height * 0.75);
+    }
+    // Lean the top edge up: the particles fall onto the bottom wall, whose reaction arrows
+    // point down, out of the box.
+    await page.evaluate(() =>
+      window.dispatchEvent(
+        new DeviceOrientationEvent('deviceorientation', { alpha: 0, beta: 60, gamma: 0 }),
+      ),
+    );
+    await page.waitForFunction(
+      () =>
+        Number(
+          document.querySelector<HTMLElement>('#reactions [data-arrows]')!.dataset['arrows'],
+        ) >= 2,
+      undefined,
+      { timeout: 8000 },
+    );
+    const outside = await paintedBelowBottomWall(page);
+    assert.ok(outside >= 0 && outside < 50, `pixels drawn below the bottom wall: ${outside}`);
     assertQuiet(app);
   } finally {
     await closeApp(app);

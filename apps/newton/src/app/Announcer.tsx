@@ -1,5 +1,12 @@
 import { Box } from '@mui/material';
-import { useCallback, useEffect, useRef, useState, type ReactElement } from 'react';
+import {
+  useCallback,
+  useEffect,
+  useLayoutEffect,
+  useRef,
+  useState,
+  type ReactElement,
+} from 'react';
 import { playEventTone } from './sound.ts';
 
 /** Shortest time between two announcements (ms): a screen reader finishes a short sentence. */
@@ -19,6 +26,9 @@ export function useAnnouncer(name: string): {
     queue: [] as string[],
     lastAt: -Infinity,
     timer: null as ReturnType<typeof setTimeout> | null,
+    /** The text last set, and whether it has reached the page yet. */
+    shown: '',
+    pending: false,
   });
 
   // Speaks the next message once the gap since the last one (as it reached the page) is over.
@@ -26,13 +36,23 @@ export function useAnnouncer(name: string): {
     const current = state.current;
     current.timer = null;
     if (current.queue.length === 0) return;
+    // The last message has not reached the page yet (a busy frame delays the commit): its gap
+    // has not started.
+    if (current.pending) {
+      current.timer = setTimeout(pump, 50);
+      return;
+    }
     const wait = current.lastAt + ANNOUNCE_GAP_MS - performance.now();
     if (wait > 0) {
       current.timer = setTimeout(pump, wait);
       return;
     }
+    const next = current.queue.shift()!;
     current.lastAt = performance.now();
-    setText(current.queue.shift()!);
+    // The same text again changes nothing on the page: nothing to wait for.
+    current.pending = next !== current.shown;
+    current.shown = next;
+    setText(next);
     if (current.queue.length > 0) current.timer = setTimeout(pump, ANNOUNCE_GAP_MS);
   }, []);
 
@@ -46,9 +66,12 @@ export function useAnnouncer(name: string): {
     [pump],
   );
 
-  // The gap counts from when the text reached the page (a busy frame delays the commit).
-  useEffect(() => {
-    if (text !== '') state.current.lastAt = performance.now();
+  // The gap counts from when the text reached the page (a busy frame delays the commit): a
+  // layout effect runs in the commit itself, before the timer can fire.
+  useLayoutEffect(() => {
+    if (text === '') return;
+    state.current.lastAt = performance.now();
+    state.current.pending = false;
   }, [text]);
 
   useEffect(() => {

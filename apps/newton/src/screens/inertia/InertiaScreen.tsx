@@ -1,4 +1,4 @@
-import { Box, Button, Slider, ToggleButton, ToggleButtonGroup, Typography } from '@mui/material';
+import { Box, Button, ToggleButton, ToggleButtonGroup } from '@mui/material';
 import { drawArrow, type OverlayDrawer, type PhysicalCanvasElement } from '@physical/canvas';
 import type { Force } from '@physical/engine';
 import { PhysicalCanvas } from '@physical/react';
@@ -11,6 +11,9 @@ import { simulatedTime, useSimulation } from '../../app/use-simulation.ts';
 import { useTicker } from '../../app/use-ticker.ts';
 import { TimeSeries } from '../../graphs/time-series.ts';
 import { TimeSeriesGraph } from '../../graphs/TimeSeriesGraph.tsx';
+import { clipToWalls } from '../../app/clip-to-walls.ts';
+import { ElasticitySlider } from '../../app/ElasticitySlider.tsx';
+import { Stopwatch } from '../../app/Stopwatch.tsx';
 import { useI18n } from '../../i18n/i18n.tsx';
 import { directionName } from './direction-name.ts';
 import { ForceDialog } from './ForceDialog.tsx';
@@ -112,11 +115,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
       }
       const scale = canvas.viewport.scale;
       const centre = current.body.position;
-      // Arrows stay inside the walls.
-      context.save();
-      context.beginPath();
-      context.rect(0, 0, current.width, current.height);
-      context.clip();
+      clipToWalls(context, current.width, current.height);
       drawArrow(
         context,
         scale,
@@ -257,27 +256,23 @@ export function InertiaScreen({ active }: { active: boolean }) {
             lines={[{ series: speed, color: '#64ffda', label: t('inertia.speed') }]}
             height={90}
           />
+          <Stopwatch
+            time={() => (scene === null ? 0 : simulatedTime(scene.world))}
+            visible={active}
+            paused={sim.paused}
+            timeScale={sim.timeScale}
+            announce={announce}
+          />
           <Box sx={{ display: 'flex', gap: 1.5, alignItems: 'center', px: 0.5 }}>
-            <Box sx={{ flex: 1, minWidth: 0 }}>
-              <Typography id="inertia-elasticity-label" variant="caption" component="div">
-                {t('inertia.elasticity')}: {number(elasticity * 100, 0)} %
-              </Typography>
-              <Slider
-                value={Math.round(elasticity * 100)}
-                min={0}
-                max={100}
-                step={5}
-                onChange={(_event, value) => {
-                  const next = (value as number) / 100;
-                  setElasticityState(next);
-                  if (scene !== null) setElasticity(scene, next);
-                }}
-                aria-labelledby="inertia-elasticity-label"
-                getAriaValueText={(value) => `${value} %`}
-                data-control="elasticity"
-                sx={{ py: 1.5 }}
-              />
-            </Box>
+            <ElasticitySlider
+              id="inertia-elasticity-label"
+              label={t('inertia.elasticity')}
+              value={elasticity}
+              onChange={(next) => {
+                setElasticityState(next);
+                if (scene !== null) setElasticity(scene, next);
+              }}
+            />
             <ToggleButtonGroup
               exclusive
               value={surface}

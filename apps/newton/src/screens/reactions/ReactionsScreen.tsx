@@ -1,4 +1,4 @@
-import { Box, Button, IconButton, Slider, Tooltip, Typography } from '@mui/material';
+import { Box, Button, IconButton, Tooltip, Typography } from '@mui/material';
 import {
   ARROW_COLORS,
   drawArrow,
@@ -24,6 +24,8 @@ import { Readout } from '../../app/Readout.tsx';
 import { ScreenLayout } from '../../app/ScreenLayout.tsx';
 import { STEP, simulatedTime, useSimulation } from '../../app/use-simulation.ts';
 import { useTicker } from '../../app/use-ticker.ts';
+import { clipToWalls } from '../../app/clip-to-walls.ts';
+import { ElasticitySlider } from '../../app/ElasticitySlider.tsx';
 import { useI18n } from '../../i18n/i18n.tsx';
 import {
   requestTiltPermission,
@@ -185,6 +187,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       if (current === null) return;
       const visible = arrows.visible(simulatedTime(current.world));
       const scale = canvas.viewport.scale;
+      clipToWalls(context, current.width, current.height);
       // Momentum arrows: m v of each particle.
       for (const body of current.particles.keys()) {
         const v = body.linearVelocity;
@@ -226,6 +229,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           },
         );
       }
+      context.restore();
       const host = hostRef.current;
       const count = String(visible.length * 2);
       if (host !== null && host.dataset['arrows'] !== count) host.dataset['arrows'] = count;
@@ -423,25 +427,15 @@ export function ReactionsScreen({ active }: { active: boolean }) {
             </Box>
           </Box>
           <Box sx={{ display: 'flex', gap: 1.5, alignItems: 'center', px: 0.5 }}>
-            <Box sx={{ flex: 1, minWidth: 0 }}>
-              <Typography id="reactions-elasticity-label" variant="caption" component="div">
-                {t('reactions.elasticity')}: {number(elasticity * 100, 0)} %
-              </Typography>
-              <Slider
-                value={Math.round(elasticity * 100)}
-                min={0}
-                max={100}
-                step={5}
-                onChange={(_event, value) => {
-                  const next = (value as number) / 100;
-                  setElasticityState(next);
-                  if (scene !== null) setElasticity(scene, next);
-                }}
-                aria-labelledby="reactions-elasticity-label"
-                getAriaValueText={(value) => `${value} %`}
-                sx={{ py: 1.5 }}
-              />
-            </Box>
+            <ElasticitySlider
+              id="reactions-elasticity-label"
+              label={t('reactions.elasticity')}
+              value={elasticity}
+              onChange={(next) => {
+                setElasticityState(next);
+                if (scene !== null) setElasticity(scene, next);
+              }}
+            />
           </Box>
           <Typography variant="caption" component="p" sx={{ px: 0.5, m: 0 }} data-legend="arrows">
             <Box component="span" sx={{ color: ARROW_COLORS.force, fontWeight: 700 }}>

@@ -1,0 +1,40 @@
+import { Box, Slider, Typography } from '@mui/material';
+import { useI18n } from '../i18n/i18n.tsx';
+
+/** Props of {@link ElasticitySlider}. */
+export interface ElasticitySliderProps {
+  /** Id of the label element (unique on the page). */
+  readonly id: string;
+  /** The label, without the value. */
+  readonly label: string;
+  /** Coefficient of restitution, 0 to 1. */
+  readonly value: number;
+  /** Called with the new coefficient, 0 to 1, in steps of 0.05. */
+  readonly onChange: (elasticity: number) => void;
+}
+
+/**
+ * The elasticity (coefficient of restitution) slider that Inertia and Reactions share: shown in
+ * per cent, in steps of 5 %, labelled for screen readers.
+ */
+export function ElasticitySlider({ id, label, value, onChange }: ElasticitySliderProps) {
+  const { number } = useI18n();
+  return (
+    <Box sx={{ flex: 1, minWidth: 0 }}>
+      <Typography id={id} variant="caption" component="div">
+        {label}: {number(value * 100, 0)} %
+      </Typography>
+      <Slider
+        value={Math.round(value * 100)}
+        min={0}
+        max={100}
+        step={5}
+        onChange={(_event, percent) => onChange((percent as number) / 100)}
+        aria-labelledby={id}
+        getAriaValueText={(percent) => `${percent} %`}
+        data-control="elasticity"
+        sx={{ py: 1.5 }}
+      />
+    </Box>
+  );
+}
