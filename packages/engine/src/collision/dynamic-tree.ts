@@ -163,11 +163,6 @@ export class DynamicTree {
     return this.leafCount;
   }
 
-  /** Height of the tree: 0 for a single leaf or an empty tree. */
-  getHeight(): number {
-    return this.root === NULL_NODE ? 0 : this.heights[this.root]!;
-  }
-
   /**
    * Inserts a leaf holding `aabb` (m, world frame) exactly as given and returns its proxy id.
    * `userData` is an int32 the caller gets back in callbacks (the broad phase stores shape ids).
@@ -396,100 +391,6 @@ export class DynamicTree {
         this.stack[top++] = this.child2[node]!;
         this.stack[top++] = first;
       }
-    }
-  }
-
-  /**
-   * Sum of the perimeters of internal nodes divided by the root's perimeter: the SAH quality
-   * measure (lower is better; 0 for fewer than two leaves).
-   */
-  getAreaRatio(): number {
-    const root = this.root;
-    if (root === NULL_NODE || this.child1[root] === NULL_NODE) {
-      return 0;
-    }
-    const rootPerimeter = this.perimeter(root);
-    let total = 0;
-    for (let node = 0; node < this.capacity; node++) {
-      if (this.heights[node]! > 0) {
-        total += this.perimeter(node);
-      }
-    }
-    return rootPerimeter > 0 ? total / rootPerimeter : 0;
-  }
-
-  /**
-   * Checks every structural invariant (parent links, heights, enclosing boxes, leaf and free
-   * counts) and throws an Error naming the first one broken. O(n); for tests and debugging.
-   */
-  validate(): void {
-    let reachable = 0;
-    let leaves = 0;
-    if (this.root !== NULL_NODE) {
-      if (this.parent[this.root] !== NULL_NODE) {
-        throw new Error('DynamicTree: the root has a parent.');
-      }
-      const pending: number[] = [this.root];
-      while (pending.length > 0) {
-        const node = pending.pop()!;
-        reachable++;
-        if (reachable > this.capacity) {
-          throw new Error('DynamicTree: cycle detected.');
-        }
-        const a = this.child1[node]!;
-        const b = this.child2[node]!;
-        if (a === NULL_NODE) {
-          if (b !== NULL_NODE) {
-            throw new Error(`DynamicTree: leaf ${node} has a second child.`);
-          }
-          if (this.heights[node] !== 0) {
-            throw new Error(`DynamicTree: leaf ${node} has height ${this.heights[node]}.`);
-          }
-          leaves++;
-          continue;
-        }
-        for (const child of [a, b]) {
-          if (child < 0 || child >= this.capacity) {
-            throw new Error(`DynamicTree: node ${node} has child ${child} out of range.`);
-          }
-          if (this.parent[child] !== node) {
-            throw new Error(`DynamicTree: child ${child} does not point back to ${node}.`);
-          }
-          for (let k = 0; k < 2; k++) {
-            if (this.boxes[4 * node + k]! > this.boxes[4 * child + k]!) {
-              throw new Error(`DynamicTree: node ${node} does not enclose child ${child}.`);
-            }
-            if (this.boxes[4 * node + 2 + k]! < this.boxes[4 * child + 2 + k]!) {
-              throw new Error(`DynamicTree: node ${node} does not enclose child ${child}.`);
-            }
-          }
-          pending.push(child);
-        }
-        const expected = 1 + Math.max(this.heights[a]!, this.heights[b]!);
-        if (this.heights[node] !== expected) {
-          throw new Error(
-            `DynamicTree: node ${node} has height ${this.heights[node]}, expected ${expected}.`,
-          );
-        }
-      }
-    }
-    if (leaves !== this.leafCount) {
-      throw new Error(`DynamicTree: ${leaves} leaves reachable, proxy count ${this.leafCount}.`);
-    }
-    let free = 0;
-    for (let node = this.freeList; node !== NULL_NODE; node = this.parent[node]!) {
-      if (this.heights[node] !== -1) {
-        throw new Error(`DynamicTree: free node ${node} is not marked free.`);
-      }
-      free++;
-      if (free > this.capacity) {
-        throw new Error('DynamicTree: cycle in the free list.');
-      }
-    }
-    if (free + reachable !== this.capacity) {
-      throw new Error(
-        `DynamicTree: ${reachable} reachable + ${free} free nodes != capacity ${this.capacity}.`,
-      );
     }
   }
 

@@ -46,18 +46,18 @@ const pairSoftness = new Softness();
 // friction 0.6, so no symmetric friction pass was needed.
 
 // Per-constraint layout (doubles).
-const NORMAL_X = 0;
-const NORMAL_Y = 1;
+export const NORMAL_X = 0;
+export const NORMAL_Y = 1;
 const FRICTION = 2;
 const RESTITUTION = 3;
-const INV_MASS_A = 4;
-const INV_I_A = 5;
-const INV_MASS_B = 6;
-const INV_I_B = 7;
-const BIAS_RATE = 8;
-const MASS_SCALE = 9;
-const IMPULSE_SCALE = 10;
-const POINT_COUNT = 11;
+export const INV_MASS_A = 4;
+export const INV_I_A = 5;
+export const INV_MASS_B = 6;
+export const INV_I_B = 7;
+export const BIAS_RATE = 8;
+export const MASS_SCALE = 9;
+export const IMPULSE_SCALE = 10;
+export const POINT_COUNT = 11;
 // Where the common point of application lives (see prepareContacts), and the motion since the
 // lever arms were set.
 const SHIFT_WEIGHT_A = 12;
@@ -77,14 +77,14 @@ const BLOCK_K11 = 22;
 const BLOCK_K12 = 23;
 const BLOCK_K22 = 24;
 const BLOCK = 25;
-const POINTS = 26;
+export const POINTS = 26;
 // Per-point layout, relative to POINTS + j * POINT_STRIDE.
-const R_AX = 0;
-const R_AY = 1;
-const R_BX = 2;
-const R_BY = 3;
-const BASE_SEPARATION = 4;
-const NORMAL_IMPULSE = 5;
+export const R_AX = 0;
+export const R_AY = 1;
+export const R_BX = 2;
+export const R_BY = 3;
+export const BASE_SEPARATION = 4;
+export const NORMAL_IMPULSE = 5;
 const TANGENT_IMPULSE = 6;
 const MAX_NORMAL_IMPULSE = 7;
 const NORMAL_MASS = 8;
@@ -95,8 +95,8 @@ const TOTAL_TANGENT_IMPULSE = 12;
 // Impact state of a point: 0 none; 1 an impact found in this sub-step's solve pass, to bounce in
 // its relax pass; 2 bounced in this sub-step (the bounce is not warm-started).
 const IMPACT = 15;
-const POINT_STRIDE = 16;
-const STRIDE = POINTS + 2 * POINT_STRIDE;
+export const POINT_STRIDE = 16;
+export const STRIDE = POINTS + 2 * POINT_STRIDE;
 /** Largest condition number (max K_jj^2 / det K) of a two-point block solved as a block. */
 const MAX_CONDITION_NUMBER = 1000;
 
@@ -113,6 +113,8 @@ export class ContactConstraints {
   /** Constraints between two circles centred on their bodies: their normal follows the centres. */
   circlePairs: Int32Array = new Int32Array(64);
   circlePairCount = 0;
+  /** Constraints of this step between two moving bodies whose masses differ more than twofold. */
+  heavyOnLightCount = 0;
   /** The contact each constraint came from, for events (the first `count`). */
   readonly contacts: Contact[] = [];
 
@@ -147,6 +149,7 @@ export function prepareContacts(
   // Each contact is a constraint at most once: reserve for all of them.
   constraints.reserve(contacts.length);
   constraints.circlePairCount = 0;
+  constraints.heavyOnLightCount = 0;
   const c = constraints.data;
   const indices = constraints.bodies;
   const slots = constraints.slots;
@@ -201,6 +204,7 @@ export function prepareContacts(
     if (!immovable) {
       const ratio = mA > mB ? mA / mB : mB / mA;
       if (ratio > 2) {
+        constraints.heavyOnLightCount++;
         pairSoftness.setForMassRatio(contactSoftness, ratio);
         c[base + BIAS_RATE] = pairSoftness.biasRate;
         c[base + MASS_SCALE] = pairSoftness.massScale;

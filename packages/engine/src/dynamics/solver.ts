@@ -23,6 +23,7 @@ import {
 } from './contact-solver.ts';
 import { ContinuousSolver } from './continuous.ts';
 import { JointSolver } from './joints/joint-solver.ts';
+import { ShockPropagation } from './shock-propagation.ts';
 import { Softness } from './softness.ts';
 
 /** World settings the solver reads each step. */
@@ -80,6 +81,8 @@ export class Solver {
   fastCount = 0;
   readonly fastBullets: Body[] = [];
   fastBulletCount = 0;
+  /** The ground-up sweep under heavy bodies resting on light ones (shock-propagation.ts). */
+  private readonly shock = new ShockPropagation();
   private readonly contactSoftness = new Softness();
   private readonly staticSoftness = new Softness();
 
@@ -164,6 +167,15 @@ export class Solver {
       this.staticSoftness,
     );
     scrambleOrder(constraints.order, constraints.count);
+    const shock = this.shock;
+    const shockBiasRate = this.staticSoftness.biasRate;
+    shock.prepare(
+      constraints,
+      this.awakeCount,
+      shockBiasRate,
+      settings.gravityX,
+      settings.gravityY,
+    );
     const joints = this.joints;
     joints.prepare(dt, subSteps, contactHertz);
 
@@ -174,10 +186,16 @@ export class Solver {
       warmStartContacts(constraints, s);
       joints.solve(s, true);
       solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, true);
+      if (shock.count > 0) {
+        shock.solve(constraints, s, inverseH, shockBiasRate, settings.maxContactPushSpeed, true);
+      }
       integratePositions(this.awakeCount, s, h);
       refreshCirclePairs(constraints, s);
       joints.solve(s, false);
       solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, false);
+      if (shock.count > 0) {
+        shock.solve(constraints, s, inverseH, shockBiasRate, settings.maxContactPushSpeed, false);
+      }
     }
     storeImpulses(constraints, contactData);
     joints.finish();

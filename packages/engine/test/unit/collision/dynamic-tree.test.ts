@@ -1,5 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { DynamicTree } from '../../../src/collision/dynamic-tree.ts';
+import { DynamicTree, checkTreeState } from '../../../src/collision/dynamic-tree.ts';
 import { AABB, aabbOverlaps } from '../../../src/geometry/aabb.ts';
 import { RayInput } from '../../../src/geometry/ray.ts';
 
@@ -13,6 +13,53 @@ function makeRandom(seed: number): () => number {
     t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
     return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
   };
+}
+
+/**
+ * Every structural invariant of a tree: links, reachability and the free list (checkTreeState),
+ * then each internal node's height and enclosing box, and every free node marked free.
+ */
+function validate(tree: DynamicTree): void {
+  const state = tree.exportState();
+  expect(checkTreeState(state)).toBeNull();
+  for (let node = 0; node < state.capacity; node++) {
+    const a = state.child1[node]!;
+    const b = state.child2[node]!;
+    if (state.heights[node]! <= 0 || a === -1) continue;
+    expect(state.heights[node]).toBe(1 + Math.max(state.heights[a]!, state.heights[b]!));
+    for (const child of [a, b]) {
+      for (let k = 0; k < 2; k++) {
+        expect(state.boxes[4 * node + k]!).toBeLessThanOrEqual(state.boxes[4 * child + k]!);
+        expect(state.boxes[4 * node + 2 + k]!).toBeGreaterThanOrEqual(
+          state.boxes[4 * child + 2 + k]!,
+        );
+      }
+    }
+  }
+  for (let node = state.freeList; node !== -1; node = state.parent[node]!) {
+    expect(state.heights[node]).toBe(-1);
+  }
+}
+
+/** The tree's height: 0 for a single leaf or none. */
+function height(tree: DynamicTree): number {
+  const state = tree.exportState();
+  return state.root === -1 ? 0 : state.heights[state.root]!;
+}
+
+/** Sum of the internal nodes' perimeters over the root's: the SAH quality (lower is better). */
+function areaRatio(tree: DynamicTree): number {
+  const state = tree.exportState();
+  const perimeter = (node: number): number =>
+    2 *
+    (state.boxes[4 * node + 2]! -
+      state.boxes[4 * node]! +
+      (state.boxes[4 * node + 3]! - state.boxes[4 * node + 1]!));
+  let total = 0;
+  for (let node = 0; node < state.capacity; node++) {
+    if (state.heights[node]! > 0) total += perimeter(node);
+  }
+  return total / perimeter(state.root);
 }
 
 function randomBox(random: () => number, extent: number, maxSize: number): AABB {
@@ -79,7 +126,7 @@ describe('DynamicTree', () => {
           live.delete(id);
         }
       }
-      tree.validate();
+      validate(tree);
       expect(tree.proxyCount).toBe(live.size);
       for (const [id, box] of live) {
         tree.getFatAABB(id, scratch);
@@ -217,10 +264,10 @@ describe('DynamicTree', () => {
     for (let i = 0; i < 1000; i++) {
       tree.createProxy(new AABB().set(i, 0, i + 1, 1), i);
     }
-    tree.validate();
+    validate(tree);
     // A perfectly balanced tree of 1000 leaves has height 10.
-    expect(tree.getHeight()).toBeLessThanOrEqual(20);
-    expect(tree.getAreaRatio()).toBeLessThan(20);
+    expect(height(tree)).toBeLessThanOrEqual(20);
+    expect(areaRatio(tree)).toBeLessThan(20);
   });
 
   it('reuses destroyed proxy ids and keeps its capacity after churn', () => {
@@ -235,12 +282,12 @@ describe('DynamicTree', () => {
         tree.destroyProxy(ids[i]!);
       }
       expect(tree.proxyCount).toBe(0);
-      expect(tree.getHeight()).toBe(0);
+      expect(height(tree)).toBe(0);
       for (let i = 0; i < 100; i++) {
         ids[i] = tree.createProxy(new AABB().set(i, -i, i + 1, -i + 1), i);
       }
     }
-    tree.validate();
+    validate(tree);
     expect(Math.max(...ids)).toBeLessThanOrEqual(maxId);
   });
 });
