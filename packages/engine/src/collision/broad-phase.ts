@@ -27,7 +27,7 @@ export type PairCallback = (shapeIdA: number, shapeIdB: number) => void;
 
 const STATIC = 0;
 const DYNAMIC = 2;
-const NULL_KEY = -1;
+export const NULL_KEY = -1;
 
 /** Packs a tree proxy id and a proxy type into a proxy key. */
 function makeProxyKey(proxyId: number, type: number): number {
@@ -40,16 +40,20 @@ function makeProxyKey(proxyId: number, type: number): number {
  * Not re-entrant: do not create, destroy or move proxies from inside its callbacks.
  */
 export class BroadPhase {
-  private readonly trees: readonly [DynamicTree, DynamicTree, DynamicTree] = [
+  /** @internal */
+  readonly trees: readonly [DynamicTree, DynamicTree, DynamicTree] = [
     new DynamicTree(),
     new DynamicTree(),
     new DynamicTree(),
   ];
   /** Proxy keys buffered as moved since the last updatePairs; NULL_KEY marks a destroyed one. */
-  private moveBuffer = new Int32Array(64);
-  private moveCount = 0;
+  /** @internal */
+  moveBuffer = new Int32Array(64);
+  /** @internal */
+  moveCount = 0;
   /** Index in moveBuffer per proxy key, or -1 when the proxy is not buffered. */
-  private movedIndex = new Int32Array(64).fill(-1);
+  /** @internal */
+  movedIndex = new Int32Array(64).fill(-1);
 
   // State of the current updatePairs, query or rayCast, read by the pre-bound tree callbacks
   // below so that no closure is created per call.
@@ -154,33 +158,6 @@ export class BroadPhase {
     }
     this.movedIndex[proxyKey] = this.moveCount;
     this.moveBuffer[this.moveCount++] = proxyKey;
-  }
-
-  /** The trees and the move buffer as plain data (for world snapshots). */
-  exportState(): BroadPhaseState {
-    return {
-      trees: [
-        this.trees[0].exportState(),
-        this.trees[1].exportState(),
-        this.trees[2].exportState(),
-      ],
-      moved: Array.from(this.moveBuffer.subarray(0, this.moveCount)),
-    };
-  }
-
-  /** Replaces every tree and the move buffer; the states must have passed checkTreeState. */
-  importState(state: BroadPhaseState): void {
-    for (let type = 0; type < 3; type++) this.trees[type]!.importState(state.trees[type]!);
-    this.moveBuffer = new Int32Array(Math.max(64, state.moved.length));
-    this.movedIndex = new Int32Array(64).fill(-1);
-    this.moveCount = 0;
-    for (const key of state.moved) {
-      if (key === NULL_KEY) {
-        this.moveBuffer[this.moveCount++] = NULL_KEY;
-        continue;
-      }
-      this.bufferMove(key);
-    }
   }
 
   /** Copies the proxy's stored (fat) box (m, world frame) into `out` and returns `out`. */

@@ -129,21 +129,32 @@ function unionPerimeter(
  */
 export class DynamicTree {
   /** minX, minY, maxX, maxY per node (m). */
-  private boxes: Float64Array;
-  private child1: Int32Array;
-  private child2: Int32Array;
+  /** @internal */
+  boxes: Float64Array;
+  /** @internal */
+  child1: Int32Array;
+  /** @internal */
+  child2: Int32Array;
   /** Parent of a live node; next free node of a freed one. */
-  private parent: Int32Array;
+  /** @internal */
+  parent: Int32Array;
   /** 0 for a leaf, 1 + the taller child's height for an internal node, -1 for a free node. */
-  private heights: Int32Array;
-  private userData: Int32Array;
-  private capacity = 0;
-  private freeList = NULL_NODE;
-  private root = NULL_NODE;
-  private leafCount = 0;
+  /** @internal */
+  heights: Int32Array;
+  /** @internal */
+  userData: Int32Array;
+  /** @internal */
+  capacity = 0;
+  /** @internal */
+  freeList = NULL_NODE;
+  /** @internal */
+  root = NULL_NODE;
+  /** @internal */
+  leafCount = 0;
   /** Traversal stack shared by query and rayCast; `stackTop` lets a callback query again. */
   private stack: Int32Array;
-  private stackTop = 0;
+  /** @internal */
+  stackTop = 0;
 
   constructor(initialCapacity: number = INITIAL_CAPACITY) {
     const capacity = Math.max(2, initialCapacity | 0);
@@ -197,39 +208,6 @@ export class DynamicTree {
     boxes[4 * proxyId + 2] = aabb.maxX;
     boxes[4 * proxyId + 3] = aabb.maxY;
     this.insertLeaf(proxyId);
-  }
-
-  /** The tree's whole state as plain arrays (for world snapshots); `importState` restores it. */
-  exportState(): TreeState {
-    const n = this.capacity;
-    return {
-      capacity: n,
-      root: this.root,
-      freeList: this.freeList,
-      leafCount: this.leafCount,
-      boxes: Array.from(this.boxes.subarray(0, 4 * n)),
-      child1: Array.from(this.child1.subarray(0, n)),
-      child2: Array.from(this.child2.subarray(0, n)),
-      parent: Array.from(this.parent.subarray(0, n)),
-      heights: Array.from(this.heights.subarray(0, n)),
-      userData: Array.from(this.userData.subarray(0, n)),
-    };
-  }
-
-  /** Replaces the tree's state with one that {@link checkTreeState} accepted. */
-  importState(state: TreeState): void {
-    const n = state.capacity;
-    this.capacity = n;
-    this.root = state.root;
-    this.freeList = state.freeList;
-    this.leafCount = state.leafCount;
-    this.boxes = Float64Array.from(state.boxes);
-    this.child1 = Int32Array.from(state.child1);
-    this.child2 = Int32Array.from(state.child2);
-    this.parent = Int32Array.from(state.parent);
-    this.heights = Int32Array.from(state.heights);
-    this.userData = Int32Array.from(state.userData);
-    this.stackTop = 0;
   }
 
   /** The int32 stored with the proxy at creation. */

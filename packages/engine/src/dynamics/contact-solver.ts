@@ -49,7 +49,7 @@ const pairSoftness = new Softness();
 export const NORMAL_X = 0;
 export const NORMAL_Y = 1;
 const FRICTION = 2;
-const RESTITUTION = 3;
+export const RESTITUTION = 3;
 export const INV_MASS_A = 4;
 export const INV_I_A = 5;
 export const INV_MASS_B = 6;
@@ -89,14 +89,14 @@ const TANGENT_IMPULSE = 6;
 const MAX_NORMAL_IMPULSE = 7;
 const NORMAL_MASS = 8;
 const TANGENT_MASS = 9;
-const RELATIVE_VELOCITY = 10;
+export const RELATIVE_VELOCITY = 10;
 const TOTAL_NORMAL_IMPULSE = 11;
 const TOTAL_TANGENT_IMPULSE = 12;
 // Impact state of a point: 0 none; 1 an impact found in this sub-step's solve pass, to bounce in
 // its relax pass; 2 bounced in this sub-step (the bounce is not warm-started).
 const IMPACT = 15;
 export const POINT_STRIDE = 16;
-export const STRIDE = POINTS + 2 * POINT_STRIDE;
+export const STRIDE: number = POINTS + 2 * POINT_STRIDE;
 /** Largest condition number (max K_jj^2 / det K) of a two-point block solved as a block. */
 const MAX_CONDITION_NUMBER = 1000;
 

@@ -11,6 +11,8 @@ import {
   NORMAL_X,
   NORMAL_Y,
   POINT_COUNT,
+  RELATIVE_VELOCITY,
+  RESTITUTION,
   POINT_STRIDE,
   POINTS,
   R_AX,
@@ -46,6 +48,10 @@ export class ShockPropagation {
   order: Int32Array = new Int32Array(64);
   /** 1 where the constraint's body A is the lower one, per entry of `order`. */
   lowerIsA: Uint8Array = new Uint8Array(64);
+  /** Per entry of `order`: 1 while a bounce is due at first touch, then 2; 0: no bounce. */
+  private bounce: Uint8Array = new Uint8Array(64);
+  /** Per entry of `order`: the contact's restitution. */
+  private restitution: Float64Array = new Float64Array(64);
   count = 0;
   // Scratch: a level per solver slot, and a flag per slot (supports a swept contact) and per
   // constraint (swept).
@@ -79,6 +85,8 @@ export class ShockPropagation {
       this.swept = new Uint8Array(2 * count);
       this.order = new Int32Array(2 * count);
       this.lowerIsA = new Uint8Array(2 * count);
+      this.bounce = new Uint8Array(2 * count);
+      this.restitution = new Float64Array(2 * count);
     }
     const level = this.level;
     const supports = this.supports;
@@ -120,20 +128,12 @@ export class ShockPropagation {
         const base = i * STRIDE;
         const mLower = c[base + (aLower ? INV_MASS_A : INV_MASS_B)]!;
         const mUpper = c[base + (aLower ? INV_MASS_B : INV_MASS_A)]!;
-        // Heavy resting on light: a contact still pushing from last step (an impact is solved
-        // between the two true masses, so momentum and energy are kept), whose normal is within
-        // 60 degrees of up.
-        let heavyOnLight = false;
-        if (mLower > 2 * mUpper) {
-          const up = (aLower ? 1 : -1) * (c[base + NORMAL_X]! * upX + c[base + NORMAL_Y]! * upY);
-          for (let j = 0; j < c[base + POINT_COUNT]!; j++) {
-            if (c[base + POINTS + j * POINT_STRIDE + NORMAL_IMPULSE]! > 0 && up >= 0.5) {
-              heavyOnLight = true;
-            }
-          }
-        }
+        // Heavy on light: the lower body more than twice lighter, the normal within 60 degrees of
+        // up (a body beside another is not resting on it).
+        const up = (aLower ? 1 : -1) * (c[base + NORMAL_X]! * upX + c[base + NORMAL_Y]! * upY);
+        const heavyOnLight = mLower > 2 * mUpper && up >= 0.5;
         if (heavyOnLight || supports[aLower ? nb : na] === 1) {
-          swept[i] = 1;
+          swept[i] = heavyOnLight ? 2 : 1;
           supports[aLower ? na : nb] = 1;
         }
       }
@@ -145,7 +145,16 @@ export class ShockPropagation {
         const lb = level[this.node(c, indices, i, 1)]!;
         if (Math.max(la, lb) !== k) continue;
         this.order[this.count] = i;
-        this.lowerIsA[this.count++] = la < lb ? 1 : 0;
+        this.lowerIsA[this.count] = la < lb ? 1 : 0;
+        // A contact approaching at the step's start may bounce (restitution), once, at first
+        // touch (a resting one does not approach: the last relax pass stopped it).
+        const base0 = i * STRIDE;
+        const restitution = c[base0 + RESTITUTION]!;
+        this.bounce[this.count] = restitution > 0 ? 1 : 0;
+        this.restitution[this.count++] = restitution;
+        // A heavy body bounces off the light one here, not in the contact solver: there, its
+        // bounce would send the light body into the ground, again each sub-step.
+        if (swept[i] === 2) c[base0 + RESTITUTION] = 0;
         // Rigid in the ordinary passes: a soft contact lets its impulse leak each pass, so the
         // weight above would not reach the ground.
         const base = i * STRIDE;
@@ -169,6 +178,7 @@ export class ShockPropagation {
    * Sweeps the prepared contacts once: each upper body stops approaching the body below it, as if
    * that body could not move. With `useBias`, overlap is pushed out at `biasRate` (at most
    * `maxPushSpeed`), as against the ground; without, only the approach is removed (relax pass).
+   * A new contact faster than `restitutionThreshold` bounces at its first touch.
    */
   solve(
     constraints: ContactConstraints,
@@ -176,11 +186,14 @@ export class ShockPropagation {
     inverseH: number,
     biasRate: number,
     maxPushSpeed: number,
+    restitutionThreshold: number,
     useBias: boolean,
   ): void {
     const c = constraints.data;
     const indices = constraints.bodies;
     for (let n = 0; n < this.count; n++) {
+      const bounce = this.bounce[n] === 1;
+      let wait = false;
       const i = this.order[n]!;
       const base = i * STRIDE;
       const a = indices[2 * i]!;
@@ -221,8 +234,24 @@ export class ShockPropagation {
         const dy = dpy + (qBs * rBx + qBc * rBy) - (qAs * rAx + qAc * rAy);
         const separation = dx * nx + dy * ny + c[p + BASE_SEPARATION]!;
         let bias = 0;
-        if (separation > 0) bias = separation * inverseH;
-        else if (useBias) bias = Math.max(biasRate * separation, -maxPushSpeed);
+        const approach = c[p + RELATIVE_VELOCITY]!;
+        if (separation > 0) {
+          // A bounce is due when it touches: not slowed before, as the contact solver waits too.
+          if (bounce && approach < -restitutionThreshold) wait = true;
+          bias = separation * inverseH;
+        } else {
+          if (useBias) bias = Math.max(biasRate * separation, -maxPushSpeed);
+          // First touch of a new contact: leave at e times the approach, as off the ground
+          // (a light body squeezed between a heavy one and the ground passes the bounce on).
+          if (bounce && approach < -restitutionThreshold) {
+            bias = this.restitution[n]! * approach;
+            // A bounce is a one-off impulse, not a force to warm-start (contact-solver.ts does
+            // the same): the contact solver's share of this impact is dropped, or undoing it
+            // next sub-step would throw the light body up.
+            c[p + NORMAL_IMPULSE] = 0;
+          }
+          this.bounce[n] = 2;
+        }
         const vn =
           (vBx - wB * rBy - (vAx - wA * rAy)) * nx + (vBy + wB * rBx - (vAy + wA * rAx)) * ny;
         const rn = aLower ? rBx * ny - rBy * nx : rAx * ny - rAy * nx;
@@ -234,6 +263,7 @@ export class ShockPropagation {
           rn2 = rn;
         }
       }
+      if (wait) continue;
       // The LCP  w = K x + q >= 0, x >= 0, x . w = 0  with K the upper body's inverse mass seen
       // by the points (one point: a scalar; two: the 2x2 block, cases as in contact-solver.ts).
       const k11 = mU + iU * rn1 * rn1;

@@ -187,14 +187,30 @@ export class Solver {
       joints.solve(s, true);
       solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, true);
       if (shock.count > 0) {
-        shock.solve(constraints, s, inverseH, shockBiasRate, settings.maxContactPushSpeed, true);
+        shock.solve(
+          constraints,
+          s,
+          inverseH,
+          shockBiasRate,
+          settings.maxContactPushSpeed,
+          threshold,
+          true,
+        );
       }
       integratePositions(this.awakeCount, s, h);
       refreshCirclePairs(constraints, s);
       joints.solve(s, false);
       solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, false);
       if (shock.count > 0) {
-        shock.solve(constraints, s, inverseH, shockBiasRate, settings.maxContactPushSpeed, false);
+        shock.solve(
+          constraints,
+          s,
+          inverseH,
+          shockBiasRate,
+          settings.maxContactPushSpeed,
+          threshold,
+          false,
+        );
       }
     }
     storeImpulses(constraints, contactData);

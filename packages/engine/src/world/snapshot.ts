@@ -1,3 +1,4 @@
+import { exportBroadPhaseState, importBroadPhaseState } from '../collision/broad-phase-state.ts';
 import type { BroadPhase, BroadPhaseState } from '../collision/broad-phase.ts';
 import { checkTreeState, type TreeState } from '../collision/dynamic-tree.ts';
 import { PhysicalError } from '../core/errors.ts';
@@ -267,7 +268,7 @@ function saveWorld(w: WorldInternals): WorldSnapshot {
   const s = w.settings;
   const contactIndex = new Map<Contact, number>();
   w.contactManager.contacts.forEach((c, i) => contactIndex.set(c, i));
-  const broadPhase = w.broadPhase.exportState();
+  const broadPhase = exportBroadPhaseState(w.broadPhase);
   return {
     format: SNAPSHOT_FORMAT,
     version: SNAPSHOT_VERSION,
@@ -896,7 +897,7 @@ function loadWorld(w: WorldInternals, snapshot: unknown): void {
   // Everything checked: install the shape table and the broad phase.
   for (let id = 0; id < slots; id++) w.shapesById.push(shapes[id] ?? null);
   w.freeShapeIds.push(...free);
-  w.broadPhase.importState({ trees, moved });
+  importBroadPhaseState(w.broadPhase, { trees, moved });
   // Joints, in their saved order; each body's list holds its joints in that same order.
   joints.forEach((plan, i) => {
     const joint = buildJoint(plan, w.bodies);

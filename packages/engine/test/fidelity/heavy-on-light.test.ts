@@ -158,4 +158,33 @@ describe('heavy on light', () => {
     reportMeasured('heavy past the edge, final height of its centre (m)', -heavy.position.y, 0.6);
     expect(-heavy.position.y).toBeLessThan(0.6);
   });
+
+  it('a bouncy 1000 kg box dropped on a 1 kg box rebounds as off the ground, and the light box stays', () => {
+    for (const restitution of [0.5, 1]) {
+      const world = new World();
+      world.add(box({ type: 'static', position: { x: 0, y: 0.5 }, width: 40, height: 1 }));
+      const light = world.add(
+        box({ position: { x: 0, y: -0.5 }, width: 1, height: 1, restitution }),
+      );
+      // Dropped from 1.5 m above its resting height: it should come back up to e^2 * 1.5 m.
+      const heavy = world.add(
+        box({ position: { x: 0, y: -3 }, width: 1, height: 1, density: 1000, restitution }),
+      );
+      let bounced = false;
+      let peak = Infinity;
+      let lightMoved = 0;
+      for (let i = 0; i < 200; i++) {
+        world.step(DT);
+        if (heavy.linearVelocity.y < 0) bounced = true;
+        if (bounced) peak = Math.min(peak, heavy.position.y);
+        lightMoved = Math.max(lightMoved, Math.hypot(light.position.x, light.position.y + 0.5));
+      }
+      const expected = restitution * restitution * 1.5;
+      const error = Math.abs(-1.5 - peak - expected) / expected;
+      reportMeasured(`heavy on light, e = ${restitution}, rebound height error`, error, 0.1);
+      reportMeasured(`heavy on light, e = ${restitution}, light box moved (m)`, lightMoved, 0.01);
+      expect(error).toBeLessThan(0.1);
+      expect(lightMoved).toBeLessThan(0.01);
+    }
+  });
 });

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { exportTreeState, importTreeState } from '../../../src/collision/broad-phase-state.ts';
 import { DynamicTree, checkTreeState } from '../../../src/collision/dynamic-tree.ts';
 import { AABB } from '../../../src/geometry/aabb.ts';
 
@@ -27,19 +28,19 @@ describe('DynamicTree state export', () => {
   it('round-trips: the imported tree answers queries in the same order and grows the same way', () => {
     const original = filled();
     const copy = new DynamicTree();
-    const state = original.exportState();
+    const state = exportTreeState(original);
     expect(checkTreeState(state)).toBeNull();
-    copy.importState(JSON.parse(JSON.stringify(state)));
+    importTreeState(copy, JSON.parse(JSON.stringify(state)));
     const box = new AABB().set(2, 2, 8, 6);
     expect(hits(copy, box)).toEqual(hits(original, box));
     const a = original.createProxy(new AABB().set(3, 3, 4, 4), 99);
     const b = copy.createProxy(new AABB().set(3, 3, 4, 4), 99);
     expect(b).toBe(a);
-    expect(copy.exportState()).toEqual(original.exportState());
+    expect(exportTreeState(copy)).toEqual(exportTreeState(original));
   });
 
   it('finds broken states: cycles, bad links, wrong counts', () => {
-    const state = filled().exportState();
+    const state = exportTreeState(filled());
     expect(checkTreeState({ ...state, leafCount: state.leafCount + 1 })).toMatch(/leafCount/);
     const child1 = state.child1.slice();
     const internal = child1.findIndex((c) => c >= 0);

@@ -1,4 +1,5 @@
 import { describe, expect, it } from 'vitest';
+import { exportTreeState } from '../../../src/collision/broad-phase-state.ts';
 import { DynamicTree, checkTreeState } from '../../../src/collision/dynamic-tree.ts';
 import { AABB, aabbOverlaps } from '../../../src/geometry/aabb.ts';
 import { RayInput } from '../../../src/geometry/ray.ts';
@@ -20,7 +21,7 @@ function makeRandom(seed: number): () => number {
  * then each internal node's height and enclosing box, and every free node marked free.
  */
 function validate(tree: DynamicTree): void {
-  const state = tree.exportState();
+  const state = exportTreeState(tree);
   expect(checkTreeState(state)).toBeNull();
   for (let node = 0; node < state.capacity; node++) {
     const a = state.child1[node]!;
@@ -43,13 +44,13 @@ function validate(tree: DynamicTree): void {
 
 /** The tree's height: 0 for a single leaf or none. */
 function height(tree: DynamicTree): number {
-  const state = tree.exportState();
+  const state = exportTreeState(tree);
   return state.root === -1 ? 0 : state.heights[state.root]!;
 }
 
 /** Sum of the internal nodes' perimeters over the root's: the SAH quality (lower is better). */
 function areaRatio(tree: DynamicTree): number {
-  const state = tree.exportState();
+  const state = exportTreeState(tree);
   const perimeter = (node: number): number =>
     2 *
     (state.boxes[4 * node + 2]! -
