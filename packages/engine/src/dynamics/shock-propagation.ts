@@ -92,8 +92,9 @@ export class ShockPropagation {
     const supports = this.supports;
     const swept = this.swept;
 
-    // Levels: contacts from the ground (slot 0), relaxed until no level shrinks (a stack of n
-    // bodies takes n sweeps; only steps with a heavy-on-light contact pay for it).
+    // Levels: resting contacts (pushing since last step) from the ground (slot 0), relaxed until
+    // no level shrinks (a stack of n bodies takes n sweeps; only steps with a heavy-on-light
+    // contact pay for it). A body that only bounces or flies has none: nothing holds it up.
     const far = 1 << 30;
     level.fill(far, 0, bodyCount + 1);
     level[0] = 0;
@@ -101,6 +102,7 @@ export class ShockPropagation {
     for (let changed = true; changed;) {
       changed = false;
       for (let i = 0; i < count; i++) {
+        if (!this.resting(c, i)) continue;
         const na = this.node(c, indices, i, 0);
         const nb = this.node(c, indices, i, 1);
         const la = level[na]!;
@@ -113,18 +115,20 @@ export class ShockPropagation {
       }
     }
 
-    // From the top down: a heavy-on-light contact is swept, and so is every contact under a body
-    // that a swept contact stands on (down to the ground), so the sweep starts from solid ground.
+    // From the top down: a heavy-on-light contact on a resting light body is swept, and so is
+    // every resting contact under a body that a swept contact stands on (down to the ground), so
+    // the sweep starts from solid ground. A contact's rank is its lower body's level + 1.
     const upX = -gravityX / gravity;
     const upY = -gravityY / gravity;
     supports.fill(0, 0, bodyCount + 1);
     swept.fill(0, 0, count);
-    for (let k = maxLevel; k >= 1; k--) {
+    for (let k = maxLevel + 1; k >= 1; k--) {
       for (let i = 0; i < count; i++) {
-        const na = this.node(c, indices, i, 0);
-        const nb = this.node(c, indices, i, 1);
-        const aLower = level[na] === k - 1;
-        if (level[aLower ? nb : na] !== k || level[aLower ? na : nb] !== k - 1) continue;
+        const la = level[this.node(c, indices, i, 0)]!;
+        const lb = level[this.node(c, indices, i, 1)]!;
+        if (la === lb || Math.min(la, lb) + 1 !== k) continue;
+        const aLower = la < lb;
+        const upper = this.node(c, indices, i, aLower ? 1 : 0);
         const base = i * STRIDE;
         const mLower = c[base + (aLower ? INV_MASS_A : INV_MASS_B)]!;
         const mUpper = c[base + (aLower ? INV_MASS_B : INV_MASS_A)]!;
@@ -132,32 +136,31 @@ export class ShockPropagation {
         // up (a body beside another is not resting on it).
         const up = (aLower ? 1 : -1) * (c[base + NORMAL_X]! * upX + c[base + NORMAL_Y]! * upY);
         const heavyOnLight = mLower > 2 * mUpper && up >= 0.5;
-        if (heavyOnLight || supports[aLower ? nb : na] === 1) {
+        if (heavyOnLight || (supports[upper] === 1 && level[upper] === k && this.resting(c, i))) {
           swept[i] = heavyOnLight ? 2 : 1;
-          supports[aLower ? na : nb] = 1;
+          supports[this.node(c, indices, i, aLower ? 0 : 1)] = 1;
         }
       }
     }
-    for (let k = 1; k <= maxLevel; k++) {
+    for (let k = 1; k <= maxLevel + 1; k++) {
       for (let i = 0; i < count; i++) {
         if (swept[i] === 0) continue;
         const la = level[this.node(c, indices, i, 0)]!;
         const lb = level[this.node(c, indices, i, 1)]!;
-        if (Math.max(la, lb) !== k) continue;
+        if (Math.min(la, lb) + 1 !== k) continue;
         this.order[this.count] = i;
         this.lowerIsA[this.count] = la < lb ? 1 : 0;
         // A contact approaching at the step's start may bounce (restitution), once, at first
         // touch (a resting one does not approach: the last relax pass stopped it).
-        const base0 = i * STRIDE;
-        const restitution = c[base0 + RESTITUTION]!;
+        const base = i * STRIDE;
+        const restitution = c[base + RESTITUTION]!;
         this.bounce[this.count] = restitution > 0 ? 1 : 0;
         this.restitution[this.count++] = restitution;
         // A heavy body bounces off the light one here, not in the contact solver: there, its
         // bounce would send the light body into the ground, again each sub-step.
-        if (swept[i] === 2) c[base0 + RESTITUTION] = 0;
+        if (swept[i] === 2) c[base + RESTITUTION] = 0;
         // Rigid in the ordinary passes: a soft contact lets its impulse leak each pass, so the
         // weight above would not reach the ground.
-        const base = i * STRIDE;
         c[base + BIAS_RATE] = biasRate;
         c[base + MASS_SCALE] = 1;
         c[base + IMPULSE_SCALE] = 0;
@@ -299,6 +302,15 @@ export class ShockPropagation {
       s[u + V_Y] = s[u + V_Y]! + mU * impulse * ny;
       s[u + W] = s[u + W]! + sign * iU * (rn1 * x1 + rn2 * x2);
     }
+  }
+
+  /** True when constraint i was pushing at the end of last step (a resting contact). */
+  private resting(c: Float64Array, i: number): boolean {
+    const base = i * STRIDE;
+    for (let j = 0; j < c[base + POINT_COUNT]!; j++) {
+      if (c[base + POINTS + j * POINT_STRIDE + NORMAL_IMPULSE]! > 0) return true;
+    }
+    return false;
   }
 
   /** The solver slot of side `side` (0: A, 1: B) of constraint i; immovable bodies are slot 0. */

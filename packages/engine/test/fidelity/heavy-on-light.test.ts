@@ -187,4 +187,49 @@ describe('heavy on light', () => {
       expect(lightMoved).toBeLessThan(0.01);
     }
   });
+
+  it('an e = 1 gas of unlike masses under gravity keeps its energy within 3 % for 60 s (bouncing bodies rest on nothing)', () => {
+    const world = new World();
+    const material = { restitution: 1, friction: 0 };
+    for (const [x, y, width, height] of [
+      [5, -0.5, 12, 1],
+      [5, 10.5, 12, 1],
+      [-0.5, 5, 1, 12],
+      [10.5, 5, 1, 12],
+    ] as const) {
+      world.add(box({ type: 'static', position: { x, y }, width, height, ...material }));
+    }
+    const balls: Body[] = [];
+    for (let i = 0; i < 20; i++) {
+      // Densities from 0.5 to 8 kg/m^2: neighbours differ up to 16-fold in mass.
+      const radius = 0.2 + 0.015 * i;
+      const angle = 2.4 * i;
+      balls.push(
+        world.add(
+          particle({
+            position: { x: 1 + 2 * (i % 5), y: 1.25 + 2.5 * Math.floor(i / 5) },
+            radius,
+            density: 0.5 * 2 ** (i % 5),
+            linearVelocity: { x: 4 * Math.cos(angle), y: 4 * Math.sin(angle) },
+            ...material,
+          }),
+        ),
+      );
+    }
+    const g = world.gravity.y;
+    // Kinetic plus potential energy, the floor's top (y = 10, y-down) as the zero.
+    const energy = (): number =>
+      balls.reduce(
+        (sum, ball) => sum + ball.kineticEnergy + ball.mass * g * (10 - ball.position.y),
+        0,
+      );
+    const start = energy();
+    let worst = 0;
+    for (let i = 0; i < 60 / DT; i++) {
+      world.step(DT);
+      worst = Math.max(worst, Math.abs(energy() - start) / start);
+    }
+    reportMeasured('e = 1 gas of unlike masses under gravity, energy drift in 60 s', worst, 0.03);
+    expect(worst).toBeLessThan(0.03);
+  }, 60_000);
 });
