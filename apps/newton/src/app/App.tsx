@@ -194,9 +194,11 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
 
 /** Shown while a screen's code arrives; marks the app ready once it has. */
 function ScreenLoading() {
+  const { t } = useI18n();
   return (
     <Box
       role="progressbar"
+      aria-label={t('app.loading')}
       aria-busy="true"
       sx={{ height: '100%', display: 'grid', placeItems: 'center', color: 'text.secondary' }}
     >
