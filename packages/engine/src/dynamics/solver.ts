@@ -177,7 +177,7 @@ export class Solver {
       settings.gravityY,
     );
     const joints = this.joints;
-    joints.prepare(dt, subSteps, contactHertz);
+    joints.prepare(dt, subSteps, contactHertz, this.awakeCount);
 
     for (let step = 0; step < subSteps; step++) {
       integrateVelocities(this.params, this.awakeCount, s, settings, h);
@@ -197,7 +197,9 @@ export class Solver {
           true,
         );
       }
+      joints.solveChains(s, true);
       integratePositions(this.awakeCount, s, h);
+      joints.projectChains(s);
       refreshCirclePairs(constraints, s);
       joints.solve(s, false);
       solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, false);
@@ -212,6 +214,7 @@ export class Solver {
           false,
         );
       }
+      joints.solveChains(s, false);
     }
     storeImpulses(constraints, contactData);
     joints.finish();

@@ -1,5 +1,6 @@
 import { Softness } from '../softness.ts';
 import type { Joint, JointStep } from './joint.ts';
+import type { PinChains } from './pin-chains.ts';
 
 /**
  * Box2D v3's rigid-joint softness: twice the contact stiffness, damping ratio 2 (stiff and well
@@ -21,9 +22,14 @@ export class JointSolver {
   private readonly active: Joint[] = [];
   private count = 0;
   private readonly step: JointStep = { h: 0, inverseH: 0, dt: 0, softness: new Softness() };
+  /** The exact solve of hinge chains with unlike masses, once a world has a hinge. */
+  chains: PinChains | null = null;
 
-  /** Picks the joints to solve and prepares them; `contactHertz` as the contacts use it. */
-  prepare(dt: number, subSteps: number, contactHertz: number): void {
+  /**
+   * Picks the joints to solve and prepares them; `contactHertz` as the contacts use it,
+   * `bodyCount` the step's awake bodies.
+   */
+  prepare(dt: number, subSteps: number, contactHertz: number, bodyCount: number): void {
     const step = this.step;
     step.dt = dt;
     step.h = dt / subSteps;
@@ -41,6 +47,7 @@ export class JointSolver {
       joint.prepare(step);
     }
     this.count = count;
+    this.chains?.prepare(active, count, bodyCount);
   }
 
   warmStart(s: Float64Array): void {
@@ -50,6 +57,16 @@ export class JointSolver {
   solve(s: Float64Array, useBias: boolean): void {
     const step = this.step;
     for (let i = 0; i < this.count; i++) this.active[i]!.solve(s, step, useBias);
+  }
+
+  /** The exact chain solve after a pass (pin-chains.ts), when the world has one. */
+  solveChains(s: Float64Array, useBias: boolean): void {
+    this.chains?.solve(s, this.step, useBias);
+  }
+
+  /** Closes the chains' pins by moving their bodies, after the positions moved (pin-chains.ts). */
+  projectChains(s: Float64Array): void {
+    this.chains?.project(s);
   }
 
   /** Turns the step's impulses into reaction forces. */

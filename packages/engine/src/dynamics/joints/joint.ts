@@ -17,6 +17,7 @@ import type { World } from '../../world/world.ts';
 import type { Body } from '../body.ts';
 import { STATE_STRIDE } from '../body-state.ts';
 import type { Softness } from '../softness.ts';
+import type { PinChains, PinJoint } from './pin-chains.ts';
 
 /** The kinds of joint. */
 export type JointType = 'revolute' | 'prismatic' | 'distance' | 'weld' | 'mouse';
@@ -292,6 +293,16 @@ export abstract class Joint<UserData = unknown> {
   abstract solve(s: Float64Array, step: JointStep, useBias: boolean): void;
   /** @internal Forgets accumulated impulses (the joint was moved by hand or just created). */
   abstract resetImpulses(): void;
+
+  /** @internal This joint as a pin for the exact chain solve (pin-chains.ts), if it is one. */
+  pinJoint(): PinJoint | null {
+    return null;
+  }
+
+  /** @internal The chain solve, made once by the first pin joint added to a world. */
+  createChains(): PinChains | null {
+    return null;
+  }
 }
 
 /**

@@ -7,6 +7,7 @@ import {
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
+import { PinChains, type PinJoint } from './pin-chains.ts';
 import {
   Joint,
   type JointOptions,
@@ -382,6 +383,74 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
     s[b + V_X] += mB * px;
     s[b + V_Y] += mB * py;
     s[b + W] += iB * (rBx * py - rBy * px + axial);
+  }
+
+  /** @internal */
+  override pinJoint(): PinJoint {
+    return this;
+  }
+
+  /** @internal */
+  override createChains(): PinChains {
+    return new PinChains();
+  }
+
+  /** @internal */
+  pinLevers(s: Float64Array, out: Float64Array, offset: number): void {
+    const a = this.stateA;
+    const b = this.stateB;
+    const qAc = s[a + Q_C]!;
+    const qAs = s[a + Q_S]!;
+    const qBc = s[b + Q_C]!;
+    const qBs = s[b + Q_S]!;
+    out[offset] = qAc * this.rAx - qAs * this.rAy;
+    out[offset + 1] = qAs * this.rAx + qAc * this.rAy;
+    out[offset + 2] = qBc * this.rBx - qBs * this.rBy;
+    out[offset + 3] = qBs * this.rBx + qBc * this.rBy;
+  }
+
+  /** @internal */
+  pinError(s: Float64Array, biasRate: number, out: Float64Array, offset: number): void {
+    const a = this.stateA;
+    const b = this.stateB;
+    this.pinLevers(s, out, offset);
+    const rAx = out[offset]!;
+    const rAy = out[offset + 1]!;
+    const rBx = out[offset + 2]!;
+    const rBy = out[offset + 3]!;
+    const wA = s[a + W]!;
+    const wB = s[b + W]!;
+    let cx = s[b + V_X]! - wB * rBy - (s[a + V_X]! - wA * rAy);
+    let cy = s[b + V_Y]! + wB * rBx - (s[a + V_Y]! + wA * rAx);
+    if (biasRate > 0) {
+      cx += biasRate * (s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + this.deltaCenterX);
+      cy += biasRate * (s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + this.deltaCenterY);
+    }
+    out[offset] = cx;
+    out[offset + 1] = cy;
+  }
+
+  /** @internal */
+  pinGap(s: Float64Array, out: Float64Array, offset: number): void {
+    const a = this.stateA;
+    const b = this.stateB;
+    this.pinLevers(s, out, offset);
+    const rAx = out[offset]!;
+    const rAy = out[offset + 1]!;
+    const rBx = out[offset + 2]!;
+    const rBy = out[offset + 3]!;
+    out[offset] = s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + this.deltaCenterX;
+    out[offset + 1] = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + this.deltaCenterY;
+  }
+
+  /** @internal */
+  addPinImpulse(px: number, py: number, relax: boolean): void {
+    this.linearImpulseX += px;
+    this.linearImpulseY += py;
+    if (relax) {
+      this.stepImpulseX += px;
+      this.stepImpulseY += py;
+    }
   }
 
   /** @internal */

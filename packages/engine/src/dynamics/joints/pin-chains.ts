@@ -1,0 +1,355 @@
+import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, STATE_STRIDE, V_X, V_Y, W } from '../body-state.ts';
+import type { JointStep } from './joint.ts';
+
+/** What the chain solve needs of a hinge (RevoluteJoint). */
+export interface PinJoint {
+  readonly stateA: number;
+  readonly stateB: number;
+  readonly invMassA: number;
+  readonly invMassB: number;
+  readonly invInertiaA: number;
+  readonly invInertiaB: number;
+  /** Writes the levers from the centres to the pin, rotated to now: rAx, rAy, rBx, rBy. */
+  pinLevers(s: Float64Array, out: Float64Array, offset: number): void;
+  /** Writes the pin's velocity error plus biasRate times its position error (2 numbers). */
+  pinError(s: Float64Array, biasRate: number, out: Float64Array, offset: number): void;
+  /** Writes the pin's position error (B's pin minus A's, m; 2 numbers). */
+  pinGap(s: Float64Array, out: Float64Array, offset: number): void;
+  /** Adds an impulse on B (-impulse on A) to the accumulated one; `relax`: to the step's too. */
+  addPinImpulse(px: number, py: number, relax: boolean): void;
+}
+
+// Chains of hinges solved exactly (block tridiagonal elimination; Baraff, "Linear-time dynamics
+// using Lagrange multipliers", SIGGRAPH 1996, for the idea of solving an acyclic joint graph
+// directly).
+//
+// Why: sequential impulses move a heavy body on light links by m_light / m_heavy of what each
+// hinge asks per pass, so a 1000 kg bob on four 1 kg links stretches its chain by a metre and
+// more. The hinges' pins along a chain couple only neighbours (through the body they share), so
+// the pins' equations form a block tridiagonal system with 2x2 blocks, solved exactly in O(n).
+// After each solve and relax pass, the pins' remaining velocity error (and, in the solve pass,
+// part of their position error) is removed by that exact solve, with the true masses on both
+// sides: momentum is kept, no energy is made, and the impulses join each hinge's accumulated
+// ones, so reaction forces are the weights the chain carries. Only chains with a mass ratio over
+// two take part: elsewhere the sequential passes converge and stay as they were.
+
+/** Hinge chains with unlike masses, and their exact pin solve. */
+export class PinChains {
+  /** Joints of every chain, chain after chain; `chainEnd[c]` is one past chain c's last. */
+  private readonly joints: PinJoint[] = [];
+  private readonly chainEnd: number[] = [];
+  private chainCount = 0;
+  /** Per joint of `joints`: the state offset of the body shared with the next joint (0: none). */
+  private shared: Int32Array = new Int32Array(16);
+  // Per joint scratch: levers (rAx, rAy, rBx, rBy), error, D^-1 (3 numbers, symmetric), y, B.
+  private scratch: Float64Array = new Float64Array(16 * 16);
+  // Chain search: the hinges, and per solver slot its hinge count and first two hinges.
+  private readonly pins: PinJoint[] = [];
+  private degree: Int32Array = new Int32Array(64);
+  private hinge1: Int32Array = new Int32Array(64);
+  private hinge2: Int32Array = new Int32Array(64);
+  private used: Uint8Array = new Uint8Array(16);
+
+  /** Finds the chains among `joints` (prepared this step); `bodyCount`: awake bodies. */
+  prepare(
+    joints: readonly { pinJoint(): PinJoint | null }[],
+    count: number,
+    bodyCount: number,
+  ): void {
+    this.chainCount = 0;
+    const pins = this.pins;
+    let pinCount = 0;
+    let unlike = false;
+    for (let i = 0; i < count; i++) {
+      const joint = joints[i]!.pinJoint();
+      if (joint === null) continue;
+      if (pinCount < pins.length) pins[pinCount] = joint;
+      else pins.push(joint);
+      pinCount++;
+      if (isUnlike(joint)) unlike = true;
+    }
+    if (!unlike) return;
+    if (this.degree.length <= bodyCount) {
+      this.degree = new Int32Array(2 * bodyCount + 2);
+      this.hinge1 = new Int32Array(2 * bodyCount + 2);
+      this.hinge2 = new Int32Array(2 * bodyCount + 2);
+    }
+    if (this.used.length < pinCount) this.used = new Uint8Array(2 * pinCount);
+    const degree = this.degree;
+    degree.fill(0, 0, bodyCount + 1);
+    this.used.fill(0, 0, pinCount);
+    for (let n = 0; n < pinCount; n++) {
+      for (let side = 0; side < 2; side++) {
+        const k = slotOf(pins[n]!, side);
+        if (k === 0) continue;
+        if (degree[k] === 0) this.hinge1[k] = n;
+        else if (degree[k] === 1) this.hinge2[k] = n;
+        degree[k]!++;
+      }
+    }
+    let total = 0;
+    for (let start = 0; start < pinCount; start++) {
+      if (this.used[start] === 1) continue;
+      // Walk to one end of start's chain: through bodies with exactly two hinges.
+      let n = start;
+      let from = slotOf(pins[n]!, 0) !== 0 ? slotOf(pins[n]!, 0) : slotOf(pins[n]!, 1);
+      for (let guard = 0; guard < pinCount && degree[from] === 2; guard++) {
+        const next = this.hinge1[from] === n ? this.hinge2[from]! : this.hinge1[from]!;
+        if (next === start) break; // a loop: not a chain
+        n = next;
+        from = otherSlot(pins[n]!, from);
+        if (from === 0) break;
+      }
+      // n is an end hinge and `from` its outer body: collect toward the other end.
+      const first = total;
+      let at = otherSlot(pins[n]!, from);
+      let mass = false;
+      for (;;) {
+        this.used[n] = 1;
+        const joint = pins[n]!;
+        if (total < this.joints.length) this.joints[total] = joint;
+        else this.joints.push(joint);
+        total++;
+        if (isUnlike(joint)) mass = true;
+        if (at === 0 || degree[at] !== 2) break;
+        const next = this.hinge1[at] === n ? this.hinge2[at]! : this.hinge1[at]!;
+        if (this.used[next] === 1) break;
+        n = next;
+        at = otherSlot(pins[n]!, at);
+      }
+      if (!mass || total - first < 2) {
+        total = first;
+        continue;
+      }
+      if (this.chainCount < this.chainEnd.length) this.chainEnd[this.chainCount] = total;
+      else this.chainEnd.push(total);
+      this.chainCount++;
+    }
+    if (this.shared.length < total) this.shared = new Int32Array(2 * total);
+    if (this.scratch.length < 16 * (total + 1)) this.scratch = new Float64Array(32 * (total + 1));
+    let begin = 0;
+    for (let c = 0; c < this.chainCount; c++) {
+      const end = this.chainEnd[c]!;
+      for (let k = begin; k < end; k++) {
+        let shared = 0;
+        if (k + 1 < end) {
+          const a = this.joints[k]!;
+          const b = this.joints[k + 1]!;
+          const sa = slotOf(a, 0);
+          shared = sa !== 0 && (sa === slotOf(b, 0) || sa === slotOf(b, 1)) ? a.stateA : a.stateB;
+        }
+        this.shared[k] = shared;
+      }
+      begin = end;
+    }
+  }
+
+  /** The exact pin solve of every chain (see the note above). */
+  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
+    this.run(s, useBias ? step.softness.biasRate : 0, useBias, false);
+  }
+
+  /**
+   * Moves the chains' bodies so every pin closes exactly (post-stabilisation, Cline and Pai 2003):
+   * a taut chain of light links whips sideways at no first-order cost to its pins, and the
+   * second-order drift would otherwise be pushed back by velocity, which makes energy.
+   */
+  project(s: Float64Array): void {
+    this.run(s, 0, false, true);
+  }
+
+  private run(s: Float64Array, biasRate: number, useBias: boolean, positions: boolean): void {
+    const t = this.scratch;
+    let begin = 0;
+    for (let c = 0; c < this.chainCount; c++) {
+      const end = this.chainEnd[c]!;
+      // Forward: D_k = K_k - B_{k-1}^T D_{k-1}^-1 B_{k-1}, y_k = -c_k - B_{k-1}^T D_{k-1}^-1 y_{k-1}.
+      for (let k = begin; k < end; k++) {
+        const joint = this.joints[k]!;
+        const o = 16 * k;
+        joint.pinLevers(s, t, o);
+        if (positions) joint.pinGap(s, t, o + 4);
+        else joint.pinError(s, biasRate, t, o + 4);
+        // K_k: each moving body's m I + i p(r) p(r)^T, with p(r) = (-r_y, r_x).
+        let k11 = 0;
+        let k12 = 0;
+        let k22 = 0;
+        for (let side = 0; side < 2; side++) {
+          const m = side === 0 ? joint.invMassA : joint.invMassB;
+          const i = side === 0 ? joint.invInertiaA : joint.invInertiaB;
+          const rx = t[o + 2 * side]!;
+          const ry = t[o + 2 * side + 1]!;
+          k11 += m + i * ry * ry;
+          k12 -= i * ry * rx;
+          k22 += m + i * rx * rx;
+        }
+        let y1 = -t[o + 4]!;
+        let y2 = -t[o + 5]!;
+        if (k > begin) {
+          // B_{k-1} couples joint k-1 and k through their shared body X.
+          const p = 16 * (k - 1);
+          const b11 = t[p + 11]!;
+          const b12 = t[p + 12]!;
+          const b21 = t[p + 13]!;
+          const b22 = t[p + 14]!;
+          const d11 = t[p + 6]!;
+          const d12 = t[p + 7]!;
+          const d22 = t[p + 8]!;
+          // L = B^T D^-1 (2x2)
+          const l11 = b11 * d11 + b21 * d12;
+          const l12 = b11 * d12 + b21 * d22;
+          const l21 = b12 * d11 + b22 * d12;
+          const l22 = b12 * d12 + b22 * d22;
+          k11 -= l11 * b11 + l12 * b21;
+          k12 -= l11 * b12 + l12 * b22;
+          k22 -= l21 * b12 + l22 * b22;
+          y1 -= l11 * t[p + 9]! + l12 * t[p + 10]!;
+          y2 -= l21 * t[p + 9]! + l22 * t[p + 10]!;
+        }
+        const det = k11 * k22 - k12 * k12;
+        if (!(det > 0)) {
+          // A degenerate chain (a zero-mass gap): leave it to the sequential passes this time.
+          begin = -1;
+          break;
+        }
+        t[o + 6] = k22 / det;
+        t[o + 7] = -k12 / det;
+        t[o + 8] = k11 / det;
+        t[o + 9] = y1;
+        t[o + 10] = y2;
+        // B_k (to the next joint) through the shared body X.
+        const x = this.shared[k]!;
+        if (x !== 0) {
+          const next = this.joints[k + 1]!;
+          next.pinLevers(s, t, o + 16 + 0); // the next joint's levers, written early (reused)
+          const signK = joint.stateB === x ? 1 : -1;
+          const signN = next.stateB === x ? 1 : -1;
+          const m = signK === 1 ? joint.invMassB : joint.invMassA;
+          const i = signK === 1 ? joint.invInertiaB : joint.invInertiaA;
+          const rkx = t[o + (signK === 1 ? 2 : 0)]!;
+          const rky = t[o + (signK === 1 ? 3 : 1)]!;
+          const rnx = t[o + 16 + (signN === 1 ? 2 : 0)]!;
+          const rny = t[o + 16 + (signN === 1 ? 3 : 1)]!;
+          const sign = signK * signN;
+          // sign (m I + i p(r_k) p(r_n)^T)
+          t[o + 11] = sign * (m + i * rky * rny);
+          t[o + 12] = sign * (-i * rky * rnx);
+          t[o + 13] = sign * (-i * rkx * rny);
+          t[o + 14] = sign * (m + i * rkx * rnx);
+        }
+      }
+      if (begin < 0) {
+        begin = end;
+        continue;
+      }
+      // Back: lambda_k = D_k^-1 (y_k - B_k lambda_{k+1}); apply and accumulate.
+      let nextX = 0;
+      let nextY = 0;
+      for (let k = end - 1; k >= begin; k--) {
+        const o = 16 * k;
+        let y1 = t[o + 9]!;
+        let y2 = t[o + 10]!;
+        if (k < end - 1) {
+          y1 -= t[o + 11]! * nextX + t[o + 12]! * nextY;
+          y2 -= t[o + 13]! * nextX + t[o + 14]! * nextY;
+        }
+        const lx = t[o + 6]! * y1 + t[o + 7]! * y2;
+        const ly = t[o + 7]! * y1 + t[o + 8]! * y2;
+        t[o + 15] = lx;
+        // Keep lambda_y for the application pass below in the error slot (no longer needed).
+        t[o + 5] = ly;
+        nextX = lx;
+        nextY = ly;
+      }
+      for (let k = begin; k < end; k++) {
+        const joint = this.joints[k]!;
+        const o = 16 * k;
+        joint.pinLevers(s, t, o);
+        const px = t[o + 15]!;
+        const py = t[o + 5]!;
+        const rAx = t[o]!;
+        const rAy = t[o + 1]!;
+        const rBx = t[o + 2]!;
+        const rBy = t[o + 3]!;
+        if (positions) {
+          movePose(s, joint.stateA, joint.invMassA, joint.invInertiaA, rAx, rAy, -px, -py);
+          movePose(s, joint.stateB, joint.invMassB, joint.invInertiaB, rBx, rBy, px, py);
+          continue;
+        }
+        applyImpulse(s, joint.stateA, joint.invMassA, joint.invInertiaA, rAx, rAy, -px, -py);
+        applyImpulse(s, joint.stateB, joint.invMassB, joint.invInertiaB, rBx, rBy, px, py);
+        joint.addPinImpulse(px, py, !useBias);
+      }
+      begin = end;
+    }
+  }
+}
+
+function applyImpulse(
+  s: Float64Array,
+  k: number,
+  m: number,
+  i: number,
+  rx: number,
+  ry: number,
+  px: number,
+  py: number,
+): void {
+  if (k === 0 || (m === 0 && i === 0)) return;
+  s[k + V_X] = s[k + V_X]! + m * px;
+  s[k + V_Y] = s[k + V_Y]! + m * py;
+  s[k + W] = s[k + W]! + i * (rx * py - ry * px);
+}
+
+/** Moves a pose as a positional impulse would (the impulse's velocity change over one second). */
+/**
+ * Largest turn of a body in one projection (rad): the projection is linear in the angle, so a
+ * light link asked to turn far would overshoot; the rest closes over the next sub-steps.
+ */
+const MAX_PROJECTION_TURN = 0.2;
+
+function movePose(
+  s: Float64Array,
+  k: number,
+  m: number,
+  i: number,
+  rx: number,
+  ry: number,
+  px: number,
+  py: number,
+): void {
+  if (k === 0 || (m === 0 && i === 0)) return;
+  s[k + DP_X] = s[k + DP_X]! + m * px;
+  s[k + DP_Y] = s[k + DP_Y]! + m * py;
+  const angle = Math.max(
+    -MAX_PROJECTION_TURN,
+    Math.min(MAX_PROJECTION_TURN, i * (rx * py - ry * px)),
+  );
+  if (angle === 0) return;
+  s[k + DELTA_ANGLE] = s[k + DELTA_ANGLE]! + angle;
+  const qc = s[k + Q_C]!;
+  const qs = s[k + Q_S]!;
+  const c = qc - angle * qs;
+  const sn = qs + angle * qc;
+  const inverseLength = 1 / Math.sqrt(c * c + sn * sn);
+  s[k + Q_C] = c * inverseLength;
+  s[k + Q_S] = sn * inverseLength;
+}
+
+/** The solver slot of side 0 (A) or 1 (B); 0 for an immovable body. */
+function slotOf(joint: PinJoint, side: number): number {
+  if (side === 0) return joint.invMassA === 0 ? 0 : joint.stateA / STATE_STRIDE;
+  return joint.invMassB === 0 ? 0 : joint.stateB / STATE_STRIDE;
+}
+
+/** The slot of the joint's body that is not at `slot` (0 when that body is immovable). */
+function otherSlot(joint: PinJoint, slot: number): number {
+  return slotOf(joint, 0) === slot ? slotOf(joint, 1) : slotOf(joint, 0);
+}
+
+/** Two moving bodies more than twofold apart in mass. */
+function isUnlike(joint: PinJoint): boolean {
+  const mA = joint.invMassA;
+  const mB = joint.invMassB;
+  return mA > 0 && mB > 0 && (mA > 2 * mB || mB > 2 * mA);
+}
