@@ -44,13 +44,11 @@ import { DP_X, DP_Y, Q_C, Q_S, STATE_STRIDE, V_X, V_Y, W } from './body-state.ts
 
 /** The sweep of one step: which constraints, in which order, and which side is below. */
 export class ShockPropagation {
-  /** Constraints to sweep (the first `count`), ground up. */
+  /** Constraints to sweep (the first `count`), from the top down: swept backwards. */
   order: Int32Array = new Int32Array(64);
   /** 1 where the constraint's body A is the lower one, per entry of `order`. */
   lowerIsA: Uint8Array = new Uint8Array(64);
-  /** Per entry of `order`: 1 while a bounce is due at first touch, then 2; 0: no bounce. */
-  private bounce: Uint8Array = new Uint8Array(64);
-  /** Per entry of `order`: the contact's restitution. */
+  /** Per entry of `order`: the contact's restitution while its bounce is due (at first touch). */
   private restitution: Float64Array = new Float64Array(64);
   count = 0;
   // Scratch: a level per solver slot, and a flag per slot (supports a swept contact) and per
@@ -58,6 +56,10 @@ export class ShockPropagation {
   private level: Int32Array = new Int32Array(64);
   private supports: Uint8Array = new Uint8Array(64);
   private swept: Uint8Array = new Uint8Array(64);
+  // Per constraint: its two solver slots, its rank (see prepare); the resting constraints.
+  private ends: Int32Array = new Int32Array(128);
+  private rank: Int32Array = new Int32Array(64);
+  private edges: Int32Array = new Int32Array(64);
 
   /**
    * Finds the contacts to sweep for this step's constraints; `bodyCount` is the number of awake
@@ -85,88 +87,96 @@ export class ShockPropagation {
       this.swept = new Uint8Array(2 * count);
       this.order = new Int32Array(2 * count);
       this.lowerIsA = new Uint8Array(2 * count);
-      this.bounce = new Uint8Array(2 * count);
       this.restitution = new Float64Array(2 * count);
+      this.ends = new Int32Array(4 * count);
+      this.rank = new Int32Array(2 * count);
+      this.edges = new Int32Array(2 * count);
     }
     const level = this.level;
     const supports = this.supports;
     const swept = this.swept;
+    const ends = this.ends;
+    const rank = this.rank;
+    const edges = this.edges;
 
-    // Levels: resting contacts (pushing since last step) from the ground (slot 0), relaxed until
-    // no level shrinks (a stack of n bodies takes n sweeps; only steps with a heavy-on-light
-    // contact pay for it). A body that only bounces or flies has none: nothing holds it up.
+    // Each constraint's two solver slots (immovable bodies are slot 0), and the resting ones
+    // (pushing since last step): only they hold a body up.
+    let edgeCount = 0;
+    for (let i = 0; i < count; i++) {
+      const base = i * STRIDE;
+      ends[2 * i] = c[base + INV_MASS_A] === 0 ? 0 : indices[2 * i]! / STATE_STRIDE;
+      ends[2 * i + 1] = c[base + INV_MASS_B] === 0 ? 0 : indices[2 * i + 1]! / STATE_STRIDE;
+      if (this.resting(c, i)) edges[edgeCount++] = i;
+    }
+    // Levels: resting contacts from the ground (slot 0), relaxed until no level shrinks (a stack
+    // of n bodies takes at most n sweeps of the resting contacts). A body that only bounces or
+    // flies has none: nothing holds it up.
     const far = 1 << 30;
     level.fill(far, 0, bodyCount + 1);
     level[0] = 0;
-    let maxLevel = 0;
     for (let changed = true; changed;) {
       changed = false;
-      for (let i = 0; i < count; i++) {
-        if (!this.resting(c, i)) continue;
-        const na = this.node(c, indices, i, 0);
-        const nb = this.node(c, indices, i, 1);
+      for (let e = 0; e < edgeCount; e++) {
+        const i = edges[e]!;
+        const na = ends[2 * i]!;
+        const nb = ends[2 * i + 1]!;
         const la = level[na]!;
         const lb = level[nb]!;
         if (la + 1 < lb) level[nb] = la + 1;
         else if (lb + 1 < la) level[na] = lb + 1;
         else continue;
         changed = true;
-        if (Math.min(la, lb) >= maxLevel) maxLevel++;
       }
+    }
+    // A contact's rank: its lower body's level + 1 (0 between equal or unheld bodies).
+    let maxRank = 0;
+    for (let i = 0; i < count; i++) {
+      const la = level[ends[2 * i]!]!;
+      const lb = level[ends[2 * i + 1]!]!;
+      const r = la === lb || Math.min(la, lb) === far ? 0 : Math.min(la, lb) + 1;
+      rank[i] = r;
+      if (r > maxRank) maxRank = r;
     }
 
     // From the top down: a heavy-on-light contact on a resting light body is swept, and so is
     // every resting contact under a body that a swept contact stands on (down to the ground), so
-    // the sweep starts from solid ground. A contact's rank is its lower body's level + 1.
-    const upX = -gravityX / gravity;
-    const upY = -gravityY / gravity;
+    // the sweep starts from solid ground.
     supports.fill(0, 0, bodyCount + 1);
     swept.fill(0, 0, count);
-    for (let k = maxLevel + 1; k >= 1; k--) {
+    for (let k = maxRank; k >= 1; k--) {
       for (let i = 0; i < count; i++) {
-        const la = level[this.node(c, indices, i, 0)]!;
-        const lb = level[this.node(c, indices, i, 1)]!;
-        if (la === lb || Math.min(la, lb) + 1 !== k) continue;
-        const aLower = la < lb;
-        const upper = this.node(c, indices, i, aLower ? 1 : 0);
+        if (rank[i] !== k) continue;
+        const aLower = level[ends[2 * i]!]! < level[ends[2 * i + 1]!]!;
+        const lower = ends[2 * i + (aLower ? 0 : 1)]!;
+        const upper = ends[2 * i + (aLower ? 1 : 0)]!;
         const base = i * STRIDE;
         const mLower = c[base + (aLower ? INV_MASS_A : INV_MASS_B)]!;
         const mUpper = c[base + (aLower ? INV_MASS_B : INV_MASS_A)]!;
         // Heavy on light: the lower body more than twice lighter, the normal within 60 degrees of
         // up (a body beside another is not resting on it).
-        const up = (aLower ? 1 : -1) * (c[base + NORMAL_X]! * upX + c[base + NORMAL_Y]! * upY);
-        const heavyOnLight = mLower > 2 * mUpper && up >= 0.5;
+        const up =
+          (aLower ? -1 : 1) * (c[base + NORMAL_X]! * gravityX + c[base + NORMAL_Y]! * gravityY);
+        const heavyOnLight = mLower > 2 * mUpper && up >= 0.5 * gravity;
         if (heavyOnLight || (supports[upper] === 1 && level[upper] === k && this.resting(c, i))) {
-          swept[i] = heavyOnLight ? 2 : 1;
-          supports[this.node(c, indices, i, aLower ? 0 : 1)] = 1;
+          swept[i] = 1;
+          supports[lower] = 1;
+          // Listed from the top down; the sweeps read the list backwards, ground up.
+          this.order[this.count] = i;
+          this.lowerIsA[this.count] = aLower ? 1 : 0;
+          // A contact approaching at the step's start may bounce (restitution), once, at first
+          // touch (a resting one does not approach: the last relax pass stopped it). A heavy
+          // body bounces off the light one here, not in the contact solver: there, its bounce
+          // would send the light body into the ground, again each sub-step.
+          this.restitution[this.count++] = c[base + RESTITUTION]!;
+          if (heavyOnLight) c[base + RESTITUTION] = 0;
+          // Rigid in the ordinary passes: a soft contact lets its impulse leak each pass, so the
+          // weight above would not reach the ground.
+          c[base + BIAS_RATE] = biasRate;
+          c[base + MASS_SCALE] = 1;
+          c[base + IMPULSE_SCALE] = 0;
         }
       }
     }
-    for (let k = 1; k <= maxLevel + 1; k++) {
-      for (let i = 0; i < count; i++) {
-        if (swept[i] === 0) continue;
-        const la = level[this.node(c, indices, i, 0)]!;
-        const lb = level[this.node(c, indices, i, 1)]!;
-        if (Math.min(la, lb) + 1 !== k) continue;
-        this.order[this.count] = i;
-        this.lowerIsA[this.count] = la < lb ? 1 : 0;
-        // A contact approaching at the step's start may bounce (restitution), once, at first
-        // touch (a resting one does not approach: the last relax pass stopped it).
-        const base = i * STRIDE;
-        const restitution = c[base + RESTITUTION]!;
-        this.bounce[this.count] = restitution > 0 ? 1 : 0;
-        this.restitution[this.count++] = restitution;
-        // A heavy body bounces off the light one here, not in the contact solver: there, its
-        // bounce would send the light body into the ground, again each sub-step.
-        if (swept[i] === 2) c[base + RESTITUTION] = 0;
-        // Rigid in the ordinary passes: a soft contact lets its impulse leak each pass, so the
-        // weight above would not reach the ground.
-        c[base + BIAS_RATE] = biasRate;
-        c[base + MASS_SCALE] = 1;
-        c[base + IMPULSE_SCALE] = 0;
-      }
-    }
-
     // The ordinary passes visit the swept contacts last, ground up (see the note above).
     const order = constraints.order;
     let kept = 0;
@@ -174,7 +184,7 @@ export class ShockPropagation {
       const i = order[n]!;
       if (swept[i] === 0) order[kept++] = i;
     }
-    for (let n = 0; n < this.count; n++) order[kept + n] = this.order[n]!;
+    for (let n = this.count - 1; n >= 0; n--) order[kept++] = this.order[n]!;
   }
 
   /**
@@ -194,8 +204,9 @@ export class ShockPropagation {
   ): void {
     const c = constraints.data;
     const indices = constraints.bodies;
-    for (let n = 0; n < this.count; n++) {
-      const bounce = this.bounce[n] === 1;
+    for (let n = this.count - 1; n >= 0; n--) {
+      const restitution = this.restitution[n]!;
+      const bounce = restitution > 0;
       let wait = false;
       const i = this.order[n]!;
       const base = i * STRIDE;
@@ -238,22 +249,23 @@ export class ShockPropagation {
         const separation = dx * nx + dy * ny + c[p + BASE_SEPARATION]!;
         let bias = 0;
         const approach = c[p + RELATIVE_VELOCITY]!;
+        const due = bounce && approach < -restitutionThreshold;
         if (separation > 0) {
           // A bounce is due when it touches: not slowed before, as the contact solver waits too.
-          if (bounce && approach < -restitutionThreshold) wait = true;
+          if (due) wait = true;
           bias = separation * inverseH;
         } else {
           if (useBias) bias = Math.max(biasRate * separation, -maxPushSpeed);
           // First touch of a new contact: leave at e times the approach, as off the ground
           // (a light body squeezed between a heavy one and the ground passes the bounce on).
-          if (bounce && approach < -restitutionThreshold) {
-            bias = this.restitution[n]! * approach;
+          if (due) {
+            bias = restitution * approach;
             // A bounce is a one-off impulse, not a force to warm-start (contact-solver.ts does
             // the same): the contact solver's share of this impact is dropped, or undoing it
             // next sub-step would throw the light body up.
             c[p + NORMAL_IMPULSE] = 0;
           }
-          this.bounce[n] = 2;
+          this.restitution[n] = 0;
         }
         const vn =
           (vBx - wB * rBy - (vAx - wA * rAy)) * nx + (vBy + wB * rBx - (vAy + wA * rAx)) * ny;
@@ -311,12 +323,5 @@ export class ShockPropagation {
       if (c[base + POINTS + j * POINT_STRIDE + NORMAL_IMPULSE]! > 0) return true;
     }
     return false;
-  }
-
-  /** The solver slot of side `side` (0: A, 1: B) of constraint i; immovable bodies are slot 0. */
-  private node(c: Float64Array, indices: Int32Array, i: number, side: number): number {
-    const base = i * STRIDE;
-    if (c[base + (side === 0 ? INV_MASS_A : INV_MASS_B)]! === 0) return 0;
-    return indices[2 * i + side]! / STATE_STRIDE;
   }
 }

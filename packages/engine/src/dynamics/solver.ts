@@ -199,7 +199,7 @@ export class Solver {
       }
       joints.solveChains(s, true);
       integratePositions(this.awakeCount, s, h);
-      joints.projectChains(s);
+      joints.solveChains(s, false, true);
       refreshCirclePairs(constraints, s);
       joints.solve(s, false);
       solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, false);

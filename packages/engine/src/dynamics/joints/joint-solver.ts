@@ -59,14 +59,12 @@ export class JointSolver {
     for (let i = 0; i < this.count; i++) this.active[i]!.solve(s, step, useBias);
   }
 
-  /** The exact chain solve after a pass (pin-chains.ts), when the world has one. */
-  solveChains(s: Float64Array, useBias: boolean): void {
-    this.chains?.solve(s, this.step, useBias);
-  }
-
-  /** Closes the chains' pins by moving their bodies, after the positions moved (pin-chains.ts). */
-  projectChains(s: Float64Array): void {
-    this.chains?.project(s);
+  /**
+   * The exact chain solve (pin-chains.ts), when the world has one: after the solve pass
+   * (`useBias`), after the relax pass, or (`project`) after the positions moved.
+   */
+  solveChains(s: Float64Array, useBias: boolean, project = false): void {
+    this.chains?.run(s, useBias ? this.step.softness.biasRate : 0, useBias, project);
   }
 
   /** Turns the step's impulses into reaction forces. */
