@@ -17,13 +17,13 @@ import {
   ContactConstraints,
   prepareContacts,
   refreshCirclePairs,
+  ShockPropagation,
   solveContacts,
   storeImpulses,
   warmStartContacts,
 } from './contact-solver.ts';
 import { ContinuousSolver } from './continuous.ts';
 import { JointSolver } from './joints/joint-solver.ts';
-import { ShockPropagation } from './shock-propagation.ts';
 import { Softness } from './softness.ts';
 
 /** World settings the solver reads each step. */
@@ -81,7 +81,7 @@ export class Solver {
   fastCount = 0;
   readonly fastBullets: Body[] = [];
   fastBulletCount = 0;
-  /** The ground-up sweep under heavy bodies resting on light ones (shock-propagation.ts). */
+  /** The ground-up sweep under heavy bodies resting on light ones (contact-solver.ts). */
   private readonly shock = new ShockPropagation();
   private readonly contactSoftness = new Softness();
   private readonly staticSoftness = new Softness();

@@ -6,7 +6,7 @@ import type { Body } from '@physical/engine';
 // Law: heavy on light holds. A heavy 1 m box resting on a 1 kg box, on a 1 kg ball
 // (radius 0.25 m) and a 1 kg box between two heavy ones, for mass ratios 10:1, 100:1 and 1000:1,
 // default world, 60 Hz, 10 s: the top box sinks into the light body by at most two linear slops
-// (shock propagation, dynamics/shock-propagation.ts), with no sideways drift and no explosion;
+// (shock propagation, ShockPropagation in dynamics/contact-solver.ts), with no sideways drift and no explosion;
 // the ground bears the whole weight; uneven loads (a heavy plank on two light boxes, a heavy box
 // off-centre on a light one) hold, and a heavy box whose centre is past the light one's edge
 // tips off it, as statics says. On the old solver the 1000:1 box sank 1.0 m (Box2D v3: 0.43 m).
