@@ -14,8 +14,11 @@ export interface PinJoint {
   pinError(s: Float64Array, biasRate: number, out: Float64Array, offset: number): void;
   /** Writes the pin's position error (B's pin minus A's, m; 2 numbers). */
   pinGap(s: Float64Array, out: Float64Array, offset: number): void;
-  /** Adds an impulse on B (-impulse on A) to the accumulated one; `relax`: to the step's too. */
-  addPinImpulse(px: number, py: number, relax: boolean): void;
+  /**
+   * Adds the impulse in `t` (x at offset + 15, y at offset + 5; on B, its opposite on A) to the
+   * accumulated one; `relax`: to the step's sum too.
+   */
+  addPinImpulse(t: Float64Array, offset: number, relax: boolean): void;
 }
 
 // Chains of hinges solved exactly (block tridiagonal elimination; Baraff, "Linear-time dynamics
@@ -257,66 +260,54 @@ export class PinChains {
         const joint = this.joints[k]!;
         const o = 16 * k;
         joint.pinLevers(s, t, o);
-        const px = t[o + 15]!;
-        const py = t[o + 5]!;
-        const rAx = t[o]!;
-        const rAy = t[o + 1]!;
-        const rBx = t[o + 2]!;
-        const rBy = t[o + 3]!;
-        if (positions) {
-          movePose(s, joint.stateA, joint.invMassA, joint.invInertiaA, rAx, rAy, -px, -py);
-          movePose(s, joint.stateB, joint.invMassB, joint.invInertiaB, rBx, rBy, px, py);
-          continue;
-        }
-        applyImpulse(s, joint.stateA, joint.invMassA, joint.invInertiaA, rAx, rAy, -px, -py);
-        applyImpulse(s, joint.stateB, joint.invMassB, joint.invInertiaB, rBx, rBy, px, py);
-        joint.addPinImpulse(px, py, !useBias);
+        // Both sides through one call that takes no fractional argument: V8 boxes (allocates)
+        // the numbers it passes to a call it does not inline.
+        applyPin(s, joint, 0, t, o, positions);
+        applyPin(s, joint, 1, t, o, positions);
+        if (!positions) joint.addPinImpulse(t, o, !useBias);
       }
       begin = end;
     }
   }
 }
 
-function applyImpulse(
-  s: Float64Array,
-  k: number,
-  m: number,
-  i: number,
-  rx: number,
-  ry: number,
-  px: number,
-  py: number,
-): void {
-  if (k === 0 || (m === 0 && i === 0)) return;
-  s[k + V_X] = s[k + V_X]! + m * px;
-  s[k + V_Y] = s[k + V_Y]! + m * py;
-  s[k + W] = s[k + W]! + i * (rx * py - ry * px);
-}
-
-/** Moves a pose as a positional impulse would (the impulse's velocity change over one second). */
 /**
  * Largest turn of a body in one projection (rad): the projection is linear in the angle, so a
  * light link asked to turn far would overshoot; the rest closes over the next sub-steps.
  */
 const MAX_PROJECTION_TURN = 0.2;
 
-function movePose(
+/**
+ * Applies the pin impulse in t (x at o + 15, y at o + 5, on B; the opposite on A) to one side of
+ * the joint (levers at o): to its velocity, or (`positions`) to its pose, as a positional impulse.
+ */
+function applyPin(
   s: Float64Array,
-  k: number,
-  m: number,
-  i: number,
-  rx: number,
-  ry: number,
-  px: number,
-  py: number,
+  joint: PinJoint,
+  side: number,
+  t: Float64Array,
+  o: number,
+  positions: boolean,
 ): void {
+  const k = side === 0 ? joint.stateA : joint.stateB;
+  const m = side === 0 ? joint.invMassA : joint.invMassB;
+  const i = side === 0 ? joint.invInertiaA : joint.invInertiaB;
   if (k === 0 || (m === 0 && i === 0)) return;
+  const sign = side === 0 ? -1 : 1;
+  const px = sign * t[o + 15]!;
+  const py = sign * t[o + 5]!;
+  const rx = t[o + 2 * side]!;
+  const ry = t[o + 2 * side + 1]!;
+  const turn = i * (rx * py - ry * px);
+  if (!positions) {
+    s[k + V_X] = s[k + V_X]! + m * px;
+    s[k + V_Y] = s[k + V_Y]! + m * py;
+    s[k + W] = s[k + W]! + turn;
+    return;
+  }
   s[k + DP_X] = s[k + DP_X]! + m * px;
   s[k + DP_Y] = s[k + DP_Y]! + m * py;
-  const angle = Math.max(
-    -MAX_PROJECTION_TURN,
-    Math.min(MAX_PROJECTION_TURN, i * (rx * py - ry * px)),
-  );
+  const angle = Math.max(-MAX_PROJECTION_TURN, Math.min(MAX_PROJECTION_TURN, turn));
   if (angle === 0) return;
   s[k + DELTA_ANGLE] = s[k + DELTA_ANGLE]! + angle;
   const qc = s[k + Q_C]!;

@@ -444,7 +444,9 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  addPinImpulse(px: number, py: number, relax: boolean): void {
+  addPinImpulse(t: Float64Array, offset: number, relax: boolean): void {
+    const px = t[offset + 15]!;
+    const py = t[offset + 5]!;
     this.linearImpulseX += px;
     this.linearImpulseY += py;
     if (relax) {
