@@ -186,14 +186,7 @@ test('newton: reactions, taps spawn particles, tilt pushes them, collisions show
     assert.ok(Math.abs(y1 - y0) < 0.02, `not up or down: ${y0} -> ${y1}`);
 
     // It reaches the right wall: the collision draws two equal and opposite arrows.
-    await page.waitForFunction(
-      () =>
-        Number(
-          document.querySelector<HTMLElement>('#reactions [data-arrows]')!.dataset['arrows'],
-        ) >= 2,
-      undefined,
-      { timeout: 8000 },
-    );
+    await waitForCollisionArrows(page);
     await page.waitForFunction(
       () =>
         document
@@ -220,6 +213,17 @@ test('newton: reactions, taps spawn particles, tilt pushes them, collisions show
 });
 
 /** Pixels unlike the background below the box's bottom wall (-1 when no canvas shows there). */
+/** Waits until Reactions draws a collision's two equal and opposite arrows. */
+async function waitForCollisionArrows(page: Page): Promise<void> {
+  await page.waitForFunction(
+    () =>
+      Number(document.querySelector<HTMLElement>('#reactions [data-arrows]')!.dataset['arrows']) >=
+      2,
+    undefined,
+    { timeout: 8000 },
+  );
+}
+
 async function paintedBelowBottomWall(page: Page): Promise<number> {
   return page.evaluate(() => {
     const host = document.querySelector('#reactions physical-canvas') as HTMLElement & {
@@ -271,14 +275,7 @@ test('newton: reactions, collision arrows at a wall stay inside the box', async 
         new DeviceOrientationEvent('deviceorientation', { alpha: 0, beta: 60, gamma: 0 }),
       ),
     );
-    await page.waitForFunction(
-      () =>
-        Number(
-          document.querySelector<HTMLElement>('#reactions [data-arrows]')!.dataset['arrows'],
-        ) >= 2,
-      undefined,
-      { timeout: 8000 },
-    );
+    await waitForCollisionArrows(page);
     const outside = await paintedBelowBottomWall(page);
     assert.ok(outside >= 0 && outside < 50, `pixels drawn below the bottom wall: ${outside}`);
     assertQuiet(app);

@@ -10,10 +10,17 @@ export interface PinJoint {
   readonly invInertiaB: number;
   /** Writes the levers from the centres to the pin, rotated to now: rAx, rAy, rBx, rBy. */
   pinLevers(s: Float64Array, out: Float64Array, offset: number): void;
-  /** Writes the pin's velocity error plus biasRate times its position error (2 numbers). */
-  pinError(s: Float64Array, biasRate: number, out: Float64Array, offset: number): void;
-  /** Writes the pin's position error (B's pin minus A's, m; 2 numbers). */
-  pinGap(s: Float64Array, out: Float64Array, offset: number): void;
+  /**
+   * Writes the pin's position error (B's pin minus A's, m) with `positions`; otherwise its
+   * velocity error plus biasRate times that position error (2 numbers).
+   */
+  pinError(
+    s: Float64Array,
+    biasRate: number,
+    positions: boolean,
+    out: Float64Array,
+    offset: number,
+  ): void;
   /**
    * Adds the impulse in `t` (x at offset + 15, y at offset + 5; on B, its opposite on A) to the
    * accumulated one; `relax`: to the step's sum too.
@@ -163,8 +170,7 @@ export class PinChains {
         const joint = this.joints[k]!;
         const o = 16 * k;
         joint.pinLevers(s, t, o);
-        if (positions) joint.pinGap(s, t, o + 4);
-        else joint.pinError(s, biasRate, t, o + 4);
+        joint.pinError(s, biasRate, positions, t, o + 4);
         // K_k: each moving body's m I + i p(r) p(r)^T, with p(r) = (-r_y, r_x).
         let k11 = 0;
         let k12 = 0;
@@ -309,6 +315,8 @@ function applyPin(
   s[k + DP_Y] = s[k + DP_Y]! + m * py;
   const angle = Math.max(-MAX_PROJECTION_TURN, Math.min(MAX_PROJECTION_TURN, turn));
   if (angle === 0) return;
+  // The turn of contact-solver's advancePose, written out: a call with a fractional argument
+  // would box (allocate) it here, every sub-step.
   s[k + DELTA_ANGLE] = s[k + DELTA_ANGLE]! + angle;
   const qc = s[k + Q_C]!;
   const qs = s[k + Q_S]!;

@@ -410,7 +410,13 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  pinError(s: Float64Array, biasRate: number, out: Float64Array, offset: number): void {
+  pinError(
+    s: Float64Array,
+    biasRate: number,
+    positions: boolean,
+    out: Float64Array,
+    offset: number,
+  ): void {
     const a = this.stateA;
     const b = this.stateB;
     this.pinLevers(s, out, offset);
@@ -418,29 +424,17 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
     const rAy = out[offset + 1]!;
     const rBx = out[offset + 2]!;
     const rBy = out[offset + 3]!;
+    const gapX = s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + this.deltaCenterX;
+    const gapY = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + this.deltaCenterY;
+    if (positions) {
+      out[offset] = gapX;
+      out[offset + 1] = gapY;
+      return;
+    }
     const wA = s[a + W]!;
     const wB = s[b + W]!;
-    let cx = s[b + V_X]! - wB * rBy - (s[a + V_X]! - wA * rAy);
-    let cy = s[b + V_Y]! + wB * rBx - (s[a + V_Y]! + wA * rAx);
-    if (biasRate > 0) {
-      cx += biasRate * (s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + this.deltaCenterX);
-      cy += biasRate * (s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + this.deltaCenterY);
-    }
-    out[offset] = cx;
-    out[offset + 1] = cy;
-  }
-
-  /** @internal */
-  pinGap(s: Float64Array, out: Float64Array, offset: number): void {
-    const a = this.stateA;
-    const b = this.stateB;
-    this.pinLevers(s, out, offset);
-    const rAx = out[offset]!;
-    const rAy = out[offset + 1]!;
-    const rBx = out[offset + 2]!;
-    const rBy = out[offset + 3]!;
-    out[offset] = s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + this.deltaCenterX;
-    out[offset + 1] = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + this.deltaCenterY;
+    out[offset] = s[b + V_X]! - wB * rBy - (s[a + V_X]! - wA * rAy) + biasRate * gapX;
+    out[offset + 1] = s[b + V_Y]! + wB * rBx - (s[a + V_Y]! + wA * rAx) + biasRate * gapY;
   }
 
   /** @internal */
