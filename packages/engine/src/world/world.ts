@@ -283,7 +283,6 @@ export class World {
       throw new PhysicalError('bodyB', 'is not in this world: add the body before the joint.');
     }
     joint.worldRef = this;
-    this.solver.joints.chains ??= joint.createChains();
     if (this.locked) {
       this.pendingJointAdds.push(joint);
       return joint;

@@ -1,6 +1,13 @@
 import { describe, expect, it } from 'vitest';
 import { reportMeasured } from './measured.ts';
-import { World, box, particle, revoluteJoint } from '@physical/engine';
+import {
+  World,
+  box,
+  particle,
+  restoreSnapshot,
+  revoluteJoint,
+  takeSnapshot,
+} from '@physical/engine';
 import type { Body, RevoluteJoint } from '@physical/engine';
 
 // Law: a heavy bob on a chain of light hinged links holds. Four 1 kg links of 0.5 m hang from a
@@ -103,4 +110,17 @@ describe('a heavy bob on light links', () => {
       expect(stretch).toBeLessThan(stretchTolerance);
     });
   }
+
+  it('a restored 1000:1 chain steps exactly as the original (the chain solve comes back with it)', () => {
+    const { world, bob } = chain(1000, true);
+    for (let i = 0; i < 30; i++) world.step(DT);
+    const copy = restoreSnapshot(JSON.parse(JSON.stringify(takeSnapshot(world))));
+    const copyBob = copy.bodies[copy.bodies.length - 1]!;
+    for (let i = 0; i < 120; i++) {
+      world.step(DT);
+      copy.step(DT);
+    }
+    expect(copyBob.mass).toBe(bob.mass);
+    expect({ ...copyBob.position }).toEqual({ ...bob.position });
+  });
 });

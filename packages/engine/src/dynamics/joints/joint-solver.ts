@@ -22,7 +22,7 @@ export class JointSolver {
   private readonly active: Joint[] = [];
   private count = 0;
   private readonly step: JointStep = { h: 0, inverseH: 0, dt: 0, softness: new Softness() };
-  /** The exact solve of hinge chains with unlike masses, once a world has a hinge. */
+  /** The exact solve of hinge chains with unlike masses, once a hinge has been solved. */
   chains: PinChains | null = null;
 
   /**
@@ -45,6 +45,9 @@ export class JointSolver {
       else active.push(joint);
       count++;
       joint.prepare(step);
+      // Made by the first joint kind that needs it, however the joint came in (added or
+      // restored from a snapshot); apps without such joints never load it.
+      this.chains ??= joint.createChains();
     }
     this.count = count;
     this.chains?.prepare(active, count, bodyCount);

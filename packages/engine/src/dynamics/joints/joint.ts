@@ -299,7 +299,7 @@ export abstract class Joint<UserData = unknown> {
     return null;
   }
 
-  /** @internal The chain solve, made once by the first pin joint added to a world. */
+  /** @internal The chain solve, made once by the first pin joint a world solves. */
   createChains(): PinChains | null {
     return null;
   }
