@@ -15,7 +15,7 @@ import type { Body, RevoluteJoint } from '@physical/engine';
 // stretch and each hinge carries the weight below it (the exact chain solve,
 // dynamics/joints/pin-chains.ts; on sequential impulses alone a 1000 kg bob stretched it 1.3 m).
 // Released from the horizontal, the bob never moves faster than a free fall from its height
-// (no energy is made) and, at 100:1, the chain keeps its length.
+// (no energy is made) and the chain keeps its length, up to 10,000:1.
 
 const DT = 1 / 60;
 const LINKS = 4;
@@ -24,6 +24,8 @@ const LENGTH = 0.5;
 function chain(
   ratio: number,
   horizontal: boolean,
+  links = LINKS,
+  length = LENGTH,
 ): { world: World; bob: Body; hinges: RevoluteJoint[] } {
   const world = new World({ enableSleep: false });
   const ceiling = world.add(
@@ -33,36 +35,36 @@ function chain(
   let previous: Body = ceiling;
   const along = (d: number): { x: number; y: number } =>
     horizontal ? { x: d, y: 0 } : { x: 0, y: d };
-  for (let k = 0; k < LINKS; k++) {
+  for (let k = 0; k < links; k++) {
     const link = world.add(
       box({
-        position: along((k + 0.5) * LENGTH),
-        width: horizontal ? LENGTH : 0.05,
-        height: horizontal ? 0.05 : LENGTH,
-        density: 1 / (LENGTH * 0.05),
+        position: along((k + 0.5) * length),
+        width: horizontal ? length : 0.05,
+        height: horizontal ? 0.05 : length,
+        density: 1 / (length * 0.05),
       }),
     );
     hinges.push(
-      world.addJoint(revoluteJoint({ bodyA: previous, bodyB: link, anchor: along(k * LENGTH) })),
+      world.addJoint(revoluteJoint({ bodyA: previous, bodyB: link, anchor: along(k * length) })),
     );
     previous = link;
   }
   const radius = 0.1;
   const bob = world.add(
     particle({
-      position: along(LINKS * LENGTH),
+      position: along(links * length),
       radius,
       density: ratio / (Math.PI * radius * radius),
     }),
   );
   hinges.push(
-    world.addJoint(revoluteJoint({ bodyA: previous, bodyB: bob, anchor: along(LINKS * LENGTH) })),
+    world.addJoint(revoluteJoint({ bodyA: previous, bodyB: bob, anchor: along(links * length) })),
   );
   return { world, bob, hinges };
 }
 
-const stretchOf = (bob: Body): number =>
-  Math.hypot(bob.position.x, bob.position.y) - LINKS * LENGTH;
+const stretchOf = (bob: Body, links = LINKS, length = LENGTH): number =>
+  Math.hypot(bob.position.x, bob.position.y) - links * length;
 
 describe('a heavy bob on light links', () => {
   it('hanging at 1000:1, the chain keeps its length and every hinge carries the weight below it (1 %)', () => {
@@ -86,28 +88,30 @@ describe('a heavy bob on light links', () => {
     expect(worst).toBeLessThan(0.01);
   });
 
-  for (const [ratio, stretchTolerance] of [
-    [100, 0.01],
-    [1000, 2],
+  // Whipping light links are stiff: each turns against the tension of its two pins. Without the
+  // chain's geometric stiffness, the 1000:1 chain below stretched 1.58 m and the eight-link one
+  // and the 10,000:1 one exploded.
+  for (const [ratio, links, length] of [
+    [100, LINKS, LENGTH],
+    [1000, LINKS, LENGTH],
+    [1000, 8, 0.25],
+    [10000, LINKS, LENGTH],
   ] as const) {
-    it(`released from the horizontal at ${ratio}:1, the bob never beats a free fall and the chain stretches at most ${stretchTolerance} m`, () => {
-      const { world, bob } = chain(ratio, true);
-      const bound = Math.sqrt(2 * world.gravity.y * LINKS * LENGTH);
+    it(`released from the horizontal at ${ratio}:1 on ${links} links, the bob never beats a free fall and the chain stretches at most 1 cm`, () => {
+      const { world, bob } = chain(ratio, true, links, length);
+      const bound = Math.sqrt(2 * world.gravity.y * links * length);
       let speed = 0;
       let stretch = 0;
       for (let i = 0; i < 600; i++) {
         world.step(DT);
         speed = Math.max(speed, Math.hypot(bob.linearVelocity.x, bob.linearVelocity.y));
-        stretch = Math.max(stretch, stretchOf(bob));
+        stretch = Math.max(stretch, stretchOf(bob, links, length));
       }
-      reportMeasured(
-        `${ratio}:1 swinging chain, top speed over free-fall speed`,
-        speed / bound,
-        1.01,
-      );
-      reportMeasured(`${ratio}:1 swinging chain, stretch (m)`, stretch, stretchTolerance);
+      const label = `${ratio}:1 swinging chain of ${links}`;
+      reportMeasured(`${label}, top speed over free-fall speed`, speed / bound, 1.01);
+      reportMeasured(`${label}, stretch (m)`, stretch, 0.01);
       expect(speed / bound).toBeLessThan(1.01);
-      expect(stretch).toBeLessThan(stretchTolerance);
+      expect(stretch).toBeLessThan(0.01);
     });
   }
 

@@ -50,7 +50,7 @@ export class JointSolver {
       this.chains ??= joint.createChains();
     }
     this.count = count;
-    this.chains?.prepare(active, count, bodyCount);
+    this.chains?.prepare(active, count, bodyCount, step.h);
   }
 
   warmStart(s: Float64Array): void {

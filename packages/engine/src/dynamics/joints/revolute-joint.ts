@@ -438,6 +438,14 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
+  pinLoad(out: Float64Array, offset: number): void {
+    const px = this.linearImpulseX;
+    const py = this.linearImpulseY;
+    out[offset] = Math.abs(px * this.rAx + py * this.rAy);
+    out[offset + 1] = Math.abs(px * this.rBx + py * this.rBy);
+  }
+
+  /** @internal */
   addPinImpulse(t: Float64Array, offset: number, relax: boolean): void {
     const px = t[offset + 15]!;
     const py = t[offset + 5]!;
