@@ -11,6 +11,12 @@ const normalsB = new Float64Array(2 * MAX_POLYGON_VERTICES);
 
 /** Edge index found by the last findMaxSeparation call (a second return value without allocation). */
 let maxSeparationEdge = 0;
+/**
+ * Fractional values passed to the helpers below and back (findMaxSeparation's result at 0, a
+ * point's x, y and separation or a normal's x, y at 1-3): V8 boxes (allocates) the numbers
+ * passed to or returned from a call it does not inline, once per pair per step here.
+ */
+const carry = new Float64Array(4);
 
 /** Feature-id flag: the point comes from two vertices, not a face. */
 const VERTEX_PAIR = 0x10;
@@ -77,9 +83,11 @@ export function collidePolygons(
     normalsB[i + 1] = s * nx + c * ny;
   }
 
-  const separationA = findMaxSeparation(countA, verticesA, a.normals, countB, verticesB);
+  findMaxSeparation(countA, verticesA, a.normals, countB, verticesB);
+  const separationA = carry[0]!;
   const edgeA = maxSeparationEdge;
-  const separationB = findMaxSeparation(countB, verticesB, normalsB, countA, verticesA);
+  findMaxSeparation(countB, verticesB, normalsB, countA, verticesA);
+  const separationB = carry[0]!;
   const edgeB = maxSeparationEdge;
   const radius = a.radius + b.radius;
   if (separationA - radius >= speculativeDistance || separationB - radius >= speculativeDistance) {
@@ -162,7 +170,7 @@ export function collidePolygons(
         const p1y = v11y + f1 * d1y;
         const gapX = p2x - p1x;
         const gapY = p2y - p1y;
-        const distance = Math.hypot(gapX, gapY);
+        const distance = Math.sqrt(gapX * gapX + gapY * gapY);
         const separation = distance - radius;
         if (separation >= speculativeDistance) {
           out.pointCount = 0;
@@ -173,13 +181,15 @@ export function collidePolygons(
         const along = radius1 + 0.5 * separation;
         const vertex1 = f1 === 0 ? i11 : i12;
         const vertex2 = f2 === 0 ? i21 : i22;
-        writeNormal(out, isFlipped ? -ux : ux, isFlipped ? -uy : uy, xfA);
+        carry[1] = isFlipped ? -ux : ux;
+        carry[2] = isFlipped ? -uy : uy;
+        writeNormal(out, xfA);
+        carry[1] = p1x + along * ux + originX;
+        carry[2] = p1y + along * uy + originY;
+        carry[3] = separation;
         writePoint(
           out,
           0,
-          p1x + along * ux + originX,
-          p1y + along * uy + originY,
-          separation,
           isFlipped
             ? makeFeatureId(VERTEX_PAIR | vertex2, vertex1)
             : makeFeatureId(VERTEX_PAIR | vertex1, vertex2),
@@ -242,42 +252,33 @@ export function collidePolygons(
   if (coreA - radius < speculativeDistance) {
     // Midway between the reference surface (plane + radius1) and the incident one (p - radius2 n).
     const shift = 0.5 * (radius1 - radius2 - coreA);
-    writePoint(
-      out,
-      pointCount,
-      ax + shift * nx + originX,
-      ay + shift * ny + originY,
-      coreA - radius,
-      pointId(isFlipped, vertexA === i21 ? i12 : i11, vertexA),
-      xfA,
-      xfB,
-    );
+    carry[1] = ax + shift * nx + originX;
+    carry[2] = ay + shift * ny + originY;
+    carry[3] = coreA - radius;
+    writePoint(out, pointCount, pointId(isFlipped, vertexA === i21 ? i12 : i11, vertexA), xfA, xfB);
     pointCount++;
   }
   if (count === 2) {
     const coreB = nx * (bx - v11x) + ny * (by - v11y);
     if (coreB - radius < speculativeDistance) {
       const shift = 0.5 * (radius1 - radius2 - coreB);
-      writePoint(
-        out,
-        pointCount,
-        bx + shift * nx + originX,
-        by + shift * ny + originY,
-        coreB - radius,
-        pointId(isFlipped, i11, i22),
-        xfA,
-        xfB,
-      );
+      carry[1] = bx + shift * nx + originX;
+      carry[2] = by + shift * ny + originY;
+      carry[3] = coreB - radius;
+      writePoint(out, pointCount, pointId(isFlipped, i11, i22), xfA, xfB);
       pointCount++;
     }
   }
-  writeNormal(out, outNormalX, outNormalY, xfA);
+  carry[1] = outNormalX;
+  carry[2] = outNormalY;
+  writeNormal(out, xfA);
   out.pointCount = pointCount;
 }
 
 /**
  * Largest over the faces of polygon 1 of the smallest signed distance of polygon 2's vertices to
- * that face (m, cores only): positive means a separating axis. Stores the face in maxSeparationEdge.
+ * that face (m, cores only), in carry[0]: positive means a separating axis. Stores the face in
+ * maxSeparationEdge.
  */
 function findMaxSeparation(
   count1: number,
@@ -285,7 +286,7 @@ function findMaxSeparation(
   normals1: Float64Array,
   count2: number,
   vertices2: Float64Array,
-): number {
+): void {
   let bestEdge = 0;
   let maxSeparation = -Infinity;
   for (let i = 0; i < count1; i++) {
@@ -306,7 +307,7 @@ function findMaxSeparation(
     }
   }
   maxSeparationEdge = bestEdge;
-  return maxSeparation;
+  carry[0] = maxSeparation;
 }
 
 function clamp01(value: number): number {
@@ -314,22 +315,27 @@ function clamp01(value: number): number {
 }
 
 /** Rotates a normal from A's frame to world and stores it. */
-function writeNormal(out: Manifold, nx: number, ny: number, xfA: Transform): void {
+function writeNormal(out: Manifold, xfA: Transform): void {
+  const nx = carry[1]!;
+  const ny = carry[2]!;
   out.normalX = xfA.c * nx - xfA.s * ny;
   out.normalY = xfA.s * nx + xfA.c * ny;
 }
 
-/** Stores point `index` given in A's local frame (m): world position, anchors, separation, id. */
+/**
+ * Stores point `index` given in A's local frame (carry[1..3]: x, y, separation; m): world
+ * position, anchors, separation, id.
+ */
 function writePoint(
   out: Manifold,
   index: number,
-  localX: number,
-  localY: number,
-  separation: number,
   id: number,
   xfA: Transform,
   xfB: Transform,
 ): void {
+  const localX = carry[1]!;
+  const localY = carry[2]!;
+  const separation = carry[3]!;
   const point = out.points[index === 0 ? 0 : 1];
   const anchorX = xfA.c * localX - xfA.s * localY;
   const anchorY = xfA.s * localX + xfA.c * localY;

@@ -153,6 +153,8 @@ export class DynamicTree {
   leafCount = 0;
   /** Traversal stack shared by query and rayCast; `stackTop` lets a callback query again. */
   private stack: Int32Array;
+  /** pairPerimeter's result (a double from the start, so V8 keeps the field unboxed). */
+  private sum = 0.5;
   /** @internal */
   stackTop = 0;
 
@@ -653,7 +655,8 @@ export class DynamicTree {
         Math.abs(hb - heights[g]!) <= 1 &&
         Math.abs(heights[f]! - (1 + Math.max(hb, heights[g]!))) <= 1
       ) {
-        const gain = this.pairPerimeter(b, g) - perimeterC;
+        this.pairPerimeter(b, g);
+        const gain = this.sum - perimeterC;
         if (gain < bestGain) {
           bestGain = gain;
           bestKind = 1;
@@ -665,7 +668,8 @@ export class DynamicTree {
         Math.abs(hb - heights[f]!) <= 1 &&
         Math.abs(heights[g]! - (1 + Math.max(hb, heights[f]!))) <= 1
       ) {
-        const gain = this.pairPerimeter(b, f) - perimeterC;
+        this.pairPerimeter(b, f);
+        const gain = this.sum - perimeterC;
         if (gain < bestGain) {
           bestGain = gain;
           bestKind = 1;
@@ -682,7 +686,8 @@ export class DynamicTree {
         Math.abs(hc - heights[e]!) <= 1 &&
         Math.abs(heights[d]! - (1 + Math.max(hc, heights[e]!))) <= 1
       ) {
-        const gain = this.pairPerimeter(c, e) - perimeterB;
+        this.pairPerimeter(c, e);
+        const gain = this.sum - perimeterB;
         if (gain < bestGain) {
           bestGain = gain;
           bestKind = 1;
@@ -694,7 +699,8 @@ export class DynamicTree {
         Math.abs(hc - heights[d]!) <= 1 &&
         Math.abs(heights[e]! - (1 + Math.max(hc, heights[d]!))) <= 1
       ) {
-        const gain = this.pairPerimeter(c, d) - perimeterB;
+        this.pairPerimeter(c, d);
+        const gain = this.sum - perimeterB;
         if (gain < bestGain) {
           bestGain = gain;
           bestKind = 1;
@@ -712,7 +718,10 @@ export class DynamicTree {
           Math.abs(heights[d]! - heights[g]!) <= 1 &&
           Math.abs(Math.max(heights[f]!, heights[e]!) - Math.max(heights[d]!, heights[g]!)) <= 1
         ) {
-          const gain = this.pairPerimeter(f, e) + this.pairPerimeter(d, g) - base;
+          this.pairPerimeter(f, e);
+          let gain = this.sum - base;
+          this.pairPerimeter(d, g);
+          gain += this.sum;
           if (gain < bestGain) {
             bestGain = gain;
             bestKind = 2;
@@ -725,7 +734,10 @@ export class DynamicTree {
           Math.abs(heights[d]! - heights[f]!) <= 1 &&
           Math.abs(Math.max(heights[g]!, heights[e]!) - Math.max(heights[d]!, heights[f]!)) <= 1
         ) {
-          const gain = this.pairPerimeter(g, e) + this.pairPerimeter(d, f) - base;
+          this.pairPerimeter(g, e);
+          let gain = this.sum - base;
+          this.pairPerimeter(d, f);
+          gain += this.sum;
           if (gain < bestGain) {
             bestKind = 2;
             bestFirst = d;
@@ -794,16 +806,20 @@ export class DynamicTree {
     this.parent[newChild] = parentNode;
   }
 
-  private pairPerimeter(p: number, q: number): number {
+  /**
+   * Puts the perimeter of the union of p's and q's boxes in `sum`. Written out rather than
+   * calling unionPerimeter: eight fractional arguments of a call V8 does not inline are eight
+   * boxed numbers, and tree rotations run in the step; the result goes through a field (a
+   * double field is written in place) rather than a return value for the same reason.
+   */
+  private pairPerimeter(p: number, q: number): void {
     const boxes = this.boxes;
     const po = 4 * p;
     const qo = 4 * q;
-    // Written out rather than calling unionPerimeter: eight fractional arguments of a call V8
-    // does not inline are eight boxed numbers, and tree rotations run in the step.
     const width = Math.max(boxes[po + 2]!, boxes[qo + 2]!) - Math.min(boxes[po]!, boxes[qo]!);
     const height =
       Math.max(boxes[po + 3]!, boxes[qo + 3]!) - Math.min(boxes[po + 1]!, boxes[qo + 1]!);
-    return 2 * (width + height);
+    this.sum = 2 * (width + height);
   }
 }
 

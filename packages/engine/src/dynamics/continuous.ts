@@ -1,6 +1,11 @@
 import type { BroadPhase } from '../collision/broad-phase.ts';
 import { DistanceProxy } from '../collision/distance.ts';
-import { Sweep, TimeOfImpactOutput, timeOfImpact } from '../collision/time-of-impact.ts';
+import {
+  Sweep,
+  TimeOfImpactOutput,
+  getSweepTransform,
+  timeOfImpact,
+} from '../collision/time-of-impact.ts';
 import { AABB } from '../geometry/aabb.ts';
 import { Transform } from '../math/transform.ts';
 import type { Body } from './body.ts';
@@ -73,13 +78,9 @@ export class ContinuousSolver {
     sweep.c2Y = body.centerY;
     sweep.a1 = body.angle0;
     sweep.a2 = body.angleValue;
-    const xf0 = this.xf0.setFromCenter(
-      body.center0X,
-      body.center0Y,
-      body.angle0,
-      body.localCenterX,
-      body.localCenterY,
-    );
+    // Through the sweep, not setFromCenter: V8 boxes the fractional arguments of a call it does
+    // not inline (here and below, field writes rather than box.set), and this runs per fast body.
+    const xf0 = getSweepTransform(sweep, 0, this.xf0);
 
     this.body = body;
     this.fraction = 1;
@@ -90,14 +91,15 @@ export class ContinuousSolver {
       // Swept box: the union of the boxes at the start and the end of the step.
       const box = this.box;
       const end = shape.computeAABB(body.transform);
-      box.set(end.minX, end.minY, end.maxX, end.maxY);
+      const endMinX = end.minX;
+      const endMinY = end.minY;
+      const endMaxX = end.maxX;
+      const endMaxY = end.maxY;
       const start = shape.computeAABB(xf0);
-      box.set(
-        Math.min(box.minX, start.minX),
-        Math.min(box.minY, start.minY),
-        Math.max(box.maxX, start.maxX),
-        Math.max(box.maxY, start.maxY),
-      );
+      box.minX = Math.min(endMinX, start.minX);
+      box.minY = Math.min(endMinY, start.minY);
+      box.maxX = Math.max(endMaxX, start.maxX);
+      box.maxY = Math.max(endMaxY, start.maxY);
       setShapeProxy(this.proxy, shape);
       // A non-bullet sweeps against static shapes only: the other trees need not be searched.
       broadPhase.query(box, this.queryCallback, !bullet);

@@ -15,8 +15,12 @@ export class Islands {
   private readonly stack: Body[] = [];
   private readonly woken: Body[] = [];
   private readonly members: Body[] = [];
+  /** Bodies of the last collected island (the first of `members`). */
+  private memberCount = 0;
   /** Whether the last collected island touches something or is joined to something. */
   private held = false;
+  /** collect's rest threshold (s); a double from the start, so V8 keeps the field unboxed. */
+  private minimumRest = 0.5;
 
   /** Puts to sleep every island of `awake` bodies that has rested for `timeToSleep` seconds. */
   sleepRestingIslands(awake: readonly Body[], count: number, timeToSleep: number): void {
@@ -26,15 +30,18 @@ export class Islands {
     for (let i = 0; i < count; i++) {
       const body = awake[i]!;
       if (!body.awake || body.sleepTime < timeToSleep || body.islandStamp > passStart) continue;
-      if (!this.collect(body, timeToSleep, passStart)) continue;
-      if (!this.held && !allStill(this.members)) {
+      this.minimumRest = timeToSleep;
+      if (!this.collect(body, passStart)) continue;
+      const members = this.members;
+      const memberCount = this.memberCount;
+      if (!this.held && !allStill(members, memberCount)) {
         // Newton's first law: a body that touches nothing keeps its velocity, however small
         // (Box2D would stop a body drifting in zero gravity below its sleep speed). It rests only
         // at exactly zero velocity; otherwise it tries again after another timeToSleep.
-        for (let j = 0; j < this.members.length; j++) this.members[j]!.sleepTime = 0;
+        for (let j = 0; j < memberCount; j++) members[j]!.sleepTime = 0;
         continue;
       }
-      for (let j = 0; j < this.members.length; j++) putToSleep(this.members[j]!);
+      for (let j = 0; j < memberCount; j++) putToSleep(members[j]!);
     }
   }
 
@@ -77,26 +84,32 @@ export class Islands {
   /** Puts a body and its whole island to sleep now. */
   sleep(body: Body): void {
     if (body.type === 'static') return;
-    this.collect(body, -1, this.stamp);
-    for (let j = 0; j < this.members.length; j++) putToSleep(this.members[j]!);
+    this.minimumRest = -1;
+    this.collect(body, this.stamp);
+    for (let j = 0; j < this.memberCount; j++) putToSleep(this.members[j]!);
   }
 
   /**
    * Collects the island of `start` into `members`. Returns false as soon as a member has rested
    * less than `minimumRest` seconds or belongs to an island already found restless in this pass.
+   * (`minimumRest` is a field, not an argument: V8 boxes a fractional argument of a call it does
+   * not inline, and this runs for every resting body each step.)
    */
-  private collect(start: Body, minimumRest: number, passStart: number): boolean {
+  private collect(start: Body, passStart: number): boolean {
+    const minimumRest = this.minimumRest;
     const stamp = ++this.stamp;
     const stack = this.stack;
     const members = this.members;
-    stack.length = 0;
-    members.length = 0;
+    // Counts, not `length = 0`: emptying an array that way drops its backing store, and every
+    // island searched in every step would allocate a new one.
+    let top = 0;
+    let memberCount = 0;
     this.held = false;
     start.islandStamp = stamp;
-    stack.push(start);
-    while (stack.length > 0) {
-      const body = stack.pop()!;
-      members.push(body);
+    stack[top++] = start;
+    while (top > 0) {
+      const body = stack[--top]!;
+      members[memberCount++] = body;
       // A kinematic body does not join islands together: what touches it is not connected through it.
       if (body.type === 'kinematic') continue;
       for (let i = 0; i < body.contacts.length; i++) {
@@ -110,7 +123,7 @@ export class Islands {
         // left as it is.
         if (other.type === 'kinematic') continue;
         other.islandStamp = stamp;
-        stack.push(other);
+        stack[top++] = other;
       }
       // Joined bodies rest or move together too.
       for (let i = 0; i < body.jointList.length; i++) {
@@ -121,16 +134,17 @@ export class Islands {
         if (other.sleepTime < minimumRest || other.islandStamp > passStart) return false;
         if (other.type === 'kinematic') continue;
         other.islandStamp = stamp;
-        stack.push(other);
+        stack[top++] = other;
       }
     }
+    this.memberCount = memberCount;
     return true;
   }
 }
 
 /** True if no body of the list moves at all. */
-function allStill(bodies: readonly Body[]): boolean {
-  for (let i = 0; i < bodies.length; i++) {
+function allStill(bodies: readonly Body[], count: number): boolean {
+  for (let i = 0; i < count; i++) {
     const body = bodies[i]!;
     if (body.velocityX !== 0 || body.velocityY !== 0 || body.angularVelocityValue !== 0) {
       return false;

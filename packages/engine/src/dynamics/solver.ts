@@ -234,6 +234,7 @@ export class Solver {
     let fastBulletCount = 0;
     const fastBodies = this.fastBodies;
     const fastBullets = this.fastBullets;
+    bounds.dt = boundsDt;
     for (let i = 0; i < this.awakeCount; i++) {
       const body = awake[i]!;
       const k = (i + 1) * STATE_STRIDE;
@@ -269,7 +270,7 @@ export class Solver {
           fastCount++;
         }
       } else {
-        bounds.refresh(body, boundsDt, false);
+        bounds.refresh(body, false);
       }
 
       // Sleep: the body must be slow, and not being moved by position correction either

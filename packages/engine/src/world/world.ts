@@ -43,7 +43,7 @@ import {
   type WorldOnlyEvents,
 } from '../dynamics/events.ts';
 import { Islands } from '../dynamics/island.ts';
-import { Joint } from '../dynamics/joints/joint.ts';
+import type { Joint } from '../dynamics/joints/joint.ts';
 import { Sensors } from '../dynamics/sensor.ts';
 import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
 import { Solver } from '../dynamics/solver.ts';
@@ -262,7 +262,9 @@ export class World {
    * end of the step.
    */
   addJoint<J extends Joint>(joint: J): J {
-    if (!(joint instanceof Joint)) {
+    // A shape test, not instanceof: instanceof would bundle the joint classes into every app,
+    // joints or not (about 1 KB gzipped).
+    if (!isJoint(joint)) {
       throw new PhysicalError(
         'joint',
         `must be a Joint (for example revoluteJoint({...})), got ${describeValue(joint)}.`,
@@ -648,7 +650,8 @@ export class World {
 
   /** Moves the body's shapes' broad-phase boxes to where the body is now (see BodyBounds). */
   private refreshProxies(body: Body, forcePairs: boolean): void {
-    this.bounds.refresh(body, this.lastStep, forcePairs);
+    this.bounds.dt = this.lastStep;
+    this.bounds.refresh(body, forcePairs);
   }
 
   /** Sweeps the fast bodies that finalizeBodies listed, then moves their boxes. */
@@ -912,4 +915,14 @@ export class World {
   get lastStepDuration(): number {
     return this.lastStep;
   }
+}
+
+/** A joint made by one of the joint factories (it has the solver's methods and a world slot). */
+function isJoint(value: unknown): value is Joint {
+  return (
+    typeof value === 'object' &&
+    value !== null &&
+    'worldRef' in value &&
+    typeof (value as { warmStart?: unknown }).warmStart === 'function'
+  );
 }
