@@ -60,6 +60,38 @@ async function paintedAboveTopWall(page: Page): Promise<number> {
   });
 }
 
+/** How much brighter the grid line at x = 1 m is than the floor half a metre to its right. */
+async function gridContrast(page: Page): Promise<number> {
+  return page.evaluate(() => {
+    const host = document.querySelector('#inertia physical-canvas') as HTMLElement & {
+      worldToScreen(point: { x: number; y: number }): { x: number; y: number };
+    };
+    const source = host.shadowRoot!.querySelector('canvas')!;
+    const ratio = source.width / source.clientWidth;
+    // A copy to read from: reading the element's own context would warn about readbacks.
+    const copy = document.createElement('canvas');
+    copy.width = source.width;
+    copy.height = source.height;
+    const context = copy.getContext('2d', { willReadFrequently: true })!;
+    context.drawImage(source, 0, 0);
+    const brightness = (x: number, y: number): number => {
+      const { data } = context.getImageData(Math.round(x * ratio) - 3, Math.round(y * ratio), 7, 1);
+      let best = 0;
+      for (let i = 0; i < data.length; i += 4)
+        best = Math.max(best, data[i]! + data[i + 1]! + data[i + 2]!);
+      return best;
+    };
+    const line = host.worldToScreen({ x: 1, y: 0.5 });
+    const floor = host.worldToScreen({ x: 1.5, y: 0.5 });
+    return brightness(line.x, line.y) - brightness(floor.x, floor.y);
+  });
+}
+
+/** The Inertia canvas' described state. */
+async function described(page: Page): Promise<string> {
+  return (await page.locator('#inertia physical-canvas').getAttribute('aria-label')) ?? '';
+}
+
 for (const [orientation, options] of [
   ['portrait', PHONE],
   ['landscape', LANDSCAPE],
@@ -129,10 +161,95 @@ for (const [orientation, options] of [
       assert.equal(await readout(page, 'speed', '#inertia'), '0.000 m/s');
       assert.equal(await readout(page, 'direction', '#inertia'), '–');
       assert.equal(await readout(page, 'force', '#inertia'), '5 N, 90°');
+      // The wall pushes back as hard: the forces on the pinned body sum to zero, and it says so.
+      assert.match(
+        (await page.locator('#inertia physical-canvas').getAttribute('aria-label')) ?? '',
+        /ΣF = 0 N/,
+      );
       // The 2 m force arrow points up out of the box: it is clipped at the wall.
       const outside = await paintedAboveTopWall(page);
       assert.ok(outside >= 0 && outside < 50, `pixels drawn above the top wall: ${outside}`);
       await screenshot(page, `inertia-pinned-${orientation}`);
+      assertQuiet(app);
+    } finally {
+      await closeApp(app);
+    }
+  });
+}
+
+for (const [orientation, options] of [
+  ['portrait', PHONE],
+  ['landscape', LANDSCAPE],
+] as const) {
+  test(`newton: inertia (${orientation}), a 1 m grid, every force drawn and described with its sum, Return brings the body back to rest`, async ({
+    browser,
+  }) => {
+    const app = await openApp(browser, '#inertia', options);
+    const { page } = app;
+    try {
+      // A reference grid a metre apart, and at rest the forces sum to zero.
+      const contrast = await gridContrast(page);
+      assert.ok(contrast > 20, `grid line brighter than the floor by ${contrast}`);
+      assert.match(await described(page), /ΣF = 0 N/);
+
+      // On wood, pushed right at 5 N: friction 0.05 x 1 kg x 9.81 = 0.49 N against the motion,
+      // and the sum 4.51 N, drawn and said.
+      await page.locator('[data-surface="wood"]').click();
+      await setForce(page, ['Home']);
+      await page.locator('#inertia [data-action="toggle-force"]').click();
+      await page.waitForFunction(
+        () =>
+          /ΣF is 4\.51\sN at 0° \(friction 0\.49\sN/.test(
+            document.querySelector('#inertia physical-canvas')!.getAttribute('aria-label')!,
+          ),
+        undefined,
+        { timeout: 4000, polling: 50 },
+      );
+      await screenshot(page, `inertia-forces-${orientation}`);
+
+      // Force off: friction alone acts, so the sum is the friction, pointing back.
+      await page.locator('#inertia [data-action="toggle-force"]').click();
+      await page.waitForFunction(
+        () =>
+          /ΣF is 0\.49\sN at 180°/.test(
+            document.querySelector('#inertia physical-canvas')!.getAttribute('aria-label')!,
+          ),
+        undefined,
+        { timeout: 4000, polling: 50 },
+      );
+
+      // Return: the body is back in the centre, at rest, and that is announced.
+      await page.locator('#inertia [data-action="return"]').click();
+      await page.waitForFunction(
+        () =>
+          document
+            .querySelector('#inertia [data-readout="speed"]')!
+            .textContent!.startsWith('0.000'),
+        undefined,
+        { timeout: 4000, polling: 50 },
+      );
+      const offset = await page.evaluate(() => {
+        const host = document.querySelector('#inertia physical-canvas') as HTMLElement & {
+          world: { bodies: readonly { type: string; position: { x: number; y: number } }[] };
+          viewBox: { x: number; y: number; width: number; height: number };
+        };
+        const body = host.world.bodies.find((item) => item.type === 'dynamic')!;
+        const box = host.viewBox;
+        return Math.hypot(
+          body.position.x - (box.x + box.width / 2),
+          body.position.y - (box.y + box.height / 2),
+        );
+      });
+      assert.ok(offset < 1e-9, `back in the centre (${offset} m off)`);
+      await page.waitForFunction(
+        () =>
+          /back in the centre/.test(
+            document.querySelector('[data-announcer="inertia"]')!.textContent!,
+          ),
+        undefined,
+        { timeout: 4000 },
+      );
+      assert.match(await described(page), /at rest/);
       assertQuiet(app);
     } finally {
       await closeApp(app);

@@ -1,5 +1,10 @@
 import { Box, Button, ToggleButton, ToggleButtonGroup } from '@mui/material';
-import { drawArrow, type OverlayDrawer, type PhysicalCanvasElement } from '@physical/canvas';
+import {
+  ARROW_COLORS,
+  drawArrow,
+  type OverlayDrawer,
+  type PhysicalCanvasElement,
+} from '@physical/canvas';
 import type { Force } from '@physical/engine';
 import { PhysicalCanvas } from '@physical/react';
 import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
@@ -23,6 +28,8 @@ import {
   applyConstantForce,
   createInertiaScene,
   forceVector,
+  forcesOn,
+  returnBody,
   sceneSizeFor,
   screenAngle,
   setElasticity,
@@ -35,6 +42,15 @@ import {
 const FORCE_ARROW_SCALE = 0.4;
 const VELOCITY_ARROW_SCALE = 0.5;
 const MARGIN = 0.15;
+/**
+ * Colours of the friction, wall and net-force arrows (the applied force is the canvas' force
+ * colour).
+ */
+const FRICTION_COLOR = '#b39ddb';
+const WALL_COLOR = '#90caf9';
+const NET_COLOR = '#fff59d';
+/** Newtons below this read as none: a sum of forces this small is zero on screen. */
+const NO_FORCE = 0.005;
 
 /** The first law: a polygon at rest until a force acts, then gliding at constant velocity. */
 export function InertiaScreen({ active }: { active: boolean }) {
@@ -56,12 +72,31 @@ export function InertiaScreen({ active }: { active: boolean }) {
   settingsRef.current = { elasticity, surface };
   const speed = useMemo(() => new TimeSeries(10), []);
   const { announce, region } = useAnnouncer('inertia');
+  // The overlay draws labels in the current language without re-creating itself.
+  const labelsRef = useRef({
+    applied: (value: number) => `F ${value}`,
+    friction: (value: number) => `${value}`,
+    wall: (value: number) => `${value}`,
+    net: (value: number) => `${value}`,
+    balanced: 'ΣF = 0 N',
+    grid: '1 m',
+  });
+  labelsRef.current = {
+    applied: (value) => `F = ${unit(value, 'N', 2)}`,
+    friction: (value) => t('inertia.frictionLabel', { force: unit(value, 'N', 2) }),
+    wall: (value) => t('inertia.wallLabel', { force: unit(value, 'N', 2) }),
+    net: (value) => `ΣF = ${unit(value, 'N', 2)}`,
+    balanced: t('forces.balanced'),
+    grid: t('inertia.grid'),
+  };
   // Re-render only when what the readouts show changed: nothing renders at rest.
   useTicker(active && !sim.paused, 100, () => {
-    const body = sceneRef.current?.body;
-    if (body === undefined) return '';
-    const v = body.linearVelocity;
-    return `${v.x.toFixed(3)},${v.y.toFixed(3)}`;
+    const current = sceneRef.current;
+    if (current === null) return '';
+    const v = current.body.linearVelocity;
+    // The walls' push too: after an impact it settles to what holds a pinned body.
+    const wall = forcesOn(current, null).wall;
+    return `${v.x.toFixed(3)},${v.y.toFixed(3)},${wall.x.toFixed(2)},${wall.y.toFixed(2)}`;
   });
 
   const build = useCallback(() => {
@@ -116,6 +151,19 @@ export function InertiaScreen({ active }: { active: boolean }) {
       const scale = canvas.viewport.scale;
       const centre = current.body.position;
       clipToWalls(context, current.width, current.height);
+      // A reference grid, one metre apart, to read distances and directions against.
+      context.strokeStyle = 'rgba(255, 255, 255, 0.09)';
+      context.lineWidth = 1 / scale;
+      context.beginPath();
+      for (let x = 1; x < current.width; x++) {
+        context.moveTo(x, 0);
+        context.lineTo(x, current.height);
+      }
+      for (let y = 1; y < current.height; y++) {
+        context.moveTo(0, y);
+        context.lineTo(current.width, y);
+      }
+      context.stroke();
       drawArrow(
         context,
         scale,
@@ -123,16 +171,73 @@ export function InertiaScreen({ active }: { active: boolean }) {
         { x: velocity.x * VELOCITY_ARROW_SCALE, y: velocity.y * VELOCITY_ARROW_SCALE },
         { kind: 'velocity', width: 2 },
       );
-      const force = forceRef.current;
-      if (force !== null) {
-        drawArrow(
-          context,
-          scale,
-          centre,
-          { x: force.x * FORCE_ARROW_SCALE, y: force.y * FORCE_ARROW_SCALE },
-          { kind: 'force', width: 3 },
+      // Every force on the body, its value beside it, and their sum (dashed colour of its own).
+      const applied = forceRef.current;
+      const forces = forcesOn(current, applied === null ? null : { x: applied.x, y: applied.y });
+      const labels = labelsRef.current;
+      const texts: { at: { x: number; y: number }; text: string; color: string }[] = [];
+      const arrow = (
+        vector: { x: number; y: number },
+        color: string,
+        width: number,
+        text: string,
+      ) => {
+        const size = Math.hypot(vector.x, vector.y);
+        if (size < NO_FORCE) return;
+        const tip = { x: vector.x * FORCE_ARROW_SCALE, y: vector.y * FORCE_ARROW_SCALE };
+        drawArrow(context, scale, centre, tip, { color, width });
+        texts.push({ at: { x: centre.x + tip.x, y: centre.y + tip.y }, text, color });
+      };
+      arrow(
+        forces.applied,
+        ARROW_COLORS.force,
+        3,
+        labels.applied(Math.hypot(forces.applied.x, forces.applied.y)),
+      );
+      arrow(
+        forces.friction,
+        FRICTION_COLOR,
+        3,
+        labels.friction(Math.hypot(forces.friction.x, forces.friction.y)),
+      );
+      arrow(forces.wall, WALL_COLOR, 3, labels.wall(Math.hypot(forces.wall.x, forces.wall.y)));
+      const net = Math.hypot(forces.net.x, forces.net.y);
+      // The sum gets its own arrow when more than one force acts (otherwise it is that force).
+      const acting = [forces.applied, forces.friction, forces.wall].filter(
+        (force) => Math.hypot(force.x, force.y) >= NO_FORCE,
+      ).length;
+      if (acting > 1) arrow(forces.net, NET_COLOR, 2, labels.net(net));
+      context.restore();
+      // Labels in CSS pixels, kept inside the canvas.
+      const ratio = canvas.viewport.devicePixelRatio;
+      context.save();
+      context.setTransform(ratio, 0, 0, ratio, 0, 0);
+      context.font = '600 14px system-ui, sans-serif';
+      context.textBaseline = 'middle';
+      const cssWidth = context.canvas.width / ratio;
+      const cssHeight = context.canvas.height / ratio;
+      if (net < NO_FORCE) {
+        texts.push({
+          at: { x: centre.x, y: centre.y - 0.75 },
+          text: labels.balanced,
+          color: 'rgba(255, 255, 255, 0.85)',
+        });
+      }
+      for (const { at, text, color } of texts) {
+        const point = canvas.worldToScreen(at);
+        const width = context.measureText(text).width;
+        context.fillStyle = color;
+        context.fillText(
+          text,
+          Math.max(4, Math.min(cssWidth - width - 4, point.x + 6)),
+          Math.max(10, Math.min(cssHeight - 10, point.y - 10)),
         );
       }
+      // The grid's scale, in the top-left corner inside the walls.
+      const corner = canvas.worldToScreen({ x: 0, y: 0 });
+      context.font = '13px system-ui, sans-serif';
+      context.fillStyle = 'rgba(255, 255, 255, 0.6)';
+      context.fillText(labels.grid, corner.x + 6, corner.y + 12);
       context.restore();
     },
     [speed],
@@ -159,6 +264,14 @@ export function InertiaScreen({ active }: { active: boolean }) {
     canvasRef.current?.invalidate();
   };
 
+  const returnObject = (): void => {
+    if (scene === null) return;
+    returnBody(scene);
+    speed.clear();
+    announce(t('inertia.returned'));
+    canvasRef.current?.invalidate();
+  };
+
   const confirmForce = (newAngle: number, newMagnitude: number): void => {
     setAngle(newAngle);
     setMagnitude(newMagnitude);
@@ -172,6 +285,20 @@ export function InertiaScreen({ active }: { active: boolean }) {
   // Pressed against a wall the solver leaves a jitter of a few mm/s: that is rest.
   const moving = rawSpeed > REST_SPEED;
   const currentSpeed = moving ? rawSpeed : 0;
+  const forces =
+    scene === null ? null : forcesOn(scene, applied ? forceVector(angle, magnitude) : null);
+  const frictionSize = forces === null ? 0 : Math.hypot(forces.friction.x, forces.friction.y);
+  const wallSize = forces === null ? 0 : Math.hypot(forces.wall.x, forces.wall.y);
+  const netSize = forces === null ? 0 : Math.hypot(forces.net.x, forces.net.y);
+  const netDescription =
+    netSize < NO_FORCE
+      ? t('inertia.describeBalanced')
+      : t('inertia.describeNet', {
+          force: unit(netSize, 'N', 2),
+          angle: number(screenAngle(forces!.net), 0),
+          friction: unit(frictionSize, 'N', 2),
+          wall: unit(wallSize, 'N', 2),
+        });
   const description =
     scene === null
       ? t('inertia.canvas')
@@ -191,7 +318,9 @@ export function InertiaScreen({ active }: { active: boolean }) {
                 angle: number(angle, 0),
               })
             : t('inertia.describeNoForce'),
-        });
+        }) +
+        ' ' +
+        netDescription;
   const viewBox =
     scene === null
       ? null
@@ -313,6 +442,14 @@ export function InertiaScreen({ active }: { active: boolean }) {
               aria-pressed={applied}
             >
               {applied ? t('inertia.stop') : t('inertia.apply')}
+            </Button>
+            <Button
+              variant="outlined"
+              onClick={returnObject}
+              sx={{ minHeight: 48, minWidth: 48 }}
+              data-action="return"
+            >
+              {t('inertia.return')}
             </Button>
           </Box>
           <ForceDialog

@@ -119,6 +119,52 @@ export function createInertiaScene(
   return scene;
 }
 
+/**
+ * Returns the body to the centre, at rest (PhET's "return the object"): the force the learner
+ * set is theirs to stop; this only moves the body back.
+ */
+export function returnBody(scene: InertiaScene): void {
+  const { body } = scene;
+  body.position = { x: scene.width / 2, y: scene.height / 2 };
+  body.linearVelocity = { x: 0, y: 0 };
+  scene.friction.setVector({ x: 0, y: 0 });
+  body.wake();
+}
+
+/**
+ * The forces on the body as the learner sees them (N, y-down): the applied one, the floor's
+ * friction, the walls' push (their normal force over the last step, while it touches one) and
+ * the sum of all three. A body pinned against a wall by the force reads a sum of zero.
+ */
+export function forcesOn(
+  scene: InertiaScene,
+  applied: { x: number; y: number } | null,
+): { applied: Vec; friction: Vec; wall: Vec; net: Vec } {
+  const a = applied ?? { x: 0, y: 0 };
+  const friction = { x: scene.friction.x, y: scene.friction.y };
+  const wall = { x: 0, y: 0 };
+  const dt = scene.world.lastStepDuration;
+  if (dt > 0) {
+    scene.world.forEachContact((contact) => {
+      // The event's impulse acts on body B along the normal, and its opposite on A.
+      const sign = contact.bodyB === scene.body ? 1 : contact.bodyA === scene.body ? -1 : 0;
+      wall.x += (sign * contact.normalImpulse * contact.normalX) / dt;
+      wall.y += (sign * contact.normalImpulse * contact.normalY) / dt;
+    });
+  }
+  return {
+    applied: a,
+    friction,
+    wall,
+    net: { x: a.x + friction.x + wall.x, y: a.y + friction.y + wall.y },
+  };
+}
+
+interface Vec {
+  x: number;
+  y: number;
+}
+
 /** Sets the walls' bounciness (0..1) on walls and body. */
 export function setElasticity(scene: InertiaScene, elasticity: number): void {
   scene.elasticity = elasticity;
