@@ -115,3 +115,74 @@ for (const [orientation, options] of [
     }
   });
 }
+
+for (const [orientation, options] of [
+  ['portrait', PHONE],
+  ['landscape', LANDSCAPE],
+] as const) {
+  test(`newton: forces (${orientation}), a mystery mass for B is found from F / a and checked`, async ({
+    browser,
+  }) => {
+    const app = await openApp(browser, '#forces', options);
+    const { page } = app;
+    const announced = async (pattern: RegExp): Promise<void> => {
+      await page.waitForFunction(
+        (source) =>
+          new RegExp(source).test(
+            document.querySelector('[data-announcer="forces"]')!.textContent!,
+          ),
+        pattern.source,
+        { timeout: 4000, polling: 50 },
+      );
+    };
+    try {
+      await page.locator('[data-control="mystery"]').check();
+      await announced(/mystery mass/);
+      // B's mass is hidden, and B gets A's force (the same-force switch is on and locked).
+      assert.equal(await readout(page, 'mass-B'), '? kg');
+      const same = page.locator('[data-control="same-force"]');
+      assert.equal(await same.isChecked(), true);
+      assert.equal(await same.isDisabled(), true);
+      assert.equal(await readout(page, 'force-B'), await readout(page, 'force-A'));
+      // B cannot be edited: it says why instead of opening the dialog.
+      await page.locator('[data-action="edit-B"]').click();
+      await announced(/mass is the mystery/);
+      assert.equal(await page.getByRole('dialog').count(), 0);
+
+      // A wrong guess is refused with the way to find it.
+      const guess = page.locator('#mystery-guess');
+      const check = page.locator('[data-action="check-mystery"]');
+      await guess.fill('abc');
+      assert.equal(await check.isDisabled(), true, 'Check disabled for "abc"');
+      await guess.fill('5');
+      await check.click();
+      // Mystery masses lie between 1 and 4 kg: 5 kg is always wrong.
+      await announced(/Not 5/);
+
+      // The experiment: run, read B's force and measured acceleration, type m = F / a.
+      await page.locator('#forces [data-action="start"]').click();
+      await page.waitForFunction(
+        () => document.querySelector('#forces [data-action="start"]')!.textContent === 'Run over',
+        undefined,
+        { timeout: 15_000, polling: 100 },
+      );
+      const force = numberIn(await readout(page, 'force-B'));
+      const acceleration = numberIn(await readout(page, 'a-B'));
+      const answer = Math.round((100 * force) / acceleration) / 100;
+      await page.locator('#mystery-guess').fill(String(answer));
+      await page.locator('[data-action="check-mystery"]').click();
+      await announced(/Right: B's mass is/);
+      // Found: the mass is shown, and it is the one the measurement gave (within 5 %).
+      const revealed = numberIn(await readout(page, 'mystery-result'));
+      assert.ok(
+        Math.abs(revealed - answer) <= 0.05 * revealed,
+        `F / a = ${answer} kg, mass ${revealed} kg`,
+      );
+      assert.equal(numberIn(await readout(page, 'mass-B')), revealed);
+      await screenshot(page, `forces-mystery-${orientation}`);
+      assertQuiet(app);
+    } finally {
+      await closeApp(app);
+    }
+  });
+}

@@ -3,7 +3,11 @@ import {
   arrowLength,
   createForcesTrack,
   displacement,
+  drawMysteryMass,
   forceFor,
+  isMysteryFound,
+  MYSTERY_MAX,
+  MYSTERY_MIN,
   opacityFor,
   startTrack,
 } from '../src/screens/forces/forces-scene.ts';
@@ -45,5 +49,25 @@ describe('Forces scene', () => {
     const track = createForcesTrack({ mass: 1, acceleration: 2 });
     for (let i = 0; i < 60; i++) track.world.step(1 / 60);
     expect(displacement(track)).toBe(0);
+  });
+});
+
+describe('mystery mass', () => {
+  it('is a tenth of a kilogram between 1 and 4 kg, over the whole range of the random source', () => {
+    for (const r of [0, 1e-9, 0.25, 0.5, 0.99, 1 - 1e-12]) {
+      const mass = drawMysteryMass(() => r);
+      expect(mass).toBeGreaterThanOrEqual(MYSTERY_MIN);
+      expect(mass).toBeLessThanOrEqual(MYSTERY_MAX);
+      expect(Math.abs(mass * 10 - Math.round(mass * 10))).toBeLessThan(1e-9);
+    }
+    expect(drawMysteryMass(() => 0)).toBe(1);
+    expect(drawMysteryMass(() => 1 - 1e-12)).toBe(4);
+  });
+
+  it('is found by a guess within 5 % of it, and not by one farther off', () => {
+    expect(isMysteryFound(2.09, 2.0)).toBe(true);
+    expect(isMysteryFound(1.91, 2.0)).toBe(true);
+    expect(isMysteryFound(2.11, 2.0)).toBe(false);
+    expect(isMysteryFound(5, 4)).toBe(false);
   });
 });

@@ -12,11 +12,14 @@ import { TimeSeriesGraph } from '../../graphs/TimeSeriesGraph.tsx';
 import { useI18n } from '../../i18n/i18n.tsx';
 import {
   createForcesTrack,
+  drawMysteryMass,
   forceFor,
+  isMysteryFound,
   startTrack,
   type ForcesTrack,
   type SquareSettings,
 } from './forces-scene.ts';
+import { MysteryMass } from './MysteryMass.tsx';
 import { SquareDialog } from './SquareDialog.tsx';
 import { TrackView } from './TrackView.tsx';
 
@@ -26,15 +29,19 @@ const DEFAULTS: readonly SquareSettings[] = [
   { mass: 2, acceleration: 2 },
 ];
 
-/** What each square gets: with "same force", B is pushed by A's force, whatever its mass. */
+/**
+ * What each square gets: with "same force", B is pushed by A's force, whatever its mass; with a
+ * mystery mass (kg), B has that hidden mass and A's force (the learner finds the mass from F / a).
+ */
 function effectiveSettings(
   settings: readonly SquareSettings[],
   sameForce: boolean,
+  mysteryMass: number | null,
 ): readonly SquareSettings[] {
-  if (!sameForce) return settings;
+  if (!sameForce && mysteryMass === null) return settings;
   const force = forceFor(settings[0]!.mass, settings[0]!.acceleration);
-  const b = settings[1]!;
-  return [settings[0]!, { mass: b.mass, acceleration: force / b.mass }];
+  const mass = mysteryMass ?? settings[1]!.mass;
+  return [settings[0]!, { mass, acceleration: force / mass }];
 }
 
 /** The second law: two squares, each pushed by F = m a, moving side by side. */
@@ -44,6 +51,9 @@ export function ForcesScreen({ active }: { active: boolean }) {
   const sideBySide = useMediaQuery(SIDE_BY_SIDE, { noSsr: true });
   const [settings, setSettings] = useState<readonly SquareSettings[]>(DEFAULTS);
   const [sameForce, setSameForce] = useState(false);
+  // B's hidden mass (kg) while the mystery is on; revealed once the learner finds it.
+  const [mysteryMass, setMysteryMass] = useState<number | null>(null);
+  const [mysteryFound, setMysteryFound] = useState(false);
   const [tracks, setTracks] = useState<readonly ForcesTrack[]>(() =>
     DEFAULTS.map((value) => createForcesTrack(value)),
   );
@@ -64,7 +74,7 @@ export function ForcesScreen({ active }: { active: boolean }) {
   );
 
   const rebuild = useCallback(
-    (next: readonly SquareSettings[], same: boolean) => {
+    (next: readonly SquareSettings[], same: boolean, mystery: number | null) => {
       for (const force of forces.current) force.remove();
       forces.current = [];
       for (const { position, velocity } of series) {
@@ -73,7 +83,7 @@ export function ForcesScreen({ active }: { active: boolean }) {
       }
       setStarted(false);
       setFinished(0);
-      setTracks(effectiveSettings(next, same).map((value) => createForcesTrack(value)));
+      setTracks(effectiveSettings(next, same, mystery).map((value) => createForcesTrack(value)));
     },
     [series],
   );
@@ -106,7 +116,7 @@ export function ForcesScreen({ active }: { active: boolean }) {
     const next = settings.map((old, index) => (index === editing ? value : old));
     setSettings(next);
     setEditing(null);
-    rebuild(next, sameForce);
+    rebuild(next, sameForce, mysteryMass);
   };
 
   const allFinished = finished >= tracks.length;
@@ -169,7 +179,12 @@ export function ForcesScreen({ active }: { active: boolean }) {
               timeScale={sim.timeScale}
               position={series[index]!.position}
               velocity={series[index]!.velocity}
-              onEdit={() => setEditing(index)}
+              hiddenMass={index === 1 && mysteryMass !== null && !mysteryFound}
+              onEdit={() => {
+                // B's mass is the mystery: only A's force can be set.
+                if (index === 1 && mysteryMass !== null) announce(t('forces.mysteryLocked'));
+                else setEditing(index);
+              }}
               onPauseChange={sim.setPaused}
               forceOn={started && track.finishedAt === null}
               time={time}
@@ -187,10 +202,11 @@ export function ForcesScreen({ active }: { active: boolean }) {
               sx={{ flex: 1, minHeight: 48, mr: 0 }}
               control={
                 <Switch
-                  checked={sameForce}
+                  checked={sameForce || mysteryMass !== null}
+                  disabled={mysteryMass !== null}
                   onChange={(_event, value) => {
                     setSameForce(value);
-                    rebuild(settings, value);
+                    rebuild(settings, value, mysteryMass);
                   }}
                   slotProps={{ input: { 'data-control': 'same-force' } as object }}
                 />
@@ -211,6 +227,27 @@ export function ForcesScreen({ active }: { active: boolean }) {
                   : t('forces.start')}
             </Button>
           </Box>
+          <MysteryMass
+            mass={mysteryMass}
+            found={mysteryFound}
+            onToggle={(on) => {
+              const mass = on ? drawMysteryMass() : null;
+              setMysteryMass(mass);
+              setMysteryFound(false);
+              rebuild(settings, sameForce, mass);
+              announce(t(on ? 'forces.mysteryOn' : 'forces.mysteryOff'));
+            }}
+            onGuess={(guess) => {
+              if (mysteryMass === null) return;
+              const found = isMysteryFound(guess, mysteryMass);
+              if (found) setMysteryFound(true);
+              announce(
+                found
+                  ? t('forces.mysteryRight', { mass: unit(mysteryMass, 'kg', 1) })
+                  : t('forces.mysteryWrong', { guess: unit(guess, 'kg', 2) }),
+              );
+            }}
+          />
           <Typography variant="body2" sx={{ color: 'text.secondary', px: 0.5 }}>
             {t('forces.edit')}
           </Typography>
@@ -238,11 +275,13 @@ export function ForcesScreen({ active }: { active: boolean }) {
             })),
           );
         },
-        onReset: () => rebuild(settings, sameForce),
+        onReset: () => rebuild(settings, sameForce, mysteryMass),
         onResetAll: () => {
           setSettings(DEFAULTS);
           setSameForce(false);
-          rebuild(DEFAULTS, false);
+          setMysteryMass(null);
+          setMysteryFound(false);
+          rebuild(DEFAULTS, false, null);
         },
       }}
     />

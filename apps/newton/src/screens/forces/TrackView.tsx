@@ -32,6 +32,8 @@ export interface TrackViewProps {
   readonly forceOn: boolean;
   /** Simulated time since Start (s). */
   readonly time: number;
+  /** The square's mass is the learner's to find: shown as "?", and its shade gives nothing away. */
+  readonly hiddenMass?: boolean;
 }
 
 const VIEW_BOX = { x: -0.15, y: 0, width: TRACK_LENGTH + 0.3, height: TRACK_HEIGHT };
@@ -61,11 +63,11 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
         fill: color,
         stroke: '#ffffff',
         lineWidth: 1.5,
-        opacity: opacityFor(track.settings.mass),
+        opacity: props.hiddenMass === true ? 0.6 : opacityFor(track.settings.mass),
         label: name,
         labelColor: '#ffffff',
       });
-    }, [track, color, name]);
+    }, [track, color, name, props.hiddenMass]);
 
     const drawOverlay = useCallback<OverlayDrawer>(
       (context, canvas) => {
@@ -130,6 +132,7 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
 
     const settings = track.settings;
     const forceText = unit(track.force, 'N', 2);
+    const massText = props.hiddenMass === true ? '? kg' : unit(settings.mass, 'kg', 2);
     const measured = measuredAcceleration(track, props.time);
     return (
       <Box
@@ -170,8 +173,9 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
               {name}
             </Box>
             <span>
-              {unit(settings.mass, 'kg', 2)} · {unit(settings.acceleration, 'm/s²', 2)} · F ={' '}
-              <b data-readout={`force-${name}`}>{forceText}</b>
+              <span data-readout={`mass-${name}`}>{massText}</span>
+              {props.hiddenMass === true ? '' : ` · ${unit(settings.acceleration, 'm/s²', 2)}`} · F
+              = <b data-readout={`force-${name}`}>{forceText}</b>
             </span>
             <EditIcon sx={{ fontSize: 18 }} />
           </ButtonBase>
@@ -209,7 +213,7 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
             onPauseChange={({ paused: value }) => props.onPauseChange(value)}
             aria-label={t('forces.canvas', {
               name,
-              mass: unit(settings.mass, 'kg', 2),
+              mass: massText,
               force: forceText,
             })}
             style={{ flex: 1, height: 'auto' }}

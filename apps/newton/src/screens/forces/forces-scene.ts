@@ -33,6 +33,23 @@ export interface ForcesTrack {
   finalAcceleration: number | null;
 }
 
+/** The range a mystery mass is drawn from (kg), in tenths: inside the range a learner can type. */
+export const MYSTERY_MIN = 1;
+export const MYSTERY_MAX = 4;
+/** A guess within this fraction of the mystery mass is right (the ruler and clock are that good). */
+export const MYSTERY_TOLERANCE = 0.05;
+
+/** A mystery mass (kg): a random tenth of a kilogram between MYSTERY_MIN and MYSTERY_MAX. */
+export function drawMysteryMass(random: () => number = Math.random): number {
+  const tenths = Math.round(10 * MYSTERY_MIN + random() * 10 * (MYSTERY_MAX - MYSTERY_MIN));
+  return Math.min(MYSTERY_MAX, Math.max(MYSTERY_MIN, tenths / 10));
+}
+
+/** Whether a guessed mass (kg) finds the mystery mass, within MYSTERY_TOLERANCE of it. */
+export function isMysteryFound(guess: number, mass: number): boolean {
+  return Math.abs(guess - mass) <= MYSTERY_TOLERANCE * mass;
+}
+
 /** Newton's second law solved for the force (N) from a mass (kg) and an acceleration (m/s^2). */
 export function forceFor(mass: number, acceleration: number): number {
   return mass * acceleration;
