@@ -110,3 +110,47 @@ test('resize: with fit="contain" the view box stays whole and centred', async ({
   assert.equal(cover.scale, 90); // 900 / 10: the box fills the width, cropped top and bottom
   assert.deepEqual(cover.center, { x: 450, y: 150 });
 });
+
+test('resize: max-pixel-ratio caps the backing store on a 3x screen; world points stay where they were', async ({
+  open,
+}) => {
+  const page = await open('/canvas/fixture.html', {
+    viewport: { width: 800, height: 600 },
+    deviceScaleFactor: 3,
+  });
+  const read = () =>
+    page.evaluate(() => {
+      const canvas = document.querySelector('physical-canvas')!;
+      const backing = canvas.shadowRoot!.querySelector('canvas')!;
+      return {
+        ratio: canvas.viewport.devicePixelRatio,
+        backing: [backing.width, backing.height],
+        css: [backing.clientWidth, backing.clientHeight],
+        screen: canvas.worldToScreen({ x: 3, y: 4 }),
+      };
+    });
+  await page.evaluate(() => {
+    const { World } = window.physical;
+    const canvas = document.querySelector('physical-canvas')!;
+    canvas.setAttribute('pixels-per-meter', '40');
+    canvas.world = new World();
+  });
+  await waitFrames(page);
+  const full = await read();
+  assert.equal(full.ratio, 3);
+  assert.deepEqual(full.backing, [3 * full.css[0]!, 3 * full.css[1]!]);
+  await page.evaluate(() => {
+    document.querySelector('physical-canvas')!.maxPixelRatio = 1.5;
+  });
+  await waitFrames(page, 3);
+  const capped = await read();
+  assert.equal(capped.ratio, 1.5);
+  assert.deepEqual(capped.backing, [1.5 * full.css[0]!, 1.5 * full.css[1]!]);
+  assert.deepEqual(capped.screen, full.screen, 'CSS-pixel mapping unchanged');
+  assert.equal(
+    await page.evaluate(() =>
+      document.querySelector('physical-canvas')!.getAttribute('max-pixel-ratio'),
+    ),
+    '1.5',
+  );
+});

@@ -28,6 +28,18 @@ test('newton: each screen renders a non-blank canvas on a phone', async ({ brows
         );
         assert.ok(painted > 1000, `${screen} canvas ${i} is blank (${painted} painted pixels)`);
       }
+      // On this 3x phone the canvases draw at 2 device pixels per CSS px (4 per CSS px squared,
+      // not 9): the frame rate of a busy Reactions screen depends on it.
+      const ratios = await app.page.evaluate(
+        (id) =>
+          [...document.querySelectorAll(`#${id} physical-canvas`)].map((host) => {
+            const backing = host.shadowRoot!.querySelector('canvas')!;
+            return backing.width / backing.clientWidth;
+          }),
+        screen,
+      );
+      assert.equal(await app.page.evaluate(() => window.devicePixelRatio), 3);
+      for (const ratio of ratios) assert.ok(Math.abs(ratio - 2) < 0.02, `${screen}: ${ratio}x`);
       await screenshot(app.page, screen);
     }
     assertQuiet(app);

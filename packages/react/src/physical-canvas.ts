@@ -62,6 +62,8 @@ export interface PhysicalCanvasProps {
   maxStepsPerFrame?: number;
   /** Pointers drag and throw dynamic bodies. Default true; false renders `drag="off"`. */
   drag?: boolean;
+  /** Cap on device pixels per CSS px: 2 draws a 3x phone at 4 pixels per CSS px, not 9. */
+  maxPixelRatio?: number;
   /** Style of each body (return shared objects: it is called every frame). */
   styleFor?: StyleResolver | null;
   /** App drawings after the bodies, in world metres. */
@@ -131,6 +133,7 @@ function attributes(
     'steps-per-second': text(props.stepsPerSecond),
     'max-steps-per-frame': text(props.maxStepsPerFrame),
     drag: props.drag === false ? 'off' : undefined,
+    'max-pixel-ratio': text(props.maxPixelRatio),
   };
 }
 

@@ -127,7 +127,13 @@ export class CanvasRenderer {
       }
     }
     const current = this.scene.viewport;
-    const devicePixelRatio = typeof window === 'undefined' ? 1 : window.devicePixelRatio || 1;
+    const settings = this.host.settings;
+    // Capped by max-pixel-ratio: on a DPR 3 phone a full-resolution canvas is 9 device pixels
+    // per CSS px to fill every frame, and rasterising them is most of a frame's cost.
+    const devicePixelRatio = Math.min(
+      typeof window === 'undefined' ? 1 : window.devicePixelRatio || 1,
+      settings.maxPixelRatio,
+    );
     if (
       current.width === this.cssWidth &&
       current.height === this.cssHeight &&
@@ -137,7 +143,6 @@ export class CanvasRenderer {
       return;
     }
     this.viewportInputsUnchanged = true;
-    const settings = this.host.settings;
     this.scene.viewport = computeViewport({
       width: this.cssWidth,
       height: this.cssHeight,

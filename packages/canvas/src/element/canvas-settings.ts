@@ -31,6 +31,7 @@ export const SETTING_ATTRIBUTES = [
   'steps-per-second',
   'max-steps-per-frame',
   'drag',
+  'max-pixel-ratio',
 ] as const;
 
 /** One of {@link SETTING_ATTRIBUTES}. */
@@ -45,6 +46,7 @@ export const SETTING_DEFAULTS = {
   velocityScale: 0.25,
   stepsPerSecond: 60,
   maxStepsPerFrame: 4,
+  maxPixelRatio: Infinity,
 } as const;
 
 /**
@@ -68,6 +70,8 @@ export class CanvasSettings {
   maxStepsPerFrame: number = SETTING_DEFAULTS.maxStepsPerFrame;
   /** Pointers drag dynamic bodies (attribute `drag`, on unless `"off"`). */
   drag = true;
+  /** Cap on the backing store's device pixels per CSS px (attribute `max-pixel-ratio`). */
+  maxPixelRatio: number = SETTING_DEFAULTS.maxPixelRatio;
 
   /**
    * Parses an attribute's new text (null when removed: back to the default) into its setting.
@@ -129,6 +133,9 @@ export class CanvasSettings {
         break;
       case 'drag':
         this.drag = parseDrag(name, value);
+        break;
+      case 'max-pixel-ratio':
+        this.maxPixelRatio = present ? parsePositive(name, value) : SETTING_DEFAULTS.maxPixelRatio;
         break;
     }
   }

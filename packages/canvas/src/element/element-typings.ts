@@ -31,6 +31,8 @@ export interface PhysicalCanvasProperties {
   maxStepsPerFrame?: number;
   /** Pointer dragging and throwing of dynamic bodies (not air drag). Default true. */
   drag?: boolean;
+  /** Cap on device pixels per CSS px (sharpness against frame rate). Default: no cap. */
+  maxPixelRatio?: number;
 }
 
 /** The attributes of `<physical-canvas>` as written in HTML (each mirrors a property). */
@@ -51,6 +53,7 @@ export interface PhysicalCanvasAttributes {
   'max-steps-per-frame'?: number | string;
   /** `"off"` turns pointer dragging off. */
   drag?: boolean | 'on' | 'off' | 'true' | 'false';
+  'max-pixel-ratio'?: number | string;
 }
 
 /** Listener props `on<event>` for the element's own events (React 19 and Svelte 5 style). */

@@ -28,4 +28,16 @@ describe('canvas settings', () => {
     expect(() => settings.apply('background', ' ')).toThrow(/background: expected a CSS colour/);
     expect(settings.maxStepsPerFrame).toBe(6);
   });
+
+  it('cap the pixel ratio only when max-pixel-ratio is set, to a positive number', () => {
+    const settings = new CanvasSettings();
+    expect(settings.maxPixelRatio).toBe(Infinity);
+    settings.apply('max-pixel-ratio', '1.5');
+    expect(settings.maxPixelRatio).toBe(1.5);
+    expect(() => settings.apply('max-pixel-ratio', '0')).toThrow(CanvasSettingError);
+    expect(() => settings.apply('max-pixel-ratio', 'sharp')).toThrow(/max-pixel-ratio/);
+    expect(settings.maxPixelRatio).toBe(1.5);
+    settings.apply('max-pixel-ratio', null);
+    expect(settings.maxPixelRatio).toBe(Infinity);
+  });
 });

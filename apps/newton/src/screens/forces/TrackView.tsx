@@ -1,4 +1,5 @@
 import { Box, ButtonBase, Typography } from '@mui/material';
+import { CANVAS_PIXEL_RATIO } from '../../app/theme.ts';
 import { drawArrow, type OverlayDrawer, type PhysicalCanvasElement } from '@physical/canvas';
 import { PhysicalCanvas } from '@physical/react';
 import { forwardRef, useCallback, useEffect, useImperativeHandle, useRef } from 'react';
@@ -201,6 +202,7 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
         </Box>
         <Box sx={{ flex: 1, minHeight: 64, display: 'flex' }}>
           <PhysicalCanvas
+            maxPixelRatio={CANVAS_PIXEL_RATIO}
             ref={canvasRef}
             paused={paused}
             world={track.world}

@@ -1,4 +1,5 @@
 import { Box, Button, ToggleButton, ToggleButtonGroup } from '@mui/material';
+import { CANVAS_PIXEL_RATIO } from '../../app/theme.ts';
 import {
   ARROW_COLORS,
   drawArrow,
@@ -339,6 +340,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
       stage={
         <Box ref={hostRef} sx={{ flex: 1, minWidth: 0, display: 'flex' }}>
           <PhysicalCanvas
+            maxPixelRatio={CANVAS_PIXEL_RATIO}
             ref={canvasRef}
             paused={sim.paused}
             world={scene?.world ?? null}

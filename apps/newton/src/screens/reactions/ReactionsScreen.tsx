@@ -17,7 +17,7 @@ import {
   useState,
 } from 'react';
 import { useAnnouncer } from '../../app/Announcer.tsx';
-import { REDUCED_MOTION } from '../../app/theme.ts';
+import { REDUCED_MOTION, CANVAS_PIXEL_RATIO } from '../../app/theme.ts';
 import { AddIcon, DeleteIcon, PhoneTiltIcon } from '../../app/icons.tsx';
 import { useOrientationRebuild } from '../../app/use-orientation-rebuild.ts';
 import { Readout } from '../../app/Readout.tsx';
@@ -291,6 +291,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       stage={
         <Box ref={hostRef} data-arrows="0" sx={{ flex: 1, minWidth: 0, display: 'flex' }}>
           <PhysicalCanvas
+            maxPixelRatio={CANVAS_PIXEL_RATIO}
             ref={canvasRef}
             paused={sim.paused}
             world={scene?.world ?? null}
