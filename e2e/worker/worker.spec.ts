@@ -286,3 +286,54 @@ test('worker: with an OffscreenCanvas the worker draws the world itself, stepped
   assert.ok(isBackground(empty!), `empty: ${empty}`);
   assert.ok(!isBackground(floor!), `floor drawn: ${floor}`);
 });
+
+test('worker: collision arrows are drawn for a worker world from its collision events', async ({
+  open,
+}) => {
+  const page = await open('/worker/fixture.html', { viewport: { width: 400, height: 300 } });
+  // Drops a 0.25 m ball 4 m onto a floor in a worker world and counts the canvas' pixels in the
+  // force-arrow colour (#ff8a65) just after the impact.
+  const arrowPixels = (arrows: boolean) =>
+    page.evaluate(async (on) => {
+      const canvas = document.querySelector('physical-canvas')!;
+      canvas.pixelsPerMeter = 40;
+      canvas.collisionArrows = on;
+      canvas.collisionArrowDuration = 5;
+      const world = window.physicalWorker.createWorkerWorld();
+      world.add({ kind: 'wall', from: { x: 0, y: 6 }, to: { x: 10, y: 6 } });
+      const ball = world.add({ kind: 'particle', radius: 0.25, position: { x: 5, y: 2 } });
+      canvas.world = world;
+      await world.flush();
+      await new Promise<void>((resolve) => {
+        const off = world.on('collision', (event) => {
+          if (event.bodyA !== ball && event.bodyB !== ball) return;
+          off();
+          resolve();
+        });
+      });
+      // A few frames to draw what arrived.
+      for (let i = 0; i < 4; i++) await new Promise((resolve) => requestAnimationFrame(resolve));
+      const source = canvas.shadowRoot!.querySelector('canvas')!;
+      const copy = document.createElement('canvas');
+      copy.width = source.width;
+      copy.height = source.height;
+      const context = copy.getContext('2d', { willReadFrequently: true })!;
+      context.drawImage(source, 0, 0);
+      const { data } = context.getImageData(0, 0, copy.width, copy.height);
+      let count = 0;
+      for (let i = 0; i < data.length; i += 4) {
+        const [r, g, b] = [data[i]!, data[i + 1]!, data[i + 2]!];
+        if (r > 200 && g > 100 && g < 170 && b > 60 && b < 130) count++;
+      }
+      canvas.world = null;
+      world.terminate();
+      return count;
+    }, arrows);
+  const without = await arrowPixels(false);
+  const withArrows = await arrowPixels(true);
+  // Without arrows only a few anti-aliased edge pixels come near the colour.
+  assert.ok(
+    withArrows > 4 * without + 100,
+    `the impact's arrows are drawn: ${withArrows} pixels in their colour, ${without} without`,
+  );
+});

@@ -1,5 +1,18 @@
-import type { CollisionEvent } from '@physical/engine';
 import type { CollisionArrowView } from '../draw/draw-collision-arrows.ts';
+
+/**
+ * What an arrow needs of a collision: the engine's `CollisionEvent` (reused, with `pointCount`
+ * valid points) or a worker world's collision event (exactly its points).
+ */
+export interface CollisionLike {
+  readonly normalX: number;
+  readonly normalY: number;
+  /** Total normal impulse of the step (N s). */
+  readonly normalImpulse: number;
+  readonly approachSpeed: number;
+  readonly points: readonly { readonly x: number; readonly y: number }[];
+  readonly pointCount?: number;
+}
 
 /** One live arrow pair; the record is reused when it dies. */
 class CollisionArrow implements CollisionArrowView {
@@ -43,20 +56,21 @@ export class CollisionArrows {
   }
 
   /** Records a collision of a step of `dt` seconds, if it was an impact. */
-  record(event: CollisionEvent, dt: number): void {
-    if (event.approachSpeed < MIN_ARROW_APPROACH_SPEED || event.pointCount === 0) return;
+  record(event: CollisionLike, dt: number): void {
+    const count = event.pointCount ?? event.points.length;
+    if (event.approachSpeed < MIN_ARROW_APPROACH_SPEED || count === 0) return;
     let arrow: CollisionArrow;
     if (this.live.length >= CAPACITY) arrow = this.live.shift()!;
     else arrow = this.pool.pop() ?? new CollisionArrow();
     let x = 0;
     let y = 0;
-    for (let i = 0; i < event.pointCount; i++) {
+    for (let i = 0; i < count; i++) {
       x += event.points[i]!.x;
       y += event.points[i]!.y;
     }
     const force = event.normalImpulse / dt;
-    arrow.x = x / event.pointCount;
-    arrow.y = y / event.pointCount;
+    arrow.x = x / count;
+    arrow.y = y / count;
     arrow.forceX = event.normalX * force;
     arrow.forceY = event.normalY * force;
     arrow.age = 0;

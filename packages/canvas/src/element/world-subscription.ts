@@ -1,12 +1,17 @@
-import type { CollisionEvent, World } from '@physical/engine';
 import type { DrawingSource } from '../draw/drawing-source.ts';
+import type { CollisionLike } from './collision-arrows.ts';
+
+/** A source with collision events: a `World`, or a worker world (its events carry body ids). */
+interface CollisionSource {
+  on(type: 'collision', listener: (event: CollisionLike) => void): () => void;
+}
 
 /** What a {@link WorldSubscription} reports to its element. */
 export interface WorldListener {
   /** A body woke, joined or left: a frame is needed. */
   changed(): void;
   /** A collision of the last step (only while collisions are asked for). */
-  collided(event: CollisionEvent): void;
+  collided(event: CollisionLike): void;
 }
 
 /**
@@ -16,7 +21,7 @@ export interface WorldListener {
 export class WorldSubscription {
   private offs: (() => void)[] = [];
   private readonly onChange: () => void;
-  private readonly onCollision: (event: CollisionEvent) => void;
+  private readonly onCollision: (event: CollisionLike) => void;
 
   constructor(listener: WorldListener) {
     this.onChange = () => listener.changed();
@@ -25,8 +30,9 @@ export class WorldSubscription {
 
   /**
    * Listens to `world` (nothing with null); collision events only when `collisions` is true,
-   * since the engine builds them only for listeners (and only from a local World: a remote
-   * source's collisions are its own events). Does nothing while already listening.
+   * since the engine builds them only for listeners (a worker world records them in the worker
+   * only while someone listens, and sends them with the step's poses). Does nothing while
+   * already listening.
    */
   start(world: DrawingSource | null, collisions: boolean): void {
     if (world === null || this.offs.length > 0) return;
@@ -35,8 +41,8 @@ export class WorldSubscription {
       world.on('bodyAdded', this.onChange),
       world.on('bodyRemoved', this.onChange),
     );
-    if (collisions && world.remote === undefined) {
-      this.offs.push((world as World).on('collision', this.onCollision));
+    if (collisions) {
+      this.offs.push((world as unknown as CollisionSource).on('collision', this.onCollision));
     }
   }
 
