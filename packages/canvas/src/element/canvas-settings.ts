@@ -46,7 +46,6 @@ export const SETTING_DEFAULTS = {
   velocityScale: 0.25,
   stepsPerSecond: 60,
   maxStepsPerFrame: 4,
-  maxPixelRatio: Infinity,
 } as const;
 
 /**
@@ -71,7 +70,7 @@ export class CanvasSettings {
   /** Pointers drag dynamic bodies (attribute `drag`, on unless `"off"`). */
   drag = true;
   /** Cap on the backing store's device pixels per CSS px (attribute `max-pixel-ratio`). */
-  maxPixelRatio: number = SETTING_DEFAULTS.maxPixelRatio;
+  maxPixelRatio: number = Infinity;
 
   /**
    * Parses an attribute's new text (null when removed: back to the default) into its setting.
@@ -135,7 +134,7 @@ export class CanvasSettings {
         this.drag = parseDrag(name, value);
         break;
       case 'max-pixel-ratio':
-        this.maxPixelRatio = present ? parsePositive(name, value) : SETTING_DEFAULTS.maxPixelRatio;
+        this.maxPixelRatio = present ? parsePositive(name, value) : Infinity;
         break;
     }
   }
