@@ -31,7 +31,7 @@ export function collideCapsuleAndCircle(
   const qy = a.y1 + t * ey;
   const dx = cx - qx;
   const dy = cy - qy;
-  const distance = Math.sqrt(dx * dx + dy * dy);
+  const distance = Math.hypot(dx, dy);
   const separation = distance - a.radius - b.radius;
   if (separation >= speculativeDistance) {
     out.pointCount = 0;

@@ -102,7 +102,7 @@ export class Contact {
     this.bodyA = a.body;
     this.bodyB = b.body;
     this.touching = false;
-    this.extentB = Math.sqrt(b.body.localCenterX ** 2 + b.body.localCenterY ** 2);
+    this.extentB = Math.hypot(b.body.localCenterX, b.body.localCenterY);
     const base = this.index * CONTACT_STRIDE;
     data.fill(0, base, base + CONTACT_STRIDE);
     data[base + FRICTION] = Math.sqrt(a.friction * b.friction);
