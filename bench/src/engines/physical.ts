@@ -94,7 +94,7 @@ function revoluteOptions(
       ? {
           enableMotor: true,
           motorSpeed: -joint.motor.speed,
-          maxMotorTorque: joint.motor.maxTorque,
+          maxMotorTorque: unlimited(joint.motor.maxTorque),
         }
       : {}),
     ...(joint.spring
@@ -167,7 +167,7 @@ export const physical: Engine = {
             anchor: { x: desc.x, y: -desc.y },
             enableMotor: true,
             motorSpeed: -desc.motor.speed,
-            maxMotorTorque: desc.motor.maxTorque,
+            maxMotorTorque: unlimited(desc.motor.maxTorque),
           }),
         );
       }
@@ -217,3 +217,11 @@ export const physical: Engine = {
     } satisfies World;
   },
 };
+
+/**
+ * Box2D's scenes write "no limit" as FLT_MAX (3.4e38); Physical refuses forces and torques past
+ * 1e18 (an absurd value is an error there), which is as unlimited for any scene.
+ */
+function unlimited(value: number): number {
+  return Math.min(value, 1e18);
+}
