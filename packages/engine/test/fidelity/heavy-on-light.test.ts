@@ -232,4 +232,41 @@ describe('heavy on light', () => {
     reportMeasured('e = 1 gas of unlike masses under gravity, energy drift in 60 s', worst, 0.03);
     expect(worst).toBeLessThan(0.03);
   }, 60_000);
+
+  // Friction too: a heavy box on a light one on a slope rests where statics says it does
+  // (friction 0.6 holds up to 31 degrees). The normal sweep alone let 100:1 slide 3 m down a
+  // 10 degree slope and 10:1 slide 5 m down a 20 degree one.
+  for (const degrees of [10, 20]) {
+    it(`on a ${degrees} degree slope with friction 0.6, heavy on light stays put at 10:1, 100:1 and 1000:1`, () => {
+      let worst = 0;
+      for (const ratio of [10, 100, 1000]) {
+        const world = new World();
+        const slope = (degrees * Math.PI) / 180;
+        world.add(
+          box({ type: 'static', position: { x: 0, y: 0.5 }, width: 40, height: 1, angle: -slope }),
+        );
+        // The slope's top face passes through p, with outward normal n (y-down).
+        const p = { x: -0.5 * Math.sin(slope), y: 0.5 - 0.5 * Math.cos(slope) };
+        const n = { x: -Math.sin(slope), y: -Math.cos(slope) };
+        const at = (d: number) => ({ x: p.x + d * n.x, y: p.y + d * n.y });
+        const common = { angle: -slope, width: 1, height: 1, friction: 0.6 };
+        world.add(box({ ...common, position: at(0.5), density: 1 }));
+        const heavy = world.add(box({ ...common, position: at(1.5), density: ratio }));
+        const start = { ...heavy.position };
+        for (let i = 0; i < STEPS; i++) {
+          world.step(DT);
+          worst = Math.max(
+            worst,
+            Math.hypot(heavy.position.x - start.x, heavy.position.y - start.y),
+          );
+        }
+      }
+      reportMeasured(
+        `heavy on light on a ${degrees} degree slope, largest movement (m)`,
+        worst,
+        0.01,
+      );
+      expect(worst).toBeLessThan(0.01);
+    });
+  }
 });
