@@ -1,6 +1,6 @@
 // Heavy on light (issue #13): the same stacks in every engine, at the engines' defaults, 10 s of
 // 1/60 s steps. Prints how far each box sank into the one below (m) and how far it drifted
-// sideways, at the end and at worst. Usage: npx tsx bench/src/heavy-on-light.ts [engines]
+// sideways (on the slopes: down the slope), at the end and at worst. Usage: npx tsx bench/src/heavy-on-light.ts [engines]
 import { ENGINES } from './engines/index.ts';
 import type { BodyDesc, SceneDesc } from './types.ts';
 
@@ -36,7 +36,7 @@ const BALL: BodyDesc = {
  * Boxes of the given masses, bottom first, stacked on a static ground whose top is y = 0; with
  * `ball`, a 1 kg ball of radius 0.25 m replaces the bottom box (the box above rests at 0.5 m).
  */
-function stack(name: string, masses: readonly number[], ball = false): SceneDesc {
+function stack(name: string, masses: readonly number[], ball = false, slope = 0): SceneDesc {
   const bodies: BodyDesc[] = [
     {
       type: 'static',
@@ -50,7 +50,11 @@ function stack(name: string, masses: readonly number[], ball = false): SceneDesc
   return {
     name,
     steps: 600,
-    gravity: { x: 0, y: -10 },
+    // A slope of `slope` degrees, as gravity tilted by that much over flat ground.
+    gravity: {
+      x: 10 * Math.sin((slope * Math.PI) / 180),
+      y: -10 * Math.cos((slope * Math.PI) / 180),
+    },
     sleep: true,
     material: { density: 1, friction: 0.6, restitution: 0 },
     bodies,
@@ -65,6 +69,9 @@ const SCENES = [
   stack('1000 kg box on a 1 kg ball', [1, 1000], true),
   stack('1 kg between two 1000 kg', [1000, 1, 1000]),
   stack('3 boxes of 1 kg (control)', [1, 1, 1]),
+  // Friction 0.6 holds up to 31 degrees: nothing should slide.
+  stack('100 kg on 1 kg, 10 degree slope', [1, 100], false, 10),
+  stack('1000 kg on 1 kg, 20 degree slope', [1, 1000], false, 20),
 ];
 
 const engineIds = (process.argv[2] ?? 'physical,box2d3-wasm,rapier2d-simd').split(',');
