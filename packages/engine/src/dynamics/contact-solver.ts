@@ -1205,6 +1205,15 @@ export class ShockPropagation {
       let q2 = 0;
       let rn1 = 0;
       let rn2 = 0;
+      // For the friction below: the passes' normal impulses per point and friction impulse, and
+      // the levers (A's and B's) to the manifold's middle.
+      let n1 = 0;
+      let n2 = 0;
+      let applied = 0;
+      let lAx = 0;
+      let lAy = 0;
+      let lBx = 0;
+      let lBy = 0;
       for (let j = 0; j < pointCount; j++) {
         const p = base + POINTS + j * POINT_STRIDE;
         const rAx = c[p + R_AX]!;
@@ -1240,10 +1249,17 @@ export class ShockPropagation {
         if (j === 0) {
           q1 = vn + bias;
           rn1 = rn;
+          n1 = c[p + NORMAL_IMPULSE]!;
         } else {
           q2 = vn + bias;
           rn2 = rn;
+          n2 = c[p + NORMAL_IMPULSE]!;
         }
+        applied += c[p + TANGENT_IMPULSE]!;
+        lAx += rAx / pointCount;
+        lAy += rAy / pointCount;
+        lBx += rBx / pointCount;
+        lBy += rBy / pointCount;
       }
       if (wait) continue;
       // The LCP  w = K x + q >= 0, x >= 0, x . w = 0  with K the upper body's inverse mass seen
@@ -1286,23 +1302,7 @@ export class ShockPropagation {
       // sweep's) less the friction the passes already applied. Sequential friction moves a heavy
       // body on a light one as little as the normal impulses do: a 100:1 stack slid 3 m down a
       // 10 degree slope with friction 0.6 (tan 10 degrees is 0.18).
-      let normal = x1 + x2;
-      let applied = 0;
-      // Levers to the manifold's middle (m): A's and B's.
-      let lAx = 0;
-      let lAy = 0;
-      let lBx = 0;
-      let lBy = 0;
-      for (let j = 0; j < pointCount; j++) {
-        const p = base + POINTS + j * POINT_STRIDE;
-        normal += c[p + NORMAL_IMPULSE]!;
-        applied += c[p + TANGENT_IMPULSE]!;
-        lAx += c[p + R_AX]! / pointCount;
-        lAy += c[p + R_AY]! / pointCount;
-        lBx += c[p + R_BX]! / pointCount;
-        lBy += c[p + R_BY]! / pointCount;
-      }
-      const limit = c[base + FRICTION]! * normal;
+      const limit = c[base + FRICTION]! * (x1 + x2 + n1 + n2);
       if (limit <= 0) continue;
       // The slip there (B relative to A along t = (ny, -nx), as the contact solver measures it)
       // and the upper body's lever across t.
