@@ -269,4 +269,30 @@ describe('heavy on light', () => {
       expect(worst).toBeLessThan(0.01);
     });
   }
+
+  // And pushed: a sideways force of 0.3 m g on a heavy box resting on a light one is less than
+  // friction 0.6 can hold at either face, so nothing moves (it slid 3.2 m at 100:1 and 3.4 m at
+  // 1000:1 in 2 s before the sweep held friction too).
+  it('pushed sideways by less than friction holds, a heavy box on a light one stays put at 100:1 and 1000:1', () => {
+    let worst = 0;
+    for (const ratio of [100, 1000]) {
+      const world = new World();
+      world.add(box({ type: 'static', position: { x: 0, y: 0.5 }, width: 40, height: 1 }));
+      const light = world.add(box({ position: { x: 0, y: -0.5 }, width: 1, height: 1 }));
+      const heavy = world.add(
+        box({ position: { x: 0, y: -1.5 }, width: 1, height: 1, density: ratio }),
+      );
+      heavy.applyForce({ x: 0.3 * ratio * world.gravity.y, y: 0 }, { duration: 'constant' });
+      for (let i = 0; i < 120; i++) {
+        world.step(DT);
+        worst = Math.max(worst, Math.abs(heavy.position.x), Math.abs(light.position.x));
+      }
+    }
+    reportMeasured(
+      'heavy on light pushed below friction, largest sideways movement (m)',
+      worst,
+      0.01,
+    );
+    expect(worst).toBeLessThan(0.01);
+  });
 });
