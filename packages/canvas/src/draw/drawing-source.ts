@@ -2,6 +2,20 @@ import type { Body, ContactView, Joint, Vec2Like } from '@physical/engine';
 import type { Pose } from '../draw/pose.ts';
 
 /**
+ * What a collision arrow needs of a collision: the engine's `CollisionEvent` (reused, with
+ * `pointCount` valid points) or a worker world's collision event (exactly its points).
+ */
+export interface CollisionLike {
+  readonly normalX: number;
+  readonly normalY: number;
+  /** Total normal impulse of the step (N s). */
+  readonly normalImpulse: number;
+  readonly approachSpeed: number;
+  readonly points: readonly { readonly x: number; readonly y: number }[];
+  readonly pointCount?: number;
+}
+
+/**
  * What `<physical-canvas>` needs from a world to run and draw it. A `World` of
  * `@physical/engine` is one; so is a world that lives elsewhere (a worker) and keeps page copies
  * of its bodies: such a source adds {@link RemoteDrawing} as `remote`.
@@ -21,6 +35,11 @@ export interface DrawingSource {
   forEachContact(visitor: (contact: ContactView) => void): void;
   /** Listens to changes that need a frame; returns the remover. */
   on(type: 'wake' | 'bodyAdded' | 'bodyRemoved', listener: () => void): () => void;
+  /**
+   * Listens to each step's collisions (for `collision-arrows`; asked for only while they are
+   * on); returns the remover.
+   */
+  on(type: 'collision', listener: (event: CollisionLike) => void): () => void;
   /** Present when the bodies' poses come from elsewhere (see {@link RemoteDrawing}). */
   readonly remote?: RemoteDrawing;
 }

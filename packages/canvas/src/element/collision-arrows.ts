@@ -1,18 +1,5 @@
 import type { CollisionArrowView } from '../draw/draw-collision-arrows.ts';
-
-/**
- * What an arrow needs of a collision: the engine's `CollisionEvent` (reused, with `pointCount`
- * valid points) or a worker world's collision event (exactly its points).
- */
-export interface CollisionLike {
-  readonly normalX: number;
-  readonly normalY: number;
-  /** Total normal impulse of the step (N s). */
-  readonly normalImpulse: number;
-  readonly approachSpeed: number;
-  readonly points: readonly { readonly x: number; readonly y: number }[];
-  readonly pointCount?: number;
-}
+import type { CollisionLike } from '../draw/drawing-source.ts';
 
 /** One live arrow pair; the record is reused when it dies. */
 class CollisionArrow implements CollisionArrowView {

@@ -1,10 +1,4 @@
-import type { DrawingSource } from '../draw/drawing-source.ts';
-import type { CollisionLike } from './collision-arrows.ts';
-
-/** A source with collision events: a `World`, or a worker world (its events carry body ids). */
-interface CollisionSource {
-  on(type: 'collision', listener: (event: CollisionLike) => void): () => void;
-}
+import type { CollisionLike, DrawingSource } from '../draw/drawing-source.ts';
 
 /** What a {@link WorldSubscription} reports to its element. */
 export interface WorldListener {
@@ -42,7 +36,7 @@ export class WorldSubscription {
       world.on('bodyRemoved', this.onChange),
     );
     if (collisions) {
-      this.offs.push((world as unknown as CollisionSource).on('collision', this.onCollision));
+      this.offs.push(world.on('collision', this.onCollision));
     }
   }
 

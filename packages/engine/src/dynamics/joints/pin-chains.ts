@@ -6,7 +6,7 @@ export interface PinJoint {
   readonly stateB: number;
   readonly invMassA: number;
   readonly invMassB: number;
-  /** Set by the joint's prepare; a chain may stiffen it for the step (see PinChains.prepare). */
+  /** Set by the joint's prepare; a chain may stiffen it for the step (see PinChains.stiffen). */
   invInertiaA: number;
   invInertiaB: number;
   /** Writes the levers from the centres to the pin, rotated to now: rAx, rAy, rBx, rBy. */
