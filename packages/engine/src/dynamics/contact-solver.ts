@@ -95,7 +95,13 @@ const TOTAL_TANGENT_IMPULSE = 12;
 // Impact state of a point: 0 none; 1 an impact found in this sub-step's solve pass, to bounce in
 // its relax pass; 2 bounced in this sub-step (the bounce is not warm-started).
 const IMPACT = 15;
-const POINT_STRIDE = 16;
+// The lever arms' cross products with the normal and the tangent t = (ny, -nx) when they were
+// set (rA x n, rB x n, rA x t, rB x t): a pass adds only the common point's shift to them.
+const RN_A = 13;
+const RN_B = 14;
+const RT_A = 16;
+const RT_B = 17;
+const POINT_STRIDE = 18;
 const STRIDE = POINTS + 2 * POINT_STRIDE;
 /** Largest condition number (max K_jj^2 / det K) of a two-point block solved as a block. */
 const MAX_CONDITION_NUMBER = 1000;
@@ -275,10 +281,14 @@ export function prepareContacts(
       c[p + IMPACT] = 0;
       const rnA = rAx * ny - rAy * nx;
       const rnB = rBx * ny - rBy * nx;
+      c[p + RN_A] = rnA;
+      c[p + RN_B] = rnB;
       const kNormal = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
       c[p + NORMAL_MASS] = kNormal > 0 ? 1 / kNormal : 0;
       const rtA = rAx * ty - rAy * tx;
       const rtB = rBx * ty - rBy * tx;
+      c[p + RT_A] = rtA;
+      c[p + RT_B] = rtB;
       const kTangent = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
       c[p + TANGENT_MASS] = kTangent > 0 ? 1 / kTangent : 0;
       // Normal approach velocity before the step, for restitution; replaced by the velocity at the
@@ -380,6 +390,11 @@ export function refreshCirclePairs(constraints: ContactConstraints, s: Float64Ar
     c[p + R_AY] = rAy;
     c[p + R_BX] = rBx;
     c[p + R_BY] = rBy;
+    // Along the line of centres: no arm across n; across t = (ny, -nx), -armA and armB.
+    c[p + RN_A] = 0;
+    c[p + RN_B] = 0;
+    c[p + RT_A] = -armA;
+    c[p + RT_B] = armB;
     // Baseline such that the solver's separation formula gives the exact gap now.
     const qAc = s[a + Q_C]!;
     const qAs = s[a + Q_S]!;
@@ -436,16 +451,17 @@ export function warmStartContacts(constraints: ContactConstraints, s: Float64Arr
     const eBy = dpBy - c[base + REF_DP_BY]!;
     const shiftX = shiftA * eAx + shiftB * eBx;
     const shiftY = shiftA * eAy + shiftB * eBy;
-    const shiftAx = shiftX - eAx;
-    const shiftAy = shiftY - eAy;
-    const shiftBx = shiftX - eBx;
-    const shiftBy = shiftY - eBy;
+    // The shift as cross products with n and t (see RN_A).
+    const sAx = shiftX - eAx;
+    const sAy = shiftY - eAy;
+    const sBx = shiftX - eBx;
+    const sBy = shiftY - eBy;
+    const dnA = sAx * ny - sAy * nx;
+    const dnB = sBx * ny - sBy * nx;
+    const dtA = -(sAx * nx + sAy * ny);
+    const dtB = -(sBx * nx + sBy * ny);
     for (let j = 0; j < pointCount; j++) {
       const p = base + POINTS + j * POINT_STRIDE;
-      const rAx = c[p + R_AX]! + shiftAx;
-      const rAy = c[p + R_AY]! + shiftAy;
-      const rBx = c[p + R_BX]! + shiftBx;
-      const rBy = c[p + R_BY]! + shiftBy;
       // A bounce is a one-off impulse, not a contact force to carry into the next sub-step.
       if (c[p + IMPACT]! === 2) {
         c[p + IMPACT] = 0;
@@ -455,10 +471,10 @@ export function warmStartContacts(constraints: ContactConstraints, s: Float64Arr
       const pt = c[p + TANGENT_IMPULSE]!;
       const px = pn * nx + pt * tx;
       const py = pn * ny + pt * ty;
-      wA -= iA * (rAx * py - rAy * px);
+      wA -= iA * (pn * (c[p + RN_A]! + dnA) + pt * (c[p + RT_A]! + dtA));
       vAx -= mA * px;
       vAy -= mA * py;
-      wB += iB * (rBx * py - rBy * px);
+      wB += iB * (pn * (c[p + RN_B]! + dnB) + pt * (c[p + RT_B]! + dtB));
       vBx += mB * px;
       vBy += mB * py;
     }
@@ -502,11 +518,8 @@ export function solveContacts(
     const iB = c[base + INV_I_B]!;
     const nx = c[base + NORMAL_X]!;
     const ny = c[base + NORMAL_Y]!;
-    const friction = c[base + FRICTION]!;
     const restitution = c[base + RESTITUTION]!;
     const biasRate = c[base + BIAS_RATE]!;
-    const softMassScale = c[base + MASS_SCALE]!;
-    const softImpulseScale = c[base + IMPULSE_SCALE]!;
     let vAx = s[a + V_X]!;
     let vAy = s[a + V_Y]!;
     let wA = s[a + W]!;
@@ -517,27 +530,35 @@ export function solveContacts(
     const dpAy = s[a + DP_Y]!;
     const dpBx = s[b + DP_X]!;
     const dpBy = s[b + DP_Y]!;
-    const dpx = dpBx - dpAx;
-    const dpy = dpBy - dpAy;
-    // Lever arms to the common point of application (see prepareContacts).
+    // Lever arms to the common point of application (see prepareContacts), as cross products
+    // with n and t (see RN_A): the prepared ones plus the shift of the common point since the
+    // arms were set (the step's start, or a circle pair's refresh).
     const shiftA = c[base + SHIFT_WEIGHT_A]!;
     const shiftB = c[base + SHIFT_WEIGHT_B]!;
-    // Motion since the lever arms were set: the step's start, or a circle pair's refresh.
     const eAx = dpAx - c[base + REF_DP_AX]!;
     const eAy = dpAy - c[base + REF_DP_AY]!;
     const eBx = dpBx - c[base + REF_DP_BX]!;
     const eBy = dpBy - c[base + REF_DP_BY]!;
     const shiftX = shiftA * eAx + shiftB * eBx;
     const shiftY = shiftA * eAy + shiftB * eBy;
-    let shiftAx = shiftX - eAx;
-    let shiftAy = shiftY - eAy;
-    let shiftBx = shiftX - eBx;
-    let shiftBy = shiftY - eBy;
+    let sAx = shiftX - eAx;
+    let sAy = shiftY - eAy;
+    let sBx = shiftX - eBx;
+    let sBy = shiftY - eBy;
+    const dnA = sAx * ny - sAy * nx;
+    const dnB = sBx * ny - sBy * nx;
     let bounced = false;
+    // The normal in each body's rotated frame, so that each point's separation costs two dot
+    // products: (q r) . n = r . (q^T n).
     const qAc = s[a + Q_C]!;
     const qAs = s[a + Q_S]!;
     const qBc = s[b + Q_C]!;
     const qBs = s[b + Q_S]!;
+    const nAx = qAc * nx + qAs * ny;
+    const nAy = qAc * ny - qAs * nx;
+    const nBx = qBc * nx + qBs * ny;
+    const nBy = qBc * ny - qBs * nx;
+    const dpn = (dpBx - dpAx) * nx + (dpBy - dpAy) * ny;
     const pointCount = c[base + POINT_COUNT]!;
 
     // Two-point manifolds are solved as one block when both points are plain contacts, or both
@@ -547,28 +568,20 @@ export function solveContacts(
     if (c[base + BLOCK]! === 1) {
       const p1 = base + POINTS;
       const p2 = p1 + POINT_STRIDE;
-      const r1Ax = c[p1 + R_AX]!;
-      const r1Ay = c[p1 + R_AY]!;
-      const r1Bx = c[p1 + R_BX]!;
-      const r1By = c[p1 + R_BY]!;
-      const r2Ax = c[p2 + R_AX]!;
-      const r2Ay = c[p2 + R_AY]!;
-      const r2Bx = c[p2 + R_BX]!;
-      const r2By = c[p2 + R_BY]!;
-      const d1x = dpx + (qBc * r1Bx - qBs * r1By) - (qAc * r1Ax - qAs * r1Ay);
-      const d1y = dpy + (qBs * r1Bx + qBc * r1By) - (qAs * r1Ax + qAc * r1Ay);
-      const separation1 = d1x * nx + d1y * ny + c[p1 + BASE_SEPARATION]!;
-      const d2x = dpx + (qBc * r2Bx - qBs * r2By) - (qAc * r2Ax - qAs * r2Ay);
-      const d2y = dpy + (qBs * r2Bx + qBc * r2By) - (qAs * r2Ax + qAc * r2Ay);
-      const separation2 = d2x * nx + d2y * ny + c[p2 + BASE_SEPARATION]!;
-      const l1Ax = r1Ax + shiftAx;
-      const l1Ay = r1Ay + shiftAy;
-      const l1Bx = r1Bx + shiftBx;
-      const l1By = r1By + shiftBy;
-      const l2Ax = r2Ax + shiftAx;
-      const l2Ay = r2Ay + shiftAy;
-      const l2Bx = r2Bx + shiftBx;
-      const l2By = r2By + shiftBy;
+      const separation1 =
+        dpn +
+        (c[p1 + R_BX]! * nBx + c[p1 + R_BY]! * nBy) -
+        (c[p1 + R_AX]! * nAx + c[p1 + R_AY]! * nAy) +
+        c[p1 + BASE_SEPARATION]!;
+      const separation2 =
+        dpn +
+        (c[p2 + R_BX]! * nBx + c[p2 + R_BY]! * nBy) -
+        (c[p2 + R_AX]! * nAx + c[p2 + R_AY]! * nAy) +
+        c[p2 + BASE_SEPARATION]!;
+      const n1A = c[p1 + RN_A]! + dnA;
+      const n1B = c[p1 + RN_B]! + dnB;
+      const n2A = c[p2 + RN_A]! + dnA;
+      const n2B = c[p2 + RN_B]! + dnB;
       const k11 = c[base + BLOCK_K11]!;
       const k12 = c[base + BLOCK_K12]!;
       const k22 = c[base + BLOCK_K22]!;
@@ -578,36 +591,37 @@ export function solveContacts(
       if (separation1 > 0) bias1 = separation1 * inverseH;
       else if (useBias) {
         bias1 = Math.max(biasRate * separation1, -maxPushSpeed);
-        gamma1 = (k11 * softImpulseScale) / softMassScale;
+        gamma1 = (k11 * c[base + IMPULSE_SCALE]!) / c[base + MASS_SCALE]!;
       }
       let bias2 = 0;
       let gamma2 = 0;
       if (separation2 > 0) bias2 = separation2 * inverseH;
       else if (useBias) {
         bias2 = Math.max(biasRate * separation2, -maxPushSpeed);
-        gamma2 = (k22 * softImpulseScale) / softMassScale;
+        gamma2 = (k22 * c[base + IMPULSE_SCALE]!) / c[base + MASS_SCALE]!;
       }
-      const vn1 =
-        (vBx - wB * l1By - (vAx - wA * l1Ay)) * nx + (vBy + wB * l1Bx - (vAy + wA * l1Ax)) * ny;
-      const vn2 =
-        (vBx - wB * l2By - (vAx - wA * l2Ay)) * nx + (vBy + wB * l2Bx - (vAy + wA * l2Ax)) * ny;
+      const dvn = (vBx - vAx) * nx + (vBy - vAy) * ny;
+      const vn1 = dvn + wB * n1B - wA * n1A;
+      const vn2 = dvn + wB * n2B - wA * n2A;
       const accumulated1 = c[p1 + NORMAL_IMPULSE]!;
       const accumulated2 = c[p2 + NORMAL_IMPULSE]!;
-      const impact1 = c[p1 + IMPACT]!;
-      const impact2 = c[p2 + IMPACT]!;
       // The impact test of the sequential pass (see there), on the velocities before the pass.
-      const isImpact1 =
-        restitution > 0 &&
-        accumulated1 === 0 &&
-        impact1 !== 2 &&
-        vn1 < -restitutionThreshold &&
-        (impact1 === 1 || vn1 + bias1 < 0);
-      const isImpact2 =
-        restitution > 0 &&
-        accumulated2 === 0 &&
-        impact2 !== 2 &&
-        vn2 < -restitutionThreshold &&
-        (impact2 === 1 || vn2 + bias2 < 0);
+      let isImpact1 = false;
+      let isImpact2 = false;
+      if (restitution > 0) {
+        const impact1 = c[p1 + IMPACT]!;
+        const impact2 = c[p2 + IMPACT]!;
+        isImpact1 =
+          accumulated1 === 0 &&
+          impact1 !== 2 &&
+          vn1 < -restitutionThreshold &&
+          (impact1 === 1 || vn1 + bias1 < 0);
+        isImpact2 =
+          accumulated2 === 0 &&
+          impact2 !== 2 &&
+          vn2 < -restitutionThreshold &&
+          (impact2 === 1 || vn2 + bias2 < 0);
+      }
       if (!isImpact1 && !isImpact2) {
         // Both points push: the mixed LCP  w = A x + q >= 0, x >= 0, x . w = 0  for the new
         // accumulated impulses x (Box2D v2's block solver, Catto's b2ContactSolver, enumerates
@@ -654,8 +668,10 @@ export function solveContacts(
         // Rounding can leave no case satisfied (a nearly degenerate K): then sequential below.
         if (x1 >= 0 && x2 >= 0) {
           firstSequential = 2;
-          if (impact1 === 1) c[p1 + IMPACT] = 0;
-          if (impact2 === 1) c[p2 + IMPACT] = 0;
+          if (restitution > 0) {
+            if (c[p1 + IMPACT]! === 1) c[p1 + IMPACT] = 0;
+            if (c[p2 + IMPACT]! === 1) c[p2 + IMPACT] = 0;
+          }
           const dx1 = x1 - accumulated1;
           const dx2 = x2 - accumulated2;
           c[p1 + NORMAL_IMPULSE] = x1;
@@ -666,14 +682,13 @@ export function solveContacts(
           }
           if (dx1 > c[p1 + MAX_NORMAL_IMPULSE]!) c[p1 + MAX_NORMAL_IMPULSE] = dx1;
           if (dx2 > c[p2 + MAX_NORMAL_IMPULSE]!) c[p2 + MAX_NORMAL_IMPULSE] = dx2;
-          const px = (dx1 + dx2) * nx;
-          const py = (dx1 + dx2) * ny;
-          vAx -= mA * px;
-          vAy -= mA * py;
-          wA -= iA * ((l1Ax * ny - l1Ay * nx) * dx1 + (l2Ax * ny - l2Ay * nx) * dx2);
-          vBx += mB * px;
-          vBy += mB * py;
-          wB += iB * ((l1Bx * ny - l1By * nx) * dx1 + (l2Bx * ny - l2By * nx) * dx2);
+          const sum = dx1 + dx2;
+          vAx -= mA * sum * nx;
+          vAy -= mA * sum * ny;
+          wA -= iA * (n1A * dx1 + n2A * dx2);
+          vBx += mB * sum * nx;
+          vBy += mB * sum * ny;
+          wB += iB * (n1B * dx1 + n2B * dx2);
         }
       } else if (isImpact1 && isImpact2 && !useBias && separation1 <= 0 && separation2 <= 0) {
         // Both points hit in this sub-step: one collision, resolved at once at the moment of
@@ -690,14 +705,14 @@ export function solveContacts(
         const eBy = tBy - c[base + REF_DP_BY]!;
         const sx = shiftA * eAx + shiftB * eBx;
         const sy = shiftA * eAy + shiftB * eBy;
-        const b1Ax = r1Ax + sx - eAx;
-        const b1Ay = r1Ay + sy - eAy;
-        const b1Bx = r1Bx + sx - eBx;
-        const b1By = r1By + sy - eBy;
-        const b2Ax = r2Ax + sx - eAx;
-        const b2Ay = r2Ay + sy - eAy;
-        const b2Bx = r2Bx + sx - eBx;
-        const b2By = r2By + sy - eBy;
+        const b1Ax = c[p1 + R_AX]! + sx - eAx;
+        const b1Ay = c[p1 + R_AY]! + sy - eAy;
+        const b1Bx = c[p1 + R_BX]! + sx - eBx;
+        const b1By = c[p1 + R_BY]! + sy - eBy;
+        const b2Ax = c[p2 + R_AX]! + sx - eAx;
+        const b2Ay = c[p2 + R_AY]! + sy - eAy;
+        const b2Bx = c[p2 + R_BX]! + sx - eBx;
+        const b2By = c[p2 + R_BY]! + sy - eBy;
         const approach1 =
           (vBx - wB * b1By - (vAx - wA * b1Ay)) * nx + (vBy + wB * b1Bx - (vAy + wA * b1Ax)) * ny;
         const approach2 =
@@ -767,18 +782,14 @@ export function solveContacts(
 
     for (let j = firstSequential; j < pointCount; j++) {
       const p = base + POINTS + j * POINT_STRIDE;
-      const rAx = c[p + R_AX]!;
-      const rAy = c[p + R_AY]!;
-      const rBx = c[p + R_BX]!;
-      const rBy = c[p + R_BY]!;
       // Current separation: the anchors moved with their bodies since the step began.
-      const dx = dpx + (qBc * rBx - qBs * rBy) - (qAc * rAx - qAs * rAy);
-      const dy = dpy + (qBs * rBx + qBc * rBy) - (qAs * rAx + qAc * rAy);
-      const separation = dx * nx + dy * ny + c[p + BASE_SEPARATION]!;
-      const lAx = rAx + shiftAx;
-      const lAy = rAy + shiftAy;
-      const lBx = rBx + shiftBx;
-      const lBy = rBy + shiftBy;
+      const separation =
+        dpn +
+        (c[p + R_BX]! * nBx + c[p + R_BY]! * nBy) -
+        (c[p + R_AX]! * nAx + c[p + R_AY]! * nAy) +
+        c[p + BASE_SEPARATION]!;
+      const leverA = c[p + RN_A]! + dnA;
+      const leverB = c[p + RN_B]! + dnB;
       let bias = 0;
       let massScale = 1;
       let impulseScale = 0;
@@ -787,12 +798,10 @@ export function solveContacts(
         bias = separation * inverseH;
       } else if (useBias) {
         bias = Math.max(biasRate * separation, -maxPushSpeed);
-        massScale = softMassScale;
-        impulseScale = softImpulseScale;
+        massScale = c[base + MASS_SCALE]!;
+        impulseScale = c[base + IMPULSE_SCALE]!;
       }
-      const dvx = vBx - wB * lBy - (vAx - wA * lAy);
-      const dvy = vBy + wB * lBx - (vAy + wA * lAx);
-      const vn = dvx * nx + dvy * ny;
+      const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * leverB - wA * leverA;
       const accumulated = c[p + NORMAL_IMPULSE]!;
       // Restitution (Newton's law) at the moment of impact. An impact is an approach faster than
       // the threshold on a point not already pushing (a resting contact is always warm-started,
@@ -803,106 +812,107 @@ export function solveContacts(
       // bodies, so momentum, angular momentum and (for e = 1) energy are kept. A bounce after all
       // the sub-steps (Box2D v3) comes after the normal of sliding particles has turned and after
       // gravity has changed the approach, and cannot bounce a particle twice in one step.
-      const impactState = c[p + IMPACT]!;
-      if (
-        restitution > 0 &&
-        accumulated === 0 &&
-        impactState !== 2 &&
-        vn < -restitutionThreshold &&
-        (impactState === 1 || vn + bias < 0)
-      ) {
-        if (useBias || separation > 0) {
-          // Not touching yet: the impact happens when the positions get there.
-          c[p + IMPACT] = useBias ? 1 : 0;
+      if (restitution > 0) {
+        const impactState = c[p + IMPACT]!;
+        if (
+          accumulated === 0 &&
+          impactState !== 2 &&
+          vn < -restitutionThreshold &&
+          (impactState === 1 || vn + bias < 0)
+        ) {
+          if (useBias || separation > 0) {
+            // Not touching yet: the impact happens when the positions get there.
+            c[p + IMPACT] = useBias ? 1 : 0;
+            continue;
+          }
+          // Back to the moment of contact: the overlap divided by the approach speed ago.
+          const back = Math.min(separation / vn, 1 / inverseH);
+          const tAx = dpAx - vAx * back;
+          const tAy = dpAy - vAy * back;
+          const tBx = dpBx - vBx * back;
+          const tBy = dpBy - vBy * back;
+          let bnx = nx;
+          let bny = ny;
+          let bAx: number;
+          let bAy: number;
+          let bBx: number;
+          let bBy: number;
+          const radiusA = c[base + RADIUS_A]!;
+          const radiusB = c[base + RADIUS_B]!;
+          if (radiusA > 0 && radiusB > 0) {
+            // Two particles meet along the line through their centres at that moment.
+            const cx = c[base + CENTER_DX]! + tBx - tAx;
+            const cy = c[base + CENTER_DY]! + tBy - tAy;
+            const length = Math.sqrt(cx * cx + cy * cy);
+            if (length > 1e-12) {
+              bnx = cx / length;
+              bny = cy / length;
+            }
+            bAx = bnx * radiusA;
+            bAy = bny * radiusA;
+            bBx = -bnx * radiusB;
+            bBy = -bny * radiusB;
+          } else {
+            // The common point of application, where it was at that moment.
+            const eAx = tAx - c[base + REF_DP_AX]!;
+            const eAy = tAy - c[base + REF_DP_AY]!;
+            const eBx = tBx - c[base + REF_DP_BX]!;
+            const eBy = tBy - c[base + REF_DP_BY]!;
+            const sx = shiftA * eAx + shiftB * eBx;
+            const sy = shiftA * eAy + shiftB * eBy;
+            bAx = c[p + R_AX]! + sx - eAx;
+            bAy = c[p + R_AY]! + sy - eAy;
+            bBx = c[p + R_BX]! + sx - eBx;
+            bBy = c[p + R_BY]! + sy - eBy;
+          }
+          const approach =
+            (vBx - wB * bBy - (vAx - wA * bAy)) * bnx + (vBy + wB * bBx - (vAy + wA * bAx)) * bny;
+          const rnA = bAx * bny - bAy * bnx;
+          const rnB = bBx * bny - bBy * bnx;
+          const k = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+          const bounce = approach < 0 && k > 0 ? (-(1 + restitution) * approach) / k : 0;
+          c[p + NORMAL_IMPULSE] = bounce;
+          c[p + TOTAL_NORMAL_IMPULSE] += bounce;
+          c[p + RELATIVE_VELOCITY] = approach;
+          c[p + IMPACT] = 2;
+          if (bounce > c[p + MAX_NORMAL_IMPULSE]!) c[p + MAX_NORMAL_IMPULSE] = bounce;
+          const px = bounce * bnx;
+          const py = bounce * bny;
+          const dvAx = -mA * px;
+          const dvAy = -mA * py;
+          const dwA = -iA * (bAx * py - bAy * px);
+          const dvBx = mB * px;
+          const dvBy = mB * py;
+          const dwB = iB * (bBx * py - bBy * px);
+          vAx += dvAx;
+          vAy += dvAy;
+          wA += dwA;
+          vBx += dvBx;
+          vBy += dvBy;
+          wB += dwB;
+          // And forward again with the new velocities: the exact path of the collision.
+          if (a !== 0) advancePose(s, a, dvAx * back, dvAy * back, dwA * back);
+          if (b !== 0) advancePose(s, b, dvBx * back, dvBy * back, dwB * back);
+          bounced = true;
           continue;
         }
-        // Back to the moment of contact: the overlap divided by the approach speed ago.
-        const back = Math.min(separation / vn, 1 / inverseH);
-        const tAx = dpAx - vAx * back;
-        const tAy = dpAy - vAy * back;
-        const tBx = dpBx - vBx * back;
-        const tBy = dpBy - vBy * back;
-        let bnx = nx;
-        let bny = ny;
-        let bAx: number;
-        let bAy: number;
-        let bBx: number;
-        let bBy: number;
-        const radiusA = c[base + RADIUS_A]!;
-        const radiusB = c[base + RADIUS_B]!;
-        if (radiusA > 0 && radiusB > 0) {
-          // Two particles meet along the line through their centres at that moment.
-          const cx = c[base + CENTER_DX]! + tBx - tAx;
-          const cy = c[base + CENTER_DY]! + tBy - tAy;
-          const length = Math.sqrt(cx * cx + cy * cy);
-          if (length > 1e-12) {
-            bnx = cx / length;
-            bny = cy / length;
-          }
-          bAx = bnx * radiusA;
-          bAy = bny * radiusA;
-          bBx = -bnx * radiusB;
-          bBy = -bny * radiusB;
-        } else {
-          // The common point of application, where it was at that moment.
-          const eAx = tAx - c[base + REF_DP_AX]!;
-          const eAy = tAy - c[base + REF_DP_AY]!;
-          const eBx = tBx - c[base + REF_DP_BX]!;
-          const eBy = tBy - c[base + REF_DP_BY]!;
-          const sx = shiftA * eAx + shiftB * eBx;
-          const sy = shiftA * eAy + shiftB * eBy;
-          bAx = rAx + sx - eAx;
-          bAy = rAy + sy - eAy;
-          bBx = rBx + sx - eBx;
-          bBy = rBy + sy - eBy;
-        }
-        const approach =
-          (vBx - wB * bBy - (vAx - wA * bAy)) * bnx + (vBy + wB * bBx - (vAy + wA * bAx)) * bny;
-        const rnA = bAx * bny - bAy * bnx;
-        const rnB = bBx * bny - bBy * bnx;
-        const k = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
-        const bounce = approach < 0 && k > 0 ? (-(1 + restitution) * approach) / k : 0;
-        c[p + NORMAL_IMPULSE] = bounce;
-        c[p + TOTAL_NORMAL_IMPULSE] += bounce;
-        c[p + RELATIVE_VELOCITY] = approach;
-        c[p + IMPACT] = 2;
-        if (bounce > c[p + MAX_NORMAL_IMPULSE]!) c[p + MAX_NORMAL_IMPULSE] = bounce;
-        const px = bounce * bnx;
-        const py = bounce * bny;
-        const dvAx = -mA * px;
-        const dvAy = -mA * py;
-        const dwA = -iA * (bAx * py - bAy * px);
-        const dvBx = mB * px;
-        const dvBy = mB * py;
-        const dwB = iB * (bBx * py - bBy * px);
-        vAx += dvAx;
-        vAy += dvAy;
-        wA += dwA;
-        vBx += dvBx;
-        vBy += dvBy;
-        wB += dwB;
-        // And forward again with the new velocities: the exact path of the collision.
-        if (a !== 0) advancePose(s, a, dvAx * back, dvAy * back, dwA * back);
-        if (b !== 0) advancePose(s, b, dvBx * back, dvBy * back, dwB * back);
-        bounced = true;
-        continue;
+        if (impactState === 1) c[p + IMPACT] = 0;
       }
-      if (impactState === 1) c[p + IMPACT] = 0;
-      let impulse = -c[p + NORMAL_MASS]! * massScale * (vn + bias) - impulseScale * accumulated;
-      const newImpulse = Math.max(accumulated + impulse, 0);
-      impulse = newImpulse - accumulated;
+      const newImpulse = Math.max(
+        accumulated - c[p + NORMAL_MASS]! * massScale * (vn + bias) - impulseScale * accumulated,
+        0,
+      );
+      const impulse = newImpulse - accumulated;
       c[p + NORMAL_IMPULSE] = newImpulse;
       // The relax pass ends the sub-step: the accumulated impulse is what acted in it.
       if (!useBias) c[p + TOTAL_NORMAL_IMPULSE] += newImpulse;
       if (impulse > c[p + MAX_NORMAL_IMPULSE]!) c[p + MAX_NORMAL_IMPULSE] = impulse;
-      const px = impulse * nx;
-      const py = impulse * ny;
-      vAx -= mA * px;
-      vAy -= mA * py;
-      wA -= iA * (lAx * py - lAy * px);
-      vBx += mB * px;
-      vBy += mB * py;
-      wB += iB * (lBx * py - lBy * px);
+      vAx -= mA * impulse * nx;
+      vAy -= mA * impulse * ny;
+      wA -= iA * leverA * impulse;
+      vBx += mB * impulse * nx;
+      vBy += mB * impulse * ny;
+      wB += iB * leverB * impulse;
     }
 
     if (bounced) {
@@ -913,22 +923,20 @@ export function solveContacts(
       const eBy = s[b + DP_Y]! - c[base + REF_DP_BY]!;
       const sx = shiftA * eAx + shiftB * eBx;
       const sy = shiftA * eAy + shiftB * eBy;
-      shiftAx = sx - eAx;
-      shiftAy = sy - eAy;
-      shiftBx = sx - eBx;
-      shiftBy = sy - eBy;
+      sAx = sx - eAx;
+      sAy = sy - eAy;
+      sBx = sx - eBx;
+      sBy = sy - eBy;
     }
-    const tx = ny;
-    const ty = -nx;
+    const dtA = -(sAx * nx + sAy * ny);
+    const dtB = -(sBx * nx + sBy * ny);
+    const friction = c[base + FRICTION]!;
     for (let j = 0; j < pointCount; j++) {
       const p = base + POINTS + j * POINT_STRIDE;
-      const rAx = c[p + R_AX]! + shiftAx;
-      const rAy = c[p + R_AY]! + shiftAy;
-      const rBx = c[p + R_BX]! + shiftBx;
-      const rBy = c[p + R_BY]! + shiftBy;
-      const dvx = vBx - wB * rBy - (vAx - wA * rAy);
-      const dvy = vBy + wB * rBx - (vAy + wA * rAx);
-      const vt = dvx * tx + dvy * ty;
+      const leverA = c[p + RT_A]! + dtA;
+      const leverB = c[p + RT_B]! + dtB;
+      // Slip along t = (ny, -nx).
+      const vt = (vBx - vAx) * ny - (vBy - vAy) * nx + wB * leverB - wA * leverA;
       const accumulated = c[p + TANGENT_IMPULSE]!;
       const maxFriction = friction * c[p + NORMAL_IMPULSE]!;
       let newImpulse = accumulated - c[p + TANGENT_MASS]! * vt;
@@ -937,14 +945,12 @@ export function solveContacts(
       const impulse = newImpulse - accumulated;
       c[p + TANGENT_IMPULSE] = newImpulse;
       if (!useBias) c[p + TOTAL_TANGENT_IMPULSE] += newImpulse;
-      const px = impulse * tx;
-      const py = impulse * ty;
-      vAx -= mA * px;
-      vAy -= mA * py;
-      wA -= iA * (rAx * py - rAy * px);
-      vBx += mB * px;
-      vBy += mB * py;
-      wB += iB * (rBx * py - rBy * px);
+      vAx -= mA * impulse * ny;
+      vAy += mA * impulse * nx;
+      wA -= iA * leverA * impulse;
+      vBx += mB * impulse * ny;
+      vBy -= mB * impulse * nx;
+      wB += iB * leverB * impulse;
     }
 
     if (a !== 0) {
