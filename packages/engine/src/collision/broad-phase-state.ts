@@ -33,6 +33,7 @@ export function importTreeState(tree: DynamicTree, state: TreeState): void {
   tree.parent = Int32Array.from(state.parent);
   tree.heights = Int32Array.from(state.heights);
   tree.userData = Int32Array.from(state.userData);
+  tree.flags = new Uint8Array(state.capacity);
   tree.stackTop = 0;
 }
 

@@ -64,6 +64,8 @@ export class BroadPhase {
   private userQuery: TreeQueryCallback | null = null;
   private userRayCast: TreeRayCastCallback | null = null;
   private isQueryStopped = false;
+  /** See deferMoves. */
+  private deferring = false;
   private readonly scratchBox = new AABB();
 
   private readonly pairQueryCallback: TreeQueryCallback = (proxyId, shapeId) =>
@@ -129,9 +131,27 @@ export class BroadPhase {
     ) {
       return false;
     }
-    tree.moveProxy(proxyId, type === STATIC ? aabb : this.fatten(aabb));
+    if (type === STATIC) tree.moveProxy(proxyId, aabb);
+    else if (this.deferring) tree.enlargeProxy(proxyId, this.fatten(aabb));
+    else tree.moveProxy(proxyId, this.fatten(aabb));
     this.bufferMove(proxyKey);
     return true;
+  }
+
+  /**
+   * From here until {@link rebuildMoved}, moved kinematic and dynamic proxies keep their place in
+   * their tree, which only grows to hold them (DynamicTree.enlargeProxy): the step moves many
+   * proxies at once, and one rebuild costs less than reinserting each.
+   */
+  deferMoves(): void {
+    this.deferring = true;
+  }
+
+  /** Rebuilds what moved since {@link deferMoves}; moves reinsert their proxies again after. */
+  rebuildMoved(): void {
+    this.deferring = false;
+    this.trees[1].rebuild();
+    this.trees[2].rebuild();
   }
 
   /**

@@ -17,6 +17,12 @@ import type { RayInput } from '../geometry/ray.ts';
 //   "Fast, effective BVH updates for animated scenes"; Box2D v3's b2RotateNodes), accepted only if
 //   it keeps both subtrees height-balanced. Sorted insertion (a row of boxes, a pyramid's floor)
 //   therefore still yields a height of O(log n).
+// - Proxies that move within a step are not reinserted: enlargeProxy sets the leaf's new box and
+//   grows its ancestors to hold it, flagging the path, and rebuild then rebuilds the flagged part
+//   top-down once per step, splitting at the middle of the boxes' centres along the wider axis
+//   (Box2D v3's b2DynamicTree_EnlargeProxy and partial b2DynamicTree_Rebuild, median split). A
+//   falling pile moves most of its proxies every step, and one rebuild over them costs less than
+//   as many removals and insertions with their rotations.
 
 const NULL_NODE = -1;
 const INITIAL_CAPACITY = 16;
@@ -143,6 +149,11 @@ export class DynamicTree {
   heights: Int32Array;
   /** @internal */
   userData: Int32Array;
+  /** 1 on a leaf enlargeProxy moved and on its ancestors, until rebuild; 0 elsewhere. */
+  /** @internal */
+  flags: Uint8Array;
+  /** rebuild's items: the leaves and unchanged subtrees under the flagged nodes. */
+  private items: Int32Array = new Int32Array(INITIAL_STACK);
   /** @internal */
   capacity = 0;
   /** @internal */
@@ -167,6 +178,7 @@ export class DynamicTree {
     this.parent = new Int32Array(0);
     this.heights = new Int32Array(0);
     this.userData = new Int32Array(0);
+    this.flags = new Uint8Array(0);
     this.stack = new Int32Array(INITIAL_STACK);
     this.grow(capacity);
   }
@@ -210,6 +222,142 @@ export class DynamicTree {
     boxes[4 * proxyId + 2] = aabb.maxX;
     boxes[4 * proxyId + 3] = aabb.maxY;
     this.insertLeaf(proxyId);
+  }
+
+  /**
+   * Gives a proxy a new box (m, world frame) without moving it in the tree: its ancestors grow to
+   * hold the box, and the path up is flagged for {@link rebuild}. Queries stay exact meanwhile
+   * (every node still holds its leaves); only the tree's quality waits for the rebuild. Only
+   * enlargements may happen between this and the rebuild (no insertion or removal).
+   */
+  enlargeProxy(proxyId: number, aabb: AABB): void {
+    const boxes = this.boxes;
+    const flags = this.flags;
+    const minX = aabb.minX;
+    const minY = aabb.minY;
+    const maxX = aabb.maxX;
+    const maxY = aabb.maxY;
+    const o = 4 * proxyId;
+    boxes[o] = minX;
+    boxes[o + 1] = minY;
+    boxes[o + 2] = maxX;
+    boxes[o + 3] = maxY;
+    flags[proxyId] = 1;
+    let growing = true;
+    let node = this.parent[proxyId]!;
+    while (node !== NULL_NODE) {
+      if (growing) {
+        const p = 4 * node;
+        growing = false;
+        if (minX < boxes[p]!) {
+          boxes[p] = minX;
+          growing = true;
+        }
+        if (minY < boxes[p + 1]!) {
+          boxes[p + 1] = minY;
+          growing = true;
+        }
+        if (maxX > boxes[p + 2]!) {
+          boxes[p + 2] = maxX;
+          growing = true;
+        }
+        if (maxY > boxes[p + 3]!) {
+          boxes[p + 3] = maxY;
+          growing = true;
+        }
+      } else if (flags[node] === 1) {
+        // Flagged before, and so are its ancestors.
+        break;
+      }
+      flags[node] = 1;
+      node = this.parent[node]!;
+    }
+  }
+
+  /**
+   * Rebuilds every flagged node (see enlargeProxy) top-down over the leaves and unflagged
+   * subtrees below them, and clears the flags. Does nothing when no proxy was enlarged.
+   */
+  rebuild(): void {
+    const root = this.root;
+    if (root === NULL_NODE || this.flags[root] === 0) return;
+    const flags = this.flags;
+    let items = this.items;
+    let count = 0;
+    let stack = this.stack;
+    let top = 0;
+    stack[top++] = root;
+    while (top > 0) {
+      const node = stack[--top]!;
+      if (flags[node] === 0 || this.heights[node] === 0) {
+        flags[node] = 0;
+        if (count === items.length) items = this.items = growInt32(items, 2 * count);
+        items[count++] = node;
+        continue;
+      }
+      if (top + 2 > stack.length) {
+        this.growStack();
+        stack = this.stack;
+      }
+      stack[top++] = this.child1[node]!;
+      stack[top++] = this.child2[node]!;
+      // Its place is taken by one of the nodes the build allocates.
+      this.freeNode(node);
+    }
+    this.root = this.build(0, count, 0);
+    this.parent[this.root] = NULL_NODE;
+  }
+
+  /** Builds a subtree over items[start..end) and returns its root. */
+  private build(start: number, end: number, depth: number): number {
+    const items = this.items;
+    if (end - start === 1) return items[start]!;
+    let split = start + ((end - start) >> 1);
+    // Past a depth no real scene reaches, halves by count: the depth stays logarithmic.
+    if (depth < 64) {
+      const boxes = this.boxes;
+      // Bounds of the items' centres, doubled (min + max), which orders them the same.
+      let loX = Infinity;
+      let loY = Infinity;
+      let hiX = -Infinity;
+      let hiY = -Infinity;
+      for (let k = start; k < end; k++) {
+        const o = 4 * items[k]!;
+        const cx = boxes[o]! + boxes[o + 2]!;
+        const cy = boxes[o + 1]! + boxes[o + 3]!;
+        if (cx < loX) loX = cx;
+        if (cx > hiX) hiX = cx;
+        if (cy < loY) loY = cy;
+        if (cy > hiY) hiY = cy;
+      }
+      const alongX = hiX - loX >= hiY - loY;
+      const pivot = alongX ? 0.5 * (loX + hiX) : 0.5 * (loY + hiY);
+      const axis = alongX ? 0 : 1;
+      let i = start;
+      let j = end - 1;
+      while (i <= j) {
+        const o = 4 * items[i]! + axis;
+        if (boxes[o]! + boxes[o + 2]! < pivot) {
+          i++;
+        } else {
+          const t = items[i]!;
+          items[i] = items[j]!;
+          items[j] = t;
+          j--;
+        }
+      }
+      // All centres on one side (coincident boxes): halve by count.
+      if (i > start && i < end) split = i;
+    }
+    const node = this.allocateNode();
+    const left = this.build(start, split, depth + 1);
+    const right = this.build(split, end, depth + 1);
+    this.child1[node] = left;
+    this.child2[node] = right;
+    this.parent[left] = node;
+    this.parent[right] = node;
+    this.refit(node);
+    return node;
   }
 
   /** The int32 stored with the proxy at creation. */
@@ -390,6 +538,9 @@ export class DynamicTree {
     this.parent = growInt32(this.parent, newCapacity);
     this.heights = growInt32(this.heights, newCapacity);
     this.userData = growInt32(this.userData, newCapacity);
+    const flags = new Uint8Array(newCapacity);
+    flags.set(this.flags);
+    this.flags = flags;
     // Thread the new nodes onto the free list in ascending order, ahead of any older free nodes.
     for (let node = old; node < newCapacity; node++) {
       this.parent[node] = node + 1 < newCapacity ? node + 1 : this.freeList;
@@ -422,6 +573,7 @@ export class DynamicTree {
   }
 
   private freeNode(node: number): void {
+    this.flags[node] = 0;
     this.parent[node] = this.freeList;
     this.heights[node] = -1;
     this.child1[node] = NULL_NODE;

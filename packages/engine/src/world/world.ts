@@ -233,6 +233,7 @@ export class World {
       this.dispatchContactEnds();
     } finally {
       this.locked = false;
+      this.broadPhase.rebuildMoved();
     }
     this.flushPending();
   }
@@ -329,6 +330,7 @@ export class World {
       this.extractJoint(joint);
     } finally {
       this.locked = false;
+      this.broadPhase.rebuildMoved();
     }
     this.flushPending();
   }
@@ -370,9 +372,12 @@ export class World {
         this.settings,
         dt,
       );
+      // The step moves its bodies' proxies together: one tree rebuild after the sweeps.
+      this.broadPhase.deferMoves();
       this.solver.finalizeBodies(dt, this.bounds, this.lastStep, this.settings.enableContinuous);
       this.solveContinuous();
       this.solveBullets();
+      this.broadPhase.rebuildMoved();
       if (this.sensors.shapes.length > 0) this.sensors.update(this.broadPhase, this.shapesById);
       if (this.settings.enableSleep) {
         this.islands.sleepRestingIslands(
@@ -386,6 +391,7 @@ export class World {
       this.dispatchEvents();
     } finally {
       this.locked = false;
+      this.broadPhase.rebuildMoved();
     }
     this.flushPending();
   }

@@ -291,4 +291,76 @@ describe('DynamicTree', () => {
     validate(tree);
     expect(Math.max(...ids)).toBeLessThanOrEqual(maxId);
   });
+
+  it('answers queries like brute force between enlargements and after each rebuild, and rebuilds to a tree as good as insertion', () => {
+    const random = makeRandom(777);
+    const tree = new DynamicTree();
+    const live = new Map<number, AABB>();
+    for (let i = 0; i < 400; i++) {
+      const box = randomBox(random, 50, 2);
+      live.set(tree.createProxy(box, i), box);
+    }
+    const inserted = areaRatio(tree);
+    const ids = [...live.keys()];
+    const check = (): void => {
+      for (let q = 0; q < 10; q++) {
+        const query = randomBox(random, 50, 20);
+        const found: number[] = [];
+        tree.query(query, (proxyId) => {
+          found.push(proxyId);
+          return true;
+        });
+        const expected = [...live].filter(([, box]) => aabbOverlaps(box, query)).map(([id]) => id);
+        expect(found.sort((a, b) => a - b)).toEqual(expected.sort((a, b) => a - b));
+      }
+    };
+    for (let round = 0; round < 20; round++) {
+      // A step: most proxies drift, a few jump across the world.
+      for (const id of ids) {
+        const old = live.get(id)!;
+        const jump = random() < 0.05;
+        const dx = jump ? (random() * 2 - 1) * 80 : (random() * 2 - 1) * 0.5;
+        const dy = jump ? (random() * 2 - 1) * 80 : (random() * 2 - 1) * 0.5;
+        if (random() < 0.6) {
+          const box = new AABB().set(old.minX + dx, old.minY + dy, old.maxX + dx, old.maxY + dy);
+          tree.enlargeProxy(id, box);
+          live.set(id, box);
+        }
+      }
+      // Exact queries while the tree only grew.
+      check();
+      tree.rebuild();
+      validate(tree);
+      check();
+      expect(tree.proxyCount).toBe(live.size);
+    }
+    // The rebuilt tree is balanced and better than incremental insertion (SAH cost ratio; 20 vs 36).
+    expect(height(tree)).toBeLessThanOrEqual(20);
+    expect(areaRatio(tree)).toBeLessThan(inserted);
+    // Every flag is cleared: a second rebuild leaves the tree as it is.
+    const before = exportTreeState(tree);
+    tree.rebuild();
+    expect(exportTreeState(tree)).toEqual(before);
+  });
+
+  it('rebuilds a tree of one enlarged leaf, and of coincident boxes, without losing a proxy', () => {
+    const tree = new DynamicTree();
+    const only = tree.createProxy(new AABB().set(0, 0, 1, 1), 1);
+    tree.enlargeProxy(only, new AABB().set(5, 5, 6, 6));
+    tree.rebuild();
+    validate(tree);
+    expect(tree.getMinX(only)).toBe(5);
+    const same: number[] = [only];
+    for (let i = 0; i < 50; i++) same.push(tree.createProxy(new AABB().set(5, 5, 6, 6), i));
+    for (const id of same) tree.enlargeProxy(id, new AABB().set(2, 2, 3, 3));
+    tree.rebuild();
+    validate(tree);
+    let found = 0;
+    tree.query(new AABB().set(2.5, 2.5, 2.6, 2.6), () => {
+      found++;
+      return true;
+    });
+    expect(found).toBe(51);
+    expect(height(tree)).toBeLessThanOrEqual(8);
+  });
 });
