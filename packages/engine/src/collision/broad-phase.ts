@@ -64,8 +64,13 @@ export class BroadPhase {
   private userQuery: TreeQueryCallback | null = null;
   private userRayCast: TreeRayCastCallback | null = null;
   private isQueryStopped = false;
-  /** See deferMoves. */
-  private deferring = false;
+  /**
+   * While true, moved kinematic and dynamic proxies keep their place in their tree, which only
+   * grows to hold them (DynamicTree.enlargeProxy), until {@link rebuildMoved}: a step moves many
+   * proxies at once, and one rebuild costs less than reinserting each. Nothing may be inserted
+   * into or removed from those trees meanwhile.
+   */
+  deferring = false;
   private readonly scratchBox = new AABB();
 
   private readonly pairQueryCallback: TreeQueryCallback = (proxyId, shapeId) =>
@@ -131,23 +136,14 @@ export class BroadPhase {
     ) {
       return false;
     }
-    if (type === STATIC) tree.moveProxy(proxyId, aabb);
-    else if (this.deferring) tree.enlargeProxy(proxyId, this.fatten(aabb));
-    else tree.moveProxy(proxyId, this.fatten(aabb));
+    const box = type === STATIC ? aabb : this.fatten(aabb);
+    if (this.deferring && type !== STATIC) tree.enlargeProxy(proxyId, box);
+    else tree.moveProxy(proxyId, box);
     this.bufferMove(proxyKey);
     return true;
   }
 
-  /**
-   * From here until {@link rebuildMoved}, moved kinematic and dynamic proxies keep their place in
-   * their tree, which only grows to hold them (DynamicTree.enlargeProxy): the step moves many
-   * proxies at once, and one rebuild costs less than reinserting each.
-   */
-  deferMoves(): void {
-    this.deferring = true;
-  }
-
-  /** Rebuilds what moved since {@link deferMoves}; moves reinsert their proxies again after. */
+  /** Rebuilds what moved since `deferring` was set, and clears it. */
   rebuildMoved(): void {
     this.deferring = false;
     this.trees[1].rebuild();

@@ -11,12 +11,11 @@ import type { RayInput } from '../geometry/ray.ts';
 //   sum of internal-node perimeters: in 2D the perimeter plays the role of surface area), found
 //   by branch and bound (Bittner, Hapala and Havran 2015, "Fast insertion-based optimization of
 //   bounding volume hierarchies"; Box2D v3's b2FindBestSibling applies the same bound).
-// - On the way back up from an insertion or removal, each ancestor is rotated: a height-driven
-//   rotation when one child is more than one level taller than the other (as Box2D v2's b2Balance),
-//   otherwise the child/grandchild swap that most reduces the perimeter sum (Kopta et al. 2012,
-//   "Fast, effective BVH updates for animated scenes"; Box2D v3's b2RotateNodes), accepted only if
-//   it keeps both subtrees height-balanced. Sorted insertion (a row of boxes, a pyramid's floor)
-//   therefore still yields a height of O(log n).
+// - On the way back up from an insertion or removal, each ancestor is balanced: when one child is
+//   more than one level taller than the other, the taller one is promoted (Box2D v2's b2Balance).
+//   Sorted insertion (a row of boxes, a pyramid's floor) therefore still yields a height of
+//   O(log n). The perimeter-reducing rotations of Kopta et al. 2012 (Box2D v3's b2RotateNodes)
+//   were measured and dropped: with the per-step rebuild below they changed no scene's time.
 // - Proxies that move within a step are not reinserted: enlargeProxy sets the leaf's new box and
 //   grows its ancestors to hold it, flagging the path, and rebuild then rebuilds the flagged part
 //   top-down once per step, splitting at the middle of the boxes' centres along the wider axis
@@ -112,19 +111,17 @@ export function checkTreeState(state: TreeState): string | null {
   return null;
 }
 
-/** Perimeter of the union of two boxes (m): the SAH cost of a node holding both. */
+/** Perimeter of the union of node box `o` (an offset into `boxes`) and a box (m). */
 function unionPerimeter(
-  aMinX: number,
-  aMinY: number,
-  aMaxX: number,
-  aMaxY: number,
-  bMinX: number,
-  bMinY: number,
-  bMaxX: number,
-  bMaxY: number,
+  boxes: Float64Array,
+  o: number,
+  minX: number,
+  minY: number,
+  maxX: number,
+  maxY: number,
 ): number {
-  const wx = (aMaxX > bMaxX ? aMaxX : bMaxX) - (aMinX < bMinX ? aMinX : bMinX);
-  const wy = (aMaxY > bMaxY ? aMaxY : bMaxY) - (aMinY < bMinY ? aMinY : bMinY);
+  const wx = Math.max(boxes[o + 2]!, maxX) - Math.min(boxes[o]!, minX);
+  const wy = Math.max(boxes[o + 3]!, maxY) - Math.min(boxes[o + 1]!, minY);
   return 2 * (wx + wy);
 }
 
@@ -149,7 +146,7 @@ export class DynamicTree {
   heights: Int32Array;
   /** @internal */
   userData: Int32Array;
-  /** 1 on a leaf enlargeProxy moved and on its ancestors, until rebuild; 0 elsewhere. */
+  /** 1 on the ancestors of a leaf enlargeProxy moved, until rebuild; 0 elsewhere. */
   /** @internal */
   flags: Uint8Array;
   /** rebuild's items: the leaves and unchanged subtrees under the flagged nodes. */
@@ -164,8 +161,6 @@ export class DynamicTree {
   leafCount = 0;
   /** Traversal stack shared by query and rayCast; `stackTop` lets a callback query again. */
   private stack: Int32Array;
-  /** pairPerimeter's result (a double from the start, so V8 keeps the field unboxed). */
-  private sum = 0.5;
   /** @internal */
   stackTop = 0;
 
@@ -242,7 +237,6 @@ export class DynamicTree {
     boxes[o + 1] = minY;
     boxes[o + 2] = maxX;
     boxes[o + 3] = maxY;
-    flags[proxyId] = 1;
     let growing = true;
     let node = this.parent[proxyId]!;
     while (node !== NULL_NODE) {
@@ -290,7 +284,6 @@ export class DynamicTree {
     while (top > 0) {
       const node = stack[--top]!;
       if (flags[node] === 0 || this.heights[node] === 0) {
-        flags[node] = 0;
         if (count === items.length) items = this.items = growInt32(items, 2 * count);
         items[count++] = node;
         continue;
@@ -538,9 +531,8 @@ export class DynamicTree {
     this.parent = growInt32(this.parent, newCapacity);
     this.heights = growInt32(this.heights, newCapacity);
     this.userData = growInt32(this.userData, newCapacity);
-    const flags = new Uint8Array(newCapacity);
-    flags.set(this.flags);
-    this.flags = flags;
+    // No flag is pending when the tree grows: nothing is inserted between enlargeProxy and rebuild.
+    this.flags = new Uint8Array(newCapacity);
     // Thread the new nodes onto the free list in ascending order, ahead of any older free nodes.
     for (let node = old; node < newCapacity; node++) {
       this.parent[node] = node + 1 < newCapacity ? node + 1 : this.freeList;
@@ -605,16 +597,7 @@ export class DynamicTree {
     let node = this.root;
     const o = 4 * node;
     let nodePerimeter = this.perimeter(node);
-    let direct = unionPerimeter(
-      boxes[o]!,
-      boxes[o + 1]!,
-      boxes[o + 2]!,
-      boxes[o + 3]!,
-      lMinX,
-      lMinY,
-      lMaxX,
-      lMaxY,
-    );
+    let direct = unionPerimeter(boxes, o, lMinX, lMinY, lMaxX, lMaxY);
     let inherited = 0;
     let best = node;
     let bestCost = direct;
@@ -628,26 +611,8 @@ export class DynamicTree {
       const b = this.child2[node]!;
       const ao = 4 * a;
       const bo = 4 * b;
-      const directA = unionPerimeter(
-        boxes[ao]!,
-        boxes[ao + 1]!,
-        boxes[ao + 2]!,
-        boxes[ao + 3]!,
-        lMinX,
-        lMinY,
-        lMaxX,
-        lMaxY,
-      );
-      const directB = unionPerimeter(
-        boxes[bo]!,
-        boxes[bo + 1]!,
-        boxes[bo + 2]!,
-        boxes[bo + 3]!,
-        lMinX,
-        lMinY,
-        lMaxX,
-        lMaxY,
-      );
+      const directA = unionPerimeter(boxes, ao, lMinX, lMinY, lMaxX, lMaxY);
+      const directB = unionPerimeter(boxes, bo, lMinX, lMinY, lMaxX, lMaxY);
       const costA = inherited + directA;
       const costB = inherited + directB;
       if (costA < bestCost) {
@@ -713,7 +678,7 @@ export class DynamicTree {
     } else {
       this.child2[oldParent] = newParent;
     }
-    this.refitAndRotateFrom(newParent);
+    this.refitAndBalanceFrom(newParent);
   }
 
   private removeLeaf(leaf: number): void {
@@ -738,15 +703,15 @@ export class DynamicTree {
       this.child2[grandParent] = sibling;
     }
     this.parent[sibling] = grandParent;
-    this.refitAndRotateFrom(grandParent);
+    this.refitAndBalanceFrom(grandParent);
   }
 
-  /** Recomputes boxes and heights from `node` to the root, rotating each ancestor on the way. */
-  private refitAndRotateFrom(node: number): void {
+  /** Recomputes boxes and heights from `node` to the root, balancing each ancestor on the way. */
+  private refitAndBalanceFrom(node: number): void {
     let index = node;
     while (index !== NULL_NODE) {
       this.refit(index);
-      index = this.rotate(index);
+      index = this.balance(index);
       index = this.parent[index]!;
     }
   }
@@ -769,151 +734,16 @@ export class DynamicTree {
   }
 
   /**
-   * Rotates at internal node `a` (already refitted) and returns the node now at its place.
-   * Height imbalance greater than one promotes the taller child (Box2D v2's AVL-like
-   * balance); otherwise one child is swapped with a grandchild, or two grandchildren are
-   * swapped, when that lowers the sum of the perimeters of `a`'s children without
-   * unbalancing them.
+   * Balances internal node `a` (already refitted) and returns the node now at its place: a child
+   * more than one level taller than its sibling is promoted (Box2D v2's AVL-like balance).
    */
-  private rotate(a: number): number {
+  private balance(a: number): number {
     const b = this.child1[a]!;
     const c = this.child2[a]!;
-    const heights = this.heights;
-    const hb = heights[b]!;
-    const hc = heights[c]!;
-    if (hc - hb > 1) {
-      return this.promote(a, c, b);
-    }
-    if (hb - hc > 1) {
-      return this.promote(a, b, c);
-    }
-    if (hb === 0 && hc === 0) {
-      return a;
-    }
-
-    // Candidate swaps, scored by the change in total internal perimeter (negative is better).
-    // 1: b <-> child of c; 2: c <-> child of b; 3: grandchild of b <-> grandchild of c.
-    let bestGain = 0;
-    let bestKind = 0;
-    let bestFirst = NULL_NODE;
-    let bestSecond = NULL_NODE;
-
-    if (hc > 0) {
-      const f = this.child1[c]!;
-      const g = this.child2[c]!;
-      const perimeterC = this.perimeter(c);
-      // Swap b with f: c becomes b ∪ g.
-      if (
-        Math.abs(hb - heights[g]!) <= 1 &&
-        Math.abs(heights[f]! - (1 + Math.max(hb, heights[g]!))) <= 1
-      ) {
-        this.pairPerimeter(b, g);
-        const gain = this.sum - perimeterC;
-        if (gain < bestGain) {
-          bestGain = gain;
-          bestKind = 1;
-          bestFirst = b;
-          bestSecond = f;
-        }
-      }
-      if (
-        Math.abs(hb - heights[f]!) <= 1 &&
-        Math.abs(heights[g]! - (1 + Math.max(hb, heights[f]!))) <= 1
-      ) {
-        this.pairPerimeter(b, f);
-        const gain = this.sum - perimeterC;
-        if (gain < bestGain) {
-          bestGain = gain;
-          bestKind = 1;
-          bestFirst = b;
-          bestSecond = g;
-        }
-      }
-    }
-    if (hb > 0) {
-      const d = this.child1[b]!;
-      const e = this.child2[b]!;
-      const perimeterB = this.perimeter(b);
-      if (
-        Math.abs(hc - heights[e]!) <= 1 &&
-        Math.abs(heights[d]! - (1 + Math.max(hc, heights[e]!))) <= 1
-      ) {
-        this.pairPerimeter(c, e);
-        const gain = this.sum - perimeterB;
-        if (gain < bestGain) {
-          bestGain = gain;
-          bestKind = 1;
-          bestFirst = c;
-          bestSecond = d;
-        }
-      }
-      if (
-        Math.abs(hc - heights[d]!) <= 1 &&
-        Math.abs(heights[e]! - (1 + Math.max(hc, heights[d]!))) <= 1
-      ) {
-        this.pairPerimeter(c, d);
-        const gain = this.sum - perimeterB;
-        if (gain < bestGain) {
-          bestGain = gain;
-          bestKind = 1;
-          bestFirst = c;
-          bestSecond = e;
-        }
-      }
-      if (hc > 0) {
-        const f = this.child1[c]!;
-        const g = this.child2[c]!;
-        const base = perimeterB + this.perimeter(c);
-        // Swap d with f: b = f ∪ e, c = d ∪ g; or d with g: b = g ∪ e, c = f ∪ d.
-        if (
-          Math.abs(heights[f]! - heights[e]!) <= 1 &&
-          Math.abs(heights[d]! - heights[g]!) <= 1 &&
-          Math.abs(Math.max(heights[f]!, heights[e]!) - Math.max(heights[d]!, heights[g]!)) <= 1
-        ) {
-          this.pairPerimeter(f, e);
-          let gain = this.sum - base;
-          this.pairPerimeter(d, g);
-          gain += this.sum;
-          if (gain < bestGain) {
-            bestGain = gain;
-            bestKind = 2;
-            bestFirst = d;
-            bestSecond = f;
-          }
-        }
-        if (
-          Math.abs(heights[g]! - heights[e]!) <= 1 &&
-          Math.abs(heights[d]! - heights[f]!) <= 1 &&
-          Math.abs(Math.max(heights[g]!, heights[e]!) - Math.max(heights[d]!, heights[f]!)) <= 1
-        ) {
-          this.pairPerimeter(g, e);
-          let gain = this.sum - base;
-          this.pairPerimeter(d, f);
-          gain += this.sum;
-          if (gain < bestGain) {
-            bestKind = 2;
-            bestFirst = d;
-            bestSecond = g;
-          }
-        }
-      }
-    }
-    if (bestKind === 0) {
-      return a;
-    }
-    // Swap the two nodes between their parents, then refit the parents bottom-up.
-    const parentFirst = this.parent[bestFirst]!;
-    const parentSecond = this.parent[bestSecond]!;
-    this.replaceChild(parentFirst, bestFirst, bestSecond);
-    this.replaceChild(parentSecond, bestSecond, bestFirst);
-    if (bestKind === 1) {
-      // bestFirst was a child of a and moves down under parentSecond.
-      this.refit(parentSecond);
-    } else {
-      this.refit(parentFirst);
-      this.refit(parentSecond);
-    }
-    this.refit(a);
+    const hb = this.heights[b]!;
+    const hc = this.heights[c]!;
+    if (hc - hb > 1) return this.promote(a, c, b);
+    if (hb - hc > 1) return this.promote(a, b, c);
     return a;
   }
 
@@ -947,31 +777,6 @@ export class DynamicTree {
     this.refit(a);
     this.refit(tall);
     return tall;
-  }
-
-  private replaceChild(parentNode: number, oldChild: number, newChild: number): void {
-    if (this.child1[parentNode] === oldChild) {
-      this.child1[parentNode] = newChild;
-    } else {
-      this.child2[parentNode] = newChild;
-    }
-    this.parent[newChild] = parentNode;
-  }
-
-  /**
-   * Puts the perimeter of the union of p's and q's boxes in `sum`. Written out rather than
-   * calling unionPerimeter: eight fractional arguments of a call V8 does not inline are eight
-   * boxed numbers, and tree rotations run in the step; the result goes through a field (a
-   * double field is written in place) rather than a return value for the same reason.
-   */
-  private pairPerimeter(p: number, q: number): void {
-    const boxes = this.boxes;
-    const po = 4 * p;
-    const qo = 4 * q;
-    const width = Math.max(boxes[po + 2]!, boxes[qo + 2]!) - Math.min(boxes[po]!, boxes[qo]!);
-    const height =
-      Math.max(boxes[po + 3]!, boxes[qo + 3]!) - Math.min(boxes[po + 1]!, boxes[qo + 1]!);
-    this.sum = 2 * (width + height);
   }
 }
 

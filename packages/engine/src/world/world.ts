@@ -372,12 +372,12 @@ export class World {
         this.settings,
         dt,
       );
-      // The step moves its bodies' proxies together: one tree rebuild after the sweeps.
-      this.broadPhase.deferMoves();
+      // The step moves its bodies' proxies together: their trees only grow until the rebuild
+      // below (BroadPhase.deferring), which queries may precede, since grown trees stay exact.
+      this.broadPhase.deferring = true;
       this.solver.finalizeBodies(dt, this.bounds, this.lastStep, this.settings.enableContinuous);
       this.solveContinuous();
       this.solveBullets();
-      this.broadPhase.rebuildMoved();
       if (this.sensors.shapes.length > 0) this.sensors.update(this.broadPhase, this.shapesById);
       if (this.settings.enableSleep) {
         this.islands.sleepRestingIslands(
