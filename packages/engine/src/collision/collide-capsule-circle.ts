@@ -31,7 +31,7 @@ export function collideCapsuleAndCircle(
   const qy = a.y1 + t * ey;
   const dx = cx - qx;
   const dy = cy - qy;
-  const distance = Math.hypot(dx, dy);
+  const distance = Math.sqrt(dx * dx + dy * dy);
   const separation = distance - a.radius - b.radius;
   if (separation >= speculativeDistance) {
     out.pointCount = 0;
@@ -43,7 +43,7 @@ export function collideCapsuleAndCircle(
     nx = dx / distance;
     ny = dy / distance;
   } else {
-    const length = Math.hypot(ex, ey);
+    const length = Math.sqrt(ex * ex + ey * ey);
     nx = ey / length;
     ny = -ex / length;
   }

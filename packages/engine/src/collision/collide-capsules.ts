@@ -80,7 +80,7 @@ export function collideCapsules(
   const closest2Y = p2y + f2 * d2y;
   const gapX = closest2X - closest1X;
   const gapY = closest2Y - closest1Y;
-  const distance = Math.hypot(gapX, gapY);
+  const distance = Math.sqrt(gapX * gapX + gapY * gapY);
   const rA = a.radius;
   const rB = b.radius;
   const radius = rA + rB;

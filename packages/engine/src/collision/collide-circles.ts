@@ -23,7 +23,7 @@ export function collideCircles(
   const by = xfB.s * b.centerX + xfB.c * b.centerY + xfB.y - xfA.y;
   const dx = bx - ax;
   const dy = by - ay;
-  const distance = Math.hypot(dx, dy);
+  const distance = Math.sqrt(dx * dx + dy * dy);
   const separation = distance - a.radius - b.radius;
   if (separation >= speculativeDistance) {
     out.pointCount = 0;

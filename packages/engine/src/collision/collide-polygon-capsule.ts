@@ -16,7 +16,7 @@ const capsulePolygon = createEmptyPolygon();
 export function capsuleAsPolygon(capsule: Capsule, out: Polygon): Polygon {
   const ex = capsule.x2 - capsule.x1;
   const ey = capsule.y2 - capsule.y1;
-  const length = Math.hypot(ex, ey);
+  const length = Math.sqrt(ex * ex + ey * ey);
   const nx = ey / length;
   const ny = -ex / length;
   out.count = 2;

@@ -67,7 +67,7 @@ export function collidePolygonAndCircle(
     surfaceY = u1 < 0 ? v1y : v2y;
     const dx = cx - surfaceX;
     const dy = cy - surfaceY;
-    const distance = Math.hypot(dx, dy);
+    const distance = Math.sqrt(dx * dx + dy * dy);
     separation = distance - rA - rB;
     if (separation >= speculativeDistance) {
       out.pointCount = 0;

@@ -170,7 +170,7 @@ export function collidePolygons(
         const p1y = v11y + f1 * d1y;
         const gapX = p2x - p1x;
         const gapY = p2y - p1y;
-        const distance = Math.hypot(gapX, gapY);
+        const distance = Math.sqrt(gapX * gapX + gapY * gapY);
         const separation = distance - radius;
         if (separation >= speculativeDistance) {
           out.pointCount = 0;

@@ -29,7 +29,7 @@ export function collideSegmentAndCircle(
   const cy = -xfA.s * wx + xfA.c * wy;
   const ex = a.x2 - a.x1;
   const ey = a.y2 - a.y1;
-  const length = Math.hypot(ex, ey);
+  const length = Math.sqrt(ex * ex + ey * ey);
   // Positive normal (e.y, -e.x) / |e|, as documented on Segment.
   const faceX = ey / length;
   const faceY = -ex / length;
@@ -44,7 +44,7 @@ export function collideSegmentAndCircle(
   const qy = a.y1 + t * ey;
   const dx = cx - qx;
   const dy = cy - qy;
-  const distance = Math.hypot(dx, dy);
+  const distance = Math.sqrt(dx * dx + dy * dy);
   const separation = distance - b.radius;
   if (separation >= speculativeDistance) {
     out.pointCount = 0;

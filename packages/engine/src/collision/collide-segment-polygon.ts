@@ -30,7 +30,7 @@ export function collideSegmentAndPolygon(
   const speculativeDistance = out.speculativeDistance;
   const ex = a.x2 - a.x1;
   const ey = a.y2 - a.y1;
-  const length = Math.hypot(ex, ey);
+  const length = Math.sqrt(ex * ex + ey * ey);
   const nx = ey / length;
   const ny = -ex / length;
   if (!a.oneSided) {

@@ -111,7 +111,10 @@ export function checkTreeState(state: TreeState): string | null {
   return null;
 }
 
-/** Perimeter of the union of node box `o` (an offset into `boxes`) and a box (m). */
+/**
+ * Half the perimeter of the union of node box `o` (an offset into `boxes`) and a box (m). The tree
+ * compares half-perimeters throughout: halving every cost orders the candidates exactly the same.
+ */
 function unionPerimeter(
   boxes: Float64Array,
   o: number,
@@ -122,7 +125,7 @@ function unionPerimeter(
 ): number {
   const wx = Math.max(boxes[o + 2]!, maxX) - Math.min(boxes[o]!, minX);
   const wy = Math.max(boxes[o + 3]!, maxY) - Math.min(boxes[o + 1]!, minY);
-  return 2 * (wx + wy);
+  return wx + wy;
 }
 
 /**
@@ -259,9 +262,6 @@ export class DynamicTree {
           boxes[p + 3] = maxY;
           growing = true;
         }
-      } else if (flags[node] === 1) {
-        // Flagged before, and so are its ancestors.
-        break;
       }
       flags[node] = 1;
       node = this.parent[node]!;
@@ -515,10 +515,11 @@ export class DynamicTree {
     }
   }
 
+  /** Half the node box's perimeter (see unionPerimeter). */
   private perimeter(node: number): number {
     const o = 4 * node;
     const boxes = this.boxes;
-    return 2 * (boxes[o + 2]! - boxes[o]! + (boxes[o + 3]! - boxes[o + 1]!));
+    return boxes[o + 2]! - boxes[o]! + (boxes[o + 3]! - boxes[o + 1]!);
   }
 
   private grow(newCapacity: number): void {
@@ -590,7 +591,7 @@ export class DynamicTree {
     const lMinY = boxes[lo + 1]!;
     const lMaxX = boxes[lo + 2]!;
     const lMaxY = boxes[lo + 3]!;
-    const leafPerimeter = 2 * (lMaxX - lMinX + (lMaxY - lMinY));
+    const leafPerimeter = lMaxX - lMinX + (lMaxY - lMinY);
     const leafCenterX = lMinX + lMaxX;
     const leafCenterY = lMinY + lMaxY;
 

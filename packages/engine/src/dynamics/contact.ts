@@ -245,14 +245,14 @@ export class Contact {
     // The solver pushes particles along their line of centres (see contact-solver.ts). Read
     // here, not when the contact starts, because adding a shape can move a centre of mass.
     const pairKind = this.pairKind;
-    if (pairKind === PAIR_CIRCLES) data[base + RADIUS_A] = centredCircleRadius(this.shapeA);
+    if (pairKind === PAIR_CIRCLES) writeCentredCircleRadius(data, base + RADIUS_A, this.shapeA);
     if (
       pairKind === PAIR_CIRCLES ||
       pairKind === PAIR_POLYGON_CIRCLE ||
       pairKind === PAIR_SEGMENT_CIRCLE ||
       pairKind === PAIR_CAPSULE_CIRCLE
     ) {
-      data[base + RADIUS_B] = centredCircleRadius(this.shapeB);
+      writeCentredCircleRadius(data, base + RADIUS_B, this.shapeB);
     }
 
     // Carry the impulses of last step's points over to the new points with the same feature.
@@ -365,14 +365,16 @@ export class Contact {
   }
 }
 
-/** Radius of a circle shape centred on its body's centre of mass, else 0. */
-function centredCircleRadius(shape: Shape): number {
+/** Writes the radius of a circle shape centred on its body's centre of mass, else 0, to data[at]. */
+function writeCentredCircleRadius(data: Float64Array, at: number, shape: Shape): void {
   const g = shape.geometry;
   const body = shape.body;
-  if (g.kind !== 'circle' || g.centerX !== body.localCenterX || g.centerY !== body.localCenterY) {
-    return 0;
-  }
-  return g.radius;
+  // Written in place rather than returned: V8 boxes a fractional return value of a call it does
+  // not inline, and this runs per circle contact per step.
+  data[at] =
+    g.kind !== 'circle' || g.centerX !== body.localCenterX || g.centerY !== body.localCenterY
+      ? 0
+      : g.radius;
 }
 
 /** The narrow phase's output before it is copied into a contact's slot (one step at a time). */
