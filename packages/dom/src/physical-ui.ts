@@ -327,6 +327,7 @@ export class PhysicalUI {
       this.frame.height / ppm,
       this.material.friction,
     );
+    const movedIn: Item[] = [];
     for (let i = 0; i < this.items.length; i++) {
       const item = this.items[i]!;
       const slot = slots[i]!;
@@ -342,9 +343,10 @@ export class PhysicalUI {
       else if (moved && item.state === 'layout') {
         item.body.position = { x: slot.centerX / ppm, y: slot.centerY / ppm };
       }
-      if (item.state !== 'layout') this.keepInside(item);
+      if (item.state !== 'layout' && this.keepInside(item)) movedIn.push(item);
       if (item.state === 'layout') item.shown = true; // rewrite: '' after the slot moved
     }
+    for (const item of movedIn) this.liftClear(item);
     this.loop.invalidate();
   }
 
@@ -484,8 +486,11 @@ export class PhysicalUI {
     item.element.dataset['physical'] = state;
   }
 
-  /** A body left outside the walls (the container shrank) goes back in, at the nearest place. */
-  private keepInside(item: Item): void {
+  /**
+   * A body left outside the walls (the container shrank) goes back in, at the nearest place.
+   * Returns true if it moved.
+   */
+  private keepInside(item: Item): boolean {
     const ppm = this.ppm;
     const halfW = item.slot.width / 2 / ppm;
     const halfH = item.slot.height / 2 / ppm;
@@ -497,11 +502,40 @@ export class PhysicalUI {
     const marginY = Math.min(reach, height / 2);
     const cx = Math.min(Math.max(x, marginX), width - marginX);
     const cy = Math.min(Math.max(y, marginY), height - marginY);
-    if (cx !== x || cy !== y) {
-      item.body.position = { x: cx, y: cy };
-      item.prevX = cx;
-      item.prevY = cy;
-    }
+    if (cx === x && cy === y) return false;
+    item.body.position = { x: cx, y: cy };
+    item.prevX = cx;
+    item.prevY = cy;
+    return true;
+  }
+
+  /**
+   * Lifts a body keepInside moved until its box clears every other element's (boxes unrotated),
+   * or it reaches the top. Bodies moved in from a shrinking container's edge land on the same
+   * line, deep inside one another; pushed apart at the solver's speed cap, one can be pressed
+   * into a wall. Lifted clear, they only fall back onto one another.
+   */
+  private liftClear(item: Item): void {
+    const ppm = this.ppm;
+    const halfW = item.slot.width / 2 / ppm;
+    const halfH = item.slot.height / 2 / ppm;
+    const { x } = item.body.position;
+    let y = item.body.position.y;
+    const top = Math.min(Math.hypot(halfW, halfH), this.frame.height / ppm / 2);
+    const overlaps = (): boolean =>
+      this.items.some((other) => {
+        if (other === item) return false;
+        const at = other.body.position;
+        return (
+          Math.abs(at.x - x) < halfW + other.slot.width / 2 / ppm &&
+          Math.abs(at.y - y) < halfH + other.slot.height / 2 / ppm
+        );
+      });
+    const start = y;
+    while (y > top && overlaps()) y = Math.max(top, y - halfH / 2);
+    if (y === start) return;
+    item.body.position = { x, y };
+    item.prevY = y;
   }
 
   private elementAt(target: EventTarget | null): HTMLElement | null {
