@@ -11,14 +11,11 @@ import type { RayInput } from '../geometry/ray.ts';
 //   sum of internal-node perimeters: in 2D the perimeter plays the role of surface area), found
 //   by branch and bound (Bittner, Hapala and Havran 2015, "Fast insertion-based optimization of
 //   bounding volume hierarchies"; Box2D v3's b2FindBestSibling applies the same bound).
-// - On the way back up from an insertion or removal, each ancestor is rotated: a height-driven
-//   rotation when one child is more than one level taller than the other (as Box2D v2's b2Balance),
-//   otherwise the child/grandchild swap that most reduces the perimeter sum (Kopta et al. 2012,
-//   "Fast, effective BVH updates for animated scenes"; Box2D v3's b2RotateNodes), accepted only if
-//   it keeps both subtrees height-balanced. Sorted insertion (a row of boxes, a pyramid's floor)
-//   therefore still yields a height of O(log n). Height balance alone gave the steps the same
-//   speed, but a different tree order left a shrunk DOM container's element sunk into its floor
-//   (e2e/dom/layout.spec.ts): the rotations stay until that squeeze is solved in any order.
+// - On the way back up from an insertion or removal, each ancestor is balanced: when one child is
+//   more than one level taller than the other, the taller one is promoted (Box2D v2's b2Balance).
+//   Sorted insertion (a row of boxes, a pyramid's floor) therefore still yields a height of
+//   O(log n). The perimeter-reducing rotations of Kopta et al. 2012 (Box2D v3's b2RotateNodes)
+//   were measured and dropped: with the per-step rebuild below they changed no scene's time.
 // - Proxies that move within a step are not reinserted: enlargeProxy sets the leaf's new box and
 //   grows its ancestors to hold it, flagging the path, and rebuild then rebuilds the flagged part
 //   top-down once per step, splitting at the middle of the boxes' centres along the wider axis
@@ -167,8 +164,6 @@ export class DynamicTree {
   leafCount = 0;
   /** Traversal stack shared by query and rayCast; `stackTop` lets a callback query again. */
   private stack: Int32Array;
-  /** pairPerimeter's result (a double from the start, so V8 keeps the field unboxed). */
-  private sum = 0.5;
   /** @internal */
   stackTop = 0;
 
@@ -684,7 +679,7 @@ export class DynamicTree {
     } else {
       this.child2[oldParent] = newParent;
     }
-    this.refitAndRotateFrom(newParent);
+    this.refitAndBalanceFrom(newParent);
   }
 
   private removeLeaf(leaf: number): void {
@@ -709,15 +704,15 @@ export class DynamicTree {
       this.child2[grandParent] = sibling;
     }
     this.parent[sibling] = grandParent;
-    this.refitAndRotateFrom(grandParent);
+    this.refitAndBalanceFrom(grandParent);
   }
 
-  /** Recomputes boxes and heights from `node` to the root, rotating each ancestor on the way. */
-  private refitAndRotateFrom(node: number): void {
+  /** Recomputes boxes and heights from `node` to the root, balancing each ancestor on the way. */
+  private refitAndBalanceFrom(node: number): void {
     let index = node;
     while (index !== NULL_NODE) {
       this.refit(index);
-      index = this.rotate(index);
+      index = this.balance(index);
       index = this.parent[index]!;
     }
   }
@@ -740,151 +735,16 @@ export class DynamicTree {
   }
 
   /**
-   * Rotates at internal node `a` (already refitted) and returns the node now at its place.
-   * Height imbalance greater than one promotes the taller child (Box2D v2's AVL-like
-   * balance); otherwise one child is swapped with a grandchild, or two grandchildren are
-   * swapped, when that lowers the sum of the perimeters of `a`'s children without
-   * unbalancing them.
+   * Balances internal node `a` (already refitted) and returns the node now at its place: a child
+   * more than one level taller than its sibling is promoted (Box2D v2's AVL-like balance).
    */
-  private rotate(a: number): number {
+  private balance(a: number): number {
     const b = this.child1[a]!;
     const c = this.child2[a]!;
-    const heights = this.heights;
-    const hb = heights[b]!;
-    const hc = heights[c]!;
-    if (hc - hb > 1) {
-      return this.promote(a, c, b);
-    }
-    if (hb - hc > 1) {
-      return this.promote(a, b, c);
-    }
-    if (hb === 0 && hc === 0) {
-      return a;
-    }
-
-    // Candidate swaps, scored by the change in total internal perimeter (negative is better).
-    // 1: b <-> child of c; 2: c <-> child of b; 3: grandchild of b <-> grandchild of c.
-    let bestGain = 0;
-    let bestKind = 0;
-    let bestFirst = NULL_NODE;
-    let bestSecond = NULL_NODE;
-
-    if (hc > 0) {
-      const f = this.child1[c]!;
-      const g = this.child2[c]!;
-      const perimeterC = this.perimeter(c);
-      // Swap b with f: c becomes b ∪ g.
-      if (
-        Math.abs(hb - heights[g]!) <= 1 &&
-        Math.abs(heights[f]! - (1 + Math.max(hb, heights[g]!))) <= 1
-      ) {
-        this.pairPerimeter(b, g);
-        const gain = this.sum - perimeterC;
-        if (gain < bestGain) {
-          bestGain = gain;
-          bestKind = 1;
-          bestFirst = b;
-          bestSecond = f;
-        }
-      }
-      if (
-        Math.abs(hb - heights[f]!) <= 1 &&
-        Math.abs(heights[g]! - (1 + Math.max(hb, heights[f]!))) <= 1
-      ) {
-        this.pairPerimeter(b, f);
-        const gain = this.sum - perimeterC;
-        if (gain < bestGain) {
-          bestGain = gain;
-          bestKind = 1;
-          bestFirst = b;
-          bestSecond = g;
-        }
-      }
-    }
-    if (hb > 0) {
-      const d = this.child1[b]!;
-      const e = this.child2[b]!;
-      const perimeterB = this.perimeter(b);
-      if (
-        Math.abs(hc - heights[e]!) <= 1 &&
-        Math.abs(heights[d]! - (1 + Math.max(hc, heights[e]!))) <= 1
-      ) {
-        this.pairPerimeter(c, e);
-        const gain = this.sum - perimeterB;
-        if (gain < bestGain) {
-          bestGain = gain;
-          bestKind = 1;
-          bestFirst = c;
-          bestSecond = d;
-        }
-      }
-      if (
-        Math.abs(hc - heights[d]!) <= 1 &&
-        Math.abs(heights[e]! - (1 + Math.max(hc, heights[d]!))) <= 1
-      ) {
-        this.pairPerimeter(c, d);
-        const gain = this.sum - perimeterB;
-        if (gain < bestGain) {
-          bestGain = gain;
-          bestKind = 1;
-          bestFirst = c;
-          bestSecond = e;
-        }
-      }
-      if (hc > 0) {
-        const f = this.child1[c]!;
-        const g = this.child2[c]!;
-        const base = perimeterB + this.perimeter(c);
-        // Swap d with f: b = f ∪ e, c = d ∪ g; or d with g: b = g ∪ e, c = f ∪ d.
-        if (
-          Math.abs(heights[f]! - heights[e]!) <= 1 &&
-          Math.abs(heights[d]! - heights[g]!) <= 1 &&
-          Math.abs(Math.max(heights[f]!, heights[e]!) - Math.max(heights[d]!, heights[g]!)) <= 1
-        ) {
-          this.pairPerimeter(f, e);
-          let gain = this.sum - base;
-          this.pairPerimeter(d, g);
-          gain += this.sum;
-          if (gain < bestGain) {
-            bestGain = gain;
-            bestKind = 2;
-            bestFirst = d;
-            bestSecond = f;
-          }
-        }
-        if (
-          Math.abs(heights[g]! - heights[e]!) <= 1 &&
-          Math.abs(heights[d]! - heights[f]!) <= 1 &&
-          Math.abs(Math.max(heights[g]!, heights[e]!) - Math.max(heights[d]!, heights[f]!)) <= 1
-        ) {
-          this.pairPerimeter(g, e);
-          let gain = this.sum - base;
-          this.pairPerimeter(d, f);
-          gain += this.sum;
-          if (gain < bestGain) {
-            bestKind = 2;
-            bestFirst = d;
-            bestSecond = g;
-          }
-        }
-      }
-    }
-    if (bestKind === 0) {
-      return a;
-    }
-    // Swap the two nodes between their parents, then refit the parents bottom-up.
-    const parentFirst = this.parent[bestFirst]!;
-    const parentSecond = this.parent[bestSecond]!;
-    this.replaceChild(parentFirst, bestFirst, bestSecond);
-    this.replaceChild(parentSecond, bestSecond, bestFirst);
-    if (bestKind === 1) {
-      // bestFirst was a child of a and moves down under parentSecond.
-      this.refit(parentSecond);
-    } else {
-      this.refit(parentFirst);
-      this.refit(parentSecond);
-    }
-    this.refit(a);
+    const hb = this.heights[b]!;
+    const hc = this.heights[c]!;
+    if (hc - hb > 1) return this.promote(a, c, b);
+    if (hb - hc > 1) return this.promote(a, b, c);
     return a;
   }
 
@@ -918,31 +778,6 @@ export class DynamicTree {
     this.refit(a);
     this.refit(tall);
     return tall;
-  }
-
-  private replaceChild(parentNode: number, oldChild: number, newChild: number): void {
-    if (this.child1[parentNode] === oldChild) {
-      this.child1[parentNode] = newChild;
-    } else {
-      this.child2[parentNode] = newChild;
-    }
-    this.parent[newChild] = parentNode;
-  }
-
-  /**
-   * Puts half the perimeter of the union of p's and q's boxes in `sum`. Written out rather than
-   * calling unionPerimeter: eight fractional arguments of a call V8 does not inline are eight
-   * boxed numbers, and tree rotations run in the step; the result goes through a field (a
-   * double field is written in place) rather than a return value for the same reason.
-   */
-  private pairPerimeter(p: number, q: number): void {
-    const boxes = this.boxes;
-    const po = 4 * p;
-    const qo = 4 * q;
-    const width = Math.max(boxes[po + 2]!, boxes[qo + 2]!) - Math.min(boxes[po]!, boxes[qo]!);
-    const height =
-      Math.max(boxes[po + 3]!, boxes[qo + 3]!) - Math.min(boxes[po + 1]!, boxes[qo + 1]!);
-    this.sum = width + height;
   }
 }
 
