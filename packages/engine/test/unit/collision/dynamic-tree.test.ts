@@ -69,6 +69,24 @@ function randomBox(random: () => number, extent: number, maxSize: number): AABB 
   return new AABB().set(x, y, x + 0.01 + random() * maxSize, y + 0.01 + random() * maxSize);
 }
 
+/** Ten random box queries, each answered with exactly the proxies brute force over `live` finds. */
+function expectQueriesMatchBruteForce(
+  tree: DynamicTree,
+  live: ReadonlyMap<number, AABB>,
+  random: () => number,
+): void {
+  for (let q = 0; q < 10; q++) {
+    const query = randomBox(random, 50, 20);
+    const found: number[] = [];
+    tree.query(query, (proxyId) => {
+      found.push(proxyId);
+      return true;
+    });
+    const expected = [...live].filter(([, box]) => aabbOverlaps(box, query)).map(([id]) => id);
+    expect(found.sort((a, b) => a - b)).toEqual(expected.sort((a, b) => a - b));
+  }
+}
+
 /** Entry fraction of the ray into the box by the slab method, or Infinity if it misses. */
 function rayBoxFraction(input: RayInput, box: AABB): number {
   let tMin = 0;
@@ -139,16 +157,7 @@ describe('DynamicTree', () => {
         ]);
       }
 
-      for (let q = 0; q < 10; q++) {
-        const query = randomBox(random, 50, 20);
-        const found: number[] = [];
-        tree.query(query, (proxyId) => {
-          found.push(proxyId);
-          return true;
-        });
-        const expected = [...live].filter(([, box]) => aabbOverlaps(box, query)).map(([id]) => id);
-        expect(found.sort((a, b) => a - b)).toEqual(expected.sort((a, b) => a - b));
-      }
+      expectQueriesMatchBruteForce(tree, live, random);
     }
     expect(live.size).toBeGreaterThan(200);
   });
@@ -302,18 +311,6 @@ describe('DynamicTree', () => {
     }
     const inserted = areaRatio(tree);
     const ids = [...live.keys()];
-    const check = (): void => {
-      for (let q = 0; q < 10; q++) {
-        const query = randomBox(random, 50, 20);
-        const found: number[] = [];
-        tree.query(query, (proxyId) => {
-          found.push(proxyId);
-          return true;
-        });
-        const expected = [...live].filter(([, box]) => aabbOverlaps(box, query)).map(([id]) => id);
-        expect(found.sort((a, b) => a - b)).toEqual(expected.sort((a, b) => a - b));
-      }
-    };
     for (let round = 0; round < 20; round++) {
       // A step: most proxies drift, a few jump across the world.
       for (const id of ids) {
@@ -328,10 +325,10 @@ describe('DynamicTree', () => {
         }
       }
       // Exact queries while the tree only grew.
-      check();
+      expectQueriesMatchBruteForce(tree, live, random);
       tree.rebuild();
       validate(tree);
-      check();
+      expectQueriesMatchBruteForce(tree, live, random);
       expect(tree.proxyCount).toBe(live.size);
     }
     // The rebuilt tree is balanced and better than incremental insertion (SAH cost ratio; 20 vs 36).
