@@ -56,6 +56,13 @@ test('gallery: the list links the worker page, and its card keeps a gap to the n
     assert.ok(gap >= 12, `${gap.toFixed(1)} px between the worker card and the next one`);
     await page.locator('[data-page="worker"]').click();
     await page.waitForFunction(() => location.hash === '#/worker');
+    // The page renders after the hash changes: wait for its heading rather than read it at once
+    // (read at once, it was still the list's heading in one CI run).
+    await page.waitForFunction(
+      () => document.querySelector('h1')?.textContent?.trim() === '2,000 bodies in a worker',
+      undefined,
+      { timeout: 10_000 },
+    );
     assert.equal(
       (await page.locator('h1').first().textContent())?.trim(),
       '2,000 bodies in a worker',
