@@ -139,7 +139,11 @@ export class Body<UserData = unknown> {
   // ---- Internal state. Fields marked @internal are stripped from the published types. ----
   // Every numeric field starts as a number where it is declared: a field declared without a
   // value starts as undefined, V8 then stores it as a generic value, and each later write of a
-  // fractional number allocates (the step must allocate nothing).
+  // fractional number allocates (the step must allocate nothing). Fields that may stay whole
+  // numbers for a long time start as -0, a double: V8 keeps a field first written with a small
+  // integer as one, and the first fraction written to it later (the first force, the first body
+  // to rest) changes the hidden class of every body, throwing away all compiled code that reads
+  // bodies: a stutter, and garbage, until it is compiled again.
   /** @internal Transform of the body origin. */
   readonly transform: Transform = new Transform();
   /** @internal Unwrapped rotation (rad). */
@@ -157,7 +161,7 @@ export class Body<UserData = unknown> {
   /** @internal */
   center0Y = 0;
   /** @internal */
-  angle0 = 0;
+  angle0 = -0;
   /** @internal Velocity of the centre of mass (m/s) and angular velocity (rad/s). */
   velocityX = 0;
   /** @internal */
@@ -173,23 +177,23 @@ export class Body<UserData = unknown> {
   /** @internal */
   invInertia = 0;
   /** @internal */
-  massOverride = 0;
+  massOverride = -0;
   /** @internal */
-  inertiaOverride = 0;
+  inertiaOverride = -0;
   /** @internal Force and torque to apply this step (N, N m), gathered from `forces`. */
-  forceX = 0;
+  forceX = -0;
   /** @internal */
-  forceY = 0;
+  forceY = -0;
   /** @internal */
-  torqueValue = 0;
+  torqueValue = -0;
   /** @internal */
-  gravityScaleValue = 1;
+  gravityScaleValue = -0;
   /** @internal */
-  linearDampingValue = 0;
+  linearDampingValue = -0;
   /** @internal */
-  angularDampingValue = 0;
+  angularDampingValue = -0;
   /** @internal */
-  dragValue = 0;
+  dragValue = -0;
   /** @internal */
   fixedRotationValue = false;
   /** @internal */
@@ -199,11 +203,13 @@ export class Body<UserData = unknown> {
   /** @internal */
   awake = true;
   /** @internal */
-  sleepTime = 0;
+  sleepTime = -0;
   /** @internal Largest and smallest distance from the centre of mass to the surface (m). */
   maxExtent = 0;
   /** @internal */
   minExtent = 0;
+  /** @internal Largest distance from the body origin to the surface (m), for manifold reuse. */
+  originReach = 0;
   /** @internal */
   readonly shapeList: Shape[] = [];
   /** @internal */
@@ -818,6 +824,7 @@ export class Body<UserData = unknown> {
     }
     this.maxExtent = maxExtent;
     this.minExtent = minExtent === Infinity ? 0 : minExtent;
+    this.originReach = maxExtent + Math.hypot(cx, cy);
   }
 
   /** One shape per geometry the options make (several for a concave polygon). */

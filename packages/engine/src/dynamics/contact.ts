@@ -85,8 +85,6 @@ export class Contact {
   pairKind = 0;
   /** The manifold has at least one point (possibly speculative). */
   touching = false;
-  /** Distance from body B's origin to its centre of mass (m), for the reuse bound. */
-  private extentB = 0;
   /** Slot in the contact data and index in the world's contact array; and in each body's list. */
   index = -1;
   indexInA = -1;
@@ -102,7 +100,6 @@ export class Contact {
     this.bodyA = a.body;
     this.bodyB = b.body;
     this.touching = false;
-    this.extentB = Math.hypot(b.body.localCenterX, b.body.localCenterY);
     const base = this.index * CONTACT_STRIDE;
     data.fill(0, base, base + CONTACT_STRIDE);
     data[base + FRICTION] = Math.sqrt(a.friction * b.friction);
@@ -191,8 +188,7 @@ export class Contact {
     const dx = relX - data[k]!;
     const dy = relY - data[k + 1]!;
     // |sin| of the rotation since then, times the farthest point of B from its own origin.
-    const turn =
-      Math.abs(relS * data[k + 2]! - relC * data[k + 3]!) * (bodyB.maxExtent + this.extentB);
+    const turn = Math.abs(relS * data[k + 2]! - relC * data[k + 3]!) * bodyB.originReach;
     if (data[base + HAS_CACHE] === 1 && dx * dx + dy * dy + turn * turn < REUSE_TOLERANCE_SQUARED) {
       this.refreshFromCache(data, base);
       data[p0 + P_MAX_NORMAL_IMPULSE] = 0;

@@ -223,9 +223,11 @@ function saveBody(body: Body, contactIndex: Map<Contact, number>): Record<string
     center: encAll([body.centerX, body.centerY]),
     start: encAll([body.center0X, body.center0Y, body.angle0]),
     velocity: encAll([body.velocityX, body.velocityY, body.angularVelocityValue]),
-    applied: encAll([body.forceX, body.forceY, body.torqueValue]),
-    massOverride: enc(body.massOverride),
-    inertiaOverride: enc(body.inertiaOverride),
+    // These start as -0 (a double for V8, see body.ts); + 0 saves them as 0. Their sign never
+    // matters: forces are summed again each step, the others are compared or added to.
+    applied: encAll([body.forceX + 0, body.forceY + 0, body.torqueValue + 0]),
+    massOverride: enc(body.massOverride + 0),
+    inertiaOverride: enc(body.inertiaOverride + 0),
     gravityScale: enc(body.gravityScaleValue),
     linearDamping: enc(body.linearDampingValue),
     angularDamping: enc(body.angularDampingValue),
@@ -234,7 +236,7 @@ function saveBody(body: Body, contactIndex: Map<Contact, number>): Record<string
     allowSleep: body.allowSleepValue,
     bullet: body.bulletValue,
     awake: body.awake,
-    sleepTime: enc(body.sleepTime),
+    sleepTime: enc(body.sleepTime + 0),
     islandStamp: body.islandStamp,
     shapes: body.shapeList.map(saveShape),
     forces: body.forceList.map((f) => ({
