@@ -192,23 +192,6 @@ export class BroadPhase {
   }
 
   /**
-   * Whether the fat boxes of two proxies overlap (touching counts). The contact stage uses it
-   * to drop a pair whose boxes have separated.
-   */
-  testOverlap(proxyKeyA: number, proxyKeyB: number): boolean {
-    const treeA = this.trees[proxyKeyA & 3]!;
-    const treeB = this.trees[proxyKeyB & 3]!;
-    const a = proxyKeyA >> 2;
-    const b = proxyKeyB >> 2;
-    return (
-      treeA.getMinX(a) <= treeB.getMaxX(b) &&
-      treeB.getMinX(b) <= treeA.getMaxX(a) &&
-      treeA.getMinY(a) <= treeB.getMaxY(b) &&
-      treeB.getMinY(b) <= treeA.getMaxY(a)
-    );
-  }
-
-  /**
    * Reports every pair of overlapping fat boxes that involves a proxy moved since the last
    * call and at least one dynamic proxy, exactly once, as (smaller shape id, larger shape id);
    * then empties the move buffer. The order follows the move buffer, then each tree's

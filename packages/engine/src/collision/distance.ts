@@ -29,22 +29,22 @@ export class DistanceProxy {
   /** Number of core vertices, 1..MAX_POLYGON_VERTICES. */
   count = 0;
   /** Radius around the core (m), >= 0. */
-  radius = 0;
+  radius = -0;
 }
 
 /** Result of shapeDistance. Points and normal are in the world frame. */
 export class DistanceOutput {
   /** Distance between the shapes' surfaces, radii included (m); 0 when they overlap. */
-  distance = 0;
+  distance = -0;
   /** Closest point on shape A's surface (m); when overlapping, a point in the overlap. */
-  pointAX = 0;
-  pointAY = 0;
+  pointAX = -0;
+  pointAY = -0;
   /** Closest point on shape B's surface (m); equals point A when overlapping. */
-  pointBX = 0;
-  pointBY = 0;
+  pointBX = -0;
+  pointBY = -0;
   /** Unit vector from A's core towards B's core; 0, 0 when the cores overlap. */
-  normalX = 0;
-  normalY = 0;
+  normalX = -0;
+  normalY = -0;
   /** Number of GJK iterations used. */
   iterations = 0;
 }

@@ -7,33 +7,33 @@ import { SPECULATIVE_DISTANCE } from '../core/constants.ts';
  */
 export class ManifoldPoint {
   /** World position (m): midway between the two surfaces. */
-  x = 0;
-  y = 0;
+  x = -0;
+  y = -0;
   /** The point relative to body A's origin (xfA), world orientation (m). */
-  anchorAX = 0;
-  anchorAY = 0;
+  anchorAX = -0;
+  anchorAY = -0;
   /** The point relative to body B's origin (xfB), world orientation (m). */
-  anchorBX = 0;
-  anchorBY = 0;
+  anchorBX = -0;
+  anchorBY = -0;
   /** Signed distance along the normal (m): negative when overlapping. Includes rounding radii. */
-  separation = 0;
+  separation = -0;
   /** Feature key identifying the pair of features that made this point, for matching across steps. */
   id = 0;
   /** Accumulated normal impulse of the last step (N s). */
-  normalImpulse = 0;
+  normalImpulse = -0;
   /** Accumulated tangent (friction) impulse of the last step (N s). */
-  tangentImpulse = 0;
+  tangentImpulse = -0;
   /** Largest normal impulse applied in any sub-step of the last step (N s). */
-  maxNormalImpulse = 0;
+  maxNormalImpulse = -0;
   /** Normal relative velocity before the solve (m/s), for restitution. */
-  relativeVelocity = 0;
+  relativeVelocity = -0;
 }
 
 /** Contact manifold between two shapes: up to two points sharing one normal. */
 export class Manifold {
   /** Unit normal in world frame, pointing from shape A to shape B. */
-  normalX = 0;
-  normalY = 0;
+  normalX = -0;
+  normalY = -0;
   /** Number of valid points, 0..2. */
   pointCount = 0;
   /**

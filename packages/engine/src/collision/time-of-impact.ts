@@ -33,18 +33,18 @@ const MAX_ITERATIONS = 50;
  */
 export class Sweep {
   /** Centre of mass in the body frame (m). */
-  localCenterX = 0;
-  localCenterY = 0;
+  localCenterX = -0;
+  localCenterY = -0;
   /** World centre of mass at t = 0 (m). */
-  c1X = 0;
-  c1Y = 0;
+  c1X = -0;
+  c1Y = -0;
   /** World centre of mass at t = 1 (m). */
-  c2X = 0;
-  c2Y = 0;
+  c2X = -0;
+  c2Y = -0;
   /** Body angle at t = 0 (rad). */
-  a1 = 0;
+  a1 = -0;
   /** Body angle at t = 1 (rad). */
-  a2 = 0;
+  a2 = -0;
 }
 
 /** State of a time-of-impact result. */
@@ -60,7 +60,7 @@ export class TimeOfImpactOutput {
    */
   state: TimeOfImpactState = 'unknown';
   /** Fraction of the step (dimensionless, 0..maxFraction) at which the state holds. */
-  fraction = 0;
+  fraction = -0;
 }
 
 /**

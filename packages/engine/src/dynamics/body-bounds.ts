@@ -14,11 +14,11 @@ import type { Shape } from './shape.ts';
 export class BodyBounds {
   private readonly box = new AABB();
   // The growth of the body last passed to measureMotion.
-  private grow = 0;
-  private backX = 0;
-  private backY = 0;
-  private aheadX = 0;
-  private aheadY = 0;
+  private grow = -0;
+  private backX = -0;
+  private backY = -0;
+  private aheadX = -0;
+  private aheadY = -0;
 
   /**
    * The step the boxes look ahead (s), set before refresh. A field, not an argument: V8 boxes a

@@ -139,43 +139,45 @@ export class Body<UserData = unknown> {
   // ---- Internal state. Fields marked @internal are stripped from the published types. ----
   // Every numeric field starts as a number where it is declared: a field declared without a
   // value starts as undefined, V8 then stores it as a generic value, and each later write of a
-  // fractional number allocates (the step must allocate nothing). Fields that may stay whole
-  // numbers for a long time start as -0, a double: V8 keeps a field first written with a small
-  // integer as one, and the first fraction written to it later (the first force, the first body
-  // to rest) changes the hidden class of every body, throwing away all compiled code that reads
-  // bodies: a stutter, and garbage, until it is compiled again.
+  // fractional number allocates (the step must allocate nothing). Real-valued fields start as
+  // -0, a double: V8 keeps a field first written with a small integer as one, and the first
+  // fraction written to it later (the first push in a world without gravity, the first force,
+  // the first body to rest) changes the hidden class of every body, throwing away all compiled
+  // code that reads bodies: a stutter, and garbage, until it is compiled again. The same holds
+  // for the engine's other hot classes (Transform, AABB, Manifold, the joints...). Every zero an
+  // app can read is written as +0 before it can see it (test/api/zeros-read-as-positive-zero).
   /** @internal Transform of the body origin. */
   readonly transform: Transform = new Transform();
   /** @internal Unwrapped rotation (rad). */
-  angleValue = 0;
+  angleValue = -0;
   /** @internal Centre of mass, world (m). */
-  centerX = 0;
+  centerX = -0;
   /** @internal */
-  centerY = 0;
+  centerY = -0;
   /** @internal Centre of mass, body-local (m). */
-  localCenterX = 0;
+  localCenterX = -0;
   /** @internal */
-  localCenterY = 0;
+  localCenterY = -0;
   /** @internal Centre of mass and angle at the start of the step, for continuous collision. */
-  center0X = 0;
+  center0X = -0;
   /** @internal */
-  center0Y = 0;
+  center0Y = -0;
   /** @internal */
   angle0 = -0;
   /** @internal Velocity of the centre of mass (m/s) and angular velocity (rad/s). */
-  velocityX = 0;
+  velocityX = -0;
   /** @internal */
-  velocityY = 0;
+  velocityY = -0;
   /** @internal */
-  angularVelocityValue = 0;
+  angularVelocityValue = -0;
   /** @internal Mass properties. */
-  massValue = 0;
+  massValue = -0;
   /** @internal */
-  invMass = 0;
+  invMass = -0;
   /** @internal */
-  inertiaValue = 0;
+  inertiaValue = -0;
   /** @internal */
-  invInertia = 0;
+  invInertia = -0;
   /** @internal */
   massOverride = -0;
   /** @internal */
@@ -205,11 +207,11 @@ export class Body<UserData = unknown> {
   /** @internal */
   sleepTime = -0;
   /** @internal Largest and smallest distance from the centre of mass to the surface (m). */
-  maxExtent = 0;
+  maxExtent = -0;
   /** @internal */
-  minExtent = 0;
+  minExtent = -0;
   /** @internal Largest distance from the body origin to the surface (m), for manifold reuse. */
-  originReach = 0;
+  originReach = -0;
   /** @internal */
   readonly shapeList: Shape[] = [];
   /** @internal */
@@ -274,7 +276,7 @@ export class Body<UserData = unknown> {
       this.velocityX = velocity.x;
       this.velocityY = velocity.y;
       this.angularVelocityValue = this.fixedRotationValue ? 0 : angularVelocity;
-    }
+    } else this.velocityX = this.velocityY = this.angularVelocityValue = 0; // +0, not -0
   }
 
   // ---------------------------------------------------------------- pose and velocity

@@ -46,24 +46,24 @@ const DURATION_EPSILON = 1e-9;
  */
 export class Force {
   /** @internal Force in world coordinates (N), behind {@link x} and {@link y}. */
-  xValue = 0;
+  xValue = -0;
   /** @internal */
-  yValue = 0;
+  yValue = -0;
   /** @internal Torque (N m), behind {@link torque}. */
-  torqueValue = 0;
+  torqueValue = -0;
   /**
    * @internal Point of application in body-local coordinates (m); used only when `hasPoint`
    * (else the centre of mass).
    */
-  localPointX = 0;
+  localPointX = -0;
   /** @internal */
-  localPointY = 0;
+  localPointY = -0;
   /** @internal */
   hasPoint = false;
   /** The duration it was created with. */
   readonly duration: Duration;
   /** @internal Seconds left, behind {@link remaining}; -1 for an `'instant'` force not yet applied. */
-  remainingValue = 0;
+  remainingValue = -0;
   /** @internal Removal hook set by the owning body. */
   onRemove: ((force: Force) => void) | null = null;
   /** @internal Change hook set by the owning body (wakes it). */

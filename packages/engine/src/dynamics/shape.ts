@@ -139,7 +139,7 @@ export class Shape {
   /** @internal Friction behind {@link friction}. */
   frictionValue = 0.6;
   /** @internal Restitution behind {@link restitution}. */
-  restitutionValue = 0;
+  restitutionValue = -0;
   /** True for a sensor: it reports overlaps and never collides. Fixed at creation. */
   readonly sensor: boolean = false;
   /** @internal Filter bits (see {@link filter}). */

@@ -9,13 +9,13 @@
  *   biasRate = omega / a1,  massScale = a2 a3,  impulseScale = a3
  */
 export class Softness {
-  biasRate = 0;
+  biasRate = -0;
   massScale = 1;
-  impulseScale = 0;
+  impulseScale = -0;
   /** The frequency, damping ratio and sub-step last given to set. */
-  hertz = 0;
-  zeta = 0;
-  h = 0;
+  hertz = -0;
+  zeta = -0;
+  h = -0;
 
   /**
    * This softness for a pair whose inverse masses differ by `ratio` (>= 1) from the light body's

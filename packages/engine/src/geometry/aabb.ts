@@ -1,9 +1,9 @@
 /** An axis-aligned bounding box in world coordinates (m). */
 export class AABB {
-  minX = 0;
-  minY = 0;
-  maxX = 0;
-  maxY = 0;
+  minX = -0;
+  minY = -0;
+  maxX = -0;
+  maxY = -0;
 
   set(minX: number, minY: number, maxX: number, maxY: number): this {
     this.minX = minX;

@@ -4,10 +4,10 @@
  */
 export class MassData {
   /** Mass (kg). */
-  mass = 0;
+  mass = -0;
   /** Centre of mass in body-local coordinates (m). */
-  centerX = 0;
-  centerY = 0;
+  centerX = -0;
+  centerY = -0;
   /** Rotational inertia about the centre of mass, not about the body origin (kg m^2). */
-  rotationalInertia = 0;
+  rotationalInertia = -0;
 }

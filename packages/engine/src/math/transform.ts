@@ -4,10 +4,15 @@
  * Maps a local point p to world as (c px - s py + x, s px + c py + y).
  */
 export class Transform {
-  x = 0;
-  y = 0;
-  c = 1;
-  s = 0;
+  // -0 and the fraction below: doubles from the first transform on (see the comment in Body).
+  x = -0;
+  y = -0;
+  c = 0.5;
+  s = -0;
+
+  constructor() {
+    this.c = 1;
+  }
 
   set(x: number, y: number, angle: number): this {
     this.x = x;

@@ -79,27 +79,27 @@ export const DISTANCE_STATE: JointStateLayout = {
 export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   readonly type = 'distance' as const;
   /** @internal Anchors in each body's frame (relative to the body origin, m). */
-  localAnchorAX = 0;
+  localAnchorAX = -0;
   /** @internal */
-  localAnchorAY = 0;
+  localAnchorAY = -0;
   /** @internal */
-  localAnchorBX = 0;
+  localAnchorBX = -0;
   /** @internal */
-  localAnchorBY = 0;
+  localAnchorBY = -0;
   private rest: number;
   private min: number;
   private max: number;
   private springEnabled: boolean;
   private springHertz: number;
   private springDampingRatio: number;
-  private rAx = 0;
-  private rAy = 0;
-  private rBx = 0;
-  private rBy = 0;
-  private deltaCenterX = 0;
-  private deltaCenterY = 0;
+  private rAx = -0;
+  private rAy = -0;
+  private rBx = -0;
+  private rBy = -0;
+  private deltaCenterX = -0;
+  private deltaCenterY = -0;
   private readonly springSoftness = new Softness();
-  private impulse = 0;
+  private impulse = -0;
   /**
    * A spring slow enough for the sub-step (omega h <= 1) acts as a force, integrated by
    * semi-implicit Euler like gravity: symplectic, so an undamped spring keeps its energy. A soft
@@ -107,11 +107,11 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
    * at 1 Hz. Stiffer springs stay soft constraints, which are stable at any stiffness.
    */
   private explicitSpring = false;
-  private springOmega = 0;
+  private springOmega = -0;
   /** The explicit spring's impulse in the current sub-step (N s), for the reaction force. */
-  private springSubStepImpulse = 0;
-  private lowerImpulse = 0;
-  private upperImpulse = 0;
+  private springSubStepImpulse = -0;
+  private lowerImpulse = -0;
+  private upperImpulse = -0;
 
   constructor(options: DistanceJointOptions<UserData>) {
     requireBodies(options);

@@ -142,25 +142,25 @@ export abstract class Joint<UserData = unknown> {
   /** @internal */
   stateB = 0;
   /** @internal Inverse masses as the solver sees them (0 for static, sleeping, kinematic). */
-  invMassA = 0;
+  invMassA = -0;
   /** @internal */
-  invInertiaA = 0;
+  invInertiaA = -0;
   /** @internal */
-  invMassB = 0;
+  invMassB = -0;
   /** @internal */
-  invInertiaB = 0;
+  invInertiaB = -0;
   /** @internal Impulses on body B summed over the sub-steps of the step (N s, N m s). */
-  stepImpulseX = 0;
+  stepImpulseX = -0;
   /** @internal */
-  stepImpulseY = 0;
+  stepImpulseY = -0;
   /** @internal */
-  stepAngularImpulse = 0;
+  stepAngularImpulse = -0;
   /** @internal Reaction of the last step (N, N m). */
-  reactionX = 0;
+  reactionX = -0;
   /** @internal */
-  reactionY = 0;
+  reactionY = -0;
   /** @internal */
-  reactionAngular = 0;
+  reactionAngular = -0;
   /** @internal Sub-step duration of the last step (s), to turn a sub-step impulse into a force. */
   subStepDuration = 1 / 240;
   private readonly reactionView: Vec2 = { x: 0, y: 0 };

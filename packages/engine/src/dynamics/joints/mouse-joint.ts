@@ -69,24 +69,24 @@ export const MOUSE_STATE: JointStateLayout = {
 export class MouseJoint<UserData = unknown> extends Joint<UserData> {
   readonly type = 'mouse' as const;
   /** @internal Grabbed point in the body's frame (relative to the origin, m). */
-  localAnchorX = 0;
+  localAnchorX = -0;
   /** @internal */
-  localAnchorY = 0;
+  localAnchorY = -0;
   private targetX: number;
   private targetY: number;
   private force: number;
   private springHertz: number;
   private springDampingRatio: number;
   private readonly targetView: Vec2 = { x: 0, y: 0 };
-  private rBx = 0;
-  private rBy = 0;
-  private deltaCenterX = 0;
-  private deltaCenterY = 0;
+  private rBx = -0;
+  private rBy = -0;
+  private deltaCenterX = -0;
+  private deltaCenterY = -0;
   private readonly linearSoftness = new Softness();
   private readonly angularSoftness = new Softness();
-  private linearImpulseX = 0;
-  private linearImpulseY = 0;
-  private angularImpulse = 0;
+  private linearImpulseX = -0;
+  private linearImpulseY = -0;
+  private angularImpulse = -0;
 
   constructor(options: MouseJointOptions<UserData>) {
     if (options === null || typeof options !== 'object') {

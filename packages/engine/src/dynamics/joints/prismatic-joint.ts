@@ -87,19 +87,19 @@ export const PRISMATIC_STATE: JointStateLayout = {
 export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   readonly type = 'prismatic' as const;
   /** @internal Anchors in each body's frame (relative to the body origin, m) and A's axis. */
-  localAnchorAX = 0;
+  localAnchorAX = -0;
   /** @internal */
-  localAnchorAY = 0;
+  localAnchorAY = -0;
   /** @internal */
-  localAnchorBX = 0;
+  localAnchorBX = -0;
   /** @internal */
-  localAnchorBY = 0;
+  localAnchorBY = -0;
   /** @internal */
   localAxisX = 1;
   /** @internal */
-  localAxisY = 0;
+  localAxisY = -0;
   /** @internal angleB - angleA at creation (rad). */
-  referenceAngle = 0;
+  referenceAngle = -0;
   private limitEnabled: boolean;
   private lowerLimit: number;
   private upperLimit: number;
@@ -109,22 +109,22 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   private springEnabled: boolean;
   private springHertz: number;
   private springDampingRatio: number;
-  private rAx = 0;
-  private rAy = 0;
-  private rBx = 0;
-  private rBy = 0;
+  private rAx = -0;
+  private rAy = -0;
+  private rBx = -0;
+  private rBy = -0;
   private axisX = 1;
-  private axisY = 0;
-  private deltaCenterX = 0;
-  private deltaCenterY = 0;
-  private deltaAngle = 0;
+  private axisY = -0;
+  private deltaCenterX = -0;
+  private deltaCenterY = -0;
+  private deltaAngle = -0;
   private readonly springSoftness = new Softness();
-  private perpendicularImpulse = 0;
-  private angularImpulse = 0;
-  private springImpulse = 0;
-  private motorImpulse = 0;
-  private lowerImpulse = 0;
-  private upperImpulse = 0;
+  private perpendicularImpulse = -0;
+  private angularImpulse = -0;
+  private springImpulse = -0;
+  private motorImpulse = -0;
+  private lowerImpulse = -0;
+  private upperImpulse = -0;
 
   constructor(options: PrismaticJointOptions<UserData>) {
     requireBodies(options);

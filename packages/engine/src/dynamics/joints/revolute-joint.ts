@@ -84,15 +84,15 @@ export const REVOLUTE_STATE: JointStateLayout = {
 export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   readonly type = 'revolute' as const;
   /** @internal Anchor in each body's frame (relative to the body origin, m). */
-  localAnchorAX = 0;
+  localAnchorAX = -0;
   /** @internal */
-  localAnchorAY = 0;
+  localAnchorAY = -0;
   /** @internal */
-  localAnchorBX = 0;
+  localAnchorBX = -0;
   /** @internal */
-  localAnchorBY = 0;
+  localAnchorBY = -0;
   /** @internal angleB - angleA at creation (rad). */
-  referenceAngle = 0;
+  referenceAngle = -0;
   private limitEnabled: boolean;
   private lower: number;
   private upper: number;
@@ -103,22 +103,22 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   private springHertz: number;
   private springDampingRatio: number;
   // Solver state of the step.
-  private rAx = 0;
-  private rAy = 0;
-  private rBx = 0;
-  private rBy = 0;
-  private deltaCenterX = 0;
-  private deltaCenterY = 0;
-  private deltaAngle = 0;
-  private axialMass = 0;
+  private rAx = -0;
+  private rAy = -0;
+  private rBx = -0;
+  private rBy = -0;
+  private deltaCenterX = -0;
+  private deltaCenterY = -0;
+  private deltaAngle = -0;
+  private axialMass = -0;
   private readonly springSoftness = new Softness();
   // Accumulated impulses (warm-started).
-  private linearImpulseX = 0;
-  private linearImpulseY = 0;
-  private springImpulse = 0;
-  private motorImpulse = 0;
-  private lowerImpulse = 0;
-  private upperImpulse = 0;
+  private linearImpulseX = -0;
+  private linearImpulseY = -0;
+  private springImpulse = -0;
+  private motorImpulse = -0;
+  private lowerImpulse = -0;
+  private upperImpulse = -0;
 
   constructor(options: RevoluteJointOptions<UserData>) {
     requireBodies(options);

@@ -54,31 +54,31 @@ export const WELD_STATE: JointStateLayout = {
 export class WeldJoint<UserData = unknown> extends Joint<UserData> {
   readonly type = 'weld' as const;
   /** @internal Anchor in each body's frame (relative to the body origin, m). */
-  localAnchorAX = 0;
+  localAnchorAX = -0;
   /** @internal */
-  localAnchorAY = 0;
+  localAnchorAY = -0;
   /** @internal */
-  localAnchorBX = 0;
+  localAnchorBX = -0;
   /** @internal */
-  localAnchorBY = 0;
+  localAnchorBY = -0;
   /** @internal angleB - angleA at creation (rad). */
-  referenceAngle = 0;
+  referenceAngle = -0;
   private linearFrequency: number;
   private angularFrequency: number;
   private ratio: number;
-  private rAx = 0;
-  private rAy = 0;
-  private rBx = 0;
-  private rBy = 0;
-  private deltaCenterX = 0;
-  private deltaCenterY = 0;
-  private deltaAngle = 0;
-  private axialMass = 0;
+  private rAx = -0;
+  private rAy = -0;
+  private rBx = -0;
+  private rBy = -0;
+  private deltaCenterX = -0;
+  private deltaCenterY = -0;
+  private deltaAngle = -0;
+  private axialMass = -0;
   private readonly linearSoftness = new Softness();
   private readonly angularSoftness = new Softness();
-  private linearImpulseX = 0;
-  private linearImpulseY = 0;
-  private angularImpulse = 0;
+  private linearImpulseX = -0;
+  private linearImpulseY = -0;
+  private angularImpulse = -0;
 
   constructor(options: WeldJointOptions<UserData>) {
     requireBodies(options);
