@@ -4,9 +4,10 @@ import type { Transform } from '../math/transform.ts';
 import { makeFeatureId, type Manifold } from './manifold.ts';
 
 // Two clipped face points for writeFacePoints, in A's frame relative to A's first centre:
-// normal x, y, then per point core x, y and core distance from the reference segment. Passed
-// through a scratch array rather than as arguments: V8 boxes fractional numbers passed to a call
-// it does not inline, and the narrow phase must not allocate.
+// normal x, y, then per point core x, y and core distance from the reference segment. Written
+// into a scratch array where they are computed, not passed as arguments: V8 boxes fractional
+// numbers passed to a call it does not inline (a setFace helper allocated 128 bytes a call), and
+// the narrow phase must not allocate.
 const face = new Float64Array(8);
 
 /**
@@ -152,7 +153,14 @@ export function collideCapsules(
       const sa = nAx * ax + nAy * ay;
       const sb = nAx * bx + nAy * by;
       if (sa <= distance + LINEAR_SLOP || sb <= distance + LINEAR_SLOP) {
-        setFace(nAx, nAy, ax, ay, sa, bx, by, sb);
+        face[0] = nAx;
+        face[1] = nAy;
+        face[2] = ax;
+        face[3] = ay;
+        face[4] = sa;
+        face[5] = bx;
+        face[6] = by;
+        face[7] = sb;
         writeFacePoints(out, 0, a, b, xfA, xfB);
         return;
       }
@@ -185,7 +193,14 @@ export function collideCapsules(
       const sb = nBx * (bx - p2x) + nBy * (by - p2y);
       if (sa <= distance + LINEAR_SLOP || sb <= distance + LINEAR_SLOP) {
         // A's clipped points are on A's core; the normal from A to B is -nB.
-        setFace(-nBx, -nBy, ax, ay, sa, bx, by, sb);
+        face[0] = -nBx;
+        face[1] = -nBy;
+        face[2] = ax;
+        face[3] = ay;
+        face[4] = sa;
+        face[5] = bx;
+        face[6] = by;
+        face[7] = sb;
         writeFacePoints(out, 1, a, b, xfA, xfB);
         return;
       }
@@ -213,26 +228,6 @@ export function collideCapsules(
   );
   writeNormal(out, nx, ny, xfA);
   out.pointCount = 1;
-}
-
-function setFace(
-  nx: number,
-  ny: number,
-  ax: number,
-  ay: number,
-  sa: number,
-  bx: number,
-  by: number,
-  sb: number,
-): void {
-  face[0] = nx;
-  face[1] = ny;
-  face[2] = ax;
-  face[3] = ay;
-  face[4] = sa;
-  face[5] = bx;
-  face[6] = by;
-  face[7] = sb;
 }
 
 /**
