@@ -63,18 +63,21 @@ export function collideCapsules(
   const rd2 = rx * d2x + ry * d2y;
   const d12 = d1x * d2x + d1y * d2y;
   const denominator = dd1 * dd2 - d12 * d12;
+  // Clamps to [0, 1] written out, as in collide-polygons.ts (a helper call could box).
   let f1 = 0;
   if (denominator > 0) {
-    f1 = clamp01((d12 * rd2 - rd1 * dd2) / denominator);
+    f1 = (d12 * rd2 - rd1 * dd2) / denominator;
+    f1 = f1 < 0 ? 0 : f1 > 1 ? 1 : f1;
   }
   let f2 = (d12 * f1 + rd2) / dd2;
   if (f2 < 0) {
     f2 = 0;
-    f1 = clamp01(-rd1 / dd1);
+    f1 = -rd1 / dd1;
   } else if (f2 > 1) {
     f2 = 1;
-    f1 = clamp01((d12 - rd1) / dd1);
+    f1 = (d12 - rd1) / dd1;
   }
+  f1 = f1 < 0 ? 0 : f1 > 1 ? 1 : f1;
   const closest1X = f1 * d1x;
   const closest1Y = f1 * d1y;
   const closest2X = p2x + f2 * d2x;
@@ -274,10 +277,6 @@ function writeFacePoints(
   }
   writeNormal(out, nx, ny, xfA);
   out.pointCount = count;
-}
-
-function clamp01(value: number): number {
-  return value < 0 ? 0 : value > 1 ? 1 : value;
 }
 
 function writeNormal(out: Manifold, nx: number, ny: number, xfA: Transform): void {

@@ -147,18 +147,22 @@ export function collidePolygons(
     const c1 = d1x * rx + d1y * ry;
     const f2r = d2x * rx + d2y * ry;
     const denominator = length1Squared * length2Squared - b12 * b12;
+    // Clamps to [0, 1] written out, not a helper call: V8 did not always inline one here, and
+    // then boxed its argument and result (the narrow phase must not allocate).
     let f1 = 0;
     if (denominator > 0) {
-      f1 = clamp01((b12 * f2r - c1 * length2Squared) / denominator);
+      f1 = (b12 * f2r - c1 * length2Squared) / denominator;
+      f1 = f1 < 0 ? 0 : f1 > 1 ? 1 : f1;
     }
     let f2 = (b12 * f1 + f2r) / length2Squared;
     if (f2 < 0) {
       f2 = 0;
-      f1 = clamp01(-c1 / length1Squared);
+      f1 = -c1 / length1Squared;
     } else if (f2 > 1) {
       f2 = 1;
-      f1 = clamp01((b12 - c1) / length1Squared);
+      f1 = (b12 - c1) / length1Squared;
     }
+    f1 = f1 < 0 ? 0 : f1 > 1 ? 1 : f1;
     if ((f1 === 0 || f1 === 1) && (f2 === 0 || f2 === 1)) {
       const p2x = v21x + f2 * d2x;
       const p2y = v21y + f2 * d2y;
@@ -308,10 +312,6 @@ function findMaxSeparation(
   }
   maxSeparationEdge = bestEdge;
   carry[0] = maxSeparation;
-}
-
-function clamp01(value: number): number {
-  return value < 0 ? 0 : value > 1 ? 1 : value;
 }
 
 /** Rotates a normal from A's frame to world and stores it. */
