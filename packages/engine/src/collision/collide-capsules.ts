@@ -129,12 +129,17 @@ export function collideCapsules(
       nBx = -nBx;
       nBy = -nBy;
     }
-    if (separationA >= separationB) {
-      // Reference: A's face; clip B's segment to A's extent 0 <= t <= length1.
-      let ax = p2x;
-      let ay = p2y;
-      let bx = q2x;
-      let by = q2y;
+    // The reference face's normal (from A to B), and the other segment clipped to its extent:
+    // ends (ax, ay), (bx, by) in A's frame with their core distances sa, sb from the face.
+    const reference = separationA >= separationB ? 0 : 1;
+    let faceNx = nAx;
+    let faceNy = nAy;
+    let ax = p2x;
+    let ay = p2y;
+    let bx = q2x;
+    let by = q2y;
+    if (reference === 0) {
+      // A's face; clip B's segment to A's extent 0 <= t <= length1.
       if (fp2 < 0 && fq2 > 0) {
         const f = -fp2 / (fq2 - fp2);
         ax += f * d2x;
@@ -153,26 +158,15 @@ export function collideCapsules(
         bx = q2x - f * d2x;
         by = q2y - f * d2y;
       }
-      const sa = nAx * ax + nAy * ay;
-      const sb = nAx * bx + nAy * by;
-      if (sa <= distance + LINEAR_SLOP || sb <= distance + LINEAR_SLOP) {
-        face[0] = nAx;
-        face[1] = nAy;
-        face[2] = ax;
-        face[3] = ay;
-        face[4] = sa;
-        face[5] = bx;
-        face[6] = by;
-        face[7] = sb;
-        writeFacePoints(out, 0, a, b, xfA, xfB);
-        return;
-      }
     } else {
-      // Reference: B's face; clip A's segment to B's extent, measured from p2 along -nB.
-      let ax = 0;
-      let ay = 0;
-      let bx = q1x;
-      let by = q1y;
+      // B's face; clip A's segment to B's extent, measured from p2 along -nB. A's clipped points
+      // are on A's core; the normal from A to B is -nB.
+      faceNx = -nBx;
+      faceNy = -nBy;
+      ax = 0;
+      ay = 0;
+      bx = q1x;
+      by = q1y;
       if (fp1 < 0 && fq1 > 0) {
         const f = -fp1 / (fq1 - fp1);
         ax = f * d1x;
@@ -191,22 +185,21 @@ export function collideCapsules(
         bx = q1x - f * d1x;
         by = q1y - f * d1y;
       }
-      // Separations along B's normal (pointing at A), so along -nB seen from A.
-      const sa = nBx * (ax - p2x) + nBy * (ay - p2y);
-      const sb = nBx * (bx - p2x) + nBy * (by - p2y);
-      if (sa <= distance + LINEAR_SLOP || sb <= distance + LINEAR_SLOP) {
-        // A's clipped points are on A's core; the normal from A to B is -nB.
-        face[0] = -nBx;
-        face[1] = -nBy;
-        face[2] = ax;
-        face[3] = ay;
-        face[4] = sa;
-        face[5] = bx;
-        face[6] = by;
-        face[7] = sb;
-        writeFacePoints(out, 1, a, b, xfA, xfB);
-        return;
-      }
+    }
+    // Along A's normal, or along B's normal (pointing at A), so along -nB seen from A.
+    const sa = reference === 0 ? nAx * ax + nAy * ay : nBx * (ax - p2x) + nBy * (ay - p2y);
+    const sb = reference === 0 ? nAx * bx + nAy * by : nBx * (bx - p2x) + nBy * (by - p2y);
+    if (sa <= distance + LINEAR_SLOP || sb <= distance + LINEAR_SLOP) {
+      face[0] = faceNx;
+      face[1] = faceNy;
+      face[2] = ax;
+      face[3] = ay;
+      face[4] = sa;
+      face[5] = bx;
+      face[6] = by;
+      face[7] = sb;
+      writeFacePoints(out, reference, a, b, xfA, xfB);
+      return;
     }
   }
 
