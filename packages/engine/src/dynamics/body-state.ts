@@ -8,6 +8,8 @@
 //   4 dpx, 5 dpy            translation of the centre of mass this step (m)
 //   6 qc, 7 qs              rotation this step as cosine/sine (for the contact anchors)
 
+import type { SolverMemory } from './solver-memory.ts';
+
 export const STATE_STRIDE = 8;
 export const V_X = 0;
 export const V_Y = 1;
@@ -18,19 +20,18 @@ export const DP_Y = 5;
 export const Q_C = 6;
 export const Q_S = 7;
 
-/** Growable array of solver body states. */
+/** Growable array of solver body states, in the solver's memory (solver-memory.ts). */
 export class BodyStates {
-  data: Float64Array = new Float64Array(STATE_STRIDE * 64);
+  constructor(private readonly memory: SolverMemory) {}
+
+  /** The states; a view that a later reserve of the same memory replaces. */
+  get data(): Float64Array {
+    return this.memory.states;
+  }
 
   /** Makes room for `count` states plus the identity slot, and resets the identity slot. */
   reserve(count: number): Float64Array {
-    const needed = (count + 1) * STATE_STRIDE;
-    if (this.data.length < needed) {
-      let size = this.data.length;
-      while (size < needed) size *= 2;
-      this.data = new Float64Array(size);
-    }
-    const d = this.data;
+    const d = this.memory.reserveStates((count + 1) * STATE_STRIDE);
     d.fill(0, 0, STATE_STRIDE);
     d[Q_C] = 1;
     return d;

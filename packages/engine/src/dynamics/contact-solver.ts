@@ -21,6 +21,7 @@ import {
   RESTITUTION as C_RESTITUTION,
 } from './contact-data.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, STATE_STRIDE, V_X, V_Y, W } from './body-state.ts';
+import type { SolverMemory } from './solver-memory.ts';
 import { Softness } from './softness.ts';
 
 // Scratch for a heavy/light pair's softness (prepare), so the hot path allocates nothing.
@@ -106,16 +107,18 @@ const STRIDE = POINTS + 2 * POINT_STRIDE;
 /** Largest condition number (max K_jj^2 / det K) of a two-point block solved as a block. */
 const MAX_CONDITION_NUMBER = 1000;
 
-/** Solver-side copies of the touching contacts of one step. */
+/** Doubles per constraint, for the solver's memory (solver-memory.ts). */
+export const CONSTRAINT_STRIDE: number = STRIDE;
+
+/**
+ * Solver-side copies of the touching contacts of one step. The numbers, body offsets and visiting
+ * order live in the solver's memory (solver-memory.ts), where the WebAssembly kernel reads them
+ * too; each getter returns a view that a later reserve replaces.
+ */
 export class ContactConstraints {
   count = 0;
-  data: Float64Array = new Float64Array(STRIDE * 256);
-  /** State offsets (index * STATE_STRIDE) of body A and B per constraint. */
-  bodies: Int32Array = new Int32Array(2 * 256);
   /** The contact data slot each constraint came from, to store impulses back. */
   slots: Int32Array = new Int32Array(256);
-  /** The order the sub-step passes visit the constraints in (see Solver.scrambleOrder). */
-  order: Int32Array = new Int32Array(256);
   /** Constraints between two circles centred on their bodies: their normal follows the centres. */
   circlePairs: Int32Array = new Int32Array(64);
   circlePairCount = 0;
@@ -124,15 +127,28 @@ export class ContactConstraints {
   /** The contact each constraint came from, for events (the first `count`). */
   readonly contacts: Contact[] = [];
 
-  /** Makes room for `count` constraints; may drop the existing ones. */
+  constructor(readonly memory: SolverMemory) {}
+
+  /** STRIDE numbers per constraint. */
+  get data(): Float64Array {
+    return this.memory.constraintData;
+  }
+  /** State offsets (index * STATE_STRIDE) of body A and B per constraint. */
+  get bodies(): Int32Array {
+    return this.memory.constraintBodies;
+  }
+  /** The order the sub-step passes visit the constraints in (see Solver.scrambleOrder). */
+  get order(): Int32Array {
+    return this.memory.constraintOrder;
+  }
+
+  /** Makes room for `count` constraints. */
   reserve(count: number): void {
+    this.memory.reserveConstraints(count);
     if (this.slots.length < count) {
       let size = this.slots.length;
       while (size < count) size *= 2;
-      this.data = new Float64Array(size * STRIDE);
-      this.bodies = new Int32Array(size * 2);
       this.slots = new Int32Array(size);
-      this.order = new Int32Array(size);
     }
   }
 }

@@ -14,6 +14,7 @@ import {
 } from './body-state.ts';
 import type { Contact } from './contact.ts';
 import {
+  CONSTRAINT_STRIDE,
   ContactConstraints,
   prepareContacts,
   refreshCirclePairs,
@@ -24,6 +25,7 @@ import {
 } from './contact-solver.ts';
 import { ContinuousSolver } from './continuous.ts';
 import { JointSolver } from './joints/joint-solver.ts';
+import { SolverMemory } from './solver-memory.ts';
 import { Softness } from './softness.ts';
 
 /** World settings the solver reads each step. */
@@ -57,13 +59,15 @@ export interface SolverSettings {
  * soft push added, so position correction does not turn into bounce.
  */
 export class Solver {
-  readonly states: BodyStates = new BodyStates();
+  /** The states' and constraints' numbers, shared with the WebAssembly kernel. */
+  private readonly memory: SolverMemory = new SolverMemory(CONSTRAINT_STRIDE);
+  readonly states: BodyStates = new BodyStates(this.memory);
   /**
    * What the velocity integration needs of each awake body, copied once per step so the sub-step
    * loops read numbers instead of body objects; entry i belongs to awake[i] (see PARAM_*).
    */
   private params: Float64Array = new Float64Array(PARAM_STRIDE * 64);
-  readonly constraints: ContactConstraints = new ContactConstraints();
+  readonly constraints: ContactConstraints = new ContactConstraints(this.memory);
   /** The joints, solved before the contacts in each pass (as Box2D v3 orders them). */
   readonly joints: JointSolver = new JointSolver();
   /**
@@ -147,8 +151,11 @@ export class Solver {
     settings: SolverSettings,
     dt: number,
   ): void {
-    const s = this.states.data;
     const constraints = this.constraints;
+    // Room first: growing the memory replaces every view of it, `s` included.
+    constraints.reserve(contacts.length);
+    const s = this.states.data;
+    const memory = this.memory;
     const subSteps = settings.subSteps;
     const h = dt / subSteps;
     const inverseH = 1 / h;
@@ -183,9 +190,30 @@ export class Solver {
       integrateVelocities(this.params, this.awakeCount, s, settings, h);
       refreshCirclePairs(constraints, s);
       joints.warmStart(s);
-      warmStartContacts(constraints, s);
+      const kernel = memory.kernel;
+      if (kernel !== null) {
+        kernel.warmStart(
+          memory.dataOffset,
+          memory.bodiesOffset,
+          memory.orderOffset,
+          memory.statesOffset,
+          constraints.count,
+        );
+      } else warmStartContacts(constraints, s);
       joints.solve(s, true);
-      solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, true);
+      if (kernel !== null) {
+        kernel.solve(
+          memory.dataOffset,
+          memory.bodiesOffset,
+          memory.orderOffset,
+          memory.statesOffset,
+          constraints.count,
+          inverseH,
+          settings.maxContactPushSpeed,
+          threshold,
+          1,
+        );
+      } else solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, true);
       if (shock.count > 0) {
         shock.solve(
           constraints,
@@ -202,7 +230,20 @@ export class Solver {
       joints.solveChains(s, false, true);
       refreshCirclePairs(constraints, s);
       joints.solve(s, false);
-      solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, false);
+      if (kernel !== null) {
+        kernel.solve(
+          memory.dataOffset,
+          memory.bodiesOffset,
+          memory.orderOffset,
+          memory.statesOffset,
+          constraints.count,
+          inverseH,
+          settings.maxContactPushSpeed,
+          threshold,
+          0,
+        );
+      } else
+        solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, false);
       if (shock.count > 0) {
         shock.solve(
           constraints,

@@ -1,0 +1,582 @@
+// Contact kernel: warm start, solve and relax over the constraint layout of contact-solver.ts.
+const NORMAL_X: i32 = 0;
+const NORMAL_Y: i32 = 1;
+const FRICTION: i32 = 2;
+const RESTITUTION: i32 = 3;
+const INV_MASS_A: i32 = 4;
+const INV_I_A: i32 = 5;
+const INV_MASS_B: i32 = 6;
+const INV_I_B: i32 = 7;
+const BIAS_RATE: i32 = 8;
+const MASS_SCALE: i32 = 9;
+const IMPULSE_SCALE: i32 = 10;
+const POINT_COUNT: i32 = 11;
+const SHIFT_WEIGHT_A: i32 = 12;
+const SHIFT_WEIGHT_B: i32 = 13;
+const REF_DP_AX: i32 = 14;
+const REF_DP_AY: i32 = 15;
+const REF_DP_BX: i32 = 16;
+const REF_DP_BY: i32 = 17;
+const RADIUS_A: i32 = 18;
+const RADIUS_B: i32 = 19;
+const CENTER_DX: i32 = 20;
+const CENTER_DY: i32 = 21;
+const BLOCK_K11: i32 = 22;
+const BLOCK_K12: i32 = 23;
+const BLOCK_K22: i32 = 24;
+const BLOCK: i32 = 25;
+const POINTS: i32 = 26;
+const R_AX: i32 = 0;
+const R_AY: i32 = 1;
+const R_BX: i32 = 2;
+const R_BY: i32 = 3;
+const BASE_SEPARATION: i32 = 4;
+const NORMAL_IMPULSE: i32 = 5;
+const TANGENT_IMPULSE: i32 = 6;
+const MAX_NORMAL_IMPULSE: i32 = 7;
+const NORMAL_MASS: i32 = 8;
+const TANGENT_MASS: i32 = 9;
+const RELATIVE_VELOCITY: i32 = 10;
+const TOTAL_NORMAL_IMPULSE: i32 = 11;
+const TOTAL_TANGENT_IMPULSE: i32 = 12;
+const RN_A: i32 = 13;
+const RN_B: i32 = 14;
+const IMPACT: i32 = 15;
+const POINT_STRIDE: i32 = 16;
+const STRIDE: i32 = POINTS + 2 * POINT_STRIDE;
+
+const V_X: i32 = 0;
+const V_Y: i32 = 1;
+const W: i32 = 2;
+const DELTA_ANGLE: i32 = 3;
+const DP_X: i32 = 4;
+const DP_Y: i32 = 5;
+const Q_C: i32 = 6;
+const Q_S: i32 = 7;
+
+function ld(p: usize, k: i32): f64 {
+  return load<f64>(p + ((<usize>k) << 3));
+}
+
+function st(p: usize, k: i32, v: f64): void {
+  store<f64>(p + ((<usize>k) << 3), v);
+}
+
+function advancePose(k: usize, dx: f64, dy: f64, angle: f64): void {
+  st(k, DP_X, ld(k, DP_X) + dx);
+  st(k, DP_Y, ld(k, DP_Y) + dy);
+  if (angle != 0) {
+    st(k, DELTA_ANGLE, ld(k, DELTA_ANGLE) + angle);
+    const qc = ld(k, Q_C);
+    const qs = ld(k, Q_S);
+    const c = qc - angle * qs;
+    const sn = qs + angle * qc;
+    const inverseLength = 1 / Math.sqrt(c * c + sn * sn);
+    st(k, Q_C, c * inverseLength);
+    st(k, Q_S, sn * inverseLength);
+  }
+}
+
+export function warmStart(
+  cPtr: usize,
+  bodiesPtr: usize,
+  orderPtr: usize,
+  sPtr: usize,
+  count: i32,
+): void {
+  for (let n = 0; n < count; n++) {
+    const i = load<i32>(orderPtr + ((<usize>n) << 2));
+    const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
+    const a = load<i32>(bodiesPtr + ((<usize>i) << 3));
+    const b = load<i32>(bodiesPtr + ((<usize>i) << 3), 4);
+    const sa = sPtr + ((<usize>a) << 3);
+    const sb = sPtr + ((<usize>b) << 3);
+    const mA = ld(cb, INV_MASS_A);
+    const iA = ld(cb, INV_I_A);
+    const mB = ld(cb, INV_MASS_B);
+    const iB = ld(cb, INV_I_B);
+    const nx = ld(cb, NORMAL_X);
+    const ny = ld(cb, NORMAL_Y);
+    const tx = ny;
+    const ty = -nx;
+    let vAx = ld(sa, V_X);
+    let vAy = ld(sa, V_Y);
+    let wA = ld(sa, W);
+    let vBx = ld(sb, V_X);
+    let vBy = ld(sb, V_Y);
+    let wB = ld(sb, W);
+    const pointCount = <i32>ld(cb, POINT_COUNT);
+    const shiftA = ld(cb, SHIFT_WEIGHT_A);
+    const shiftB = ld(cb, SHIFT_WEIGHT_B);
+    const dpAx = ld(sa, DP_X);
+    const dpAy = ld(sa, DP_Y);
+    const dpBx = ld(sb, DP_X);
+    const dpBy = ld(sb, DP_Y);
+    const eAx = dpAx - ld(cb, REF_DP_AX);
+    const eAy = dpAy - ld(cb, REF_DP_AY);
+    const eBx = dpBx - ld(cb, REF_DP_BX);
+    const eBy = dpBy - ld(cb, REF_DP_BY);
+    const shiftX = shiftA * eAx + shiftB * eBx;
+    const shiftY = shiftA * eAy + shiftB * eBy;
+    const sAx = shiftX - eAx;
+    const sAy = shiftY - eAy;
+    const sBx = shiftX - eBx;
+    const sBy = shiftY - eBy;
+    const dnA = sAx * ny - sAy * nx;
+    const dnB = sBx * ny - sBy * nx;
+    const dtA = -(sAx * nx + sAy * ny);
+    const dtB = -(sBx * nx + sBy * ny);
+    for (let j = 0; j < pointCount; j++) {
+      const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+      if (ld(p, IMPACT) == 2) {
+        st(p, IMPACT, 0);
+        st(p, NORMAL_IMPULSE, 0);
+      }
+      const pn = ld(p, NORMAL_IMPULSE);
+      const pt = ld(p, TANGENT_IMPULSE);
+      const px = pn * nx + pt * tx;
+      const py = pn * ny + pt * ty;
+      const rtA = dtA - (ld(p, R_AX) * nx + ld(p, R_AY) * ny);
+      const rtB = dtB - (ld(p, R_BX) * nx + ld(p, R_BY) * ny);
+      wA -= iA * (pn * (ld(p, RN_A) + dnA) + pt * rtA);
+      vAx -= mA * px;
+      vAy -= mA * py;
+      wB += iB * (pn * (ld(p, RN_B) + dnB) + pt * rtB);
+      vBx += mB * px;
+      vBy += mB * py;
+    }
+    if (a != 0) {
+      st(sa, V_X, vAx);
+      st(sa, V_Y, vAy);
+      st(sa, W, wA);
+    }
+    if (b != 0) {
+      st(sb, V_X, vBx);
+      st(sb, V_Y, vBy);
+      st(sb, W, wB);
+    }
+  }
+}
+
+export function solve(
+  cPtr: usize,
+  bodiesPtr: usize,
+  orderPtr: usize,
+  sPtr: usize,
+  count: i32,
+  inverseH: f64,
+  maxPushSpeed: f64,
+  restitutionThreshold: f64,
+  useBias: bool,
+): void {
+  for (let n = 0; n < count; n++) {
+    const i = load<i32>(orderPtr + ((<usize>n) << 2));
+    const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
+    const a = load<i32>(bodiesPtr + ((<usize>i) << 3));
+    const b = load<i32>(bodiesPtr + ((<usize>i) << 3), 4);
+    const sa = sPtr + ((<usize>a) << 3);
+    const sb = sPtr + ((<usize>b) << 3);
+    const mA = ld(cb, INV_MASS_A);
+    const iA = ld(cb, INV_I_A);
+    const mB = ld(cb, INV_MASS_B);
+    const iB = ld(cb, INV_I_B);
+    const nx = ld(cb, NORMAL_X);
+    const ny = ld(cb, NORMAL_Y);
+    const restitution = ld(cb, RESTITUTION);
+    const biasRate = ld(cb, BIAS_RATE);
+    let vAx = ld(sa, V_X);
+    let vAy = ld(sa, V_Y);
+    let wA = ld(sa, W);
+    let vBx = ld(sb, V_X);
+    let vBy = ld(sb, V_Y);
+    let wB = ld(sb, W);
+    const dpAx = ld(sa, DP_X);
+    const dpAy = ld(sa, DP_Y);
+    const dpBx = ld(sb, DP_X);
+    const dpBy = ld(sb, DP_Y);
+    const shiftA = ld(cb, SHIFT_WEIGHT_A);
+    const shiftB = ld(cb, SHIFT_WEIGHT_B);
+    const eAx = dpAx - ld(cb, REF_DP_AX);
+    const eAy = dpAy - ld(cb, REF_DP_AY);
+    const eBx = dpBx - ld(cb, REF_DP_BX);
+    const eBy = dpBy - ld(cb, REF_DP_BY);
+    const shiftX = shiftA * eAx + shiftB * eBx;
+    const shiftY = shiftA * eAy + shiftB * eBy;
+    let sAx = shiftX - eAx;
+    let sAy = shiftY - eAy;
+    let sBx = shiftX - eBx;
+    let sBy = shiftY - eBy;
+    const dnA = sAx * ny - sAy * nx;
+    const dnB = sBx * ny - sBy * nx;
+    let bounced = false;
+    const qAc = ld(sa, Q_C);
+    const qAs = ld(sa, Q_S);
+    const qBc = ld(sb, Q_C);
+    const qBs = ld(sb, Q_S);
+    const nAx = qAc * nx + qAs * ny;
+    const nAy = qAc * ny - qAs * nx;
+    const nBx = qBc * nx + qBs * ny;
+    const nBy = qBc * ny - qBs * nx;
+    const dpn = (dpBx - dpAx) * nx + (dpBy - dpAy) * ny;
+    const pointCount = <i32>ld(cb, POINT_COUNT);
+
+    let firstSequential = 0;
+    if (ld(cb, BLOCK) == 1) {
+      const p1 = cb + ((<usize>POINTS) << 3);
+      const p2 = p1 + ((<usize>POINT_STRIDE) << 3);
+      const separation1 =
+        dpn +
+        (ld(p1, R_BX) * nBx + ld(p1, R_BY) * nBy) -
+        (ld(p1, R_AX) * nAx + ld(p1, R_AY) * nAy) +
+        ld(p1, BASE_SEPARATION);
+      const separation2 =
+        dpn +
+        (ld(p2, R_BX) * nBx + ld(p2, R_BY) * nBy) -
+        (ld(p2, R_AX) * nAx + ld(p2, R_AY) * nAy) +
+        ld(p2, BASE_SEPARATION);
+      const n1A = ld(p1, RN_A) + dnA;
+      const n1B = ld(p1, RN_B) + dnB;
+      const n2A = ld(p2, RN_A) + dnA;
+      const n2B = ld(p2, RN_B) + dnB;
+      const k11 = ld(cb, BLOCK_K11);
+      const k12 = ld(cb, BLOCK_K12);
+      const k22 = ld(cb, BLOCK_K22);
+      let bias1: f64 = 0;
+      let gamma1: f64 = 0;
+      if (separation1 > 0) bias1 = separation1 * inverseH;
+      else if (useBias) {
+        bias1 = max<f64>(biasRate * separation1, -maxPushSpeed);
+        gamma1 = (k11 * ld(cb, IMPULSE_SCALE)) / ld(cb, MASS_SCALE);
+      }
+      let bias2: f64 = 0;
+      let gamma2: f64 = 0;
+      if (separation2 > 0) bias2 = separation2 * inverseH;
+      else if (useBias) {
+        bias2 = max<f64>(biasRate * separation2, -maxPushSpeed);
+        gamma2 = (k22 * ld(cb, IMPULSE_SCALE)) / ld(cb, MASS_SCALE);
+      }
+      const dvn = (vBx - vAx) * nx + (vBy - vAy) * ny;
+      const vn1 = dvn + wB * n1B - wA * n1A;
+      const vn2 = dvn + wB * n2B - wA * n2A;
+      const accumulated1 = ld(p1, NORMAL_IMPULSE);
+      const accumulated2 = ld(p2, NORMAL_IMPULSE);
+      let isImpact1 = false;
+      let isImpact2 = false;
+      if (restitution > 0) {
+        const impact1 = ld(p1, IMPACT);
+        const impact2 = ld(p2, IMPACT);
+        isImpact1 =
+          accumulated1 == 0 &&
+          impact1 != 2 &&
+          vn1 < -restitutionThreshold &&
+          (impact1 == 1 || vn1 + bias1 < 0);
+        isImpact2 =
+          accumulated2 == 0 &&
+          impact2 != 2 &&
+          vn2 < -restitutionThreshold &&
+          (impact2 == 1 || vn2 + bias2 < 0);
+      }
+      if (!isImpact1 && !isImpact2) {
+        const a11 = k11 + gamma1;
+        const a22 = k22 + gamma2;
+        const q1 = vn1 + bias1 - (k11 * accumulated1 + k12 * accumulated2);
+        const q2 = vn2 + bias2 - (k12 * accumulated1 + k22 * accumulated2);
+        let x1: f64 = -1;
+        let x2: f64 = -1;
+        const det = a11 * a22 - k12 * k12;
+        const y1 = (k12 * q2 - a22 * q1) / det;
+        const y2 = (k12 * q1 - a11 * q2) / det;
+        if (y1 >= 0 && y2 >= 0) {
+          x1 = y1;
+          x2 = y2;
+        } else {
+          const z1 = -q1 / a11;
+          if (z1 >= 0 && k12 * z1 + q2 >= 0) {
+            x1 = z1;
+            x2 = 0;
+          } else {
+            const z2 = -q2 / a22;
+            if (z2 >= 0 && k12 * z2 + q1 >= 0) {
+              x1 = 0;
+              x2 = z2;
+            } else if (q1 >= 0 && q2 >= 0) {
+              x1 = 0;
+              x2 = 0;
+            }
+          }
+        }
+        if (x1 >= 0 && x2 >= 0) {
+          firstSequential = 2;
+          if (restitution > 0) {
+            if (ld(p1, IMPACT) == 1) st(p1, IMPACT, 0);
+            if (ld(p2, IMPACT) == 1) st(p2, IMPACT, 0);
+          }
+          const dx1 = x1 - accumulated1;
+          const dx2 = x2 - accumulated2;
+          st(p1, NORMAL_IMPULSE, x1);
+          st(p2, NORMAL_IMPULSE, x2);
+          if (!useBias) {
+            st(p1, TOTAL_NORMAL_IMPULSE, ld(p1, TOTAL_NORMAL_IMPULSE) + x1);
+            st(p2, TOTAL_NORMAL_IMPULSE, ld(p2, TOTAL_NORMAL_IMPULSE) + x2);
+          }
+          if (dx1 > ld(p1, MAX_NORMAL_IMPULSE)) st(p1, MAX_NORMAL_IMPULSE, dx1);
+          if (dx2 > ld(p2, MAX_NORMAL_IMPULSE)) st(p2, MAX_NORMAL_IMPULSE, dx2);
+          const sum = dx1 + dx2;
+          vAx -= mA * sum * nx;
+          vAy -= mA * sum * ny;
+          wA -= iA * (n1A * dx1 + n2A * dx2);
+          vBx += mB * sum * nx;
+          vBy += mB * sum * ny;
+          wB += iB * (n1B * dx1 + n2B * dx2);
+        }
+      } else if (isImpact1 && isImpact2 && !useBias && separation1 <= 0 && separation2 <= 0) {
+        const back = min<f64>(0.5 * (separation1 / vn1 + separation2 / vn2), 1 / inverseH);
+        const tAx = dpAx - vAx * back;
+        const tAy = dpAy - vAy * back;
+        const tBx = dpBx - vBx * back;
+        const tBy = dpBy - vBy * back;
+        const eAx = tAx - ld(cb, REF_DP_AX);
+        const eAy = tAy - ld(cb, REF_DP_AY);
+        const eBx = tBx - ld(cb, REF_DP_BX);
+        const eBy = tBy - ld(cb, REF_DP_BY);
+        const sx = shiftA * eAx + shiftB * eBx;
+        const sy = shiftA * eAy + shiftB * eBy;
+        const b1Ax = ld(p1, R_AX) + sx - eAx;
+        const b1Ay = ld(p1, R_AY) + sy - eAy;
+        const b1Bx = ld(p1, R_BX) + sx - eBx;
+        const b1By = ld(p1, R_BY) + sy - eBy;
+        const b2Ax = ld(p2, R_AX) + sx - eAx;
+        const b2Ay = ld(p2, R_AY) + sy - eAy;
+        const b2Bx = ld(p2, R_BX) + sx - eBx;
+        const b2By = ld(p2, R_BY) + sy - eBy;
+        const approach1 =
+          (vBx - wB * b1By - (vAx - wA * b1Ay)) * nx + (vBy + wB * b1Bx - (vAy + wA * b1Ax)) * ny;
+        const approach2 =
+          (vBx - wB * b2By - (vAx - wA * b2Ay)) * nx + (vBy + wB * b2Bx - (vAy + wA * b2Ax)) * ny;
+        const rn1A = b1Ax * ny - b1Ay * nx;
+        const rn1B = b1Bx * ny - b1By * nx;
+        const rn2A = b2Ax * ny - b2Ay * nx;
+        const rn2B = b2Bx * ny - b2By * nx;
+        const mAB = mA + mB;
+        const b11 = mAB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+        const b22 = mAB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+        const b12 = mAB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+        const q1 = (1 + restitution) * approach1;
+        const q2 = (1 + restitution) * approach2;
+        let x1: f64 = -1;
+        let x2: f64 = -1;
+        const det = b11 * b22 - b12 * b12;
+        const y1 = (b12 * q2 - b22 * q1) / det;
+        const y2 = (b12 * q1 - b11 * q2) / det;
+        if (y1 >= 0 && y2 >= 0) {
+          x1 = y1;
+          x2 = y2;
+        } else if (-q1 / b11 >= 0 && (-b12 * q1) / b11 + q2 >= 0) {
+          x1 = -q1 / b11;
+          x2 = 0;
+        } else if (-q2 / b22 >= 0 && (-b12 * q2) / b22 + q1 >= 0) {
+          x1 = 0;
+          x2 = -q2 / b22;
+        } else if (q1 >= 0 && q2 >= 0) {
+          x1 = 0;
+          x2 = 0;
+        }
+        if (x1 >= 0 && x2 >= 0) {
+          firstSequential = 2;
+          st(p1, NORMAL_IMPULSE, x1);
+          st(p2, NORMAL_IMPULSE, x2);
+          st(p1, TOTAL_NORMAL_IMPULSE, ld(p1, TOTAL_NORMAL_IMPULSE) + x1);
+          st(p2, TOTAL_NORMAL_IMPULSE, ld(p2, TOTAL_NORMAL_IMPULSE) + x2);
+          st(p1, RELATIVE_VELOCITY, approach1);
+          st(p2, RELATIVE_VELOCITY, approach2);
+          st(p1, IMPACT, 2);
+          st(p2, IMPACT, 2);
+          if (x1 > ld(p1, MAX_NORMAL_IMPULSE)) st(p1, MAX_NORMAL_IMPULSE, x1);
+          if (x2 > ld(p2, MAX_NORMAL_IMPULSE)) st(p2, MAX_NORMAL_IMPULSE, x2);
+          const px = (x1 + x2) * nx;
+          const py = (x1 + x2) * ny;
+          const dvAx = -mA * px;
+          const dvAy = -mA * py;
+          const dwA = -iA * (rn1A * x1 + rn2A * x2);
+          const dvBx = mB * px;
+          const dvBy = mB * py;
+          const dwB = iB * (rn1B * x1 + rn2B * x2);
+          vAx += dvAx;
+          vAy += dvAy;
+          wA += dwA;
+          vBx += dvBx;
+          vBy += dvBy;
+          wB += dwB;
+          if (a != 0) advancePose(sa, dvAx * back, dvAy * back, dwA * back);
+          if (b != 0) advancePose(sb, dvBx * back, dvBy * back, dwB * back);
+          bounced = true;
+        }
+      }
+    }
+
+    for (let j = firstSequential; j < pointCount; j++) {
+      const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+      const separation =
+        dpn +
+        (ld(p, R_BX) * nBx + ld(p, R_BY) * nBy) -
+        (ld(p, R_AX) * nAx + ld(p, R_AY) * nAy) +
+        ld(p, BASE_SEPARATION);
+      const leverA = ld(p, RN_A) + dnA;
+      const leverB = ld(p, RN_B) + dnB;
+      let bias: f64 = 0;
+      let massScale: f64 = 1;
+      let impulseScale: f64 = 0;
+      if (separation > 0) {
+        bias = separation * inverseH;
+      } else if (useBias) {
+        bias = max<f64>(biasRate * separation, -maxPushSpeed);
+        massScale = ld(cb, MASS_SCALE);
+        impulseScale = ld(cb, IMPULSE_SCALE);
+      }
+      const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * leverB - wA * leverA;
+      const accumulated = ld(p, NORMAL_IMPULSE);
+      if (restitution > 0) {
+        const impactState = ld(p, IMPACT);
+        if (
+          accumulated == 0 &&
+          impactState != 2 &&
+          vn < -restitutionThreshold &&
+          (impactState == 1 || vn + bias < 0)
+        ) {
+          if (useBias || separation > 0) {
+            st(p, IMPACT, useBias ? 1 : 0);
+            continue;
+          }
+          const back = min<f64>(separation / vn, 1 / inverseH);
+          const tAx = dpAx - vAx * back;
+          const tAy = dpAy - vAy * back;
+          const tBx = dpBx - vBx * back;
+          const tBy = dpBy - vBy * back;
+          let bnx = nx;
+          let bny = ny;
+          let bAx: f64;
+          let bAy: f64;
+          let bBx: f64;
+          let bBy: f64;
+          const radiusA = ld(cb, RADIUS_A);
+          const radiusB = ld(cb, RADIUS_B);
+          if (radiusA > 0 && radiusB > 0) {
+            const cx = ld(cb, CENTER_DX) + tBx - tAx;
+            const cy = ld(cb, CENTER_DY) + tBy - tAy;
+            const length = Math.sqrt(cx * cx + cy * cy);
+            if (length > 1e-12) {
+              bnx = cx / length;
+              bny = cy / length;
+            }
+            bAx = bnx * radiusA;
+            bAy = bny * radiusA;
+            bBx = -bnx * radiusB;
+            bBy = -bny * radiusB;
+          } else {
+            const eAx = tAx - ld(cb, REF_DP_AX);
+            const eAy = tAy - ld(cb, REF_DP_AY);
+            const eBx = tBx - ld(cb, REF_DP_BX);
+            const eBy = tBy - ld(cb, REF_DP_BY);
+            const sx = shiftA * eAx + shiftB * eBx;
+            const sy = shiftA * eAy + shiftB * eBy;
+            bAx = ld(p, R_AX) + sx - eAx;
+            bAy = ld(p, R_AY) + sy - eAy;
+            bBx = ld(p, R_BX) + sx - eBx;
+            bBy = ld(p, R_BY) + sy - eBy;
+          }
+          const approach =
+            (vBx - wB * bBy - (vAx - wA * bAy)) * bnx + (vBy + wB * bBx - (vAy + wA * bAx)) * bny;
+          const rnA = bAx * bny - bAy * bnx;
+          const rnB = bBx * bny - bBy * bnx;
+          const k = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+          const bounce: f64 = approach < 0 && k > 0 ? (-(1 + restitution) * approach) / k : 0;
+          st(p, NORMAL_IMPULSE, bounce);
+          st(p, TOTAL_NORMAL_IMPULSE, ld(p, TOTAL_NORMAL_IMPULSE) + bounce);
+          st(p, RELATIVE_VELOCITY, approach);
+          st(p, IMPACT, 2);
+          if (bounce > ld(p, MAX_NORMAL_IMPULSE)) st(p, MAX_NORMAL_IMPULSE, bounce);
+          const px = bounce * bnx;
+          const py = bounce * bny;
+          const dvAx = -mA * px;
+          const dvAy = -mA * py;
+          const dwA = -iA * (bAx * py - bAy * px);
+          const dvBx = mB * px;
+          const dvBy = mB * py;
+          const dwB = iB * (bBx * py - bBy * px);
+          vAx += dvAx;
+          vAy += dvAy;
+          wA += dwA;
+          vBx += dvBx;
+          vBy += dvBy;
+          wB += dwB;
+          if (a != 0) advancePose(sa, dvAx * back, dvAy * back, dwA * back);
+          if (b != 0) advancePose(sb, dvBx * back, dvBy * back, dwB * back);
+          bounced = true;
+          continue;
+        }
+        if (impactState == 1) st(p, IMPACT, 0);
+      }
+      const newImpulse = max<f64>(
+        accumulated - ld(p, NORMAL_MASS) * massScale * (vn + bias) - impulseScale * accumulated,
+        0,
+      );
+      const impulse = newImpulse - accumulated;
+      st(p, NORMAL_IMPULSE, newImpulse);
+      if (!useBias) st(p, TOTAL_NORMAL_IMPULSE, ld(p, TOTAL_NORMAL_IMPULSE) + newImpulse);
+      if (impulse > ld(p, MAX_NORMAL_IMPULSE)) st(p, MAX_NORMAL_IMPULSE, impulse);
+      vAx -= mA * impulse * nx;
+      vAy -= mA * impulse * ny;
+      wA -= iA * leverA * impulse;
+      vBx += mB * impulse * nx;
+      vBy += mB * impulse * ny;
+      wB += iB * leverB * impulse;
+    }
+
+    if (bounced) {
+      const eAx = ld(sa, DP_X) - ld(cb, REF_DP_AX);
+      const eAy = ld(sa, DP_Y) - ld(cb, REF_DP_AY);
+      const eBx = ld(sb, DP_X) - ld(cb, REF_DP_BX);
+      const eBy = ld(sb, DP_Y) - ld(cb, REF_DP_BY);
+      const sx = shiftA * eAx + shiftB * eBx;
+      const sy = shiftA * eAy + shiftB * eBy;
+      sAx = sx - eAx;
+      sAy = sy - eAy;
+      sBx = sx - eBx;
+      sBy = sy - eBy;
+    }
+    const dtA = -(sAx * nx + sAy * ny);
+    const dtB = -(sBx * nx + sBy * ny);
+    const friction = ld(cb, FRICTION);
+    for (let j = 0; j < pointCount; j++) {
+      const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+      const leverA = dtA - (ld(p, R_AX) * nx + ld(p, R_AY) * ny);
+      const leverB = dtB - (ld(p, R_BX) * nx + ld(p, R_BY) * ny);
+      const vt = (vBx - vAx) * ny - (vBy - vAy) * nx + wB * leverB - wA * leverA;
+      const accumulated = ld(p, TANGENT_IMPULSE);
+      const maxFriction = friction * ld(p, NORMAL_IMPULSE);
+      let newImpulse = accumulated - ld(p, TANGENT_MASS) * vt;
+      if (newImpulse > maxFriction) newImpulse = maxFriction;
+      else if (newImpulse < -maxFriction) newImpulse = -maxFriction;
+      const impulse = newImpulse - accumulated;
+      st(p, TANGENT_IMPULSE, newImpulse);
+      if (!useBias) st(p, TOTAL_TANGENT_IMPULSE, ld(p, TOTAL_TANGENT_IMPULSE) + newImpulse);
+      vAx -= mA * impulse * ny;
+      vAy += mA * impulse * nx;
+      wA -= iA * leverA * impulse;
+      vBx += mB * impulse * ny;
+      vBy -= mB * impulse * nx;
+      wB += iB * leverB * impulse;
+    }
+
+    if (a != 0) {
+      st(sa, V_X, vAx);
+      st(sa, V_Y, vAy);
+      st(sa, W, wA);
+    }
+    if (b != 0) {
+      st(sb, V_X, vBx);
+      st(sb, V_Y, vBy);
+      st(sb, W, wB);
+    }
+  }
+}
