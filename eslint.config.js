@@ -34,6 +34,8 @@ export default tseslint.config(
       '**/coverage/**',
       '**/generated/**',
       'docs-site/**',
+      // Local experiments (git-ignored).
+      '.scratch/**',
     ],
   },
   js.configs.recommended,
