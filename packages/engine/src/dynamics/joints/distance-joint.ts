@@ -289,7 +289,7 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  warmStart(s: Float64Array): void {
+  override warmStart(s: Float64Array): void {
     const a = this.stateA;
     const b = this.stateB;
     const qAc = s[a + Q_C]!;
@@ -316,7 +316,7 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
+  override solve(s: Float64Array, step: JointStep, useBias: boolean): void {
     const a = this.stateA;
     const b = this.stateB;
     const mA = this.invMassA;

@@ -284,13 +284,26 @@ export abstract class Joint<UserData = unknown> {
 
   /** @internal Anchors, effective masses and softness for this step. */
   abstract prepare(step: JointStep): void;
-  /** @internal Applies the impulses carried from the last sub-step. */
-  abstract warmStart(s: Float64Array): void;
+  /**
+   * @internal Applies the impulses carried from the last sub-step. Kinds with a batch
+   * ({@link createBatch}) are warm-started there instead.
+   */
+  warmStart(_s: Float64Array): void {}
   /**
    * @internal One pass. With `useBias` position error is corrected softly; without it (relax) only
    * velocities are constrained. The relax pass adds the sub-step's impulses to the step sums.
+   * Kinds with a batch are solved there instead.
    */
-  abstract solve(s: Float64Array, step: JointStep, useBias: boolean): void;
+  solve(_s: Float64Array, _step: JointStep, _useBias: boolean): void {}
+
+  /**
+   * @internal The kind's batch (its joints' solver numbers of a step in flat arrays, solved in
+   * one loop per pass), made once per world by the first joint of the kind; null for kinds solved
+   * one joint at a time.
+   */
+  createBatch(): JointBatch | null {
+    return null;
+  }
   /** @internal Forgets accumulated impulses (the joint was moved by hand or just created). */
   abstract resetImpulses(): void;
 
@@ -303,6 +316,22 @@ export abstract class Joint<UserData = unknown> {
   createChains(): PinChains | null {
     return null;
   }
+}
+
+/**
+ * @internal One joint kind's solver numbers for a step, in flat arrays, so each pass is one loop
+ * over numbers instead of a call per joint object (Box2D v3 keeps joint solver data in arrays the
+ * same way). Between steps the joint objects hold the truth; {@link finish} writes it back.
+ */
+export interface JointBatch {
+  /** Forgets last step's joints. */
+  clear(): void;
+  /** Adds a joint of the batch's kind, already prepared for the step. */
+  add(joint: Joint): void;
+  warmStart(s: Float64Array): void;
+  solve(s: Float64Array, step: JointStep, useBias: boolean): void;
+  /** Writes the step's impulses back to the joints. */
+  finish(): void;
 }
 
 /**

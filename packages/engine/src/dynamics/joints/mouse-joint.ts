@@ -233,7 +233,7 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  warmStart(s: Float64Array): void {
+  override warmStart(s: Float64Array): void {
     const b = this.stateB;
     const mB = this.invMassB;
     const iB = this.invInertiaB;
@@ -247,7 +247,7 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
+  override solve(s: Float64Array, step: JointStep, useBias: boolean): void {
     const b = this.stateB;
     const mB = this.invMassB;
     const iB = this.invInertiaB;

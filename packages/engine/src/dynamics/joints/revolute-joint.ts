@@ -11,6 +11,7 @@ import { PinChains, type PinJoint } from './pin-chains.ts';
 import {
   Joint,
   type JointOptions,
+  type JointBatch,
   type JointState,
   type JointStateLayout,
   type JointStep,
@@ -119,6 +120,9 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   private motorImpulse = -0;
   private lowerImpulse = -0;
   private upperImpulse = -0;
+  /** The batch holding the joint's numbers during a step, and its slot there. */
+  private batch: RevoluteBatch | null = null;
+  private slot = 0;
 
   constructor(options: RevoluteJointOptions<UserData>) {
     requireBodies(options);
@@ -363,26 +367,60 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  warmStart(s: Float64Array): void {
-    const a = this.stateA;
-    const b = this.stateB;
-    const mA = this.invMassA;
-    const iA = this.invInertiaA;
-    const mB = this.invMassB;
-    const iB = this.invInertiaB;
-    const rAx = s[a + Q_C]! * this.rAx - s[a + Q_S]! * this.rAy;
-    const rAy = s[a + Q_S]! * this.rAx + s[a + Q_C]! * this.rAy;
-    const rBx = s[b + Q_C]! * this.rBx - s[b + Q_S]! * this.rBy;
-    const rBy = s[b + Q_S]! * this.rBx + s[b + Q_C]! * this.rBy;
-    const px = this.linearImpulseX;
-    const py = this.linearImpulseY;
-    const axial = this.springImpulse + this.motorImpulse + this.lowerImpulse - this.upperImpulse;
-    s[a + V_X] -= mA * px;
-    s[a + V_Y] -= mA * py;
-    s[a + W] -= iA * (rAx * py - rAy * px + axial);
-    s[b + V_X] += mB * px;
-    s[b + V_Y] += mB * py;
-    s[b + W] += iB * (rBx * py - rBy * px + axial);
+  override createBatch(): RevoluteBatch {
+    return new RevoluteBatch();
+  }
+
+  /** @internal Writes this step's solver numbers into a batch's slot at `o`. */
+  loadBatch(d: Float64Array, o: number, batch: RevoluteBatch, slot: number): void {
+    this.batch = batch;
+    this.slot = slot;
+    d[o + R_AX] = this.rAx;
+    d[o + R_AY] = this.rAy;
+    d[o + R_BX] = this.rBx;
+    d[o + R_BY] = this.rBy;
+    d[o + DELTA_CENTER_X] = this.deltaCenterX;
+    d[o + DELTA_CENTER_Y] = this.deltaCenterY;
+    d[o + JOINT_ANGLE_0] = this.deltaAngle;
+    d[o + AXIAL_MASS] = this.axialMass;
+    d[o + INV_MASS_A] = this.invMassA;
+    d[o + INV_I_A] = this.invInertiaA;
+    d[o + INV_MASS_B] = this.invMassB;
+    d[o + INV_I_B] = this.invInertiaB;
+    // A spring of 0 Hz exerts nothing (Box2D's soft constraint of 0 Hz would lock the motion).
+    d[o + SPRING_ON] = this.springEnabled && this.springHertz > 0 ? 1 : 0;
+    d[o + SPRING_BIAS_RATE] = this.springSoftness.biasRate;
+    d[o + SPRING_MASS_SCALE] = this.springSoftness.massScale;
+    d[o + SPRING_IMPULSE_SCALE] = this.springSoftness.impulseScale;
+    d[o + MOTOR_ON] = this.motorEnabled ? 1 : 0;
+    d[o + MOTOR_SPEED] = this.speed;
+    d[o + MAX_MOTOR_TORQUE] = this.maxTorque;
+    d[o + LIMIT_ON] = this.limitEnabled ? 1 : 0;
+    d[o + LOWER] = this.lower;
+    d[o + UPPER] = this.upper;
+    d[o + LINEAR_IMPULSE_X] = this.linearImpulseX;
+    d[o + LINEAR_IMPULSE_Y] = this.linearImpulseY;
+    d[o + SPRING_IMPULSE] = this.springImpulse;
+    d[o + MOTOR_IMPULSE] = this.motorImpulse;
+    d[o + LOWER_IMPULSE] = this.lowerImpulse;
+    d[o + UPPER_IMPULSE] = this.upperImpulse;
+    d[o + STEP_IMPULSE_X] = this.stepImpulseX;
+    d[o + STEP_IMPULSE_Y] = this.stepImpulseY;
+    d[o + STEP_ANGULAR_IMPULSE] = this.stepAngularImpulse;
+  }
+
+  /** @internal Takes the step's impulses back from the batch's slot at `o`. */
+  storeBatch(d: Float64Array, o: number): void {
+    this.batch = null;
+    this.linearImpulseX = d[o + LINEAR_IMPULSE_X]!;
+    this.linearImpulseY = d[o + LINEAR_IMPULSE_Y]!;
+    this.springImpulse = d[o + SPRING_IMPULSE]!;
+    this.motorImpulse = d[o + MOTOR_IMPULSE]!;
+    this.lowerImpulse = d[o + LOWER_IMPULSE]!;
+    this.upperImpulse = d[o + UPPER_IMPULSE]!;
+    this.stepImpulseX = d[o + STEP_IMPULSE_X]!;
+    this.stepImpulseY = d[o + STEP_IMPULSE_Y]!;
+    this.stepAngularImpulse = d[o + STEP_ANGULAR_IMPULSE]!;
   }
 
   /** @internal */
@@ -439,8 +477,12 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
 
   /** @internal */
   pinLoad(out: Float64Array, offset: number): void {
-    const px = this.linearImpulseX;
-    const py = this.linearImpulseY;
+    // The chains read it while they prepare, before the joint joins its batch.
+    const batch = this.batch;
+    const px =
+      batch === null ? this.linearImpulseX : batch.data[this.slot * STRIDE + LINEAR_IMPULSE_X]!;
+    const py =
+      batch === null ? this.linearImpulseY : batch.data[this.slot * STRIDE + LINEAR_IMPULSE_Y]!;
     out[offset] = Math.abs(px * this.rAx + py * this.rAy);
     out[offset + 1] = Math.abs(px * this.rBx + py * this.rBy);
   }
@@ -449,154 +491,263 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   addPinImpulse(t: Float64Array, offset: number, relax: boolean): void {
     const px = t[offset + 15]!;
     const py = t[offset + 5]!;
-    this.linearImpulseX += px;
-    this.linearImpulseY += py;
+    const d = this.batch!.data;
+    const o = this.slot * STRIDE;
+    d[o + LINEAR_IMPULSE_X] += px;
+    d[o + LINEAR_IMPULSE_Y] += py;
     if (relax) {
-      this.stepImpulseX += px;
-      this.stepImpulseY += py;
+      d[o + STEP_IMPULSE_X] += px;
+      d[o + STEP_IMPULSE_Y] += py;
+    }
+  }
+}
+
+// The revolute joints of a step in flat arrays (RevoluteBatch), doubles per joint:
+const R_AX = 0; // levers from the centres to the anchors at the step's start (m)
+const R_AY = 1;
+const R_BX = 2;
+const R_BY = 3;
+const DELTA_CENTER_X = 4; // centre of B minus centre of A at the step's start (m)
+const DELTA_CENTER_Y = 5;
+const JOINT_ANGLE_0 = 6; // joint angle at the step's start (rad)
+const AXIAL_MASS = 7;
+const INV_MASS_A = 8;
+const INV_I_A = 9;
+const INV_MASS_B = 10;
+const INV_I_B = 11;
+const SPRING_ON = 12; // 1 or 0
+const SPRING_BIAS_RATE = 13;
+const SPRING_MASS_SCALE = 14;
+const SPRING_IMPULSE_SCALE = 15;
+const MOTOR_ON = 16;
+const MOTOR_SPEED = 17;
+const MAX_MOTOR_TORQUE = 18;
+const LIMIT_ON = 19;
+const LOWER = 20;
+const UPPER = 21;
+const LINEAR_IMPULSE_X = 22; // accumulated impulses (warm-started)
+const LINEAR_IMPULSE_Y = 23;
+const SPRING_IMPULSE = 24;
+const MOTOR_IMPULSE = 25;
+const LOWER_IMPULSE = 26;
+const UPPER_IMPULSE = 27;
+const STEP_IMPULSE_X = 28; // summed over the step's relax passes, for the reaction
+const STEP_IMPULSE_Y = 29;
+const STEP_ANGULAR_IMPULSE = 30;
+const STRIDE = 32;
+
+/**
+ * @internal The revolute joints of a step: their numbers in one Float64Array and their bodies'
+ * state offsets in an Int32Array, solved in one loop per pass (see JointBatch).
+ */
+export class RevoluteBatch implements JointBatch {
+  count = 0;
+  data: Float64Array = new Float64Array(STRIDE * 16);
+  private states: Int32Array = new Int32Array(2 * 16);
+  private readonly joints: RevoluteJoint[] = [];
+
+  clear(): void {
+    this.count = 0;
+  }
+
+  add(joint: Joint): void {
+    const revolute = joint as RevoluteJoint;
+    const i = this.count++;
+    if (this.states.length < 2 * this.count) {
+      const data = new Float64Array(2 * this.data.length);
+      data.set(this.data);
+      this.data = data;
+      const states = new Int32Array(2 * this.states.length);
+      states.set(this.states);
+      this.states = states;
+    }
+    this.states[2 * i] = revolute.stateA;
+    this.states[2 * i + 1] = revolute.stateB;
+    this.joints[i] = revolute; // at most at its length: appends, never a hole
+    revolute.loadBatch(this.data, i * STRIDE, this, i);
+  }
+
+  warmStart(s: Float64Array): void {
+    const d = this.data;
+    const states = this.states;
+    for (let i = 0; i < this.count; i++) {
+      const o = i * STRIDE;
+      const a = states[2 * i]!;
+      const b = states[2 * i + 1]!;
+      const mA = d[o + INV_MASS_A]!;
+      const iA = d[o + INV_I_A]!;
+      const mB = d[o + INV_MASS_B]!;
+      const iB = d[o + INV_I_B]!;
+      const rAx = s[a + Q_C]! * d[o + R_AX]! - s[a + Q_S]! * d[o + R_AY]!;
+      const rAy = s[a + Q_S]! * d[o + R_AX]! + s[a + Q_C]! * d[o + R_AY]!;
+      const rBx = s[b + Q_C]! * d[o + R_BX]! - s[b + Q_S]! * d[o + R_BY]!;
+      const rBy = s[b + Q_S]! * d[o + R_BX]! + s[b + Q_C]! * d[o + R_BY]!;
+      const px = d[o + LINEAR_IMPULSE_X]!;
+      const py = d[o + LINEAR_IMPULSE_Y]!;
+      const axial =
+        d[o + SPRING_IMPULSE]! +
+        d[o + MOTOR_IMPULSE]! +
+        d[o + LOWER_IMPULSE]! -
+        d[o + UPPER_IMPULSE]!;
+      s[a + V_X] -= mA * px;
+      s[a + V_Y] -= mA * py;
+      s[a + W] -= iA * (rAx * py - rAy * px + axial);
+      s[b + V_X] += mB * px;
+      s[b + V_Y] += mB * py;
+      s[b + W] += iB * (rBx * py - rBy * px + axial);
     }
   }
 
-  /** @internal */
   solve(s: Float64Array, step: JointStep, useBias: boolean): void {
-    const a = this.stateA;
-    const b = this.stateB;
-    const mA = this.invMassA;
-    const iA = this.invInertiaA;
-    const mB = this.invMassB;
-    const iB = this.invInertiaB;
-    let vAx = s[a + V_X]!;
-    let vAy = s[a + V_Y]!;
-    let wA = s[a + W]!;
-    let vBx = s[b + V_X]!;
-    let vBy = s[b + V_Y]!;
-    let wB = s[b + W]!;
-    const jointAngle = this.deltaAngle + s[b + DELTA_ANGLE]! - s[a + DELTA_ANGLE]!;
-    const axialMass = this.axialMass;
+    const d = this.data;
+    const states = this.states;
     const soft = step.softness;
+    for (let i = 0; i < this.count; i++) {
+      const o = i * STRIDE;
+      const a = states[2 * i]!;
+      const b = states[2 * i + 1]!;
+      const mA = d[o + INV_MASS_A]!;
+      const iA = d[o + INV_I_A]!;
+      const mB = d[o + INV_MASS_B]!;
+      const iB = d[o + INV_I_B]!;
+      let vAx = s[a + V_X]!;
+      let vAy = s[a + V_Y]!;
+      let wA = s[a + W]!;
+      let vBx = s[b + V_X]!;
+      let vBy = s[b + V_Y]!;
+      let wB = s[b + W]!;
+      const jointAngle = d[o + JOINT_ANGLE_0]! + s[b + DELTA_ANGLE]! - s[a + DELTA_ANGLE]!;
+      const axialMass = d[o + AXIAL_MASS]!;
 
-    // A spring of 0 Hz exerts nothing (Box2D's soft constraint of 0 Hz would lock the motion).
-    if (this.springEnabled && this.springHertz > 0) {
-      const spring = this.springSoftness;
-      const bias = spring.biasRate * jointAngle;
-      const impulse =
-        -spring.massScale * axialMass * (wB - wA + bias) - spring.impulseScale * this.springImpulse;
-      this.springImpulse += impulse;
-      wA -= iA * impulse;
-      wB += iB * impulse;
-    }
-
-    if (this.motorEnabled) {
-      const impulse = -axialMass * (wB - wA - this.speed);
-      const old = this.motorImpulse;
-      const maxImpulse = step.h * this.maxTorque;
-      this.motorImpulse = Math.max(-maxImpulse, Math.min(old + impulse, maxImpulse));
-      const applied = this.motorImpulse - old;
-      wA -= iA * applied;
-      wB += iB * applied;
-    }
-
-    if (this.limitEnabled) {
-      // Lower limit: C = angle - lower >= 0.
-      {
-        const c = jointAngle - this.lower;
-        let bias = 0;
-        let massScale = 1;
-        let impulseScale = 0;
-        if (c > 0) bias = c * step.inverseH;
-        else if (useBias) {
-          bias = soft.biasRate * c;
-          massScale = soft.massScale;
-          impulseScale = soft.impulseScale;
-        }
+      if (d[o + SPRING_ON] === 1) {
+        const bias = d[o + SPRING_BIAS_RATE]! * jointAngle;
         const impulse =
-          -axialMass * massScale * (wB - wA + bias) - impulseScale * this.lowerImpulse;
-        const accumulated = Math.max(this.lowerImpulse + impulse, 0);
-        const applied = accumulated - this.lowerImpulse;
-        this.lowerImpulse = accumulated;
+          -d[o + SPRING_MASS_SCALE]! * axialMass * (wB - wA + bias) -
+          d[o + SPRING_IMPULSE_SCALE]! * d[o + SPRING_IMPULSE]!;
+        d[o + SPRING_IMPULSE] += impulse;
+        wA -= iA * impulse;
+        wB += iB * impulse;
+      }
+
+      if (d[o + MOTOR_ON] === 1) {
+        const impulse = -axialMass * (wB - wA - d[o + MOTOR_SPEED]!);
+        const old = d[o + MOTOR_IMPULSE]!;
+        const maxImpulse = step.h * d[o + MAX_MOTOR_TORQUE]!;
+        const accumulated = Math.max(-maxImpulse, Math.min(old + impulse, maxImpulse));
+        d[o + MOTOR_IMPULSE] = accumulated;
+        const applied = accumulated - old;
         wA -= iA * applied;
         wB += iB * applied;
       }
-      // Upper limit: C = upper - angle >= 0, the same row with the sign turned.
+
+      if (d[o + LIMIT_ON] === 1) {
+        // Lower limit: C = angle - lower >= 0.
+        {
+          const c = jointAngle - d[o + LOWER]!;
+          let bias = 0;
+          let massScale = 1;
+          let impulseScale = 0;
+          if (c > 0) bias = c * step.inverseH;
+          else if (useBias) {
+            bias = soft.biasRate * c;
+            massScale = soft.massScale;
+            impulseScale = soft.impulseScale;
+          }
+          const old = d[o + LOWER_IMPULSE]!;
+          const impulse = -axialMass * massScale * (wB - wA + bias) - impulseScale * old;
+          const accumulated = Math.max(old + impulse, 0);
+          const applied = accumulated - old;
+          d[o + LOWER_IMPULSE] = accumulated;
+          wA -= iA * applied;
+          wB += iB * applied;
+        }
+        // Upper limit: C = upper - angle >= 0, the same row with the sign turned.
+        {
+          const c = d[o + UPPER]! - jointAngle;
+          let bias = 0;
+          let massScale = 1;
+          let impulseScale = 0;
+          if (c > 0) bias = c * step.inverseH;
+          else if (useBias) {
+            bias = soft.biasRate * c;
+            massScale = soft.massScale;
+            impulseScale = soft.impulseScale;
+          }
+          const old = d[o + UPPER_IMPULSE]!;
+          const impulse = -axialMass * massScale * (wA - wB + bias) - impulseScale * old;
+          const accumulated = Math.max(old + impulse, 0);
+          const applied = accumulated - old;
+          d[o + UPPER_IMPULSE] = accumulated;
+          wA += iA * applied;
+          wB -= iB * applied;
+        }
+      }
+
+      // The point constraint: both anchors at the same place.
       {
-        const c = this.upper - jointAngle;
-        let bias = 0;
+        const qAc = s[a + Q_C]!;
+        const qAs = s[a + Q_S]!;
+        const qBc = s[b + Q_C]!;
+        const qBs = s[b + Q_S]!;
+        const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
+        const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
+        const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
+        const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
+        const cdotX = vBx - wB * rBy - (vAx - wA * rAy);
+        const cdotY = vBy + wB * rBx - (vAy + wA * rAx);
+        let biasX = 0;
+        let biasY = 0;
         let massScale = 1;
         let impulseScale = 0;
-        if (c > 0) bias = c * step.inverseH;
-        else if (useBias) {
-          bias = soft.biasRate * c;
+        if (useBias) {
+          const sepX = s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + d[o + DELTA_CENTER_X]!;
+          const sepY = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + d[o + DELTA_CENTER_Y]!;
+          biasX = soft.biasRate * sepX;
+          biasY = soft.biasRate * sepY;
           massScale = soft.massScale;
           impulseScale = soft.impulseScale;
         }
-        const impulse =
-          -axialMass * massScale * (wA - wB + bias) - impulseScale * this.upperImpulse;
-        const accumulated = Math.max(this.upperImpulse + impulse, 0);
-        const applied = accumulated - this.upperImpulse;
-        this.upperImpulse = accumulated;
-        wA += iA * applied;
-        wB -= iB * applied;
+        const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+        const k12 = -rAy * rAx * iA - rBy * rBx * iB;
+        const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+        const bX = cdotX + biasX;
+        const bY = cdotY + biasY;
+        let det = k11 * k22 - k12 * k12;
+        if (det !== 0) det = 1 / det;
+        const solvedX = det * (k22 * bX - k12 * bY);
+        const solvedY = det * (k11 * bY - k12 * bX);
+        const px = -massScale * solvedX - impulseScale * d[o + LINEAR_IMPULSE_X]!;
+        const py = -massScale * solvedY - impulseScale * d[o + LINEAR_IMPULSE_Y]!;
+        d[o + LINEAR_IMPULSE_X] += px;
+        d[o + LINEAR_IMPULSE_Y] += py;
+        vAx -= mA * px;
+        vAy -= mA * py;
+        wA -= iA * (rAx * py - rAy * px);
+        vBx += mB * px;
+        vBy += mB * py;
+        wB += iB * (rBx * py - rBy * px);
+      }
+
+      s[a + V_X] = vAx;
+      s[a + V_Y] = vAy;
+      s[a + W] = wA;
+      s[b + V_X] = vBx;
+      s[b + V_Y] = vBy;
+      s[b + W] = wB;
+
+      if (!useBias) {
+        d[o + STEP_IMPULSE_X] += d[o + LINEAR_IMPULSE_X]!;
+        d[o + STEP_IMPULSE_Y] += d[o + LINEAR_IMPULSE_Y]!;
+        d[o + STEP_ANGULAR_IMPULSE] +=
+          d[o + SPRING_IMPULSE]! +
+          d[o + MOTOR_IMPULSE]! +
+          d[o + LOWER_IMPULSE]! -
+          d[o + UPPER_IMPULSE]!;
       }
     }
+  }
 
-    // The point constraint: both anchors at the same place.
-    {
-      const qAc = s[a + Q_C]!;
-      const qAs = s[a + Q_S]!;
-      const qBc = s[b + Q_C]!;
-      const qBs = s[b + Q_S]!;
-      const rAx = qAc * this.rAx - qAs * this.rAy;
-      const rAy = qAs * this.rAx + qAc * this.rAy;
-      const rBx = qBc * this.rBx - qBs * this.rBy;
-      const rBy = qBs * this.rBx + qBc * this.rBy;
-      const cdotX = vBx - wB * rBy - (vAx - wA * rAy);
-      const cdotY = vBy + wB * rBx - (vAy + wA * rAx);
-      let biasX = 0;
-      let biasY = 0;
-      let massScale = 1;
-      let impulseScale = 0;
-      if (useBias) {
-        const sepX = s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + this.deltaCenterX;
-        const sepY = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + this.deltaCenterY;
-        biasX = soft.biasRate * sepX;
-        biasY = soft.biasRate * sepY;
-        massScale = soft.massScale;
-        impulseScale = soft.impulseScale;
-      }
-      const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
-      const k12 = -rAy * rAx * iA - rBy * rBx * iB;
-      const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
-      // 2x2 solve inlined: a call with number arguments would box them (allocate) per call.
-      const bX = cdotX + biasX;
-      const bY = cdotY + biasY;
-      let det = k11 * k22 - k12 * k12;
-      if (det !== 0) det = 1 / det;
-      const solvedX = det * (k22 * bX - k12 * bY);
-      const solvedY = det * (k11 * bY - k12 * bX);
-      const px = -massScale * solvedX - impulseScale * this.linearImpulseX;
-      const py = -massScale * solvedY - impulseScale * this.linearImpulseY;
-      this.linearImpulseX += px;
-      this.linearImpulseY += py;
-      vAx -= mA * px;
-      vAy -= mA * py;
-      wA -= iA * (rAx * py - rAy * px);
-      vBx += mB * px;
-      vBy += mB * py;
-      wB += iB * (rBx * py - rBy * px);
-    }
-
-    s[a + V_X] = vAx;
-    s[a + V_Y] = vAy;
-    s[a + W] = wA;
-    s[b + V_X] = vBx;
-    s[b + V_Y] = vBy;
-    s[b + W] = wB;
-
-    if (!useBias) {
-      this.stepImpulseX += this.linearImpulseX;
-      this.stepImpulseY += this.linearImpulseY;
-      this.stepAngularImpulse +=
-        this.springImpulse + this.motorImpulse + this.lowerImpulse - this.upperImpulse;
-    }
+  finish(): void {
+    for (let i = 0; i < this.count; i++) this.joints[i]!.storeBatch(this.data, i * STRIDE);
   }
 }

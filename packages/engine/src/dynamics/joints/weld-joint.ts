@@ -197,7 +197,7 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  warmStart(s: Float64Array): void {
+  override warmStart(s: Float64Array): void {
     const a = this.stateA;
     const b = this.stateB;
     const rAx = s[a + Q_C]! * this.rAx - s[a + Q_S]! * this.rAy;
@@ -216,7 +216,7 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
+  override solve(s: Float64Array, step: JointStep, useBias: boolean): void {
     const a = this.stateA;
     const b = this.stateB;
     const mA = this.invMassA;
