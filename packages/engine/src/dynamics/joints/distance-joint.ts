@@ -10,6 +10,7 @@ import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import {
   Joint,
+  type JointBatch,
   type JointOptions,
   type JointState,
   type JointStateLayout,
@@ -289,80 +290,229 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  override warmStart(s: Float64Array): void {
-    const a = this.stateA;
-    const b = this.stateB;
-    const qAc = s[a + Q_C]!;
-    const qAs = s[a + Q_S]!;
-    const qBc = s[b + Q_C]!;
-    const qBs = s[b + Q_S]!;
-    const rAx = qAc * this.rAx - qAs * this.rAy;
-    const rAy = qAs * this.rAx + qAc * this.rAy;
-    const rBx = qBc * this.rBx - qBs * this.rBy;
-    const rBy = qBs * this.rBx + qBc * this.rBy;
-    const dx = s[b + DP_X]! - s[a + DP_X]! + this.deltaCenterX + rBx - rAx;
-    const dy = s[b + DP_Y]! - s[a + DP_Y]! + this.deltaCenterY + rBy - rAy;
-    const length = Math.sqrt(dx * dx + dy * dy);
-    if (!(length > LENGTH_EPSILON)) return;
-    const axial = this.impulse + this.lowerImpulse - this.upperImpulse;
-    const px = (axial * dx) / length;
-    const py = (axial * dy) / length;
-    s[a + V_X] -= this.invMassA * px;
-    s[a + V_Y] -= this.invMassA * py;
-    s[a + W] -= this.invInertiaA * (rAx * py - rAy * px);
-    s[b + V_X] += this.invMassB * px;
-    s[b + V_Y] += this.invMassB * py;
-    s[b + W] += this.invInertiaB * (rBx * py - rBy * px);
+  override createBatch(): DistanceBatch {
+    return new DistanceBatch();
   }
 
-  /** @internal */
-  override solve(s: Float64Array, step: JointStep, useBias: boolean): void {
-    const a = this.stateA;
-    const b = this.stateB;
-    const mA = this.invMassA;
-    const iA = this.invInertiaA;
-    const mB = this.invMassB;
-    const iB = this.invInertiaB;
-    let vAx = s[a + V_X]!;
-    let vAy = s[a + V_Y]!;
-    let wA = s[a + W]!;
-    let vBx = s[b + V_X]!;
-    let vBy = s[b + V_Y]!;
-    let wB = s[b + W]!;
-    const qAc = s[a + Q_C]!;
-    const qAs = s[a + Q_S]!;
-    const qBc = s[b + Q_C]!;
-    const qBs = s[b + Q_S]!;
-    const rAx = qAc * this.rAx - qAs * this.rAy;
-    const rAy = qAs * this.rAx + qAc * this.rAy;
-    const rBx = qBc * this.rBx - qBs * this.rBy;
-    const rBy = qBs * this.rBx + qBc * this.rBy;
-    const dx = s[b + DP_X]! - s[a + DP_X]! + this.deltaCenterX + rBx - rAx;
-    const dy = s[b + DP_Y]! - s[a + DP_Y]! + this.deltaCenterY + rBy - rAy;
-    const length = Math.sqrt(dx * dx + dy * dy);
-    // Coincident anchors have no direction to push along.
-    if (length > LENGTH_EPSILON) {
-      const nx = dx / length;
-      const ny = dy / length;
-      const crA = rAx * ny - rAy * nx;
-      const crB = rBx * ny - rBy * nx;
-      const k = mA + mB + iA * crA * crA + iB * crB * crB;
-      const axialMass = k > 0 ? 1 / k : 0;
-      const soft = step.softness;
+  /** @internal Writes this step's solver numbers into a batch's slot at `o`. */
+  loadBatch(d: Float64Array, o: number): void {
+    d[o + R_AX] = this.rAx;
+    d[o + R_AY] = this.rAy;
+    d[o + R_BX] = this.rBx;
+    d[o + R_BY] = this.rBy;
+    d[o + DELTA_CENTER_X] = this.deltaCenterX;
+    d[o + DELTA_CENTER_Y] = this.deltaCenterY;
+    d[o + INV_MASS_A] = this.invMassA;
+    d[o + INV_I_A] = this.invInertiaA;
+    d[o + INV_MASS_B] = this.invMassB;
+    d[o + INV_I_B] = this.invInertiaB;
+    d[o + REST] = this.rest;
+    d[o + MIN_LENGTH] = this.min;
+    d[o + MAX_LENGTH] = this.max;
+    d[o + EXPLICIT_SPRING] = this.explicitSpring ? 1 : 0;
+    d[o + SPRING_OMEGA] = this.springOmega;
+    d[o + SPRING_DAMPING_RATIO] = this.springDampingRatio;
+    d[o + LENGTH_ROW_ON] = !this.springEnabled || this.springHertz > 0 ? 1 : 0;
+    d[o + SPRING_ON] = this.springEnabled ? 1 : 0;
+    d[o + SPRING_BIAS_RATE] = this.springSoftness.biasRate;
+    d[o + SPRING_MASS_SCALE] = this.springSoftness.massScale;
+    d[o + SPRING_IMPULSE_SCALE] = this.springSoftness.impulseScale;
+    d[o + LOWER_ON] = this.springEnabled && this.min > 0 ? 1 : 0;
+    d[o + UPPER_ON] = this.springEnabled && this.max !== Infinity ? 1 : 0;
+    d[o + IMPULSE] = this.impulse;
+    d[o + LOWER_IMPULSE] = this.lowerImpulse;
+    d[o + UPPER_IMPULSE] = this.upperImpulse;
+    d[o + SPRING_SUB_STEP_IMPULSE] = this.springSubStepImpulse;
+    d[o + STEP_IMPULSE_X] = this.stepImpulseX;
+    d[o + STEP_IMPULSE_Y] = this.stepImpulseY;
+  }
 
-      // The rod or the spring: C = length - rest.
-      if (this.explicitSpring) {
-        if (useBias) {
-          // Spring force -k C - c Cdot over the sub-step, with k and c for the effective mass;
-          // the damping part implicit, so no damping ratio can reverse the motion.
-          const omega = this.springOmega;
-          const damping = 2 * this.springDampingRatio * omega;
+  /** @internal Takes the step's impulses back from the batch's slot at `o`. */
+  storeBatch(d: Float64Array, o: number): void {
+    this.impulse = d[o + IMPULSE]!;
+    this.lowerImpulse = d[o + LOWER_IMPULSE]!;
+    this.upperImpulse = d[o + UPPER_IMPULSE]!;
+    this.springSubStepImpulse = d[o + SPRING_SUB_STEP_IMPULSE]!;
+    this.stepImpulseX = d[o + STEP_IMPULSE_X]!;
+    this.stepImpulseY = d[o + STEP_IMPULSE_Y]!;
+  }
+}
+
+/** Below this anchor distance (m) the joint has no direction and does nothing. */
+const LENGTH_EPSILON = 1e-9;
+
+// The distance joints of a step in flat arrays (DistanceBatch), doubles per joint. The joint has
+// no angular row: its stepAngularImpulse stays on the joint, as prepareBodies cleared it.
+const R_AX = 0; // levers from the centres to the anchors at the step's start (m)
+const R_AY = 1;
+const R_BX = 2;
+const R_BY = 3;
+const DELTA_CENTER_X = 4; // centre of B minus centre of A at the step's start (m)
+const DELTA_CENTER_Y = 5;
+const INV_MASS_A = 6;
+const INV_I_A = 7;
+const INV_MASS_B = 8;
+const INV_I_B = 9;
+const REST = 10; // rest length, shortest and longest length (m)
+const MIN_LENGTH = 11;
+const MAX_LENGTH = 12;
+const EXPLICIT_SPRING = 13; // 1 or 0: the spring acts as a force (see explicitSpring)
+const SPRING_OMEGA = 14;
+const SPRING_DAMPING_RATIO = 15;
+const LENGTH_ROW_ON = 16; // 1 or 0: the rod, or the spring as a soft constraint
+const SPRING_ON = 17; // 1 or 0: enableSpring
+const SPRING_BIAS_RATE = 18;
+const SPRING_MASS_SCALE = 19;
+const SPRING_IMPULSE_SCALE = 20;
+const LOWER_ON = 21; // 1 or 0: the minLength row
+const UPPER_ON = 22; // 1 or 0: the maxLength row
+const IMPULSE = 23; // accumulated impulses (warm-started)
+const LOWER_IMPULSE = 24;
+const UPPER_IMPULSE = 25;
+const SPRING_SUB_STEP_IMPULSE = 26; // the explicit spring's impulse in the current sub-step
+const STEP_IMPULSE_X = 27; // summed over the step's relax passes, for the reaction
+const STEP_IMPULSE_Y = 28;
+const STRIDE = 29;
+
+/**
+ * @internal The distance joints of a step: their numbers in one Float64Array and their bodies'
+ * state offsets in an Int32Array, solved in one loop per pass (see JointBatch).
+ */
+export class DistanceBatch implements JointBatch {
+  count = 0;
+  data: Float64Array = new Float64Array(STRIDE * 16);
+  private states: Int32Array = new Int32Array(2 * 16);
+  private readonly joints: DistanceJoint[] = [];
+
+  clear(): void {
+    this.count = 0;
+  }
+
+  add(joint: Joint): void {
+    const distance = joint as DistanceJoint;
+    const i = this.count++;
+    if (this.states.length < 2 * this.count) {
+      const data = new Float64Array(2 * this.data.length);
+      data.set(this.data);
+      this.data = data;
+      const states = new Int32Array(2 * this.states.length);
+      states.set(this.states);
+      this.states = states;
+    }
+    this.states[2 * i] = distance.stateA;
+    this.states[2 * i + 1] = distance.stateB;
+    this.joints[i] = distance; // at most at its length: appends, never a hole
+    distance.loadBatch(this.data, i * STRIDE);
+  }
+
+  warmStart(s: Float64Array): void {
+    const d = this.data;
+    const states = this.states;
+    for (let i = 0; i < this.count; i++) {
+      const o = i * STRIDE;
+      const a = states[2 * i]!;
+      const b = states[2 * i + 1]!;
+      const qAc = s[a + Q_C]!;
+      const qAs = s[a + Q_S]!;
+      const qBc = s[b + Q_C]!;
+      const qBs = s[b + Q_S]!;
+      const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
+      const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
+      const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
+      const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
+      const dx = s[b + DP_X]! - s[a + DP_X]! + d[o + DELTA_CENTER_X]! + rBx - rAx;
+      const dy = s[b + DP_Y]! - s[a + DP_Y]! + d[o + DELTA_CENTER_Y]! + rBy - rAy;
+      const length = Math.sqrt(dx * dx + dy * dy);
+      if (!(length > LENGTH_EPSILON)) continue;
+      const axial = d[o + IMPULSE]! + d[o + LOWER_IMPULSE]! - d[o + UPPER_IMPULSE]!;
+      const px = (axial * dx) / length;
+      const py = (axial * dy) / length;
+      s[a + V_X] -= d[o + INV_MASS_A]! * px;
+      s[a + V_Y] -= d[o + INV_MASS_A]! * py;
+      s[a + W] -= d[o + INV_I_A]! * (rAx * py - rAy * px);
+      s[b + V_X] += d[o + INV_MASS_B]! * px;
+      s[b + V_Y] += d[o + INV_MASS_B]! * py;
+      s[b + W] += d[o + INV_I_B]! * (rBx * py - rBy * px);
+    }
+  }
+
+  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
+    const d = this.data;
+    const states = this.states;
+    const soft = step.softness;
+    for (let i = 0; i < this.count; i++) {
+      const o = i * STRIDE;
+      const a = states[2 * i]!;
+      const b = states[2 * i + 1]!;
+      const mA = d[o + INV_MASS_A]!;
+      const iA = d[o + INV_I_A]!;
+      const mB = d[o + INV_MASS_B]!;
+      const iB = d[o + INV_I_B]!;
+      let vAx = s[a + V_X]!;
+      let vAy = s[a + V_Y]!;
+      let wA = s[a + W]!;
+      let vBx = s[b + V_X]!;
+      let vBy = s[b + V_Y]!;
+      let wB = s[b + W]!;
+      const qAc = s[a + Q_C]!;
+      const qAs = s[a + Q_S]!;
+      const qBc = s[b + Q_C]!;
+      const qBs = s[b + Q_S]!;
+      const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
+      const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
+      const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
+      const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
+      const dx = s[b + DP_X]! - s[a + DP_X]! + d[o + DELTA_CENTER_X]! + rBx - rAx;
+      const dy = s[b + DP_Y]! - s[a + DP_Y]! + d[o + DELTA_CENTER_Y]! + rBy - rAy;
+      const length = Math.sqrt(dx * dx + dy * dy);
+      // Coincident anchors have no direction to push along.
+      if (length > LENGTH_EPSILON) {
+        const nx = dx / length;
+        const ny = dy / length;
+        const crA = rAx * ny - rAy * nx;
+        const crB = rBx * ny - rBy * nx;
+        const k = mA + mB + iA * crA * crA + iB * crB * crB;
+        const axialMass = k > 0 ? 1 / k : 0;
+
+        // The rod or the spring: C = length - rest.
+        if (d[o + EXPLICIT_SPRING] === 1) {
+          if (useBias) {
+            // Spring force -k C - c Cdot over the sub-step, with k and c for the effective mass;
+            // the damping part implicit, so no damping ratio can reverse the motion.
+            const omega = d[o + SPRING_OMEGA]!;
+            const damping = 2 * d[o + SPRING_DAMPING_RATIO]! * omega;
+            const cdot =
+              (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
+            const impulse =
+              (-axialMass * step.h * (omega * omega * (length - d[o + REST]!) + damping * cdot)) /
+              (1 + damping * step.h);
+            d[o + SPRING_SUB_STEP_IMPULSE] = impulse;
+            const px = impulse * nx;
+            const py = impulse * ny;
+            vAx -= mA * px;
+            vAy -= mA * py;
+            wA -= iA * (rAx * py - rAy * px);
+            vBx += mB * px;
+            vBy += mB * py;
+            wB += iB * (rBx * py - rBy * px);
+          }
+        } else if (d[o + LENGTH_ROW_ON] === 1) {
+          let bias = 0;
+          let massScale = 1;
+          let impulseScale = 0;
+          if (d[o + SPRING_ON] === 1) {
+            bias = d[o + SPRING_BIAS_RATE]! * (length - d[o + REST]!);
+            massScale = d[o + SPRING_MASS_SCALE]!;
+            impulseScale = d[o + SPRING_IMPULSE_SCALE]!;
+          } else if (useBias) {
+            bias = soft.biasRate * (length - d[o + REST]!);
+            massScale = soft.massScale;
+            impulseScale = soft.impulseScale;
+          }
           const cdot =
             (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
-          const impulse =
-            (-axialMass * step.h * (omega * omega * (length - this.rest) + damping * cdot)) /
-            (1 + damping * step.h);
-          this.springSubStepImpulse = impulse;
+          const impulse = -massScale * axialMass * (cdot + bias) - impulseScale * d[o + IMPULSE]!;
+          d[o + IMPULSE] += impulse;
           const px = impulse * nx;
           const py = impulse * ny;
           vAx -= mA * px;
@@ -372,111 +522,91 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
           vBy += mB * py;
           wB += iB * (rBx * py - rBy * px);
         }
-      } else if (!this.springEnabled || this.springHertz > 0) {
-        let bias = 0;
-        let massScale = 1;
-        let impulseScale = 0;
-        if (this.springEnabled) {
-          const spring = this.springSoftness;
-          bias = spring.biasRate * (length - this.rest);
-          massScale = spring.massScale;
-          impulseScale = spring.impulseScale;
-        } else if (useBias) {
-          bias = soft.biasRate * (length - this.rest);
-          massScale = soft.massScale;
-          impulseScale = soft.impulseScale;
+
+        if (d[o + LOWER_ON] === 1) {
+          // length >= minLength: pushes apart only.
+          const c = length - d[o + MIN_LENGTH]!;
+          let bias = 0;
+          let massScale = 1;
+          let impulseScale = 0;
+          if (c > 0) bias = c * step.inverseH;
+          else if (useBias) {
+            bias = soft.biasRate * c;
+            massScale = soft.massScale;
+            impulseScale = soft.impulseScale;
+          }
+          const cdot =
+            (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
+          const old = d[o + LOWER_IMPULSE]!;
+          const impulse = -massScale * axialMass * (cdot + bias) - impulseScale * old;
+          const accumulated = Math.max(old + impulse, 0);
+          const applied = accumulated - old;
+          d[o + LOWER_IMPULSE] = accumulated;
+          const px = applied * nx;
+          const py = applied * ny;
+          vAx -= mA * px;
+          vAy -= mA * py;
+          wA -= iA * (rAx * py - rAy * px);
+          vBx += mB * px;
+          vBy += mB * py;
+          wB += iB * (rBx * py - rBy * px);
         }
-        const cdot =
-          (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
-        const impulse = -massScale * axialMass * (cdot + bias) - impulseScale * this.impulse;
-        this.impulse += impulse;
-        const px = impulse * nx;
-        const py = impulse * ny;
-        vAx -= mA * px;
-        vAy -= mA * py;
-        wA -= iA * (rAx * py - rAy * px);
-        vBx += mB * px;
-        vBy += mB * py;
-        wB += iB * (rBx * py - rBy * px);
+
+        if (d[o + UPPER_ON] === 1) {
+          // length <= maxLength: pulls together only (a rope).
+          const c = d[o + MAX_LENGTH]! - length;
+          let bias = 0;
+          let massScale = 1;
+          let impulseScale = 0;
+          if (c > 0) bias = c * step.inverseH;
+          else if (useBias) {
+            bias = soft.biasRate * c;
+            massScale = soft.massScale;
+            impulseScale = soft.impulseScale;
+          }
+          const cdot = -(
+            (vBx - wB * rBy - vAx + wA * rAy) * nx +
+            (vBy + wB * rBx - vAy - wA * rAx) * ny
+          );
+          const old = d[o + UPPER_IMPULSE]!;
+          const impulse = -massScale * axialMass * (cdot + bias) - impulseScale * old;
+          const accumulated = Math.max(old + impulse, 0);
+          const applied = accumulated - old;
+          d[o + UPPER_IMPULSE] = accumulated;
+          const px = -applied * nx;
+          const py = -applied * ny;
+          vAx -= mA * px;
+          vAy -= mA * py;
+          wA -= iA * (rAx * py - rAy * px);
+          vBx += mB * px;
+          vBy += mB * py;
+          wB += iB * (rBx * py - rBy * px);
+        }
+
+        if (!useBias) {
+          const axial =
+            d[o + IMPULSE]! +
+            d[o + SPRING_SUB_STEP_IMPULSE]! +
+            d[o + LOWER_IMPULSE]! -
+            d[o + UPPER_IMPULSE]!;
+          d[o + STEP_IMPULSE_X] += axial * nx;
+          d[o + STEP_IMPULSE_Y] += axial * ny;
+        }
       }
 
-      if (this.springEnabled && this.min > 0) {
-        // length >= minLength: pushes apart only.
-        const c = length - this.min;
-        let bias = 0;
-        let massScale = 1;
-        let impulseScale = 0;
-        if (c > 0) bias = c * step.inverseH;
-        else if (useBias) {
-          bias = soft.biasRate * c;
-          massScale = soft.massScale;
-          impulseScale = soft.impulseScale;
-        }
-        const cdot =
-          (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
-        const impulse = -massScale * axialMass * (cdot + bias) - impulseScale * this.lowerImpulse;
-        const accumulated = Math.max(this.lowerImpulse + impulse, 0);
-        const applied = accumulated - this.lowerImpulse;
-        this.lowerImpulse = accumulated;
-        const px = applied * nx;
-        const py = applied * ny;
-        vAx -= mA * px;
-        vAy -= mA * py;
-        wA -= iA * (rAx * py - rAy * px);
-        vBx += mB * px;
-        vBy += mB * py;
-        wB += iB * (rBx * py - rBy * px);
-      }
-
-      if (this.springEnabled && this.max !== Infinity) {
-        // length <= maxLength: pulls together only (a rope).
-        const c = this.max - length;
-        let bias = 0;
-        let massScale = 1;
-        let impulseScale = 0;
-        if (c > 0) bias = c * step.inverseH;
-        else if (useBias) {
-          bias = soft.biasRate * c;
-          massScale = soft.massScale;
-          impulseScale = soft.impulseScale;
-        }
-        const cdot = -(
-          (vBx - wB * rBy - vAx + wA * rAy) * nx +
-          (vBy + wB * rBx - vAy - wA * rAx) * ny
-        );
-        const impulse = -massScale * axialMass * (cdot + bias) - impulseScale * this.upperImpulse;
-        const accumulated = Math.max(this.upperImpulse + impulse, 0);
-        const applied = accumulated - this.upperImpulse;
-        this.upperImpulse = accumulated;
-        const px = -applied * nx;
-        const py = -applied * ny;
-        vAx -= mA * px;
-        vAy -= mA * py;
-        wA -= iA * (rAx * py - rAy * px);
-        vBx += mB * px;
-        vBy += mB * py;
-        wB += iB * (rBx * py - rBy * px);
-      }
-
-      if (!useBias) {
-        const axial =
-          this.impulse + this.springSubStepImpulse + this.lowerImpulse - this.upperImpulse;
-        this.stepImpulseX += axial * nx;
-        this.stepImpulseY += axial * ny;
-      }
+      s[a + V_X] = vAx;
+      s[a + V_Y] = vAy;
+      s[a + W] = wA;
+      s[b + V_X] = vBx;
+      s[b + V_Y] = vBy;
+      s[b + W] = wB;
     }
+  }
 
-    s[a + V_X] = vAx;
-    s[a + V_Y] = vAy;
-    s[a + W] = wA;
-    s[b + V_X] = vBx;
-    s[b + V_Y] = vBy;
-    s[b + W] = wB;
+  finish(): void {
+    for (let i = 0; i < this.count; i++) this.joints[i]!.storeBatch(this.data, i * STRIDE);
   }
 }
-
-/** Below this anchor distance (m) the joint has no direction and does nothing. */
-const LENGTH_EPSILON = 1e-9;
 
 function requireInRange(length: number, min: number, max: number): void {
   requireRange('length', length, -jointMax('length'), jointMax('length'));

@@ -11,6 +11,7 @@ import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import {
   Joint,
+  type JointBatch,
   type JointState,
   type JointStateLayout,
   type JointStep,
@@ -233,87 +234,192 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  override warmStart(s: Float64Array): void {
-    const b = this.stateB;
-    const mB = this.invMassB;
-    const iB = this.invInertiaB;
-    const rBx = s[b + Q_C]! * this.rBx - s[b + Q_S]! * this.rBy;
-    const rBy = s[b + Q_S]! * this.rBx + s[b + Q_C]! * this.rBy;
-    const px = this.linearImpulseX;
-    const py = this.linearImpulseY;
-    s[b + V_X] += mB * px;
-    s[b + V_Y] += mB * py;
-    s[b + W] += iB * (rBx * py - rBy * px + this.angularImpulse);
+  override createBatch(): MouseBatch {
+    return new MouseBatch();
   }
 
-  /** @internal */
-  override solve(s: Float64Array, step: JointStep, useBias: boolean): void {
-    const b = this.stateB;
-    const mB = this.invMassB;
-    const iB = this.invInertiaB;
-    let vBx = s[b + V_X]!;
-    let vBy = s[b + V_Y]!;
-    let wB = s[b + W]!;
+  /** @internal Writes this step's solver numbers into a batch's slot at `o`. */
+  loadBatch(d: Float64Array, o: number): void {
+    d[o + R_BX] = this.rBx;
+    d[o + R_BY] = this.rBy;
+    d[o + DELTA_CENTER_X] = this.deltaCenterX;
+    d[o + DELTA_CENTER_Y] = this.deltaCenterY;
+    d[o + INV_MASS_B] = this.invMassB;
+    d[o + INV_I_B] = this.invInertiaB;
+    d[o + MAX_FORCE] = this.force;
+    d[o + LINEAR_BIAS_RATE] = this.linearSoftness.biasRate;
+    d[o + LINEAR_MASS_SCALE] = this.linearSoftness.massScale;
+    d[o + LINEAR_IMPULSE_SCALE] = this.linearSoftness.impulseScale;
+    d[o + ANGULAR_MASS_SCALE] = this.angularSoftness.massScale;
+    d[o + ANGULAR_IMPULSE_SCALE] = this.angularSoftness.impulseScale;
+    d[o + LINEAR_IMPULSE_X] = this.linearImpulseX;
+    d[o + LINEAR_IMPULSE_Y] = this.linearImpulseY;
+    d[o + ANGULAR_IMPULSE] = this.angularImpulse;
+    d[o + STEP_IMPULSE_X] = this.stepImpulseX;
+    d[o + STEP_IMPULSE_Y] = this.stepImpulseY;
+    d[o + STEP_ANGULAR_IMPULSE] = this.stepAngularImpulse;
+  }
 
-    // A soft brake on the spin, with no target angle.
-    {
-      const soft = this.angularSoftness;
-      let impulse = iB > 0 ? -wB / iB : 0;
-      impulse = soft.massScale * impulse - soft.impulseScale * this.angularImpulse;
-      this.angularImpulse += impulse;
-      wB += iB * impulse;
+  /** @internal Takes the step's impulses back from the batch's slot at `o`. */
+  storeBatch(d: Float64Array, o: number): void {
+    this.linearImpulseX = d[o + LINEAR_IMPULSE_X]!;
+    this.linearImpulseY = d[o + LINEAR_IMPULSE_Y]!;
+    this.angularImpulse = d[o + ANGULAR_IMPULSE]!;
+    this.stepImpulseX = d[o + STEP_IMPULSE_X]!;
+    this.stepImpulseY = d[o + STEP_IMPULSE_Y]!;
+    this.stepAngularImpulse = d[o + STEP_ANGULAR_IMPULSE]!;
+  }
+}
+
+// The mouse joints of a step in flat arrays (MouseBatch), doubles per joint. The "A" side is the
+// fixed target, so only the dragged body's numbers are kept. The spin brake has no target angle:
+// of its softness only massScale and impulseScale are used.
+const R_BX = 0; // lever from the centre to the grabbed point at the step's start (m)
+const R_BY = 1;
+const DELTA_CENTER_X = 2; // centre of the body minus the target at the step's start (m)
+const DELTA_CENTER_Y = 3;
+const INV_MASS_B = 4;
+const INV_I_B = 5;
+const MAX_FORCE = 6;
+const LINEAR_BIAS_RATE = 7;
+const LINEAR_MASS_SCALE = 8;
+const LINEAR_IMPULSE_SCALE = 9;
+const ANGULAR_MASS_SCALE = 10;
+const ANGULAR_IMPULSE_SCALE = 11;
+const LINEAR_IMPULSE_X = 12; // accumulated impulses (warm-started)
+const LINEAR_IMPULSE_Y = 13;
+const ANGULAR_IMPULSE = 14;
+const STEP_IMPULSE_X = 15; // summed over the step's relax passes, for the reaction
+const STEP_IMPULSE_Y = 16;
+const STEP_ANGULAR_IMPULSE = 17;
+const STRIDE = 18;
+
+/**
+ * @internal The mouse joints of a step: their numbers in one Float64Array and their bodies' state
+ * offsets in an Int32Array, solved in one loop per pass (see JointBatch).
+ */
+export class MouseBatch implements JointBatch {
+  count = 0;
+  data: Float64Array = new Float64Array(STRIDE * 16);
+  private states: Int32Array = new Int32Array(16);
+  private readonly joints: MouseJoint[] = [];
+
+  clear(): void {
+    this.count = 0;
+  }
+
+  add(joint: Joint): void {
+    const mouse = joint as MouseJoint;
+    const i = this.count++;
+    if (this.states.length < this.count) {
+      const data = new Float64Array(2 * this.data.length);
+      data.set(this.data);
+      this.data = data;
+      const states = new Int32Array(2 * this.states.length);
+      states.set(this.states);
+      this.states = states;
     }
+    this.states[i] = mouse.stateB;
+    this.joints[i] = mouse; // at most at its length: appends, never a hole
+    mouse.loadBatch(this.data, i * STRIDE);
+  }
 
-    // The spring to the target; always soft, in both passes (it is a spring, not a rigid link).
-    {
-      const soft = this.linearSoftness;
-      const qc = s[b + Q_C]!;
-      const qs = s[b + Q_S]!;
-      const rBx = qc * this.rBx - qs * this.rBy;
-      const rBy = qs * this.rBx + qc * this.rBy;
-      const cdotX = vBx - wB * rBy;
-      const cdotY = vBy + wB * rBx;
-      const sepX = s[b + DP_X]! + rBx + this.deltaCenterX;
-      const sepY = s[b + DP_Y]! + rBy + this.deltaCenterY;
-      const k11 = mB + rBy * rBy * iB;
-      const k12 = -rBy * rBx * iB;
-      const k22 = mB + rBx * rBx * iB;
-      // 2x2 solve inlined: a call with number arguments would box them (allocate) per call.
-      const bX = cdotX + soft.biasRate * sepX;
-      const bY = cdotY + soft.biasRate * sepY;
-      let det = k11 * k22 - k12 * k12;
-      if (det !== 0) det = 1 / det;
-      const solvedX = det * (k22 * bX - k12 * bY);
-      const solvedY = det * (k11 * bY - k12 * bX);
-      const oldX = this.linearImpulseX;
-      const oldY = this.linearImpulseY;
-      let accX = oldX - soft.massScale * solvedX - soft.impulseScale * oldX;
-      let accY = oldY - soft.massScale * solvedY - soft.impulseScale * oldY;
-      const maxImpulse = this.force * step.h;
-      const magnitude = Math.sqrt(accX * accX + accY * accY);
-      if (magnitude > maxImpulse) {
-        const scale = maxImpulse / magnitude;
-        accX *= scale;
-        accY *= scale;
+  warmStart(s: Float64Array): void {
+    const d = this.data;
+    const states = this.states;
+    for (let i = 0; i < this.count; i++) {
+      const o = i * STRIDE;
+      const b = states[i]!;
+      const mB = d[o + INV_MASS_B]!;
+      const iB = d[o + INV_I_B]!;
+      const rBx = s[b + Q_C]! * d[o + R_BX]! - s[b + Q_S]! * d[o + R_BY]!;
+      const rBy = s[b + Q_S]! * d[o + R_BX]! + s[b + Q_C]! * d[o + R_BY]!;
+      const px = d[o + LINEAR_IMPULSE_X]!;
+      const py = d[o + LINEAR_IMPULSE_Y]!;
+      s[b + V_X] += mB * px;
+      s[b + V_Y] += mB * py;
+      s[b + W] += iB * (rBx * py - rBy * px + d[o + ANGULAR_IMPULSE]!);
+    }
+  }
+
+  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
+    const d = this.data;
+    const states = this.states;
+    for (let i = 0; i < this.count; i++) {
+      const o = i * STRIDE;
+      const b = states[i]!;
+      const mB = d[o + INV_MASS_B]!;
+      const iB = d[o + INV_I_B]!;
+      let vBx = s[b + V_X]!;
+      let vBy = s[b + V_Y]!;
+      let wB = s[b + W]!;
+
+      // A soft brake on the spin, with no target angle.
+      {
+        let impulse = iB > 0 ? -wB / iB : 0;
+        impulse =
+          d[o + ANGULAR_MASS_SCALE]! * impulse -
+          d[o + ANGULAR_IMPULSE_SCALE]! * d[o + ANGULAR_IMPULSE]!;
+        d[o + ANGULAR_IMPULSE] += impulse;
+        wB += iB * impulse;
       }
-      this.linearImpulseX = accX;
-      this.linearImpulseY = accY;
-      const px = accX - oldX;
-      const py = accY - oldY;
-      vBx += mB * px;
-      vBy += mB * py;
-      wB += iB * (rBx * py - rBy * px);
-    }
 
-    s[b + V_X] = vBx;
-    s[b + V_Y] = vBy;
-    s[b + W] = wB;
+      // The spring to the target; always soft, in both passes (it is a spring, not a rigid link).
+      {
+        const biasRate = d[o + LINEAR_BIAS_RATE]!;
+        const massScale = d[o + LINEAR_MASS_SCALE]!;
+        const impulseScale = d[o + LINEAR_IMPULSE_SCALE]!;
+        const qc = s[b + Q_C]!;
+        const qs = s[b + Q_S]!;
+        const rBx = qc * d[o + R_BX]! - qs * d[o + R_BY]!;
+        const rBy = qs * d[o + R_BX]! + qc * d[o + R_BY]!;
+        const cdotX = vBx - wB * rBy;
+        const cdotY = vBy + wB * rBx;
+        const sepX = s[b + DP_X]! + rBx + d[o + DELTA_CENTER_X]!;
+        const sepY = s[b + DP_Y]! + rBy + d[o + DELTA_CENTER_Y]!;
+        const k11 = mB + rBy * rBy * iB;
+        const k12 = -rBy * rBx * iB;
+        const k22 = mB + rBx * rBx * iB;
+        const bX = cdotX + biasRate * sepX;
+        const bY = cdotY + biasRate * sepY;
+        let det = k11 * k22 - k12 * k12;
+        if (det !== 0) det = 1 / det;
+        const solvedX = det * (k22 * bX - k12 * bY);
+        const solvedY = det * (k11 * bY - k12 * bX);
+        const oldX = d[o + LINEAR_IMPULSE_X]!;
+        const oldY = d[o + LINEAR_IMPULSE_Y]!;
+        let accX = oldX - massScale * solvedX - impulseScale * oldX;
+        let accY = oldY - massScale * solvedY - impulseScale * oldY;
+        const maxImpulse = d[o + MAX_FORCE]! * step.h;
+        const magnitude = Math.sqrt(accX * accX + accY * accY);
+        if (magnitude > maxImpulse) {
+          const scale = maxImpulse / magnitude;
+          accX *= scale;
+          accY *= scale;
+        }
+        d[o + LINEAR_IMPULSE_X] = accX;
+        d[o + LINEAR_IMPULSE_Y] = accY;
+        const px = accX - oldX;
+        const py = accY - oldY;
+        vBx += mB * px;
+        vBy += mB * py;
+        wB += iB * (rBx * py - rBy * px);
+      }
 
-    if (!useBias) {
-      this.stepImpulseX += this.linearImpulseX;
-      this.stepImpulseY += this.linearImpulseY;
-      this.stepAngularImpulse += this.angularImpulse;
+      s[b + V_X] = vBx;
+      s[b + V_Y] = vBy;
+      s[b + W] = wB;
+
+      if (!useBias) {
+        d[o + STEP_IMPULSE_X] += d[o + LINEAR_IMPULSE_X]!;
+        d[o + STEP_IMPULSE_Y] += d[o + LINEAR_IMPULSE_Y]!;
+        d[o + STEP_ANGULAR_IMPULSE] += d[o + ANGULAR_IMPULSE]!;
+      }
     }
+  }
+
+  finish(): void {
+    for (let i = 0; i < this.count; i++) this.joints[i]!.storeBatch(this.data, i * STRIDE);
   }
 }
 

@@ -4,6 +4,7 @@ import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts
 import { Softness } from '../softness.ts';
 import {
   Joint,
+  type JointBatch,
   type JointOptions,
   type JointState,
   type JointStateLayout,
@@ -197,119 +198,248 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  override warmStart(s: Float64Array): void {
-    const a = this.stateA;
-    const b = this.stateB;
-    const rAx = s[a + Q_C]! * this.rAx - s[a + Q_S]! * this.rAy;
-    const rAy = s[a + Q_S]! * this.rAx + s[a + Q_C]! * this.rAy;
-    const rBx = s[b + Q_C]! * this.rBx - s[b + Q_S]! * this.rBy;
-    const rBy = s[b + Q_S]! * this.rBx + s[b + Q_C]! * this.rBy;
-    const px = this.linearImpulseX;
-    const py = this.linearImpulseY;
-    const angular = this.angularImpulse;
-    s[a + V_X] -= this.invMassA * px;
-    s[a + V_Y] -= this.invMassA * py;
-    s[a + W] -= this.invInertiaA * (rAx * py - rAy * px + angular);
-    s[b + V_X] += this.invMassB * px;
-    s[b + V_Y] += this.invMassB * py;
-    s[b + W] += this.invInertiaB * (rBx * py - rBy * px + angular);
+  override createBatch(): WeldBatch {
+    return new WeldBatch();
   }
 
-  /** @internal */
-  override solve(s: Float64Array, step: JointStep, useBias: boolean): void {
-    const a = this.stateA;
-    const b = this.stateB;
-    const mA = this.invMassA;
-    const iA = this.invInertiaA;
-    const mB = this.invMassB;
-    const iB = this.invInertiaB;
-    let vAx = s[a + V_X]!;
-    let vAy = s[a + V_Y]!;
-    let wA = s[a + W]!;
-    let vBx = s[b + V_X]!;
-    let vBy = s[b + V_Y]!;
-    let wB = s[b + W]!;
+  /** @internal Writes this step's solver numbers into a batch's slot at `o`. */
+  loadBatch(d: Float64Array, o: number): void {
+    d[o + R_AX] = this.rAx;
+    d[o + R_AY] = this.rAy;
+    d[o + R_BX] = this.rBx;
+    d[o + R_BY] = this.rBy;
+    d[o + DELTA_CENTER_X] = this.deltaCenterX;
+    d[o + DELTA_CENTER_Y] = this.deltaCenterY;
+    d[o + JOINT_ANGLE_0] = this.deltaAngle;
+    d[o + AXIAL_MASS] = this.axialMass;
+    d[o + INV_MASS_A] = this.invMassA;
+    d[o + INV_I_A] = this.invInertiaA;
+    d[o + INV_MASS_B] = this.invMassB;
+    d[o + INV_I_B] = this.invInertiaB;
+    d[o + LINEAR_SPRINGY] = this.linearFrequency > 0 ? 1 : 0;
+    d[o + LINEAR_BIAS_RATE] = this.linearSoftness.biasRate;
+    d[o + LINEAR_MASS_SCALE] = this.linearSoftness.massScale;
+    d[o + LINEAR_IMPULSE_SCALE] = this.linearSoftness.impulseScale;
+    d[o + ANGULAR_SPRINGY] = this.angularFrequency > 0 ? 1 : 0;
+    d[o + ANGULAR_BIAS_RATE] = this.angularSoftness.biasRate;
+    d[o + ANGULAR_MASS_SCALE] = this.angularSoftness.massScale;
+    d[o + ANGULAR_IMPULSE_SCALE] = this.angularSoftness.impulseScale;
+    d[o + LINEAR_IMPULSE_X] = this.linearImpulseX;
+    d[o + LINEAR_IMPULSE_Y] = this.linearImpulseY;
+    d[o + ANGULAR_IMPULSE] = this.angularImpulse;
+    d[o + STEP_IMPULSE_X] = this.stepImpulseX;
+    d[o + STEP_IMPULSE_Y] = this.stepImpulseY;
+    d[o + STEP_ANGULAR_IMPULSE] = this.stepAngularImpulse;
+  }
+
+  /** @internal Takes the step's impulses back from the batch's slot at `o`. */
+  storeBatch(d: Float64Array, o: number): void {
+    this.linearImpulseX = d[o + LINEAR_IMPULSE_X]!;
+    this.linearImpulseY = d[o + LINEAR_IMPULSE_Y]!;
+    this.angularImpulse = d[o + ANGULAR_IMPULSE]!;
+    this.stepImpulseX = d[o + STEP_IMPULSE_X]!;
+    this.stepImpulseY = d[o + STEP_IMPULSE_Y]!;
+    this.stepAngularImpulse = d[o + STEP_ANGULAR_IMPULSE]!;
+  }
+}
+
+// The weld joints of a step in flat arrays (WeldBatch), doubles per joint:
+const R_AX = 0; // levers from the centres to the anchors at the step's start (m)
+const R_AY = 1;
+const R_BX = 2;
+const R_BY = 3;
+const DELTA_CENTER_X = 4; // centre of B minus centre of A at the step's start (m)
+const DELTA_CENTER_Y = 5;
+const JOINT_ANGLE_0 = 6; // angle error at the step's start (rad)
+const AXIAL_MASS = 7;
+const INV_MASS_A = 8;
+const INV_I_A = 9;
+const INV_MASS_B = 10;
+const INV_I_B = 11;
+const LINEAR_SPRINGY = 12; // 1: the position hold has its own softness, in both passes; 0: rigid
+const LINEAR_BIAS_RATE = 13;
+const LINEAR_MASS_SCALE = 14;
+const LINEAR_IMPULSE_SCALE = 15;
+const ANGULAR_SPRINGY = 16; // the same for the angle hold
+const ANGULAR_BIAS_RATE = 17;
+const ANGULAR_MASS_SCALE = 18;
+const ANGULAR_IMPULSE_SCALE = 19;
+const LINEAR_IMPULSE_X = 20; // accumulated impulses (warm-started)
+const LINEAR_IMPULSE_Y = 21;
+const ANGULAR_IMPULSE = 22;
+const STEP_IMPULSE_X = 23; // summed over the step's relax passes, for the reaction
+const STEP_IMPULSE_Y = 24;
+const STEP_ANGULAR_IMPULSE = 25;
+const STRIDE = 26;
+
+/**
+ * @internal The weld joints of a step: their numbers in one Float64Array and their bodies' state
+ * offsets in an Int32Array, solved in one loop per pass (see JointBatch).
+ */
+export class WeldBatch implements JointBatch {
+  count = 0;
+  data: Float64Array = new Float64Array(STRIDE * 16);
+  private states: Int32Array = new Int32Array(2 * 16);
+  private readonly joints: WeldJoint[] = [];
+
+  clear(): void {
+    this.count = 0;
+  }
+
+  add(joint: Joint): void {
+    const weld = joint as WeldJoint;
+    const i = this.count++;
+    if (this.states.length < 2 * this.count) {
+      const data = new Float64Array(2 * this.data.length);
+      data.set(this.data);
+      this.data = data;
+      const states = new Int32Array(2 * this.states.length);
+      states.set(this.states);
+      this.states = states;
+    }
+    this.states[2 * i] = weld.stateA;
+    this.states[2 * i + 1] = weld.stateB;
+    this.joints[i] = weld; // at most at its length: appends, never a hole
+    weld.loadBatch(this.data, i * STRIDE);
+  }
+
+  warmStart(s: Float64Array): void {
+    const d = this.data;
+    const states = this.states;
+    for (let i = 0; i < this.count; i++) {
+      const o = i * STRIDE;
+      const a = states[2 * i]!;
+      const b = states[2 * i + 1]!;
+      const rAx = s[a + Q_C]! * d[o + R_AX]! - s[a + Q_S]! * d[o + R_AY]!;
+      const rAy = s[a + Q_S]! * d[o + R_AX]! + s[a + Q_C]! * d[o + R_AY]!;
+      const rBx = s[b + Q_C]! * d[o + R_BX]! - s[b + Q_S]! * d[o + R_BY]!;
+      const rBy = s[b + Q_S]! * d[o + R_BX]! + s[b + Q_C]! * d[o + R_BY]!;
+      const px = d[o + LINEAR_IMPULSE_X]!;
+      const py = d[o + LINEAR_IMPULSE_Y]!;
+      const angular = d[o + ANGULAR_IMPULSE]!;
+      s[a + V_X] -= d[o + INV_MASS_A]! * px;
+      s[a + V_Y] -= d[o + INV_MASS_A]! * py;
+      s[a + W] -= d[o + INV_I_A]! * (rAx * py - rAy * px + angular);
+      s[b + V_X] += d[o + INV_MASS_B]! * px;
+      s[b + V_Y] += d[o + INV_MASS_B]! * py;
+      s[b + W] += d[o + INV_I_B]! * (rBx * py - rBy * px + angular);
+    }
+  }
+
+  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
+    const d = this.data;
+    const states = this.states;
     const rigid = step.softness;
+    for (let i = 0; i < this.count; i++) {
+      const o = i * STRIDE;
+      const a = states[2 * i]!;
+      const b = states[2 * i + 1]!;
+      const mA = d[o + INV_MASS_A]!;
+      const iA = d[o + INV_I_A]!;
+      const mB = d[o + INV_MASS_B]!;
+      const iB = d[o + INV_I_B]!;
+      let vAx = s[a + V_X]!;
+      let vAy = s[a + V_Y]!;
+      let wA = s[a + W]!;
+      let vBx = s[b + V_X]!;
+      let vBy = s[b + V_Y]!;
+      let wB = s[b + W]!;
 
-    // Angle.
-    {
-      let bias = 0;
-      let massScale = 1;
-      let impulseScale = 0;
-      const springy = this.angularFrequency > 0;
-      if (useBias || springy) {
-        const soft = springy ? this.angularSoftness : rigid;
-        const c = this.deltaAngle + s[b + DELTA_ANGLE]! - s[a + DELTA_ANGLE]!;
-        bias = soft.biasRate * c;
-        massScale = soft.massScale;
-        impulseScale = soft.impulseScale;
+      // Angle.
+      {
+        let bias = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        const springy = d[o + ANGULAR_SPRINGY] === 1;
+        if (useBias || springy) {
+          const c = d[o + JOINT_ANGLE_0]! + s[b + DELTA_ANGLE]! - s[a + DELTA_ANGLE]!;
+          if (springy) {
+            bias = d[o + ANGULAR_BIAS_RATE]! * c;
+            massScale = d[o + ANGULAR_MASS_SCALE]!;
+            impulseScale = d[o + ANGULAR_IMPULSE_SCALE]!;
+          } else {
+            bias = rigid.biasRate * c;
+            massScale = rigid.massScale;
+            impulseScale = rigid.impulseScale;
+          }
+        }
+        const impulse =
+          -d[o + AXIAL_MASS]! * massScale * (wB - wA + bias) -
+          impulseScale * d[o + ANGULAR_IMPULSE]!;
+        d[o + ANGULAR_IMPULSE] += impulse;
+        wA -= iA * impulse;
+        wB += iB * impulse;
       }
-      const impulse =
-        -this.axialMass * massScale * (wB - wA + bias) - impulseScale * this.angularImpulse;
-      this.angularImpulse += impulse;
-      wA -= iA * impulse;
-      wB += iB * impulse;
-    }
 
-    // Position of the anchor.
-    {
-      const qAc = s[a + Q_C]!;
-      const qAs = s[a + Q_S]!;
-      const qBc = s[b + Q_C]!;
-      const qBs = s[b + Q_S]!;
-      const rAx = qAc * this.rAx - qAs * this.rAy;
-      const rAy = qAs * this.rAx + qAc * this.rAy;
-      const rBx = qBc * this.rBx - qBs * this.rBy;
-      const rBy = qBs * this.rBx + qBc * this.rBy;
-      let biasX = 0;
-      let biasY = 0;
-      let massScale = 1;
-      let impulseScale = 0;
-      const springy = this.linearFrequency > 0;
-      if (useBias || springy) {
-        const soft = springy ? this.linearSoftness : rigid;
-        const cx = s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + this.deltaCenterX;
-        const cy = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + this.deltaCenterY;
-        biasX = soft.biasRate * cx;
-        biasY = soft.biasRate * cy;
-        massScale = soft.massScale;
-        impulseScale = soft.impulseScale;
+      // Position of the anchor.
+      {
+        const qAc = s[a + Q_C]!;
+        const qAs = s[a + Q_S]!;
+        const qBc = s[b + Q_C]!;
+        const qBs = s[b + Q_S]!;
+        const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
+        const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
+        const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
+        const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
+        let biasX = 0;
+        let biasY = 0;
+        let massScale = 1;
+        let impulseScale = 0;
+        const springy = d[o + LINEAR_SPRINGY] === 1;
+        if (useBias || springy) {
+          const cx = s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + d[o + DELTA_CENTER_X]!;
+          const cy = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + d[o + DELTA_CENTER_Y]!;
+          if (springy) {
+            biasX = d[o + LINEAR_BIAS_RATE]! * cx;
+            biasY = d[o + LINEAR_BIAS_RATE]! * cy;
+            massScale = d[o + LINEAR_MASS_SCALE]!;
+            impulseScale = d[o + LINEAR_IMPULSE_SCALE]!;
+          } else {
+            biasX = rigid.biasRate * cx;
+            biasY = rigid.biasRate * cy;
+            massScale = rigid.massScale;
+            impulseScale = rigid.impulseScale;
+          }
+        }
+        const cdotX = vBx - wB * rBy - (vAx - wA * rAy);
+        const cdotY = vBy + wB * rBx - (vAy + wA * rAx);
+        const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+        const k12 = -rAy * rAx * iA - rBy * rBx * iB;
+        const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+        const bX = cdotX + biasX;
+        const bY = cdotY + biasY;
+        let det = k11 * k22 - k12 * k12;
+        if (det !== 0) det = 1 / det;
+        const solvedX = det * (k22 * bX - k12 * bY);
+        const solvedY = det * (k11 * bY - k12 * bX);
+        const px = -massScale * solvedX - impulseScale * d[o + LINEAR_IMPULSE_X]!;
+        const py = -massScale * solvedY - impulseScale * d[o + LINEAR_IMPULSE_Y]!;
+        d[o + LINEAR_IMPULSE_X] += px;
+        d[o + LINEAR_IMPULSE_Y] += py;
+        vAx -= mA * px;
+        vAy -= mA * py;
+        wA -= iA * (rAx * py - rAy * px);
+        vBx += mB * px;
+        vBy += mB * py;
+        wB += iB * (rBx * py - rBy * px);
       }
-      const cdotX = vBx - wB * rBy - (vAx - wA * rAy);
-      const cdotY = vBy + wB * rBx - (vAy + wA * rAx);
-      const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
-      const k12 = -rAy * rAx * iA - rBy * rBx * iB;
-      const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
-      // 2x2 solve inlined: a call with number arguments would box them (allocate) per call.
-      const bX = cdotX + biasX;
-      const bY = cdotY + biasY;
-      let det = k11 * k22 - k12 * k12;
-      if (det !== 0) det = 1 / det;
-      const solvedX = det * (k22 * bX - k12 * bY);
-      const solvedY = det * (k11 * bY - k12 * bX);
-      const px = -massScale * solvedX - impulseScale * this.linearImpulseX;
-      const py = -massScale * solvedY - impulseScale * this.linearImpulseY;
-      this.linearImpulseX += px;
-      this.linearImpulseY += py;
-      vAx -= mA * px;
-      vAy -= mA * py;
-      wA -= iA * (rAx * py - rAy * px);
-      vBx += mB * px;
-      vBy += mB * py;
-      wB += iB * (rBx * py - rBy * px);
-    }
 
-    s[a + V_X] = vAx;
-    s[a + V_Y] = vAy;
-    s[a + W] = wA;
-    s[b + V_X] = vBx;
-    s[b + V_Y] = vBy;
-    s[b + W] = wB;
+      s[a + V_X] = vAx;
+      s[a + V_Y] = vAy;
+      s[a + W] = wA;
+      s[b + V_X] = vBx;
+      s[b + V_Y] = vBy;
+      s[b + W] = wB;
 
-    if (!useBias) {
-      this.stepImpulseX += this.linearImpulseX;
-      this.stepImpulseY += this.linearImpulseY;
-      this.stepAngularImpulse += this.angularImpulse;
+      if (!useBias) {
+        d[o + STEP_IMPULSE_X] += d[o + LINEAR_IMPULSE_X]!;
+        d[o + STEP_IMPULSE_Y] += d[o + LINEAR_IMPULSE_Y]!;
+        d[o + STEP_ANGULAR_IMPULSE] += d[o + ANGULAR_IMPULSE]!;
+      }
     }
+  }
+
+  finish(): void {
+    for (let i = 0; i < this.count; i++) this.joints[i]!.storeBatch(this.data, i * STRIDE);
   }
 }
