@@ -39,7 +39,14 @@ for (let i = 0; i < 240; i++) world.step(1 / 60);
 const numbers = new Float64Array(bodies.length * 6);
 bodies.forEach((b, i) => {
   numbers.set(
-    [b.position.x, b.position.y, b.angle, b.linearVelocity.x, b.linearVelocity.y, b.angularVelocity],
+    [
+      b.position.x,
+      b.position.y,
+      b.angle,
+      b.linearVelocity.x,
+      b.linearVelocity.y,
+      b.angularVelocity,
+    ],
     6 * i,
   );
 });
