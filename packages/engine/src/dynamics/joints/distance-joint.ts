@@ -8,9 +8,9 @@ import {
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
+import { FlatJointBatch } from './joint-batch.ts';
 import {
   Joint,
-  type JointBatch,
   type JointOptions,
   type JointState,
   type JointStateLayout,
@@ -378,31 +378,9 @@ const STRIDE = 29;
  * @internal The distance joints of a step: their numbers in one Float64Array and their bodies'
  * state offsets in an Int32Array, solved in one loop per pass (see JointBatch).
  */
-export class DistanceBatch implements JointBatch {
-  count = 0;
-  data: Float64Array = new Float64Array(STRIDE * 16);
-  private states: Int32Array = new Int32Array(2 * 16);
-  private readonly joints: DistanceJoint[] = [];
-
-  clear(): void {
-    this.count = 0;
-  }
-
-  add(joint: Joint): void {
-    const distance = joint as DistanceJoint;
-    const i = this.count++;
-    if (this.states.length < 2 * this.count) {
-      const data = new Float64Array(2 * this.data.length);
-      data.set(this.data);
-      this.data = data;
-      const states = new Int32Array(2 * this.states.length);
-      states.set(this.states);
-      this.states = states;
-    }
-    this.states[2 * i] = distance.stateA;
-    this.states[2 * i + 1] = distance.stateB;
-    this.joints[i] = distance; // at most at its length: appends, never a hole
-    distance.loadBatch(this.data, i * STRIDE);
+export class DistanceBatch extends FlatJointBatch<DistanceJoint> {
+  constructor() {
+    super(STRIDE);
   }
 
   warmStart(s: Float64Array): void {
@@ -601,10 +579,6 @@ export class DistanceBatch implements JointBatch {
       s[b + V_Y] = vBy;
       s[b + W] = wB;
     }
-  }
-
-  finish(): void {
-    for (let i = 0; i < this.count; i++) this.joints[i]!.storeBatch(this.data, i * STRIDE);
   }
 }
 

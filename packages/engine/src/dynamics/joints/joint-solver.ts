@@ -1,5 +1,6 @@
 import { Softness } from '../softness.ts';
-import type { Joint, JointBatch, JointStep, JointType } from './joint.ts';
+import type { Joint, JointStep, JointType } from './joint.ts';
+import type { JointBatch } from './joint-batch.ts';
 import type { PinChains } from './pin-chains.ts';
 
 /**

@@ -1,3 +1,4 @@
+import type { JointBatch } from './joint-batch.ts';
 import { PhysicalError } from '../../core/errors.ts';
 import {
   describeValue,
@@ -316,22 +317,6 @@ export abstract class Joint<UserData = unknown> {
   createChains(): PinChains | null {
     return null;
   }
-}
-
-/**
- * @internal One joint kind's solver numbers for a step, in flat arrays, so each pass is one loop
- * over numbers instead of a call per joint object (Box2D v3 keeps joint solver data in arrays the
- * same way). Between steps the joint objects hold the truth; {@link finish} writes it back.
- */
-export interface JointBatch {
-  /** Forgets last step's joints. */
-  clear(): void;
-  /** Adds a joint of the batch's kind, already prepared for the step. */
-  add(joint: Joint): void;
-  warmStart(s: Float64Array): void;
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void;
-  /** Writes the step's impulses back to the joints. */
-  finish(): void;
 }
 
 /**

@@ -9,9 +9,9 @@ import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import type { Body } from '../body.ts';
 import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
+import { FlatJointBatch } from './joint-batch.ts';
 import {
   Joint,
-  type JointBatch,
   type JointState,
   type JointStateLayout,
   type JointStep,
@@ -298,30 +298,9 @@ const STRIDE = 18;
  * @internal The mouse joints of a step: their numbers in one Float64Array and their bodies' state
  * offsets in an Int32Array, solved in one loop per pass (see JointBatch).
  */
-export class MouseBatch implements JointBatch {
-  count = 0;
-  data: Float64Array = new Float64Array(STRIDE * 16);
-  private states: Int32Array = new Int32Array(16);
-  private readonly joints: MouseJoint[] = [];
-
-  clear(): void {
-    this.count = 0;
-  }
-
-  add(joint: Joint): void {
-    const mouse = joint as MouseJoint;
-    const i = this.count++;
-    if (this.states.length < this.count) {
-      const data = new Float64Array(2 * this.data.length);
-      data.set(this.data);
-      this.data = data;
-      const states = new Int32Array(2 * this.states.length);
-      states.set(this.states);
-      this.states = states;
-    }
-    this.states[i] = mouse.stateB;
-    this.joints[i] = mouse; // at most at its length: appends, never a hole
-    mouse.loadBatch(this.data, i * STRIDE);
+export class MouseBatch extends FlatJointBatch<MouseJoint> {
+  constructor() {
+    super(STRIDE);
   }
 
   warmStart(s: Float64Array): void {
@@ -329,7 +308,7 @@ export class MouseBatch implements JointBatch {
     const states = this.states;
     for (let i = 0; i < this.count; i++) {
       const o = i * STRIDE;
-      const b = states[i]!;
+      const b = states[2 * i + 1]!;
       const mB = d[o + INV_MASS_B]!;
       const iB = d[o + INV_I_B]!;
       const rBx = s[b + Q_C]! * d[o + R_BX]! - s[b + Q_S]! * d[o + R_BY]!;
@@ -347,7 +326,7 @@ export class MouseBatch implements JointBatch {
     const states = this.states;
     for (let i = 0; i < this.count; i++) {
       const o = i * STRIDE;
-      const b = states[i]!;
+      const b = states[2 * i + 1]!;
       const mB = d[o + INV_MASS_B]!;
       const iB = d[o + INV_I_B]!;
       let vBx = s[b + V_X]!;
@@ -416,10 +395,6 @@ export class MouseBatch implements JointBatch {
         d[o + STEP_ANGULAR_IMPULSE] += d[o + ANGULAR_IMPULSE]!;
       }
     }
-  }
-
-  finish(): void {
-    for (let i = 0; i < this.count; i++) this.joints[i]!.storeBatch(this.data, i * STRIDE);
   }
 }
 

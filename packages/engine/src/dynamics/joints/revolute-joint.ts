@@ -8,10 +8,10 @@ import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import { PinChains, type PinJoint } from './pin-chains.ts';
+import { FlatJointBatch, type BatchedJoint } from './joint-batch.ts';
 import {
   Joint,
   type JointOptions,
-  type JointBatch,
   type JointState,
   type JointStateLayout,
   type JointStep,
@@ -121,7 +121,7 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   private lowerImpulse = -0;
   private upperImpulse = -0;
   /** The batch holding the joint's numbers during a step, and its slot there. */
-  private batch: RevoluteBatch | null = null;
+  private batch: FlatJointBatch<BatchedJoint> | null = null;
   private slot = 0;
 
   constructor(options: RevoluteJointOptions<UserData>) {
@@ -372,7 +372,7 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal Writes this step's solver numbers into a batch's slot at `o`. */
-  loadBatch(d: Float64Array, o: number, batch: RevoluteBatch, slot: number): void {
+  loadBatch(d: Float64Array, o: number, slot: number, batch: FlatJointBatch<BatchedJoint>): void {
     this.batch = batch;
     this.slot = slot;
     d[o + R_AX] = this.rAx;
@@ -540,31 +540,9 @@ const STRIDE = 32;
  * @internal The revolute joints of a step: their numbers in one Float64Array and their bodies'
  * state offsets in an Int32Array, solved in one loop per pass (see JointBatch).
  */
-export class RevoluteBatch implements JointBatch {
-  count = 0;
-  data: Float64Array = new Float64Array(STRIDE * 16);
-  private states: Int32Array = new Int32Array(2 * 16);
-  private readonly joints: RevoluteJoint[] = [];
-
-  clear(): void {
-    this.count = 0;
-  }
-
-  add(joint: Joint): void {
-    const revolute = joint as RevoluteJoint;
-    const i = this.count++;
-    if (this.states.length < 2 * this.count) {
-      const data = new Float64Array(2 * this.data.length);
-      data.set(this.data);
-      this.data = data;
-      const states = new Int32Array(2 * this.states.length);
-      states.set(this.states);
-      this.states = states;
-    }
-    this.states[2 * i] = revolute.stateA;
-    this.states[2 * i + 1] = revolute.stateB;
-    this.joints[i] = revolute; // at most at its length: appends, never a hole
-    revolute.loadBatch(this.data, i * STRIDE, this, i);
+export class RevoluteBatch extends FlatJointBatch<RevoluteJoint> {
+  constructor() {
+    super(STRIDE);
   }
 
   warmStart(s: Float64Array): void {
@@ -745,9 +723,5 @@ export class RevoluteBatch implements JointBatch {
           d[o + UPPER_IMPULSE]!;
       }
     }
-  }
-
-  finish(): void {
-    for (let i = 0; i < this.count; i++) this.joints[i]!.storeBatch(this.data, i * STRIDE);
   }
 }

@@ -2,9 +2,9 @@ import { requireNonNegative } from '../../core/validate.ts';
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
+import { FlatJointBatch } from './joint-batch.ts';
 import {
   Joint,
-  type JointBatch,
   type JointOptions,
   type JointState,
   type JointStateLayout,
@@ -276,31 +276,9 @@ const STRIDE = 26;
  * @internal The weld joints of a step: their numbers in one Float64Array and their bodies' state
  * offsets in an Int32Array, solved in one loop per pass (see JointBatch).
  */
-export class WeldBatch implements JointBatch {
-  count = 0;
-  data: Float64Array = new Float64Array(STRIDE * 16);
-  private states: Int32Array = new Int32Array(2 * 16);
-  private readonly joints: WeldJoint[] = [];
-
-  clear(): void {
-    this.count = 0;
-  }
-
-  add(joint: Joint): void {
-    const weld = joint as WeldJoint;
-    const i = this.count++;
-    if (this.states.length < 2 * this.count) {
-      const data = new Float64Array(2 * this.data.length);
-      data.set(this.data);
-      this.data = data;
-      const states = new Int32Array(2 * this.states.length);
-      states.set(this.states);
-      this.states = states;
-    }
-    this.states[2 * i] = weld.stateA;
-    this.states[2 * i + 1] = weld.stateB;
-    this.joints[i] = weld; // at most at its length: appends, never a hole
-    weld.loadBatch(this.data, i * STRIDE);
+export class WeldBatch extends FlatJointBatch<WeldJoint> {
+  constructor() {
+    super(STRIDE);
   }
 
   warmStart(s: Float64Array): void {
@@ -437,9 +415,5 @@ export class WeldBatch implements JointBatch {
         d[o + STEP_ANGULAR_IMPULSE] += d[o + ANGULAR_IMPULSE]!;
       }
     }
-  }
-
-  finish(): void {
-    for (let i = 0; i < this.count; i++) this.joints[i]!.storeBatch(this.data, i * STRIDE);
   }
 }
