@@ -11,7 +11,6 @@ import { CONTACT_KERNEL_HEX } from './contact-kernel-binary.ts';
 /** The parts of the WebAssembly API used here (the engine's types assume only ES2022). */
 export interface WasmMemory {
   readonly buffer: ArrayBuffer;
-  grow(pages: number): number;
 }
 interface WasmApi {
   Memory: new (descriptor: { initial: number }) => WasmMemory;
