@@ -929,6 +929,6 @@ function isJoint(value: unknown): value is Joint {
     typeof value === 'object' &&
     value !== null &&
     'worldRef' in value &&
-    typeof (value as { warmStart?: unknown }).warmStart === 'function'
+    typeof (value as { createBatch?: unknown }).createBatch === 'function'
   );
 }

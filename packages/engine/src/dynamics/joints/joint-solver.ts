@@ -25,12 +25,9 @@ export class JointSolver {
   private readonly step: JointStep = { h: 0, inverseH: 0, dt: 0, softness: new Softness() };
   /** The exact solve of hinge chains with unlike masses, once a hinge has been solved. */
   chains: PinChains | null = null;
-  /** Each kind's batch, once a joint of it was solved (null: the kind has none). */
-  private readonly batchOf: Partial<Record<JointType, JointBatch | null>> = {};
+  /** Each kind's batch, once a joint of it was solved; in `batches` in that order. */
+  private readonly batchOf: Partial<Record<JointType, JointBatch>> = {};
   private readonly batches: JointBatch[] = [];
-  /** Joints of kinds without a batch, solved one at a time (the first `singleCount`). */
-  private readonly singles: Joint[] = [];
-  private singleCount = 0;
 
   /**
    * Picks the joints to solve and prepares them; `contactHertz` as the contacts use it,
@@ -47,7 +44,6 @@ export class JointSolver {
     const batches = this.batches;
     for (let i = 0; i < batches.length; i++) batches[i]!.clear();
     let count = 0;
-    let singleCount = 0;
     for (let i = 0; i < list.length; i++) {
       const joint = list[i]!;
       if (joint.bodyA.solverIndex === 0 && joint.bodyB.solverIndex === 0) continue;
@@ -58,7 +54,7 @@ export class JointSolver {
       if (this.batchOf[joint.type] === undefined) {
         const batch = joint.createBatch();
         this.batchOf[joint.type] = batch;
-        if (batch !== null) batches.push(batch);
+        batches.push(batch);
       }
       // Made by the first joint kind that needs it, however the joint came in (added or
       // restored from a snapshot); apps without such joints never load it.
@@ -67,27 +63,19 @@ export class JointSolver {
     this.count = count;
     this.chains?.prepare(active, count, bodyCount, step.h);
     // After the chains: they add their pins' geometric stiffness to the joints' inertia.
-    for (let i = 0; i < count; i++) {
-      const joint = active[i]!;
-      const batch = this.batchOf[joint.type]!;
-      if (batch !== null) batch.add(joint);
-      else this.singles[singleCount++] = joint; // at most at its length: appends, never a hole
-    }
-    this.singleCount = singleCount;
+    for (let i = 0; i < count; i++) this.batchOf[active[i]!.type]!.add(active[i]!);
   }
 
-  /** Batches in the order their kinds first came, then the joints without one, in list order. */
+  /** Kind after kind, in the order the kinds first came. */
   warmStart(s: Float64Array): void {
     const batches = this.batches;
     for (let i = 0; i < batches.length; i++) batches[i]!.warmStart(s);
-    for (let i = 0; i < this.singleCount; i++) this.singles[i]!.warmStart(s);
   }
 
   solve(s: Float64Array, useBias: boolean): void {
     const step = this.step;
     const batches = this.batches;
     for (let i = 0; i < batches.length; i++) batches[i]!.solve(s, step, useBias);
-    for (let i = 0; i < this.singleCount; i++) this.singles[i]!.solve(s, step, useBias);
   }
 
   /**

@@ -286,25 +286,10 @@ export abstract class Joint<UserData = unknown> {
   /** @internal Anchors, effective masses and softness for this step. */
   abstract prepare(step: JointStep): void;
   /**
-   * @internal Applies the impulses carried from the last sub-step. Kinds with a batch
-   * ({@link createBatch}) are warm-started there instead.
+   * @internal The kind's batch (its joints' solver numbers of a step in flat arrays, warm-started
+   * and solved in one loop per pass), made once per world by the first joint of the kind.
    */
-  warmStart(_s: Float64Array): void {}
-  /**
-   * @internal One pass. With `useBias` position error is corrected softly; without it (relax) only
-   * velocities are constrained. The relax pass adds the sub-step's impulses to the step sums.
-   * Kinds with a batch are solved there instead.
-   */
-  solve(_s: Float64Array, _step: JointStep, _useBias: boolean): void {}
-
-  /**
-   * @internal The kind's batch (its joints' solver numbers of a step in flat arrays, solved in
-   * one loop per pass), made once per world by the first joint of the kind; null for kinds solved
-   * one joint at a time.
-   */
-  createBatch(): JointBatch | null {
-    return null;
-  }
+  abstract createBatch(): JointBatch;
   /** @internal Forgets accumulated impulses (the joint was moved by hand or just created). */
   abstract resetImpulses(): void;
 
