@@ -129,7 +129,7 @@ export function warmStart(
     for (let j = 0; j < pointCount; j++) {
       const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
       if (ld(p, IMPACT) == 2) {
-        st(p, IMPACT, 0);
+        st(p, IMPACT, 3);
         st(p, NORMAL_IMPULSE, 0);
       }
       const pn = ld(p, NORMAL_IMPULSE);
@@ -267,12 +267,12 @@ export function solve(
         const impact2 = ld(p2, IMPACT);
         isImpact1 =
           accumulated1 == 0 &&
-          impact1 != 2 &&
+          (impact1 < 2 || impact1 == 3) &&
           vn1 < -restitutionThreshold &&
           (impact1 == 1 || vn1 + bias1 < 0);
         isImpact2 =
           accumulated2 == 0 &&
-          impact2 != 2 &&
+          (impact2 < 2 || impact2 == 3) &&
           vn2 < -restitutionThreshold &&
           (impact2 == 1 || vn2 + bias2 < 0);
       }
@@ -439,7 +439,7 @@ export function solve(
         const impactState = ld(p, IMPACT);
         if (
           accumulated == 0 &&
-          impactState != 2 &&
+          (impactState < 2 || impactState == 3) &&
           vn < -restitutionThreshold &&
           (impactState == 1 || vn + bias < 0)
         ) {

@@ -24,8 +24,10 @@ export const HAS_CACHE = 7;
  * (4 numbers each), then the normal in A's frame (2): 14 numbers.
  */
 export const CACHE = 8;
+/** Steps in a row, up to the last, in which a point of this contact bounced (contact-solver.ts). */
+export const BOUNCING_STEPS = 22;
 /** First point; point j starts at POINTS + j * POINT_STRIDE. */
-export const POINTS = 22;
+export const POINTS = 23;
 
 // Per point, relative to its start.
 /** World position (m), midway between the surfaces. */

@@ -172,6 +172,7 @@ export class Solver {
       s,
       this.contactSoftness,
       this.staticSoftness,
+      dt,
     );
     scrambleOrder(constraints.order, constraints.count);
     const shock = this.shock;

@@ -4,6 +4,7 @@ import { checkTreeState, type TreeState } from '../collision/dynamic-tree.ts';
 import { PhysicalError } from '../core/errors.ts';
 import { Body, type BodyType } from '../dynamics/body.ts';
 import {
+  BOUNCING_STEPS,
   CONTACT_STRIDE,
   FRICTION,
   HAS_CACHE,
@@ -82,8 +83,11 @@ export type { SnapshotNumber, SnapshotValue } from './snapshot-values.ts';
 
 /** The format name every snapshot carries. */
 export const SNAPSHOT_FORMAT = 'physical-world';
-/** The snapshot layout this version writes and reads. */
-export const SNAPSHOT_VERSION = 1;
+/**
+ * The snapshot layout this version writes. It also reads version 1, whose contacts lack the
+ * count of steps in a row they bounced (read as 0).
+ */
+export const SNAPSHOT_VERSION = 2;
 
 /**
  * A saved world ({@link takeSnapshot}): plain data, safe for `JSON.stringify`. Its sections are
@@ -92,7 +96,7 @@ export const SNAPSHOT_VERSION = 1;
  */
 export interface WorldSnapshot {
   readonly format: typeof SNAPSHOT_FORMAT;
-  readonly version: typeof SNAPSHOT_VERSION;
+  readonly version: 1 | typeof SNAPSHOT_VERSION;
   readonly settings: Readonly<Record<string, SnapshotValue>>;
   readonly world: Readonly<Record<string, SnapshotValue>>;
   readonly bodies: readonly Readonly<Record<string, SnapshotValue>>[];
@@ -678,10 +682,10 @@ function loadWorld(w: WorldInternals, snapshot: unknown): void {
     );
   }
   const version = root['version'];
-  if (version !== SNAPSHOT_VERSION) {
+  if (version !== SNAPSHOT_VERSION && version !== 1) {
     fail(
       'version',
-      `must be ${SNAPSHOT_VERSION}, the only version this Physical reads; got ${describe(version)}.`,
+      `must be 1 or ${SNAPSHOT_VERSION}, the versions this Physical reads; got ${describe(version)}.`,
     );
   }
   Object.assign(w.settings, readSettings(obj('settings', field(root, '', 'settings'))));
@@ -835,7 +839,14 @@ function loadWorld(w: WorldInternals, snapshot: unknown): void {
     pairs.add(key);
     const contact = w.contactManager.restoreContact(a, b);
     contact.touching = bool(`${path}.touching`, field(o, path, 'touching'));
-    const values = finites(`${path}.data`, field(o, path, 'data'), CONTACT_STRIDE);
+    const values = finites(
+      `${path}.data`,
+      field(o, path, 'data'),
+      version === 1 ? CONTACT_STRIDE - 1 : CONTACT_STRIDE,
+    );
+    // Version 1 had no BOUNCING_STEPS slot: a contact read from it has not been bouncing.
+    if (version === 1) values.splice(BOUNCING_STEPS, 0, 0);
+    int(`${path}.data[${BOUNCING_STEPS}]`, values[BOUNCING_STEPS], 0, Number.MAX_SAFE_INTEGER);
     int(`${path}.data[${POINT_COUNT}]`, values[POINT_COUNT], 0, 2);
     int(`${path}.data[${HAS_CACHE}]`, values[HAS_CACHE], 0, 1);
     if (values[FRICTION]! < 0 || values[RESTITUTION]! < 0) {

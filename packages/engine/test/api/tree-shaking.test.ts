@@ -24,7 +24,7 @@ const JOINT_FILES = [
 const SNAPSHOT_MARKERS = [
   'physical-world', // the snapshot format name
   'cannot be taken while the world is stepping', // takeSnapshot's error
-  'the only version this Physical reads', // restoreSnapshot's version check
+  'the versions this Physical reads', // restoreSnapshot's version check
   'must be a unit vector, got one of length', // a joint snapshot check
 ];
 const JOINT_MARKERS = [
