@@ -6,6 +6,11 @@ export interface ListenerEntry<F> {
   active: boolean;
 }
 
+/** @internal A count of listeners shared by many lists (see {@link Listeners}). */
+export interface ListenerCount {
+  total: number;
+}
+
 /**
  * @internal A list of listeners per event name. Listeners are called in the order they were
  * added. The list is copied on write, not on emit, so emitting allocates nothing; a dispatch that
@@ -18,8 +23,15 @@ export class Listeners<Events extends { [K in keyof Events]: (event: never) => v
   /** Listeners of every type together: 0 lets hot loops skip an object without a map lookup. */
   total = 0;
 
-  /** `names`: the event names this list accepts (a typo is an error, not a silent no-op). */
-  constructor(private readonly names: readonly (keyof Events & string)[]) {}
+  /**
+   * `names`: the event names this list accepts (a typo is an error, not a silent no-op).
+   * `shared`: a count that every list of a kind adds its listeners to, so a dispatch can skip all
+   * of them at once when there are none (see World's event dispatch).
+   */
+  constructor(
+    private readonly names: readonly (keyof Events & string)[],
+    private readonly shared: ListenerCount = { total: 0 },
+  ) {}
 
   on<K extends keyof Events>(type: K, listener: Events[K]): () => void {
     requireOneOf('type', type, this.names);
@@ -28,6 +40,7 @@ export class Listeners<Events extends { [K in keyof Events]: (event: never) => v
     const entry: ListenerEntry<unknown> = { listener, active: true };
     this.lists.set(type, list === undefined ? [entry] : [...list, entry]);
     this.total++;
+    this.shared.total++;
     return () => this.remove(type, entry);
   }
 
@@ -46,6 +59,7 @@ export class Listeners<Events extends { [K in keyof Events]: (event: never) => v
     const list = this.lists.get(type)!;
     const next = list.filter((e) => e !== entry);
     this.total--;
+    this.shared.total--;
     if (next.length === 0) this.lists.delete(type);
     else this.lists.set(type, next);
   }

@@ -10,6 +10,19 @@
 
 import type { SolverMemory } from './solver-memory.ts';
 
+// The body table: per body of the world (by world index), what preparing a contact needs of it,
+// written by Solver.gatherBodies, so the preparation reads numbers instead of contact and body
+// objects (their first loads were most of its time):
+//   0 solver slot (0: immovable this step)
+//   1 inverse mass, 2 inverse inertia (0 when immovable this step)
+//   3 cx, 4 cy   centre of mass at the step's start (m)
+export const TABLE_SLOT = 0;
+export const TABLE_INV_MASS = 1;
+export const TABLE_INV_I = 2;
+export const TABLE_CENTER_X = 3;
+export const TABLE_CENTER_Y = 4;
+export const TABLE_STRIDE = 5;
+
 export const STATE_STRIDE = 8;
 export const V_X = 0;
 export const V_Y = 1;

@@ -1,5 +1,5 @@
 import { PhysicalError } from '../core/errors.ts';
-import { Listeners } from '../core/listeners.ts';
+import { Listeners, type ListenerCount } from '../core/listeners.ts';
 import {
   describeValue,
   MAX_ANGULAR_SPEED,
@@ -124,6 +124,12 @@ function requireDamping(field: string, value: number): number {
 const scratchMass = new MassData();
 
 /**
+ * @internal Listeners on every body of every world together: while 0, a step's event dispatch
+ * skips its per-contact and per-body loops (they would find no body listener).
+ */
+export const bodyListeners: ListenerCount = { total: 0 };
+
+/**
  * A rigid body: the thesis's RigidBody2D. Build one, then `world.add(body)`; or use the helpers
  * {@link particle}, {@link box}, {@link capsule}, {@link regularPolygon}, {@link polygon} and
  * {@link wall}.
@@ -233,7 +239,10 @@ export class Body<UserData = unknown> {
   /** @internal A removal was requested during a step; no more events. */
   removalPending = false;
   /** @internal */
-  readonly listeners: Listeners<BodyEvents> = new Listeners<BodyEvents>(BODY_EVENT_NAMES);
+  readonly listeners: Listeners<BodyEvents> = new Listeners<BodyEvents>(
+    BODY_EVENT_NAMES,
+    bodyListeners,
+  );
 
   private readonly positionView: Vec2 = { x: 0, y: 0 };
   private readonly velocityView: Vec2 = { x: 0, y: 0 };

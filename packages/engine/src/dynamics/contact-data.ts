@@ -55,6 +55,11 @@ export const CONTACT_STRIDE: number = POINTS + 2 * POINT_STRIDE;
 /** Growable flat storage of contact slots. */
 export class ContactData {
   data: Float64Array = new Float64Array(CONTACT_STRIDE * 256);
+  /**
+   * Per slot, the world indices of body A and body B (2 per slot), so the solver's preparation
+   * reads no contact or body object (see Solver.gatherBodies' body table).
+   */
+  bodies: Int32Array = new Int32Array(2 * 256);
 
   /** Makes room for `count` slots, keeping the existing ones. */
   reserve(count: number): void {
@@ -65,11 +70,30 @@ export class ContactData {
     const grown = new Float64Array(size);
     grown.set(this.data);
     this.data = grown;
+    const bodies = new Int32Array((2 * size) / CONTACT_STRIDE);
+    bodies.set(this.bodies);
+    this.bodies = bodies;
   }
 
   /** Copies slot `from` over slot `to` (swap-removal keeps the slots dense). */
   move(from: number, to: number): void {
     const d = this.data;
     d.copyWithin(to * CONTACT_STRIDE, from * CONTACT_STRIDE, (from + 1) * CONTACT_STRIDE);
+    this.bodies[2 * to] = this.bodies[2 * from]!;
+    this.bodies[2 * to + 1] = this.bodies[2 * from + 1]!;
+  }
+
+  /** Records the world indices of a slot's bodies. */
+  setBodies(slot: number, indexA: number, indexB: number): void {
+    this.bodies[2 * slot] = indexA;
+    this.bodies[2 * slot + 1] = indexB;
+  }
+
+  /** The body at world index `removed` left the world: later bodies moved down by one. */
+  bodyRemoved(removed: number, slotCount: number): void {
+    const bodies = this.bodies;
+    for (let i = 0; i < 2 * slotCount; i++) {
+      if (bodies[i]! > removed) bodies[i]!--;
+    }
   }
 }

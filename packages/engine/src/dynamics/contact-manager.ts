@@ -54,6 +54,7 @@ export class ContactManager {
     this.slots.reserve(contact.index + 1);
     if (shouldSwap(shapeA, shapeB)) contact.init(shapeB, shapeA, this.slots.data);
     else contact.init(shapeA, shapeB, this.slots.data);
+    this.slots.setBodies(contact.index, contact.bodyA.worldIndex, contact.bodyB.worldIndex);
     this.contacts.push(contact);
     contact.indexInA = contact.bodyA.contacts.length;
     contact.bodyA.contacts.push(contact);
@@ -104,6 +105,11 @@ export class ContactManager {
     }
   }
 
+  /** The body at world index `index` left the world (its contacts are already destroyed). */
+  bodyRemoved(index: number): void {
+    this.slots.bodyRemoved(index, this.contacts.length);
+  }
+
   /** Destroys every contact of a shape (it is being removed). */
   destroyContactsOfShape(shape: Shape): void {
     const contacts = shape.body.contacts;
@@ -132,6 +138,7 @@ export class ContactManager {
     contact.index = this.contacts.length;
     this.slots.reserve(contact.index + 1);
     contact.init(shapeA, shapeB, this.slots.data);
+    this.slots.setBodies(contact.index, contact.bodyA.worldIndex, contact.bodyB.worldIndex);
     this.contacts.push(contact);
     return contact;
   }

@@ -1,4 +1,3 @@
-import type { Contact } from './contact.ts';
 import {
   BOUNCING_STEPS as C_BOUNCING_STEPS,
   CONTACT_STRIDE,
@@ -21,7 +20,23 @@ import {
   RADIUS_B as C_RADIUS_B,
   RESTITUTION as C_RESTITUTION,
 } from './contact-data.ts';
-import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, STATE_STRIDE, V_X, V_Y, W } from './body-state.ts';
+import {
+  DELTA_ANGLE,
+  DP_X,
+  DP_Y,
+  Q_C,
+  Q_S,
+  STATE_STRIDE,
+  TABLE_CENTER_X,
+  TABLE_CENTER_Y,
+  TABLE_INV_I,
+  TABLE_INV_MASS,
+  TABLE_SLOT,
+  TABLE_STRIDE,
+  V_X,
+  V_Y,
+  W,
+} from './body-state.ts';
 import type { SolverMemory } from './solver-memory.ts';
 import { LINEAR_SLOP } from '../core/constants.ts';
 import { Softness } from './softness.ts';
@@ -137,8 +152,6 @@ export class ContactConstraints {
   circlePairCount = 0;
   /** Constraints of this step between two moving bodies whose masses differ more than twofold. */
   heavyOnLightCount = 0;
-  /** The contact each constraint came from, for events (the first `count`). */
-  readonly contacts: Contact[] = [];
 
   constructor(readonly memory: SolverMemory) {}
 
@@ -167,29 +180,31 @@ export class ContactConstraints {
 }
 
 /**
- * Makes a constraint of every touching contact with something that can move, computing effective
- * masses, the anchors relative to each centre of mass and the separation baseline from the
- * contact's slot in `contactData`. Reads velocities from `states` (already loaded with the
- * bodies' velocities of this step's start) for restitution. Visits the contacts in their own
+ * Makes a constraint of every touching contact (slots 0..`contactCount` - 1 of `contactData`) with
+ * something that can move, computing effective masses, the anchors relative to each centre of
+ * mass and the separation baseline from the contact's slot. Reads the bodies from `table` (see
+ * body-state.ts) through the slot's world indices, and velocities from `states` (already loaded
+ * with the bodies' velocities of this step's start) for restitution. Visits the contacts in slot
  * order, so the contact data streams through memory; the sub-step passes use `order`.
  */
 export function prepareContacts(
   constraints: ContactConstraints,
-  contacts: readonly Contact[],
+  contactCount: number,
   contactData: Float64Array,
+  contactBodies: Int32Array,
+  table: Float64Array,
   states: Float64Array,
   contactSoftness: Softness,
   staticSoftness: Softness,
   dt: number,
 ): void {
   // Each contact is a constraint at most once: reserve for all of them.
-  constraints.reserve(contacts.length);
+  constraints.reserve(contactCount);
   constraints.circlePairCount = 0;
   constraints.heavyOnLightCount = 0;
   const c = constraints.data;
   const indices = constraints.bodies;
   const slots = constraints.slots;
-  const list = constraints.contacts;
   const contactBiasRate = contactSoftness.biasRate;
   const contactMassScale = contactSoftness.massScale;
   const contactImpulseScale = contactSoftness.impulseScale;
@@ -197,24 +212,23 @@ export function prepareContacts(
   const staticMassScale = staticSoftness.massScale;
   const staticImpulseScale = staticSoftness.impulseScale;
   let i = 0;
-  for (let n = 0; n < contacts.length; n++) {
-    const contact = contacts[n]!;
-    if (!contact.touching) continue;
-    const bodyA = contact.bodyA;
-    const bodyB = contact.bodyB;
-    // Sleeping or static bodies are solved as immovable (slot 0); awake kinematic ones too.
-    const indexA = bodyA.solverIndex;
-    const indexB = bodyB.solverIndex;
-    const mA = indexA === 0 ? 0 : bodyA.invMass;
-    const mB = indexB === 0 ? 0 : bodyB.invMass;
-    if (mA === 0 && mB === 0) continue;
-    const iA = indexA === 0 ? 0 : bodyA.invInertia;
-    const iB = indexB === 0 ? 0 : bodyB.invInertia;
-    if (i < list.length) list[i] = contact;
-    else list.push(contact);
-    const slot = contact.index;
-    slots[i] = slot;
+  for (let slot = 0; slot < contactCount; slot++) {
     const m = slot * CONTACT_STRIDE;
+    // Touching: the manifold has a point (Contact.touching).
+    const pointCount = contactData[m + C_POINT_COUNT]!;
+    if (pointCount === 0) continue;
+    const tA = contactBodies[2 * slot]! * TABLE_STRIDE;
+    const tB = contactBodies[2 * slot + 1]! * TABLE_STRIDE;
+    // Sleeping or static bodies are solved as immovable (slot 0, no inverse mass); awake
+    // kinematic ones too.
+    const indexA = table[tA + TABLE_SLOT]!;
+    const indexB = table[tB + TABLE_SLOT]!;
+    const mA = table[tA + TABLE_INV_MASS]!;
+    const mB = table[tB + TABLE_INV_MASS]!;
+    if (mA === 0 && mB === 0) continue;
+    const iA = table[tA + TABLE_INV_I]!;
+    const iB = table[tB + TABLE_INV_I]!;
+    slots[i] = slot;
     const base = i * STRIDE;
     const a = indexA * STATE_STRIDE;
     const b = indexB * STATE_STRIDE;
@@ -224,7 +238,6 @@ export function prepareContacts(
     const immovable = mA === 0 || mB === 0;
     const nx = contactData[m + C_NORMAL_X]!;
     const ny = contactData[m + C_NORMAL_Y]!;
-    const pointCount = contactData[m + C_POINT_COUNT]!;
     c[base + NORMAL_X] = nx;
     c[base + NORMAL_Y] = ny;
     c[base + FRICTION] = contactData[m + C_FRICTION]!;
@@ -251,10 +264,10 @@ export function prepareContacts(
     const pressed = contactData[m + C_BOUNCING_STEPS]! >= PRESSED_AFTER_BOUNCING_STEPS;
     const radiusA = contactData[m + C_RADIUS_A]!;
     const radiusB = contactData[m + C_RADIUS_B]!;
-    const centerAX = bodyA.centerX;
-    const centerAY = bodyA.centerY;
-    const centerBX = bodyB.centerX;
-    const centerBY = bodyB.centerY;
+    const centerAX = table[tA + TABLE_CENTER_X]!;
+    const centerAY = table[tA + TABLE_CENTER_Y]!;
+    const centerBX = table[tB + TABLE_CENTER_X]!;
+    const centerBY = table[tB + TABLE_CENTER_Y]!;
     c[base + RADIUS_A] = radiusA;
     c[base + RADIUS_B] = radiusB;
     c[base + CENTER_DX] = centerBX - centerAX;

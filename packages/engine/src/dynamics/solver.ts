@@ -8,11 +8,17 @@ import {
   Q_C,
   Q_S,
   STATE_STRIDE,
+  TABLE_CENTER_X,
+  TABLE_CENTER_Y,
+  TABLE_INV_I,
+  TABLE_INV_MASS,
+  TABLE_SLOT,
+  TABLE_STRIDE,
   V_X,
   V_Y,
   W,
 } from './body-state.ts';
-import type { Contact } from './contact.ts';
+import type { ContactData } from './contact-data.ts';
 import {
   CONSTRAINT_STRIDE,
   ContactConstraints,
@@ -68,6 +74,8 @@ export class Solver {
    */
   private params: Float64Array = new Float64Array(PARAM_STRIDE * 64);
   readonly constraints: ContactConstraints = new ContactConstraints(this.memory);
+  /** Every body of the world by world index, for preparing contacts (see body-state.ts). */
+  private table: Float64Array = new Float64Array(TABLE_STRIDE * 64);
   /** The joints, solved before the contacts in each pass (as Box2D v3 orders them). */
   readonly joints: JointSolver = new JointSolver();
   /**
@@ -104,13 +112,30 @@ export class Solver {
       while (size < bodies.length * PARAM_STRIDE) size *= 2;
       this.params = new Float64Array(size);
     }
+    if (this.table.length < bodies.length * TABLE_STRIDE) {
+      let size = this.table.length;
+      while (size < bodies.length * TABLE_STRIDE) size *= 2;
+      this.table = new Float64Array(size);
+    }
     const params = this.params;
+    const table = this.table;
     let count = 0;
     for (let n = 0; n < bodies.length; n++) {
       const body = bodies[n]!;
       body.solverIndex = 0;
-      if (!body.awake || body.type === 'static') continue;
+      const t = n * TABLE_STRIDE;
+      table[t + TABLE_CENTER_X] = body.centerX;
+      table[t + TABLE_CENTER_Y] = body.centerY;
+      if (!body.awake || body.type === 'static') {
+        table[t + TABLE_SLOT] = 0;
+        table[t + TABLE_INV_MASS] = 0;
+        table[t + TABLE_INV_I] = 0;
+        continue;
+      }
       const i = count++;
+      table[t + TABLE_SLOT] = count;
+      table[t + TABLE_INV_MASS] = body.invMass;
+      table[t + TABLE_INV_I] = body.invInertia;
       if (i < awake.length) awake[i] = body;
       else awake.push(body);
       body.solverIndex = count;
@@ -145,15 +170,11 @@ export class Solver {
    * Solves the step for the gathered bodies and the given contacts (the touching ones become
    * constraints); `contactData` holds the contacts' numbers (see contact-data.ts).
    */
-  solve(
-    contacts: readonly Contact[],
-    contactData: Float64Array,
-    settings: SolverSettings,
-    dt: number,
-  ): void {
+  solve(contacts: ContactData, contactCount: number, settings: SolverSettings, dt: number): void {
     const constraints = this.constraints;
+    const contactData = contacts.data;
     // Room first: growing the memory replaces every view of it, `s` included.
-    constraints.reserve(contacts.length);
+    constraints.reserve(contactCount);
     const s = this.states.data;
     const memory = this.memory;
     const subSteps = settings.subSteps;
@@ -167,8 +188,10 @@ export class Solver {
     this.staticSoftness.set(2 * contactHertz, settings.contactDampingRatio, h);
     prepareContacts(
       constraints,
-      contacts,
+      contactCount,
       contactData,
+      contacts.bodies,
+      this.table,
       s,
       this.contactSoftness,
       this.staticSoftness,

@@ -849,6 +849,13 @@ function loadWorld(w: WorldInternals, snapshot: unknown): void {
     int(`${path}.data[${BOUNCING_STEPS}]`, values[BOUNCING_STEPS], 0, Number.MAX_SAFE_INTEGER);
     int(`${path}.data[${POINT_COUNT}]`, values[POINT_COUNT], 0, 2);
     int(`${path}.data[${HAS_CACHE}]`, values[HAS_CACHE], 0, 1);
+    // The solver takes a contact with manifold points as touching (contact-solver.ts).
+    if (contact.touching !== values[POINT_COUNT]! > 0) {
+      fail(
+        `${path}.touching`,
+        `must be ${values[POINT_COUNT]! > 0}: data holds ${values[POINT_COUNT]} points.`,
+      );
+    }
     if (values[FRICTION]! < 0 || values[RESTITUTION]! < 0) {
       fail(`${path}.data`, 'has a negative friction or restitution.');
     }

@@ -14,7 +14,7 @@ import {
 } from '../core/validate.ts';
 import { BroadPhase, type ProxyType } from '../collision/broad-phase.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
-import type { Body } from '../dynamics/body.ts';
+import { bodyListeners, type Body } from '../dynamics/body.ts';
 import type { Contact } from '../dynamics/contact.ts';
 import {
   CONTACT_STRIDE,
@@ -367,8 +367,8 @@ export class World {
       this.contactManager.collide(dt);
       this.solver.gatherBodies(this.bodyList, dt);
       this.solver.solve(
-        this.contactManager.contacts,
-        this.contactManager.slots.data,
+        this.contactManager.slots,
+        this.contactManager.contacts.length,
         this.settings,
         dt,
       );
@@ -628,6 +628,7 @@ export class World {
     for (const shape of body.shapeList) this.destroyProxy(shape);
     this.bodyList.splice(body.worldIndex, 1);
     for (let i = body.worldIndex; i < this.bodyList.length; i++) this.bodyList[i]!.worldIndex = i;
+    this.contactManager.bodyRemoved(body.worldIndex);
     body.worldRef = null;
     body.worldIndex = -1;
     body.removalPending = false;
@@ -797,11 +798,13 @@ export class World {
   }
 
   private dispatchCollisions(): void {
-    const contacts = this.solver.constraints.contacts;
+    const contacts = this.contactManager.contacts;
+    const slots = this.solver.constraints.slots;
     const worldListeners = this.listeners.get('collision');
+    if (worldListeners === undefined && bodyListeners.total === 0) return;
     const event = this.collisionEvent;
     for (let i = 0; i < this.solver.constraints.count; i++) {
-      const contact = contacts[i]!;
+      const contact = contacts[slots[i]!]!;
       const bodyA = contact.bodyA;
       const bodyB = contact.bodyB;
       if (
@@ -861,6 +864,7 @@ export class World {
   private dispatchMoves(): void {
     const awake = this.solver.awake;
     const worldListeners = this.listeners.get('move');
+    if (worldListeners === undefined && bodyListeners.total === 0) return;
     for (let i = 0; i < this.solver.awakeCount; i++) {
       const body = awake[i]!;
       if (worldListeners === undefined && body.listeners.total === 0) continue;

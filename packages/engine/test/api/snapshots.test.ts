@@ -259,6 +259,13 @@ describe('bad snapshots', () => {
       >
     )['kind'] = 'star';
     expect(load(shape)).toThrow(/snapshot\.bodies\[5\]\.shapes\[0\]\.geometry\.kind/);
+    // A contact marked touching must hold manifold points, and the other way round.
+    const touching = good() as Mutable;
+    const at = touching.contacts.findIndex((c) => c['touching'] === true);
+    touching.contacts[at]!['touching'] = false;
+    expect(load(touching)).toThrow(
+      new RegExp(`snapshot\\.contacts\\[${at}\\]\\.touching: must be true`),
+    );
   });
 
   it('names bad references', () => {
