@@ -1,3 +1,5 @@
+import type { SolverMemory } from './solver-memory.ts';
+
 // The numbers of every contact in one flat array, one slot per contact (slot = the contact's
 // index in the contact manager). The narrow phase writes a slot, the solver prepares its
 // constraints from it and stores the impulses back, and events read it. Keeping them out of the
@@ -52,46 +54,50 @@ export const POINT_STRIDE = 10;
 /** Doubles per contact slot. */
 export const CONTACT_STRIDE: number = POINTS + 2 * POINT_STRIDE;
 
-/** Growable flat storage of contact slots. */
+/**
+ * Growable flat storage of contact slots, in the solver's memory (solver-memory.ts), where the
+ * solver's preparation reads them (in WebAssembly too).
+ */
 export class ContactData {
-  data: Float64Array = new Float64Array(CONTACT_STRIDE * 256);
+  constructor(private readonly memory: SolverMemory) {}
+
+  /** The slots' numbers; a view that a later reserve of the memory replaces. */
+  get data(): Float64Array {
+    return this.memory.contactData;
+  }
+
   /**
    * Per slot, the world indices of body A and body B (2 per slot), so the solver's preparation
    * reads no contact or body object (see Solver.gatherBodies' body table).
    */
-  bodies: Int32Array = new Int32Array(2 * 256);
+  get bodies(): Int32Array {
+    return this.memory.contactBodies;
+  }
 
   /** Makes room for `count` slots, keeping the existing ones. */
   reserve(count: number): void {
-    const needed = count * CONTACT_STRIDE;
-    if (this.data.length >= needed) return;
-    let size = this.data.length;
-    while (size < needed) size *= 2;
-    const grown = new Float64Array(size);
-    grown.set(this.data);
-    this.data = grown;
-    const bodies = new Int32Array((2 * size) / CONTACT_STRIDE);
-    bodies.set(this.bodies);
-    this.bodies = bodies;
+    this.memory.reserveContacts(count);
   }
 
   /** Copies slot `from` over slot `to` (swap-removal keeps the slots dense). */
   move(from: number, to: number): void {
-    const d = this.data;
+    const d = this.memory.contactData;
     d.copyWithin(to * CONTACT_STRIDE, from * CONTACT_STRIDE, (from + 1) * CONTACT_STRIDE);
-    this.bodies[2 * to] = this.bodies[2 * from]!;
-    this.bodies[2 * to + 1] = this.bodies[2 * from + 1]!;
+    const bodies = this.memory.contactBodies;
+    bodies[2 * to] = bodies[2 * from]!;
+    bodies[2 * to + 1] = bodies[2 * from + 1]!;
   }
 
   /** Records the world indices of a slot's bodies. */
   setBodies(slot: number, indexA: number, indexB: number): void {
-    this.bodies[2 * slot] = indexA;
-    this.bodies[2 * slot + 1] = indexB;
+    const bodies = this.memory.contactBodies;
+    bodies[2 * slot] = indexA;
+    bodies[2 * slot + 1] = indexB;
   }
 
   /** The body at world index `removed` left the world: later bodies moved down by one. */
   bodyRemoved(removed: number, slotCount: number): void {
-    const bodies = this.bodies;
+    const bodies = this.memory.contactBodies;
     for (let i = 0; i < 2 * slotCount; i++) {
       if (bodies[i]! > removed) bodies[i]!--;
     }

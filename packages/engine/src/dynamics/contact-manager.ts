@@ -7,6 +7,7 @@ import { ContactData } from './contact-data.ts';
 import type { Islands } from './island.ts';
 import { jointPreventsCollision } from './joints/joint.ts';
 import type { Shape } from './shape.ts';
+import type { SolverMemory } from './solver-memory.ts';
 
 /**
  * Owns the contacts: creates one when the broad phase reports a new pair of overlapping fat boxes,
@@ -17,7 +18,7 @@ export class ContactManager {
   /** Every contact, in creation order (removal swaps the last one in). */
   readonly contacts: Contact[] = [];
   /** The contacts' numbers: slot i belongs to contacts[i]. */
-  readonly slots: ContactData = new ContactData();
+  readonly slots: ContactData;
   /** Contacts that started touching during the last narrow phase (the first `beganCount`). */
   readonly began: Contact[] = [];
   beganCount = 0;
@@ -28,7 +29,12 @@ export class ContactManager {
   private readonly pairs = new PairSet();
   private readonly pool: Contact[] = [];
 
-  constructor(private readonly islands: Islands) {}
+  constructor(
+    private readonly islands: Islands,
+    memory: SolverMemory,
+  ) {
+    this.slots = new ContactData(memory);
+  }
 
   /**
    * Broad-phase callback: a pair of overlapping fat boxes, by shape id. Most pairs reported

@@ -145,10 +145,6 @@ export const CONSTRAINT_STRIDE: number = STRIDE;
  */
 export class ContactConstraints {
   count = 0;
-  /** The contact data slot each constraint came from, to store impulses back. */
-  slots: Int32Array = new Int32Array(256);
-  /** Constraints between two circles centred on their bodies: their normal follows the centres. */
-  circlePairs: Int32Array = new Int32Array(64);
   circlePairCount = 0;
   /** Constraints of this step between two moving bodies whose masses differ more than twofold. */
   heavyOnLightCount = 0;
@@ -167,15 +163,18 @@ export class ContactConstraints {
   get order(): Int32Array {
     return this.memory.constraintOrder;
   }
+  /** The contact data slot each constraint came from, to store impulses back. */
+  get slots(): Int32Array {
+    return this.memory.constraintSlots;
+  }
+  /** Constraints between two circles centred on their bodies: their normal follows the centres. */
+  get circlePairs(): Int32Array {
+    return this.memory.circlePairs;
+  }
 
   /** Makes room for `count` constraints. */
   reserve(count: number): void {
     this.memory.reserveConstraints(count);
-    if (this.slots.length < count) {
-      let size = this.slots.length;
-      while (size < count) size *= 2;
-      this.slots = new Int32Array(size);
-    }
   }
 }
 
@@ -205,6 +204,7 @@ export function prepareContacts(
   const c = constraints.data;
   const indices = constraints.bodies;
   const slots = constraints.slots;
+  const circlePairs = constraints.circlePairs;
   const contactBiasRate = contactSoftness.biasRate;
   const contactMassScale = contactSoftness.massScale;
   const contactImpulseScale = contactSoftness.impulseScale;
@@ -285,14 +285,7 @@ export function prepareContacts(
       c[base + SHIFT_WEIGHT_A] = mA / total;
       c[base + SHIFT_WEIGHT_B] = mB / total;
     }
-    if (radiusA > 0 && radiusB > 0) {
-      if (constraints.circlePairs.length === constraints.circlePairCount) {
-        const grown = new Int32Array(2 * constraints.circlePairs.length);
-        grown.set(constraints.circlePairs);
-        constraints.circlePairs = grown;
-      }
-      constraints.circlePairs[constraints.circlePairCount++] = i;
-    }
+    if (radiusA > 0 && radiusB > 0) circlePairs[constraints.circlePairCount++] = i;
     const tx = ny;
     const ty = -nx;
     const vAx = states[a + V_X]!;

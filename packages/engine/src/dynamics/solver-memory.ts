@@ -1,14 +1,37 @@
 import { createContactKernel, type ContactKernel, type WasmMemory } from './contact-kernel.ts';
 
-// The solver's hot arrays in one block of memory: the body states (body-state.ts) and the contact
-// constraints with their body and visiting-order indices (contact-solver.ts). The JavaScript
-// passes read them through typed-array views; the WebAssembly kernel (contact-kernel.ts) reads
-// the same bytes at the regions' offsets. A world starts on an ordinary ArrayBuffer and moves
-// into a WebAssembly memory once it has `kernelSettings.minConstraints` contacts: a small world
-// gains nothing from the kernel and would hold a memory's address-space reservation for nothing.
+// The solver's hot arrays in one block of memory: the body states and the body table
+// (body-state.ts), the contact data with each slot's bodies (contact-data.ts), and the contact
+// constraints with their body offsets, visiting order, source slots and circle pairs
+// (contact-solver.ts). The JavaScript passes read them through typed-array views; the WebAssembly
+// kernel (contact-kernel.ts) reads the same bytes at the regions' offsets. A world starts on an
+// ordinary ArrayBuffer and moves into a WebAssembly memory once it has
+// `kernelSettings.minConstraints` contacts: a small world gains nothing from the kernel and would
+// hold a memory's address-space reservation for nothing.
 //
-// Layout, each region growing by doubling (contents kept):
-//   states: doubles | constraint data: count * stride doubles | bodies: 2 int32 | order: int32
+// Regions, in this order, each growing by doubling (contents kept), each 8-byte aligned.
+
+/** Solver body states: doubles. */
+export const STATES = 0;
+/** Constraint numbers: doubles. */
+export const CONSTRAINT_DATA = 1;
+/** Body state offsets of each constraint: 2 int32. */
+export const CONSTRAINT_BODIES = 2;
+/** Visiting order of the sub-step passes: int32. */
+export const CONSTRAINT_ORDER = 3;
+/** The contact slot each constraint came from: int32. */
+export const CONSTRAINT_SLOTS = 4;
+/** Constraints between two centred circles: int32. */
+export const CIRCLE_PAIRS = 5;
+/** Contact slots: doubles. */
+export const CONTACT_DATA = 6;
+/** World indices of each contact slot's bodies: 2 int32. */
+export const CONTACT_BODIES = 7;
+/** The body table: doubles. */
+export const BODY_TABLE = 8;
+const REGIONS = 9;
+/** Bytes per element of each region. */
+const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8];
 
 const PAGE = 65536;
 
@@ -19,60 +42,89 @@ const PAGE = 65536;
 export const kernelSettings = { minConstraints: 64 };
 
 export class SolverMemory {
+  /** Views of the regions; a later reserve of any region replaces them all. */
   states: Float64Array = new Float64Array(0);
   constraintData: Float64Array = new Float64Array(0);
   constraintBodies: Int32Array = new Int32Array(0);
   constraintOrder: Int32Array = new Int32Array(0);
-  /** Byte offsets of the regions, for the kernel. */
-  statesOffset = 0;
-  dataOffset = 0;
-  bodiesOffset = 0;
-  orderOffset = 0;
+  constraintSlots: Int32Array = new Int32Array(0);
+  circlePairs: Int32Array = new Int32Array(0);
+  contactData: Float64Array = new Float64Array(0);
+  contactBodies: Int32Array = new Int32Array(0);
+  bodyTable: Float64Array = new Float64Array(0);
+  /** Byte offset of each region, for the kernel. */
+  readonly offsets: number[] = new Array<number>(REGIONS).fill(0);
   /** The WebAssembly passes over this memory, once it has moved there; null before. */
   kernel: ContactKernel | null = null;
   private wasm: WasmMemory | null = null;
   /** Set when WebAssembly could not be had: stay on the ArrayBuffer, and do not ask again. */
   private wasmRefused = false;
-  private stateCapacity = 0;
-  private constraintCapacity = 0;
+  /** Elements each region holds. */
+  private readonly capacities: number[] = new Array<number>(REGIONS).fill(0);
+  private buffer: ArrayBuffer = new ArrayBuffer(0);
 
-  constructor(private readonly constraintStride: number) {
-    this.layout(64 * 8, 256, false);
+  constructor(
+    private readonly constraintStride: number,
+    private readonly contactStride: number,
+    private readonly tableStride: number,
+  ) {
+    const initial = [64 * 8, 256 * constraintStride, 512, 256, 256, 256];
+    this.layout(initial.concat([256 * contactStride, 512, 64 * tableStride]), false);
   }
 
   /** Makes room for `doubles` state numbers; returns the states' view. */
   reserveStates(doubles: number): Float64Array {
-    if (doubles > this.stateCapacity) {
-      this.layout(grown(this.stateCapacity, doubles), this.constraintCapacity, this.wasm !== null);
-    }
+    this.reserve(STATES, doubles);
     return this.states;
+  }
+
+  /** Makes room for `count` contact slots, keeping their contents. */
+  reserveContacts(count: number): void {
+    if (count * this.contactStride <= this.capacities[CONTACT_DATA]!) return;
+    const slots = grown(this.capacities[CONTACT_DATA]! / this.contactStride, count);
+    const wanted = this.capacities.slice();
+    wanted[CONTACT_DATA] = slots * this.contactStride;
+    wanted[CONTACT_BODIES] = 2 * slots;
+    this.layout(wanted, this.wasm !== null);
+  }
+
+  /** Makes room for `count` bodies in the body table. */
+  reserveBodyTable(count: number): Float64Array {
+    this.reserve(BODY_TABLE, count * this.tableStride);
+    return this.bodyTable;
   }
 
   /** Makes room for `count` constraints; moves to the WebAssembly kernel at the threshold. */
   reserveConstraints(count: number): void {
     const toWasm =
       this.wasm !== null || (!this.wasmRefused && count >= kernelSettings.minConstraints);
-    if (count > this.constraintCapacity || toWasm !== (this.wasm !== null)) {
-      this.layout(this.stateCapacity, grown(this.constraintCapacity, count), toWasm);
-    }
+    const capacity = this.capacities[CONSTRAINT_ORDER]!;
+    if (count <= capacity && toWasm === (this.wasm !== null)) return;
+    const n = grown(capacity, count);
+    const wanted = this.capacities.slice();
+    wanted[CONSTRAINT_DATA] = n * this.constraintStride;
+    wanted[CONSTRAINT_BODIES] = 2 * n;
+    wanted[CONSTRAINT_ORDER] = n;
+    wanted[CONSTRAINT_SLOTS] = n;
+    wanted[CIRCLE_PAIRS] = n;
+    this.layout(wanted, toWasm);
   }
 
-  private layout(stateDoubles: number, constraintCount: number, toWasm: boolean): void {
-    // Where each region is now (offset, bytes) and where it goes.
-    const from = [this.statesOffset, this.dataOffset, this.bodiesOffset, this.orderOffset];
-    const sizes = [
-      this.states.byteLength,
-      this.constraintData.byteLength,
-      this.constraintBodies.byteLength,
-      this.constraintOrder.byteLength,
-    ];
-    const oldBuffer = this.states.buffer;
-    const dataOffset = stateDoubles * 8;
-    const bodiesOffset = dataOffset + constraintCount * this.constraintStride * 8;
-    const orderOffset = bodiesOffset + constraintCount * 8;
-    const total = orderOffset + constraintCount * 4;
-    const to = [0, dataOffset, bodiesOffset, orderOffset];
+  private reserve(region: number, elements: number): void {
+    if (elements <= this.capacities[region]!) return;
+    const wanted = this.capacities.slice();
+    wanted[region] = grown(wanted[region]!, elements);
+    this.layout(wanted, this.wasm !== null);
+  }
 
+  private layout(capacities: number[], toWasm: boolean): void {
+    const to: number[] = [];
+    let total = 0;
+    for (let r = 0; r < REGIONS; r++) {
+      to.push(total);
+      total += Math.ceil((capacities[r]! * ELEMENT_BYTES[r]!) / 8) * 8;
+    }
+    const oldBuffer = this.buffer;
     let buffer: ArrayBuffer | null = null;
     if (toWasm) {
       if (this.wasm !== null && this.wasm.buffer.byteLength >= total) {
@@ -96,27 +148,34 @@ export class SolverMemory {
       buffer = new ArrayBuffer(total);
     }
     const bytes = new Uint8Array(buffer);
+    const from = this.offsets;
+    const sizes = this.capacities.map((c, r) => c * ELEMENT_BYTES[r]!);
     if (buffer === oldBuffer) {
       // The same memory, big enough: regions only move up, so move the last first, so none
       // overwrites one not yet moved.
-      for (let r = 3; r >= 0; r--) bytes.copyWithin(to[r]!, from[r]!, from[r]! + sizes[r]!);
+      for (let r = REGIONS - 1; r >= 0; r--)
+        bytes.copyWithin(to[r]!, from[r]!, from[r]! + sizes[r]!);
     } else {
-      for (let r = 0; r < 4; r++) bytes.set(new Uint8Array(oldBuffer, from[r]!, sizes[r]!), to[r]!);
+      for (let r = 0; r < REGIONS; r++) {
+        bytes.set(new Uint8Array(oldBuffer, from[r]!, sizes[r]!), to[r]!);
+      }
     }
-    this.statesOffset = 0;
-    this.dataOffset = dataOffset;
-    this.bodiesOffset = bodiesOffset;
-    this.orderOffset = orderOffset;
-    this.states = new Float64Array(buffer, 0, stateDoubles);
-    this.constraintData = new Float64Array(
-      buffer,
-      dataOffset,
-      constraintCount * this.constraintStride,
-    );
-    this.constraintBodies = new Int32Array(buffer, bodiesOffset, 2 * constraintCount);
-    this.constraintOrder = new Int32Array(buffer, orderOffset, constraintCount);
-    this.stateCapacity = stateDoubles;
-    this.constraintCapacity = constraintCount;
+    for (let r = 0; r < REGIONS; r++) {
+      this.offsets[r] = to[r]!;
+      this.capacities[r] = capacities[r]!;
+    }
+    this.buffer = buffer;
+    const f64 = (r: number): Float64Array => new Float64Array(buffer, to[r]!, capacities[r]!);
+    const i32 = (r: number): Int32Array => new Int32Array(buffer, to[r]!, capacities[r]!);
+    this.states = f64(STATES);
+    this.constraintData = f64(CONSTRAINT_DATA);
+    this.constraintBodies = i32(CONSTRAINT_BODIES);
+    this.constraintOrder = i32(CONSTRAINT_ORDER);
+    this.constraintSlots = i32(CONSTRAINT_SLOTS);
+    this.circlePairs = i32(CIRCLE_PAIRS);
+    this.contactData = f64(CONTACT_DATA);
+    this.contactBodies = i32(CONTACT_BODIES);
+    this.bodyTable = f64(BODY_TABLE);
   }
 }
 

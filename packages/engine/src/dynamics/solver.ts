@@ -18,7 +18,7 @@ import {
   V_Y,
   W,
 } from './body-state.ts';
-import type { ContactData } from './contact-data.ts';
+import { CONTACT_STRIDE, type ContactData } from './contact-data.ts';
 import {
   CONSTRAINT_STRIDE,
   ContactConstraints,
@@ -31,7 +31,13 @@ import {
 } from './contact-solver.ts';
 import { ContinuousSolver } from './continuous.ts';
 import { JointSolver } from './joints/joint-solver.ts';
-import { SolverMemory } from './solver-memory.ts';
+import {
+  CONSTRAINT_BODIES,
+  CONSTRAINT_DATA,
+  CONSTRAINT_ORDER,
+  SolverMemory,
+  STATES,
+} from './solver-memory.ts';
 import { Softness } from './softness.ts';
 
 /** World settings the solver reads each step. */
@@ -66,7 +72,7 @@ export interface SolverSettings {
  */
 export class Solver {
   /** The states' and constraints' numbers, shared with the WebAssembly kernel. */
-  private readonly memory: SolverMemory = new SolverMemory(CONSTRAINT_STRIDE);
+  readonly memory: SolverMemory = new SolverMemory(CONSTRAINT_STRIDE, CONTACT_STRIDE, TABLE_STRIDE);
   readonly states: BodyStates = new BodyStates(this.memory);
   /**
    * What the velocity integration needs of each awake body, copied once per step so the sub-step
@@ -74,8 +80,6 @@ export class Solver {
    */
   private params: Float64Array = new Float64Array(PARAM_STRIDE * 64);
   readonly constraints: ContactConstraints = new ContactConstraints(this.memory);
-  /** Every body of the world by world index, for preparing contacts (see body-state.ts). */
-  private table: Float64Array = new Float64Array(TABLE_STRIDE * 64);
   /** The joints, solved before the contacts in each pass (as Box2D v3 orders them). */
   readonly joints: JointSolver = new JointSolver();
   /**
@@ -106,19 +110,17 @@ export class Solver {
     const awake = this.awake;
     // One pass over the bodies: each body object is read once per step here and once in
     // finalizeBodies, which is what a scene of many bodies pays for in cache misses.
+    // Room for the states and the body table (by world index, for preparing contacts, see
+    // body-state.ts) first: reserving one replaces every view of the memory.
+    this.memory.reserveBodyTable(bodies.length);
     const s = this.states.reserve(bodies.length);
+    const table = this.memory.bodyTable;
     if (this.params.length < bodies.length * PARAM_STRIDE) {
       let size = this.params.length;
       while (size < bodies.length * PARAM_STRIDE) size *= 2;
       this.params = new Float64Array(size);
     }
-    if (this.table.length < bodies.length * TABLE_STRIDE) {
-      let size = this.table.length;
-      while (size < bodies.length * TABLE_STRIDE) size *= 2;
-      this.table = new Float64Array(size);
-    }
     const params = this.params;
-    const table = this.table;
     let count = 0;
     for (let n = 0; n < bodies.length; n++) {
       const body = bodies[n]!;
@@ -172,9 +174,9 @@ export class Solver {
    */
   solve(contacts: ContactData, contactCount: number, settings: SolverSettings, dt: number): void {
     const constraints = this.constraints;
-    const contactData = contacts.data;
     // Room first: growing the memory replaces every view of it, `s` included.
     constraints.reserve(contactCount);
+    const contactData = contacts.data;
     const s = this.states.data;
     const memory = this.memory;
     const subSteps = settings.subSteps;
@@ -191,7 +193,7 @@ export class Solver {
       contactCount,
       contactData,
       contacts.bodies,
-      this.table,
+      this.memory.bodyTable,
       s,
       this.contactSoftness,
       this.staticSoftness,
@@ -217,20 +219,20 @@ export class Solver {
       const kernel = memory.kernel;
       if (kernel !== null) {
         kernel.warmStart(
-          memory.dataOffset,
-          memory.bodiesOffset,
-          memory.orderOffset,
-          memory.statesOffset,
+          memory.offsets[CONSTRAINT_DATA]!,
+          memory.offsets[CONSTRAINT_BODIES]!,
+          memory.offsets[CONSTRAINT_ORDER]!,
+          memory.offsets[STATES]!,
           constraints.count,
         );
       } else warmStartContacts(constraints, s);
       joints.solve(s, true);
       if (kernel !== null) {
         kernel.solve(
-          memory.dataOffset,
-          memory.bodiesOffset,
-          memory.orderOffset,
-          memory.statesOffset,
+          memory.offsets[CONSTRAINT_DATA]!,
+          memory.offsets[CONSTRAINT_BODIES]!,
+          memory.offsets[CONSTRAINT_ORDER]!,
+          memory.offsets[STATES]!,
           constraints.count,
           inverseH,
           settings.maxContactPushSpeed,
@@ -256,10 +258,10 @@ export class Solver {
       joints.solve(s, false);
       if (kernel !== null) {
         kernel.solve(
-          memory.dataOffset,
-          memory.bodiesOffset,
-          memory.orderOffset,
-          memory.statesOffset,
+          memory.offsets[CONSTRAINT_DATA]!,
+          memory.offsets[CONSTRAINT_BODIES]!,
+          memory.offsets[CONSTRAINT_ORDER]!,
+          memory.offsets[STATES]!,
           constraints.count,
           inverseH,
           settings.maxContactPushSpeed,

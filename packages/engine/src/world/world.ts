@@ -79,8 +79,8 @@ export class World {
   private readonly broadPhase = new BroadPhase();
   private readonly bounds = new BodyBounds(this.broadPhase);
   private readonly islands = new Islands();
-  private readonly contactManager = new ContactManager(this.islands);
   private readonly solver = new Solver();
+  private readonly contactManager = new ContactManager(this.islands, this.solver.memory);
   private readonly continuous = new ContinuousSolver();
   private readonly sensors = new Sensors();
   private readonly sensorEvent = new SensorEventData();
