@@ -580,3 +580,248 @@ export function solve(
     }
   }
 }
+
+// Contact data slots (contact-data.ts).
+const C_NORMAL_X: i32 = 0;
+const C_NORMAL_Y: i32 = 1;
+const C_POINT_COUNT: i32 = 2;
+const C_FRICTION: i32 = 3;
+const C_RESTITUTION: i32 = 4;
+const C_RADIUS_A: i32 = 5;
+const C_RADIUS_B: i32 = 6;
+const C_BOUNCING_STEPS: i32 = 22;
+const C_POINTS: i32 = 23;
+const C_X: i32 = 0;
+const C_Y: i32 = 1;
+const C_SEPARATION: i32 = 2;
+const C_NORMAL_IMPULSE: i32 = 4;
+const C_TANGENT_IMPULSE: i32 = 5;
+const C_MAX_NORMAL_IMPULSE: i32 = 6;
+const C_RELATIVE_VELOCITY: i32 = 7;
+const C_STEP_NORMAL_IMPULSE: i32 = 8;
+const C_STEP_TANGENT_IMPULSE: i32 = 9;
+const C_POINT_STRIDE: i32 = 10;
+const CONTACT_STRIDE: i32 = C_POINTS + 2 * C_POINT_STRIDE;
+
+// The body table (body-state.ts).
+const TABLE_SLOT: i32 = 0;
+const TABLE_INV_MASS: i32 = 1;
+const TABLE_INV_I: i32 = 2;
+const TABLE_CENTER_X: i32 = 3;
+const TABLE_CENTER_Y: i32 = 4;
+const TABLE_STRIDE: i32 = 5;
+const STATE_STRIDE: i32 = 8;
+
+const LINEAR_SLOP: f64 = 0.005;
+const PRESSED_AFTER_BOUNCING_STEPS: f64 = 3;
+const MAX_CONDITION_NUMBER: f64 = 1000;
+
+/** Counts of the last prepare: circle pairs listed, heavy-on-light constraints. */
+export let circlePairCount: i32 = 0;
+export let heavyOnLightCount: i32 = 0;
+
+/** prepareContacts (contact-solver.ts); returns the number of constraints. */
+export function prepare(
+  dataPtr: usize,
+  contactBodiesPtr: usize,
+  tablePtr: usize,
+  sPtr: usize,
+  cPtr: usize,
+  bodiesPtr: usize,
+  slotsPtr: usize,
+  circlePairsPtr: usize,
+  contactCount: i32,
+  contactBiasRate: f64,
+  contactMassScale: f64,
+  contactImpulseScale: f64,
+  staticBiasRate: f64,
+  staticMassScale: f64,
+  staticImpulseScale: f64,
+  contactHertz: f64,
+  zeta: f64,
+  h: f64,
+  dt: f64,
+): i32 {
+  circlePairCount = 0;
+  heavyOnLightCount = 0;
+  let i: i32 = 0;
+  for (let slot: i32 = 0; slot < contactCount; slot++) {
+    const m = dataPtr + ((<usize>(slot * CONTACT_STRIDE)) << 3);
+    const pointCount = ld(m, C_POINT_COUNT);
+    if (pointCount == 0) continue;
+    const tA =
+      tablePtr +
+      ((<usize>(load<i32>(contactBodiesPtr + ((<usize>slot) << 3)) * TABLE_STRIDE)) << 3);
+    const tB =
+      tablePtr +
+      ((<usize>(load<i32>(contactBodiesPtr + ((<usize>slot) << 3), 4) * TABLE_STRIDE)) << 3);
+    const indexA = <i32>ld(tA, TABLE_SLOT);
+    const indexB = <i32>ld(tB, TABLE_SLOT);
+    const mA = ld(tA, TABLE_INV_MASS);
+    const mB = ld(tB, TABLE_INV_MASS);
+    if (mA == 0 && mB == 0) continue;
+    const iA = ld(tA, TABLE_INV_I);
+    const iB = ld(tB, TABLE_INV_I);
+    store<i32>(slotsPtr + ((<usize>i) << 2), slot);
+    const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
+    const a = indexA * STATE_STRIDE;
+    const b = indexB * STATE_STRIDE;
+    store<i32>(bodiesPtr + ((<usize>i) << 3), a);
+    store<i32>(bodiesPtr + ((<usize>i) << 3), b, 4);
+    const immovable = mA == 0 || mB == 0;
+    const nx = ld(m, C_NORMAL_X);
+    const ny = ld(m, C_NORMAL_Y);
+    st(cb, NORMAL_X, nx);
+    st(cb, NORMAL_Y, ny);
+    st(cb, FRICTION, ld(m, C_FRICTION));
+    st(cb, RESTITUTION, ld(m, C_RESTITUTION));
+    st(cb, INV_MASS_A, mA);
+    st(cb, INV_I_A, iA);
+    st(cb, INV_MASS_B, mB);
+    st(cb, INV_I_B, iB);
+    st(cb, BIAS_RATE, immovable ? staticBiasRate : contactBiasRate);
+    st(cb, MASS_SCALE, immovable ? staticMassScale : contactMassScale);
+    st(cb, IMPULSE_SCALE, immovable ? staticImpulseScale : contactImpulseScale);
+    if (!immovable) {
+      const ratio = mA > mB ? mA / mB : mB / mA;
+      if (ratio > 2) {
+        heavyOnLightCount++;
+        // Softness.setForMassRatio, then Softness.set (softness.ts).
+        const hertz = Math.min(contactHertz * Math.sqrt(ratio), 0.25 / h);
+        const omega = 2 * Math.PI * hertz;
+        const a1 = 2 * zeta + h * omega;
+        if (hertz == 0 || a1 == 0) {
+          st(cb, BIAS_RATE, 0);
+          st(cb, MASS_SCALE, 1);
+          st(cb, IMPULSE_SCALE, 0);
+        } else {
+          const a2 = h * omega * a1;
+          const a3 = 1 / (1 + a2);
+          st(cb, BIAS_RATE, omega / a1);
+          st(cb, MASS_SCALE, a2 * a3);
+          st(cb, IMPULSE_SCALE, a3);
+        }
+      }
+    }
+    st(cb, POINT_COUNT, pointCount);
+    const pressed = ld(m, C_BOUNCING_STEPS) >= PRESSED_AFTER_BOUNCING_STEPS;
+    const radiusA = ld(m, C_RADIUS_A);
+    const radiusB = ld(m, C_RADIUS_B);
+    const centerAX = ld(tA, TABLE_CENTER_X);
+    const centerAY = ld(tA, TABLE_CENTER_Y);
+    const centerBX = ld(tB, TABLE_CENTER_X);
+    const centerBY = ld(tB, TABLE_CENTER_Y);
+    st(cb, RADIUS_A, radiusA);
+    st(cb, RADIUS_B, radiusB);
+    st(cb, CENTER_DX, centerBX - centerAX);
+    st(cb, CENTER_DY, centerBY - centerAY);
+    st(cb, REF_DP_AX, 0);
+    st(cb, REF_DP_AY, 0);
+    st(cb, REF_DP_BX, 0);
+    st(cb, REF_DP_BY, 0);
+    if (radiusB > 0 && radiusA == 0) {
+      st(cb, SHIFT_WEIGHT_A, 0);
+      st(cb, SHIFT_WEIGHT_B, 1);
+    } else {
+      const total = mA + mB;
+      st(cb, SHIFT_WEIGHT_A, mA / total);
+      st(cb, SHIFT_WEIGHT_B, mB / total);
+    }
+    if (radiusA > 0 && radiusB > 0) {
+      store<i32>(circlePairsPtr + ((<usize>circlePairCount) << 2), i);
+      circlePairCount++;
+    }
+    const tx = ny;
+    const ty = -nx;
+    const sa = sPtr + ((<usize>a) << 3);
+    const sb = sPtr + ((<usize>b) << 3);
+    const vAx = ld(sa, V_X);
+    const vAy = ld(sa, V_Y);
+    const wA = ld(sa, W);
+    const vBx = ld(sb, V_X);
+    const vBy = ld(sb, V_Y);
+    const wB = ld(sb, W);
+    const count = <i32>pointCount;
+    for (let j: i32 = 0; j < count; j++) {
+      const mp = m + ((<usize>(C_POINTS + j * C_POINT_STRIDE)) << 3);
+      const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+      const x = ld(mp, C_X);
+      const y = ld(mp, C_Y);
+      const rAx = x - centerAX;
+      const rAy = y - centerAY;
+      const rBx = x - centerBX;
+      const rBy = y - centerBY;
+      st(p, R_AX, rAx);
+      st(p, R_AY, rAy);
+      st(p, R_BX, rBx);
+      st(p, R_BY, rBy);
+      st(p, BASE_SEPARATION, ld(mp, C_SEPARATION) - ((rBx - rAx) * nx + (rBy - rAy) * ny));
+      st(p, NORMAL_IMPULSE, ld(mp, C_NORMAL_IMPULSE));
+      st(p, TANGENT_IMPULSE, ld(mp, C_TANGENT_IMPULSE));
+      st(p, MAX_NORMAL_IMPULSE, 0);
+      st(p, TOTAL_NORMAL_IMPULSE, 0);
+      st(p, TOTAL_TANGENT_IMPULSE, 0);
+      st(p, IMPACT, 0);
+      const rnA = rAx * ny - rAy * nx;
+      const rnB = rBx * ny - rBy * nx;
+      st(p, RN_A, rnA);
+      st(p, RN_B, rnB);
+      const kNormal = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
+      st(p, NORMAL_MASS, kNormal > 0 ? 1 / kNormal : 0);
+      const rtA = rAx * ty - rAy * tx;
+      const rtB = rBx * ty - rBy * tx;
+      const kTangent = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
+      st(p, TANGENT_MASS, kTangent > 0 ? 1 / kTangent : 0);
+      const dvx = vBx - wB * rBy - (vAx - wA * rAy);
+      const dvy = vBy + wB * rBx - (vAy + wA * rAx);
+      const approach = dvx * nx + dvy * ny;
+      st(p, RELATIVE_VELOCITY, approach);
+      const separation = ld(mp, C_SEPARATION);
+      if (pressed && separation < Math.min(approach * dt, 0) - LINEAR_SLOP) st(p, IMPACT, 4);
+    }
+    st(cb, BLOCK, 0);
+    if (count == 2) {
+      const p1 = cb + ((<usize>POINTS) << 3);
+      const p2 = p1 + ((<usize>POINT_STRIDE) << 3);
+      const rn1A = ld(p1, R_AX) * ny - ld(p1, R_AY) * nx;
+      const rn1B = ld(p1, R_BX) * ny - ld(p1, R_BY) * nx;
+      const rn2A = ld(p2, R_AX) * ny - ld(p2, R_AY) * nx;
+      const rn2B = ld(p2, R_BX) * ny - ld(p2, R_BY) * nx;
+      const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
+      const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
+      const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+      st(cb, BLOCK_K11, k11);
+      st(cb, BLOCK_K12, k12);
+      st(cb, BLOCK_K22, k22);
+      const kMax = Math.max(k11, k22);
+      if (kMax > 0 && kMax * kMax < MAX_CONDITION_NUMBER * (k11 * k22 - k12 * k12)) {
+        st(cb, BLOCK, 1);
+      }
+    }
+    i++;
+  }
+  return i;
+}
+
+/** storeImpulses (contact-solver.ts). */
+export function storeImpulses(cPtr: usize, slotsPtr: usize, dataPtr: usize, count: i32): void {
+  for (let i: i32 = 0; i < count; i++) {
+    const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
+    const m = dataPtr + ((<usize>(load<i32>(slotsPtr + ((<usize>i) << 2)) * CONTACT_STRIDE)) << 3);
+    const pointCount = <i32>ld(cb, POINT_COUNT);
+    let bounced = 0;
+    for (let j: i32 = 0; j < pointCount; j++) {
+      const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+      const mp = m + ((<usize>(C_POINTS + j * C_POINT_STRIDE)) << 3);
+      const impact = ld(p, IMPACT);
+      if (impact == 2 || impact == 3) bounced = 1;
+      st(mp, C_NORMAL_IMPULSE, ld(p, IMPACT) == 2 ? 0 : ld(p, NORMAL_IMPULSE));
+      st(mp, C_TANGENT_IMPULSE, ld(p, TANGENT_IMPULSE));
+      st(mp, C_MAX_NORMAL_IMPULSE, ld(p, MAX_NORMAL_IMPULSE));
+      st(mp, C_RELATIVE_VELOCITY, ld(p, RELATIVE_VELOCITY));
+      st(mp, C_STEP_NORMAL_IMPULSE, ld(p, TOTAL_NORMAL_IMPULSE));
+      st(mp, C_STEP_TANGENT_IMPULSE, ld(p, TOTAL_TANGENT_IMPULSE));
+    }
+    st(m, C_BOUNCING_STEPS, bounced == 1 ? ld(m, C_BOUNCING_STEPS) + 1 : 0);
+  }
+}

@@ -1,8 +1,8 @@
 import { CONTACT_KERNEL_HEX } from './contact-kernel-binary.ts';
 
-// The contact passes (warm start, solve, relax) compiled to WebAssembly from
-// wasm/contact-kernel.ts, a line-for-line port of contact-solver.ts' warmStartContacts and
-// solveContacts: the same operations in the same order on IEEE doubles, so both give bit-identical
+// The contact passes (prepare, warm start, solve, relax, store) compiled to WebAssembly from
+// wasm/contact-kernel.ts, a line-for-line port of contact-solver.ts' prepareContacts,
+// warmStartContacts, solveContacts and storeImpulses: the same operations in the same order on IEEE doubles, so both give bit-identical
 // results (test/unit/dynamics/contact-kernel.test.ts) and a world may switch between them at any
 // step. Why: V8 compiles WebAssembly when it loads, so a world's first steps run compiled code
 // instead of waiting for JavaScript to get hot, and the passes run without bounds checks or
@@ -20,6 +20,32 @@ interface WasmApi {
 
 /** The kernel's exports; pointers are byte offsets into its memory. */
 export interface ContactKernel {
+  /** prepareContacts; returns the number of constraints. */
+  prepare(
+    contactData: number,
+    contactBodies: number,
+    table: number,
+    states: number,
+    constraints: number,
+    bodies: number,
+    slots: number,
+    circlePairs: number,
+    contactCount: number,
+    contactBiasRate: number,
+    contactMassScale: number,
+    contactImpulseScale: number,
+    staticBiasRate: number,
+    staticMassScale: number,
+    staticImpulseScale: number,
+    contactHertz: number,
+    zeta: number,
+    h: number,
+    dt: number,
+  ): number;
+  /** The last prepare's counts. */
+  readonly circlePairCount: { readonly value: number };
+  readonly heavyOnLightCount: { readonly value: number };
+  storeImpulses(constraints: number, slots: number, contactData: number, count: number): void;
   warmStart(
     constraints: number,
     bodies: number,

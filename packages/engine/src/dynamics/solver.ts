@@ -32,9 +32,14 @@ import {
 import { ContinuousSolver } from './continuous.ts';
 import { JointSolver } from './joints/joint-solver.ts';
 import {
+  BODY_TABLE,
+  CIRCLE_PAIRS,
   CONSTRAINT_BODIES,
   CONSTRAINT_DATA,
   CONSTRAINT_ORDER,
+  CONSTRAINT_SLOTS,
+  CONTACT_BODIES,
+  CONTACT_DATA,
   SolverMemory,
   STATES,
 } from './solver-memory.ts';
@@ -188,17 +193,47 @@ export class Solver {
     const contactHertz = Math.min(settings.contactHertz, (0.25 * subSteps) / dt);
     this.contactSoftness.set(contactHertz, settings.contactDampingRatio, h);
     this.staticSoftness.set(2 * contactHertz, settings.contactDampingRatio, h);
-    prepareContacts(
-      constraints,
-      contactCount,
-      contactData,
-      contacts.bodies,
-      this.memory.bodyTable,
-      s,
-      this.contactSoftness,
-      this.staticSoftness,
-      dt,
-    );
+    const kernel = memory.kernel;
+    if (kernel !== null) {
+      const o = memory.offsets;
+      const soft = this.contactSoftness;
+      const hard = this.staticSoftness;
+      constraints.count = kernel.prepare(
+        o[CONTACT_DATA]!,
+        o[CONTACT_BODIES]!,
+        o[BODY_TABLE]!,
+        o[STATES]!,
+        o[CONSTRAINT_DATA]!,
+        o[CONSTRAINT_BODIES]!,
+        o[CONSTRAINT_SLOTS]!,
+        o[CIRCLE_PAIRS]!,
+        contactCount,
+        soft.biasRate,
+        soft.massScale,
+        soft.impulseScale,
+        hard.biasRate,
+        hard.massScale,
+        hard.impulseScale,
+        soft.hertz,
+        soft.zeta,
+        soft.h,
+        dt,
+      );
+      constraints.circlePairCount = kernel.circlePairCount.value;
+      constraints.heavyOnLightCount = kernel.heavyOnLightCount.value;
+    } else {
+      prepareContacts(
+        constraints,
+        contactCount,
+        contactData,
+        contacts.bodies,
+        memory.bodyTable,
+        s,
+        this.contactSoftness,
+        this.staticSoftness,
+        dt,
+      );
+    }
     scrambleOrder(constraints.order, constraints.count);
     const shock = this.shock;
     const shockBiasRate = this.staticSoftness.biasRate;
@@ -216,7 +251,6 @@ export class Solver {
       integrateVelocities(this.params, this.awakeCount, s, settings, h);
       refreshCirclePairs(constraints, s);
       joints.warmStart(s);
-      const kernel = memory.kernel;
       if (kernel !== null) {
         kernel.warmStart(
           memory.offsets[CONSTRAINT_DATA]!,
@@ -283,7 +317,15 @@ export class Solver {
       }
       joints.solveChains(s, false);
     }
-    storeImpulses(constraints, contactData);
+    if (kernel !== null) {
+      const o = memory.offsets;
+      kernel.storeImpulses(
+        o[CONSTRAINT_DATA]!,
+        o[CONSTRAINT_SLOTS]!,
+        o[CONTACT_DATA]!,
+        constraints.count,
+      );
+    } else storeImpulses(constraints, contactData);
     joints.finish();
   }
 

@@ -1,5 +1,5 @@
 import { afterEach, describe, expect, it } from 'vitest';
-import { World, box, particle, regularPolygon, wall } from '@physical/engine';
+import { World, box, particle, regularPolygon, takeSnapshot, wall } from '@physical/engine';
 import type { Body } from '@physical/engine';
 import { kernelSettings } from '../../../src/dynamics/solver-memory.ts';
 import { CONTACT_KERNEL_HEX } from '../../../src/dynamics/contact-kernel-binary.ts';
@@ -89,6 +89,40 @@ describe('the WebAssembly contact kernel', () => {
     expect(switched.usedKernel).toBe(true);
     expectBitwiseEqual(switched.states, js.states);
   });
+
+  it('prepares constraints and stores impulses bit for bit too: a bouncy pile with heavy bodies', () => {
+    // Pressed bouncing contacts, circle pairs and heavy-on-light pairs all go through prepare;
+    // the snapshot holds every contact's numbers (impulses, bouncing counts), not only the bodies.
+    function pile(minConstraints: number): { saved: string; pressed: number } {
+      kernelSettings.minConstraints = minConstraints;
+      const world = new World();
+      world.add(wall({ from: { x: -4, y: 0 }, to: { x: 4, y: 0 } }));
+      world.add(wall({ from: { x: -4, y: 0 }, to: { x: -4, y: -30 } }));
+      world.add(wall({ from: { x: 4, y: 0 }, to: { x: 4, y: -30 } }));
+      for (let i = 0; i < 160; i++) {
+        const position = { x: -3.5 + (i % 14) * 0.5, y: -1 - Math.floor(i / 14) * 0.6 };
+        world.add(
+          i % 3 === 0
+            ? box({ position, width: 0.4, height: 0.35, density: 8 })
+            : particle({ position, radius: 0.2, restitution: 0.4 }),
+        );
+      }
+      let pressed = 0;
+      for (let i = 0; i < 240; i++) {
+        world.step(1 / 60);
+        if (i % 20 === 0) {
+          for (const contact of takeSnapshot(world).contacts) {
+            if (((contact['data'] as number[])[22] ?? 0) >= 3) pressed++;
+          }
+        }
+      }
+      return { saved: JSON.stringify(takeSnapshot(world)), pressed };
+    }
+    const js = pile(Infinity);
+    const wasm = pile(0);
+    expect(js.pressed).toBeGreaterThan(0);
+    expect(wasm.saved).toBe(js.saved);
+  }, 30_000);
 
   it('is shipped as compiled from its source (npm run build:kernel -w @physical/engine)', async () => {
     expect(await compileContactKernel()).toBe(CONTACT_KERNEL_HEX);
