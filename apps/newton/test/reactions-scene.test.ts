@@ -2,8 +2,12 @@ import { describe, expect, it } from 'vitest';
 import type { CollisionEvent } from '@physical/engine';
 import { CollisionArrows, ARROW_LIFETIME } from '../src/screens/reactions/collision-arrows.ts';
 import {
+  MAX_FILL,
   PUSH_FORCE,
   clearParticles,
+  filledArea,
+  freeSpot,
+  isFull,
   createReactionsScene,
   pushFor,
   setElasticity,
@@ -92,5 +96,46 @@ describe('Reactions push, elasticity and momentum', () => {
     const p = totalMomentum(scene);
     expect(p.x).toBeCloseTo(2 * a.mass, 12);
     expect(p.y).toBeCloseTo(-b.mass, 12);
+  });
+});
+
+describe('Reactions scene: a full box', () => {
+  it('is full before the particles could no longer lie apart, and a full box stays a box', () => {
+    const scene = createReactionsScene(4, 7.5, 1);
+    let seed = 7;
+    const random = (): number => (seed = (seed * 16807) % 2147483647) / 2147483647;
+    // Add as the Add button does, until the box says it is full.
+    let added = 0;
+    while (!isFull(scene) && added < 1000) {
+      spawnParticle(scene, freeSpot(scene, random), random);
+      added++;
+    }
+    expect(isFull(scene)).toBe(true);
+    expect(added).toBeGreaterThan(20);
+    expect(filledArea(scene)).toBeLessThanOrEqual(MAX_FILL * 4 * 7.5);
+    // Pushed hard into a corner for 20 s: every particle stays inside, none runs away.
+    setTilt(scene, { x: 1, y: 1 });
+    for (let i = 0; i < 1200; i++) scene.world.step(1 / 60);
+    for (const body of scene.particles.keys()) {
+      expect(body.position.x).toBeGreaterThan(0);
+      expect(body.position.x).toBeLessThan(4);
+      expect(body.position.y).toBeGreaterThan(0);
+      expect(body.position.y).toBeLessThan(7.5);
+      expect(Math.hypot(body.linearVelocity.x, body.linearVelocity.y)).toBeLessThan(5);
+    }
+  });
+
+  it('finds a free spot for a new particle while there is one', () => {
+    const scene = createReactionsScene(6, 9);
+    spawnParticle(scene, { x: 3, y: 4.5 }, () => 1);
+    const spot = freeSpot(scene, () => 0.5);
+    // 0.5 lands on the particle at the centre every try: the last try is returned anyway.
+    expect(spot).toEqual({ x: 3, y: 4.5 });
+    let k = 0;
+    const tries = [0.5, 0.5, 0, 0];
+    const free = freeSpot(scene, () => tries[k++ % tries.length]!);
+    expect(scene.world.overlapShape({ type: 'circle', radius: 0.45 }, { position: free })).toEqual(
+      [],
+    );
   });
 });

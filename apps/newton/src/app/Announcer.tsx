@@ -15,14 +15,16 @@ export const ANNOUNCE_GAP_MS = 1500;
 /**
  * A polite live region that speaks at a human pace: messages wait their turn, at least
  * {@link ANNOUNCE_GAP_MS} apart, and only the newest two waiting are kept (a burst of
- * collisions becomes one sentence, not a stream).
+ * collisions becomes one sentence, not a stream). An `urgent` message (the answer to the user's
+ * own action, such as "the box is full") goes before the others and is not pushed out by them.
  */
 export function useAnnouncer(name: string): {
-  announce: (message: string) => void;
+  announce: (message: string, urgent?: boolean) => void;
   region: ReactElement;
 } {
   const [text, setText] = useState('');
   const state = useRef({
+    urgent: [] as string[],
     queue: [] as string[],
     lastAt: -Infinity,
     timer: null as ReturnType<typeof setTimeout> | null,
@@ -35,7 +37,7 @@ export function useAnnouncer(name: string): {
   const pump = useCallback((): void => {
     const current = state.current;
     current.timer = null;
-    if (current.queue.length === 0) return;
+    if (current.urgent.length === 0 && current.queue.length === 0) return;
     // The last message has not reached the page yet (a busy frame delays the commit): its gap
     // has not started.
     if (current.pending) {
@@ -47,20 +49,23 @@ export function useAnnouncer(name: string): {
       current.timer = setTimeout(pump, wait);
       return;
     }
-    const next = current.queue.shift()!;
+    const next = current.urgent.shift() ?? current.queue.shift()!;
     current.lastAt = performance.now();
     // The same text again changes nothing on the page: nothing to wait for.
     current.pending = next !== current.shown;
     current.shown = next;
     setText(next);
-    if (current.queue.length > 0) current.timer = setTimeout(pump, ANNOUNCE_GAP_MS);
+    if (current.urgent.length > 0 || current.queue.length > 0) {
+      current.timer = setTimeout(pump, ANNOUNCE_GAP_MS);
+    }
   }, []);
 
   const announce = useCallback(
-    (message: string): void => {
+    (message: string, urgent = false): void => {
       playEventTone();
       const current = state.current;
-      current.queue = [...current.queue.filter((item) => item !== message), message].slice(-2);
+      const list = urgent ? 'urgent' : 'queue';
+      current[list] = [...current[list].filter((item) => item !== message), message].slice(-2);
       if (current.timer === null) current.timer = setTimeout(pump, 0);
     },
     [pump],

@@ -43,6 +43,8 @@ import {
   setElasticity,
   setTilt,
   spawnParticle,
+  freeSpot,
+  isFull,
   totalMomentum,
   type ReactionsScene,
 } from './reactions-scene.ts';
@@ -239,6 +241,10 @@ export function ReactionsScreen({ active }: { active: boolean }) {
 
   const add = (point: { x: number; y: number }): void => {
     if (scene === null) return;
+    if (isFull(scene)) {
+      announce(t('reactions.full'), true);
+      return;
+    }
     const body = spawnParticle(scene, point);
     canvasRef.current?.invalidate();
     rerender();
@@ -247,6 +253,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
         mass: unit(body.mass, 'kg', 2),
         count: scene.particles.size,
       }),
+      true,
     );
   };
 
@@ -262,10 +269,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   /** The keyboard's way to add: a random free-looking spot inside the box. */
   const addAnywhere = (): void => {
     if (scene === null) return;
-    add({
-      x: scene.width * (0.15 + 0.7 * Math.random()),
-      y: scene.height * (0.15 + 0.7 * Math.random()),
-    });
+    add(freeSpot(scene));
   };
 
   const info = selected === null ? undefined : scene?.particles.get(selected);
@@ -385,7 +389,11 @@ export function ReactionsScreen({ active }: { active: boolean }) {
               <Readout
                 name="count"
                 label={t('reactions.count')}
-                value={String(scene?.particles.size ?? 0)}
+                value={
+                  scene !== null && isFull(scene)
+                    ? t('reactions.countFull', { count: scene.particles.size })
+                    : String(scene?.particles.size ?? 0)
+                }
               />
               <Readout
                 name="momentum"
