@@ -48,6 +48,7 @@ export class BodyBounds {
       const box = this.place(shape.computeAABB(body.transform));
       if (broadPhase.moveProxy(shape.proxyKey, box)) {
         broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
+        shape.fatAABBChanged();
       } else if (forcePairs && body.type === 'static') {
         broadPhase.bufferMove(shape.proxyKey);
       }

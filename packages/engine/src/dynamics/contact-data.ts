@@ -59,6 +59,13 @@ export const CONTACT_STRIDE: number = POINTS + 2 * POINT_STRIDE;
  * solver's preparation reads them (in WebAssembly too).
  */
 export class ContactData {
+  /**
+   * Per slot, the ids of shape A and shape B (2 per slot), so the narrow phase's gates read the
+   * shapes' boxes without loading the contact (contact-manager.ts). Not in the solver memory:
+   * only JavaScript reads them.
+   */
+  shapes: Int32Array = new Int32Array(128);
+
   constructor(private readonly memory: SolverMemory) {}
 
   /** The slots' numbers; a view that a later reserve of the memory replaces. */
@@ -77,6 +84,13 @@ export class ContactData {
   /** Makes room for `count` slots, keeping the existing ones. */
   reserve(count: number): void {
     this.memory.reserveContacts(count);
+    if (this.shapes.length < 2 * count) {
+      let size = this.shapes.length;
+      while (size < 2 * count) size *= 2;
+      const grown = new Int32Array(size);
+      grown.set(this.shapes);
+      this.shapes = grown;
+    }
   }
 
   /** Copies slot `from` over slot `to` (swap-removal keeps the slots dense). */
@@ -86,13 +100,19 @@ export class ContactData {
     const bodies = this.memory.contactBodies;
     bodies[2 * to] = bodies[2 * from]!;
     bodies[2 * to + 1] = bodies[2 * from + 1]!;
+    const shapes = this.shapes;
+    shapes[2 * to] = shapes[2 * from]!;
+    shapes[2 * to + 1] = shapes[2 * from + 1]!;
   }
 
-  /** Records the world indices of a slot's bodies. */
-  setBodies(slot: number, indexA: number, indexB: number): void {
+  /** Records the world indices of a slot's bodies and the ids of its shapes. */
+  setPair(slot: number, indexA: number, indexB: number, shapeA: number, shapeB: number): void {
     const bodies = this.memory.contactBodies;
     bodies[2 * slot] = indexA;
     bodies[2 * slot + 1] = indexB;
+    const shapes = this.shapes;
+    shapes[2 * slot] = shapeA;
+    shapes[2 * slot + 1] = shapeB;
   }
 
   /** The body at world index `removed` left the world: later bodies moved down by one. */

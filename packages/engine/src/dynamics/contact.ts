@@ -8,7 +8,7 @@ import { collideSegmentAndCapsule } from '../collision/collide-segment-capsule.t
 import { collideSegmentAndCircle } from '../collision/collide-segment-circle.ts';
 import { collideSegmentAndPolygon } from '../collision/collide-segment-polygon.ts';
 import { Manifold, type ManifoldPoint } from '../collision/manifold.ts';
-import { LINEAR_SLOP, SPECULATIVE_DISTANCE } from '../core/constants.ts';
+import { SPECULATIVE_DISTANCE } from '../core/constants.ts';
 import type { Capsule } from '../geometry/capsule.ts';
 import type { Circle } from '../geometry/circle.ts';
 import type { Polygon } from '../geometry/polygon.ts';
@@ -38,12 +38,6 @@ import {
   RESTITUTION,
 } from './contact-data.ts';
 import type { Shape } from './shape.ts';
-
-// Manifolds are reused while B moved less than this relative to A (m). Motion along the normal is
-// measured exactly on reuse; only sliding along the surface can leave a contact point behind its
-// true place, by at most this much: half the slop, below anything the solver resolves.
-const REUSE_TOLERANCE = 0.5 * LINEAR_SLOP;
-const REUSE_TOLERANCE_SQUARED = REUSE_TOLERANCE * REUSE_TOLERANCE;
 
 // The narrow-phase table: which collide function handles a pair of shape kinds, with shape A the
 // higher-ranked kind (segment > polygon > capsule > circle). One switch here instead of
@@ -126,9 +120,11 @@ export class Contact {
   }
 
   /**
-   * Narrow phase: recomputes the manifold at the bodies' current transforms into the contact's
-   * slot of `data` and carries the accumulated impulses over to points with the same feature id.
-   * Returns whether it touches.
+   * Narrow phase in full: recomputes the manifold at the bodies' current transforms into the
+   * contact's slot of `data` and carries the accumulated impulses over to points with the same
+   * feature id. Returns whether it touches. The contact manager's gates (contact-manager.ts) ran
+   * first: the shapes are within the margin in {@link narrowPhaseGate}, and the manifold could not
+   * be reused.
    *
    * Speculative contacts (Catto, "Speculative contacts", 2013): a point is kept while the gap is
    * under SPECULATIVE_DISTANCE, or while the shapes approach fast enough to close the gap within
@@ -141,64 +137,14 @@ export class Contact {
     const bodyA = this.bodyA;
     const bodyB = this.bodyB;
     const base = this.index * CONTACT_STRIDE;
-    // Bound on how much the gap can close this step: relative speed plus rotation at the rim.
-    const dvx = bodyB.velocityX - bodyA.velocityX;
-    const dvy = bodyB.velocityY - bodyA.velocityY;
-    const reach =
-      dt *
-      (Math.sqrt(dvx * dvx + dvy * dvy) +
-        Math.abs(bodyA.angularVelocityValue) * bodyA.maxExtent +
-        Math.abs(bodyB.angularVelocityValue) * bodyB.maxExtent);
-    const margin = SPECULATIVE_DISTANCE + reach;
-    // Most pairs whose fat boxes overlap are nowhere near touching: their tight boxes, kept
-    // current by the world, settle that before anything else of the contact is read.
-    const boxA = this.shapeA.aabb;
-    const boxB = this.shapeB.aabb;
-    if (
-      boxA.minX - margin > boxB.maxX ||
-      boxB.minX - margin > boxA.maxX ||
-      boxA.minY - margin > boxB.maxY ||
-      boxB.minY - margin > boxA.maxY
-    ) {
-      data[base + POINT_COUNT] = 0;
-      data[base + HAS_CACHE] = 0;
-      this.touching = false;
-      return false;
-    }
-
+    const gate = narrowPhaseGate;
+    const margin = gate[GATE_MARGIN]!;
+    const reach = gate[GATE_REACH]!;
     const xfA = bodyA.transform;
     const xfB = bodyB.transform;
-    // B's pose in A's frame.
-    const cA = xfA.c;
-    const sA = xfA.s;
-    const relC = cA * xfB.c + sA * xfB.s;
-    const relS = cA * xfB.s - sA * xfB.c;
-    const ox = xfB.x - xfA.x;
-    const oy = xfB.y - xfA.y;
-    const relX = cA * ox + sA * oy;
-    const relY = -sA * ox + cA * oy;
+    const k = base + CACHE;
     const p0 = base + POINTS;
     const p1 = p0 + POINT_STRIDE;
-    // Reuse: B moved relative to A by less than REUSE_TOLERANCE at any of its points since the
-    // manifold was computed in full, so the same features touch and only the separations need
-    // updating. Resting stacks (most contacts of a settled scene) skip the separating-axis test
-    // and the clipping this way (the manifold reuse of Parry/Rapier). Inline, not a method:
-    // V8 boxes fractional arguments of calls it does not inline, and this runs per contact.
-    const k = base + CACHE;
-    const dx = relX - data[k]!;
-    const dy = relY - data[k + 1]!;
-    // |sin| of the rotation since then, times the farthest point of B from its own origin.
-    const turn = Math.abs(relS * data[k + 2]! - relC * data[k + 3]!) * bodyB.originReach;
-    if (data[base + HAS_CACHE] === 1 && dx * dx + dy * dy + turn * turn < REUSE_TOLERANCE_SQUARED) {
-      this.refreshFromCache(data, base);
-      data[p0 + P_MAX_NORMAL_IMPULSE] = 0;
-      data[p1 + P_MAX_NORMAL_IMPULSE] = 0;
-      data[p0 + P_STEP_NORMAL_IMPULSE] = 0;
-      data[p1 + P_STEP_NORMAL_IMPULSE] = 0;
-      data[p0 + P_STEP_TANGENT_IMPULSE] = 0;
-      data[p1 + P_STEP_TANGENT_IMPULSE] = 0;
-      return this.touching;
-    }
     const m = scratch;
     const a = this.shapeA.geometry;
     const b = this.shapeB.geometry;
@@ -284,10 +230,11 @@ export class Contact {
       data[p + P_STEP_NORMAL_IMPULSE] = 0;
       data[p + P_STEP_TANGENT_IMPULSE] = 0;
     }
-    data[k] = relX;
-    data[k + 1] = relY;
-    data[k + 2] = relC;
-    data[k + 3] = relS;
+    // B's pose in A's frame, for the next step's reuse test.
+    data[k] = gate[GATE_REL_X]!;
+    data[k + 1] = gate[GATE_REL_Y]!;
+    data[k + 2] = gate[GATE_REL_C]!;
+    data[k + 3] = gate[GATE_REL_S]!;
     this.storeCache(data, base);
     this.touching = m.pointCount > 0;
     return this.touching;
@@ -332,29 +279,6 @@ export class Contact {
     data[base + HAS_CACHE] = 1;
   }
 
-  /** Moves the cached surface points with their bodies and measures the gap along the normal again. */
-  private refreshFromCache(data: Float64Array, base: number): void {
-    const k = base + CACHE;
-    const xfA = this.bodyA.transform;
-    const xfB = this.bodyB.transform;
-    const nx = xfA.c * data[k + 12]! - xfA.s * data[k + 13]!;
-    const ny = xfA.s * data[k + 12]! + xfA.c * data[k + 13]!;
-    data[base + NORMAL_X] = nx;
-    data[base + NORMAL_Y] = ny;
-    const count = data[base + POINT_COUNT]!;
-    for (let i = 0; i < count; i++) {
-      const q = k + 4 + 4 * i;
-      const ax = xfA.c * data[q]! - xfA.s * data[q + 1]! + xfA.x;
-      const ay = xfA.s * data[q]! + xfA.c * data[q + 1]! + xfA.y;
-      const bx = xfB.c * data[q + 2]! - xfB.s * data[q + 3]! + xfB.x;
-      const by = xfB.s * data[q + 2]! + xfB.c * data[q + 3]! + xfB.y;
-      const p = base + POINTS + i * POINT_STRIDE;
-      data[p + P_SEPARATION] = (bx - ax) * nx + (by - ay) * ny;
-      data[p + P_X] = 0.5 * (ax + bx);
-      data[p + P_Y] = 0.5 * (ay + by);
-    }
-  }
-
   /** The body on the other side of the contact. */
   other(body: Body): Body {
     return body === this.bodyA ? this.bodyB : this.bodyA;
@@ -375,6 +299,17 @@ function writeCentredCircleRadius(data: Float64Array, at: number, shape: Shape):
 
 /** The narrow phase's output before it is copied into a contact's slot (one step at a time). */
 const scratch = new Manifold();
+
+// What the contact manager's gates computed for the contact it hands to Contact.update: a scratch
+// array rather than arguments, since V8 boxes fractional arguments of calls it does not inline.
+export const GATE_MARGIN = 0;
+export const GATE_REACH = 1;
+export const GATE_REL_X = 2;
+export const GATE_REL_Y = 3;
+export const GATE_REL_C = 4;
+export const GATE_REL_S = 5;
+/** @internal The margin (m), the reach (m) and B's pose in A's frame (x, y, cos, sin). */
+export const narrowPhaseGate = new Float64Array(6);
 
 /** Keeps far speculative points only where the bodies approach along the normal fast enough. */
 function dropPassingPoints(m: Manifold, bodyA: Body, bodyB: Body, dt: number): void {

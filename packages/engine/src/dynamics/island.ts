@@ -45,15 +45,20 @@ export class Islands {
     }
   }
 
+  /** The bodies the last {@link wake} woke (none if it found its body awake). */
+  get lastWoken(): readonly Body[] {
+    return this.woken;
+  }
+
   /** Wakes a body and every sleeping body its island touches. */
   wake(body: Body): void {
+    const woken = this.woken;
+    woken.length = 0;
     if (body.type === 'static') return;
     body.sleepTime = 0;
     if (body.awake) return;
     const stack = this.stack;
-    const woken = this.woken;
     stack.length = 0;
-    woken.length = 0;
     body.awake = true;
     stack.push(body);
     while (stack.length > 0) {

@@ -22,6 +22,7 @@ import type { Transform } from '../math/transform.ts';
 import type { Vec2Like } from '../math/vec2.ts';
 import type { Body } from './body.ts';
 import { filtersCollide, resolveFilter, type Filter, type FilterOptions } from './filter.ts';
+import type { ShapeBoxes } from './shape-boxes.ts';
 
 /** Sensor flag and collision filter, shared by every shape kind (and the body factories). */
 export interface CollisionOptions {
@@ -159,6 +160,11 @@ export class Shape {
   readonly aabb: AABB = new AABB();
   /** @internal The broad phase's fattened box. */
   readonly fatAABB: AABB = new AABB();
+  /**
+   * @internal The world's flat copy of every shape's boxes (shape-boxes.ts), which every write
+   * to {@link aabb} and {@link fatAABB} updates; null outside a world.
+   */
+  boxes: ShapeBoxes | null = null;
 
   /** `geometry` is built from `options` unless given (a part of a split polygon). */
   constructor(body: Body, options: ShapeOptions, field: string, geometry?: Geometry) {
@@ -237,10 +243,29 @@ export class Shape {
   /** @internal Recomputes the tight box for a transform. */
   computeAABB(xf: Transform): AABB {
     const g = this.geometry;
-    if (g.kind === 'circle') return computeCircleAABB(g, xf, this.aabb);
-    if (g.kind === 'polygon') return computePolygonAABB(g, xf, this.aabb);
-    if (g.kind === 'capsule') return computeCapsuleAABB(g, xf, this.aabb);
-    return computeSegmentAABB(g, xf, this.aabb);
+    const box = this.aabb;
+    if (g.kind === 'circle') computeCircleAABB(g, xf, box);
+    else if (g.kind === 'polygon') computePolygonAABB(g, xf, box);
+    else if (g.kind === 'capsule') computeCapsuleAABB(g, xf, box);
+    else computeSegmentAABB(g, xf, box);
+    const boxes = this.boxes;
+    if (boxes !== null) boxes.setTight(this.id, box);
+    return box;
+  }
+
+  /** @internal Copies {@link fatAABB}, just written, into the world's flat copy. */
+  fatAABBChanged(): void {
+    const boxes = this.boxes;
+    if (boxes !== null) boxes.setFat(this.id, this.fatAABB);
+  }
+
+  /** @internal Joins a world's flat copy of the boxes (this shape's id is set), or leaves it. */
+  attachBoxes(boxes: ShapeBoxes | null): void {
+    this.boxes = boxes;
+    if (boxes === null) return;
+    boxes.reserve(this.id);
+    boxes.setTight(this.id, this.aabb);
+    boxes.setFat(this.id, this.fatAABB);
   }
 }
 

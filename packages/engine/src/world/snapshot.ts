@@ -17,6 +17,7 @@ import type { Duration } from '../dynamics/force.ts';
 import type { Islands } from '../dynamics/island.ts';
 import type { Sensors } from '../dynamics/sensor.ts';
 import { CONVEX_PART, type Shape, type ShapeOptions } from '../dynamics/shape.ts';
+import type { ShapeBoxes } from '../dynamics/shape-boxes.ts';
 import type { Joint } from '../dynamics/joints/joint.ts';
 import { buildJoint, readJoint, saveJoint, type JointPlan } from './joint-snapshot.ts';
 import {
@@ -118,6 +119,7 @@ export interface WorldInternals {
   readonly contactManager: ContactManager;
   readonly sensors: Sensors;
   readonly shapesById: (Shape | null)[];
+  readonly shapeBoxes: ShapeBoxes;
   readonly freeShapeIds: number[];
   nextBodyId: number;
   stepCount: number;
@@ -915,7 +917,11 @@ function loadWorld(w: WorldInternals, snapshot: unknown): void {
   }
 
   // Everything checked: install the shape table and the broad phase.
-  for (let id = 0; id < slots; id++) w.shapesById.push(shapes[id] ?? null);
+  for (let id = 0; id < slots; id++) {
+    const shape = shapes[id] ?? null;
+    w.shapesById.push(shape);
+    shape?.attachBoxes(w.shapeBoxes);
+  }
   w.freeShapeIds.push(...free);
   importBroadPhaseState(w.broadPhase, { trees, moved });
   // Joints, in their saved order; each body's list holds its joints in that same order.

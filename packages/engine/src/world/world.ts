@@ -46,6 +46,7 @@ import { Islands } from '../dynamics/island.ts';
 import type { Joint } from '../dynamics/joints/joint.ts';
 import { Sensors } from '../dynamics/sensor.ts';
 import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
+import { ShapeBoxes } from '../dynamics/shape-boxes.ts';
 import { Solver } from '../dynamics/solver.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
 import type { WorldInternals } from './snapshot.ts';
@@ -80,7 +81,12 @@ export class World {
   private readonly bounds = new BodyBounds(this.broadPhase);
   private readonly islands = new Islands();
   private readonly solver = new Solver();
-  private readonly contactManager = new ContactManager(this.islands, this.solver.memory);
+  private readonly shapeBoxes = new ShapeBoxes();
+  private readonly contactManager = new ContactManager(
+    this.islands,
+    this.solver.memory,
+    this.shapeBoxes,
+  );
   private readonly continuous = new ContinuousSolver();
   private readonly sensors = new Sensors();
   private readonly sensorEvent = new SensorEventData();
@@ -364,7 +370,7 @@ export class World {
     this.locked = true;
     try {
       this.broadPhase.updatePairs(this.onPair);
-      this.contactManager.collide(dt);
+      this.contactManager.collide(dt, this.bodyList);
       this.solver.gatherBodies(this.bodyList, dt);
       this.solver.solve(
         this.contactManager.slots,
@@ -640,9 +646,11 @@ export class World {
     const id = this.freeShapeIds.length > 0 ? this.freeShapeIds.pop()! : this.shapesById.length;
     shape.id = id;
     this.shapesById[id] = shape;
+    shape.attachBoxes(this.shapeBoxes);
     const box = this.bounds.speculativeBox(shape, this.lastStep);
     shape.proxyKey = this.broadPhase.createProxy(box, PROXY_TYPE[shape.body.type], id, false);
     this.broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
+    shape.fatAABBChanged();
     if (shape.sensor) this.sensors.add(shape);
   }
 
@@ -651,6 +659,7 @@ export class World {
     this.broadPhase.destroyProxy(shape.proxyKey);
     this.shapesById[shape.id] = null;
     this.freeShapeIds.push(shape.id);
+    shape.attachBoxes(null);
     shape.id = -1;
     shape.proxyKey = -1;
   }
@@ -899,6 +908,7 @@ export class World {
       contactManager: this.contactManager,
       sensors: this.sensors,
       shapesById: this.shapesById,
+      shapeBoxes: this.shapeBoxes,
       freeShapeIds: this.freeShapeIds,
       get nextBodyId(): number {
         return world.nextBodyId;
