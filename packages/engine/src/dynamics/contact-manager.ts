@@ -12,6 +12,8 @@ import {
   GATE_REL_S,
   GATE_REL_X,
   GATE_REL_Y,
+  gateTransformA,
+  gateTransformB,
   narrowPhaseGate,
   shouldSwap,
 } from './contact.ts';
@@ -63,6 +65,10 @@ export class ContactManager {
   endedCount = 0;
   private readonly pairs = new PairSet();
   private readonly pool: Contact[] = [];
+  /** Pairs accepted by addPair, not yet contacts (the first `pendingCount`, already ordered). */
+  private readonly pendingA: Shape[] = [];
+  private readonly pendingB: Shape[] = [];
+  private pendingCount = 0;
   /** The bodies' poses and speeds for the narrow phase's gates, loaded at its start. */
   private readonly poses = new BodyPoses();
 
@@ -93,17 +99,36 @@ export class ContactManager {
     if (shapeA.sensor || shapeB.sensor || !filtersCollide(shapeA, shapeB)) return;
     if (jointPreventsCollision(bodyA, bodyB)) return;
     this.pairs.add(shapeA.id, shapeB.id);
-    const contact = this.pool.pop() ?? new Contact();
-    contact.index = this.contacts.length;
-    this.slots.reserve(contact.index + 1);
-    if (shouldSwap(shapeA, shapeB)) contact.init(shapeB, shapeA, this.slots.data);
-    else contact.init(shapeA, shapeB, this.slots.data);
-    this.setPair(contact);
-    this.contacts.push(contact);
-    contact.indexInA = contact.bodyA.contacts.length;
-    contact.bodyA.contacts.push(contact);
-    contact.indexInB = contact.bodyB.contacts.length;
-    contact.bodyB.contacts.push(contact);
+    // Created in createPending, once the broad phase has reported every pair: the slots then
+    // grow once for all of them (a pile's first step finds 15,000 pairs).
+    const n = this.pendingCount++;
+    if (shouldSwap(shapeA, shapeB)) {
+      this.pendingA[n] = shapeB;
+      this.pendingB[n] = shapeA;
+    } else {
+      this.pendingA[n] = shapeA;
+      this.pendingB[n] = shapeB;
+    }
+  }
+
+  /** Creates the contacts of the pairs addPair accepted since the last call, in that order. */
+  createPending(): void {
+    const count = this.pendingCount;
+    if (count === 0) return;
+    this.slots.reserve(this.contacts.length + count);
+    const data = this.slots.data;
+    for (let n = 0; n < count; n++) {
+      const contact = this.pool.pop() ?? new Contact();
+      contact.index = this.contacts.length;
+      contact.init(this.pendingA[n]!, this.pendingB[n]!, data);
+      this.setPair(contact);
+      this.contacts.push(contact);
+      contact.indexInA = contact.bodyA.contacts.length;
+      contact.bodyA.contacts.push(contact);
+      contact.indexInB = contact.bodyB.contacts.length;
+      contact.bodyB.contacts.push(contact);
+    }
+    this.pendingCount = 0;
   }
 
   /**
@@ -235,6 +260,16 @@ export class ContactManager {
       gate[GATE_REL_Y] = relY;
       gate[GATE_REL_C] = relC;
       gate[GATE_REL_S] = relS;
+      const xfA = gateTransformA;
+      xfA.x = pose[pa]!;
+      xfA.y = pose[pa + 1]!;
+      xfA.c = cA;
+      xfA.s = sA;
+      const xfB = gateTransformB;
+      xfB.x = pose[pb]!;
+      xfB.y = pose[pb + 1]!;
+      xfB.c = cB;
+      xfB.s = sB;
       const contact = contacts[i]!;
       const wasTouching = contact.touching;
       const touching = contact.update(dt, data);

@@ -13,6 +13,7 @@ import type { Capsule } from '../geometry/capsule.ts';
 import type { Circle } from '../geometry/circle.ts';
 import type { Polygon } from '../geometry/polygon.ts';
 import type { Segment } from '../geometry/segment.ts';
+import { Transform } from '../math/transform.ts';
 import type { Body } from './body.ts';
 import {
   CACHE,
@@ -140,8 +141,10 @@ export class Contact {
     const gate = narrowPhaseGate;
     const margin = gate[GATE_MARGIN]!;
     const reach = gate[GATE_REACH]!;
-    const xfA = bodyA.transform;
-    const xfB = bodyB.transform;
+    // The bodies' transforms as the manager copied them (body-poses.ts): no Body or Transform
+    // object is loaded unless a far speculative point needs the bodies' velocities.
+    const xfA = gateTransformA;
+    const xfB = gateTransformB;
     const k = base + CACHE;
     const p0 = base + POINTS;
     const p1 = p0 + POINT_STRIDE;
@@ -235,13 +238,13 @@ export class Contact {
     data[k + 1] = gate[GATE_REL_Y]!;
     data[k + 2] = gate[GATE_REL_C]!;
     data[k + 3] = gate[GATE_REL_S]!;
-    this.storeCache(data, base);
+    this.storeCache(data, base, xfA, xfB);
     this.touching = m.pointCount > 0;
     return this.touching;
   }
 
   /** Keeps the manifold for reuse; B's pose in A's frame is already in the cache's first 4 slots. */
-  private storeCache(data: Float64Array, base: number): void {
+  private storeCache(data: Float64Array, base: number, xfA: Transform, xfB: Transform): void {
     const count = data[base + POINT_COUNT]!;
     // Only polygon-like pairs are worth it: the circle kernels cost less than the bookkeeping.
     const kind = this.pairKind;
@@ -256,8 +259,6 @@ export class Contact {
       return;
     }
     const k = base + CACHE;
-    const xfA = this.bodyA.transform;
-    const xfB = this.bodyB.transform;
     const nx = data[base + NORMAL_X]!;
     const ny = data[base + NORMAL_Y]!;
     for (let i = 0; i < count; i++) {
@@ -310,6 +311,9 @@ export const GATE_REL_C = 4;
 export const GATE_REL_S = 5;
 /** @internal The margin (m), the reach (m) and B's pose in A's frame (x, y, cos, sin). */
 export const narrowPhaseGate = new Float64Array(6);
+/** @internal The transforms of body A and body B of that contact. */
+export const gateTransformA: Transform = new Transform();
+export const gateTransformB: Transform = new Transform();
 
 /** Keeps far speculative points only where the bodies approach along the normal fast enough. */
 function dropPassingPoints(m: Manifold, bodyA: Body, bodyB: Body, dt: number): void {

@@ -370,6 +370,7 @@ export class World {
     this.locked = true;
     try {
       this.broadPhase.updatePairs(this.onPair);
+      this.contactManager.createPending();
       this.contactManager.collide(dt, this.bodyList);
       this.solver.gatherBodies(this.bodyList, dt);
       this.solver.solve(
