@@ -244,6 +244,11 @@ export class BroadPhase {
     this.moveCount = 0;
   }
 
+  /** True if `aabb` (m, world frame) overlaps the fat box of any static proxy. */
+  overlapsStatic(aabb: AABB): boolean {
+    return this.trees[STATIC].overlapsAny(aabb);
+  }
+
   /**
    * Calls `callback(proxyKey, shapeId)` for every proxy in the three trees whose fat box
    * overlaps `aabb` (m, world frame), static tree first, until it returns false. With

@@ -396,6 +396,37 @@ export class DynamicTree {
     return this.boxes[4 * proxyId + 3]!;
   }
 
+  /** True if `aabb` overlaps the box of any proxy: a query that stops at the first one. */
+  overlapsAny(aabb: AABB): boolean {
+    if (this.root === NULL_NODE) return false;
+    const minX = aabb.minX;
+    const minY = aabb.minY;
+    const maxX = aabb.maxX;
+    const maxY = aabb.maxY;
+    const boxes = this.boxes;
+    const base = this.stackTop;
+    let top = base;
+    this.stack[top++] = this.root;
+    while (top > base) {
+      const node = this.stack[--top]!;
+      const o = 4 * node;
+      if (
+        boxes[o]! > maxX ||
+        minX > boxes[o + 2]! ||
+        boxes[o + 1]! > maxY ||
+        minY > boxes[o + 3]!
+      ) {
+        continue;
+      }
+      const first = this.child1[node]!;
+      if (first === NULL_NODE) return true;
+      if (top + 2 > this.stack.length) this.growStack();
+      this.stack[top++] = this.child2[node]!;
+      this.stack[top++] = first;
+    }
+    return false;
+  }
+
   /**
    * Calls `callback` for every proxy whose box overlaps `aabb` (m, world frame; touching
    * counts), in a deterministic depth-first order, until it returns false.

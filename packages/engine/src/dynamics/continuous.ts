@@ -6,6 +6,7 @@ import {
   getSweepTransform,
   timeOfImpact,
 } from '../collision/time-of-impact.ts';
+import { LINEAR_SLOP } from '../core/constants.ts';
 import { AABB } from '../geometry/aabb.ts';
 import { Transform } from '../math/transform.ts';
 import type { Body } from './body.ts';
@@ -69,6 +70,19 @@ export class ContinuousSolver {
     bullet: boolean = false,
   ): boolean {
     this.bullet = bullet;
+    if (!bullet) {
+      // Each shape's box at any pose lies within maxExtent of the centre of mass, so a box around
+      // both centres, that far out (and a slop more, for rounding), holds every box the sweeps
+      // below would query. Where no static shape comes near it, none can be hit: most fast
+      // bodies are in free flight (a ragdoll rain: 7,300 sweeps a step, 400 shapes tested).
+      const box = this.box;
+      const reach = body.maxExtent + LINEAR_SLOP;
+      box.minX = Math.min(body.center0X, body.centerX) - reach;
+      box.minY = Math.min(body.center0Y, body.centerY) - reach;
+      box.maxX = Math.max(body.center0X, body.centerX) + reach;
+      box.maxY = Math.max(body.center0Y, body.centerY) + reach;
+      if (!broadPhase.overlapsStatic(box)) return false;
+    }
     const sweep = this.sweep;
     sweep.localCenterX = body.localCenterX;
     sweep.localCenterY = body.localCenterY;

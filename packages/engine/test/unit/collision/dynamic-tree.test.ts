@@ -84,6 +84,8 @@ function expectQueriesMatchBruteForce(
     });
     const expected = [...live].filter(([, box]) => aabbOverlaps(box, query)).map(([id]) => id);
     expect(found.sort((a, b) => a - b)).toEqual(expected.sort((a, b) => a - b));
+    // overlapsAny (continuous collision's early out) agrees with the full query.
+    expect(tree.overlapsAny(query)).toBe(expected.length > 0);
   }
 }
 
