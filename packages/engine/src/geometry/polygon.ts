@@ -35,13 +35,30 @@ export interface Polygon {
   radius: number;
 }
 
+const SLAB_POLYGONS = 256;
+let slab = new ArrayBuffer(0);
+let slabUsed = 0;
+
+/** Vertices and normals of one polygon, cut from a shared slab (see createEmptyPolygon). */
+function polygonStorage(): Float64Array {
+  const bytes = 4 * MAX_POLYGON_VERTICES * 8;
+  if (slabUsed + bytes > slab.byteLength) {
+    slab = new ArrayBuffer(SLAB_POLYGONS * bytes);
+    slabUsed = 0;
+  }
+  const storage = new Float64Array(slab, slabUsed, 4 * MAX_POLYGON_VERTICES);
+  slabUsed += bytes;
+  return storage;
+}
+
 /** A polygon with no vertices and zeroed storage, to be filled by `makePolygon` or `makeBox`. */
 export function createEmptyPolygon(): Polygon {
+  const storage = polygonStorage();
   return {
     kind: 'polygon',
     count: 0,
-    vertices: new Float64Array(2 * MAX_POLYGON_VERTICES),
-    normals: new Float64Array(2 * MAX_POLYGON_VERTICES),
+    vertices: storage.subarray(0, 2 * MAX_POLYGON_VERTICES),
+    normals: storage.subarray(2 * MAX_POLYGON_VERTICES),
     centroidX: 0,
     centroidY: 0,
     radius: 0,

@@ -377,3 +377,30 @@ describe('rayCastPolygon', () => {
     expect(rayCastPolygon(rounded, identity, ray(-1.4, 0, 10, 0), hit)).toBe(false);
   });
 });
+
+describe('createEmptyPolygon', () => {
+  it('gives every polygon storage of its own, across slabs, with neighbours side by side', () => {
+    // Polygons are cut from shared slabs (so a pass over many bodies reads their numbers in
+    // order); no two may share a number.
+    const polygons = Array.from({ length: 600 }, () => createEmptyPolygon());
+    polygons.forEach((p, i) => {
+      expect(p.vertices.length).toBe(2 * MAX_POLYGON_VERTICES);
+      expect(p.normals.length).toBe(2 * MAX_POLYGON_VERTICES);
+      p.vertices.fill(i);
+      p.normals.fill(-i);
+    });
+    polygons.forEach((p, i) => {
+      expect(p.vertices.every((v) => v === i)).toBe(true);
+      expect(p.normals.every((v) => v === -i)).toBe(true);
+    });
+    let neighbours = 0;
+    for (let i = 1; i < polygons.length; i++) {
+      const a = polygons[i - 1]!;
+      const b = polygons[i]!;
+      if (b.vertices.buffer !== a.vertices.buffer) continue;
+      expect(b.vertices.byteOffset).toBe(a.normals.byteOffset + a.normals.byteLength);
+      neighbours++;
+    }
+    expect(neighbours).toBeGreaterThan(590);
+  });
+});
