@@ -65,6 +65,8 @@ export class ContactData {
    * only JavaScript reads them.
    */
   shapes: Int32Array = new Int32Array(128);
+  /** Per slot, the pair kind (which collide function applies, see contact.ts). */
+  kinds: Uint8Array = new Uint8Array(64);
 
   constructor(private readonly memory: SolverMemory) {}
 
@@ -90,6 +92,9 @@ export class ContactData {
       const grown = new Int32Array(size);
       grown.set(this.shapes);
       this.shapes = grown;
+      const kinds = new Uint8Array(size / 2);
+      kinds.set(this.kinds);
+      this.kinds = kinds;
     }
   }
 
@@ -103,10 +108,19 @@ export class ContactData {
     const shapes = this.shapes;
     shapes[2 * to] = shapes[2 * from]!;
     shapes[2 * to + 1] = shapes[2 * from + 1]!;
+    this.kinds[to] = this.kinds[from]!;
   }
 
-  /** Records the world indices of a slot's bodies and the ids of its shapes. */
-  setPair(slot: number, indexA: number, indexB: number, shapeA: number, shapeB: number): void {
+  /** Records the world indices of a slot's bodies, the ids of its shapes and its pair kind. */
+  setPair(
+    slot: number,
+    indexA: number,
+    indexB: number,
+    shapeA: number,
+    shapeB: number,
+    kind: number,
+  ): void {
+    this.kinds[slot] = kind;
     const bodies = this.memory.contactBodies;
     bodies[2 * slot] = indexA;
     bodies[2 * slot + 1] = indexB;

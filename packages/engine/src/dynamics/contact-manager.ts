@@ -16,6 +16,7 @@ import {
   gateTransformB,
   narrowPhaseGate,
   shouldSwap,
+  updateManifold,
 } from './contact.ts';
 import {
   CACHE,
@@ -154,6 +155,7 @@ export class ContactManager {
     const data = this.slots.data;
     const slotBodies = this.slots.bodies;
     const slotShapes = this.slots.shapes;
+    const kinds = this.slots.kinds;
     const gate = narrowPhaseGate;
     let i = 0;
     while (i < contacts.length) {
@@ -270,15 +272,28 @@ export class ContactManager {
       xfB.y = pose[pb + 1]!;
       xfB.c = cB;
       xfB.s = sB;
-      const contact = contacts[i]!;
-      const wasTouching = contact.touching;
-      const touching = contact.update(dt, data);
-      if (touching && !wasTouching) {
-        this.began[this.beganCount++] = contact;
-        this.wake(contact.bodyA);
-        this.wake(contact.bodyB);
-      } else if (!touching && wasTouching) {
-        this.recordEnd(contact);
+      const wasTouching = data[base + POINT_COUNT] !== 0;
+      const geometries = this.boxes.geometries;
+      const touching =
+        updateManifold(
+          contacts,
+          i,
+          kinds[i]!,
+          geometries[sa >> 3]!,
+          geometries[sb >> 3]!,
+          dt,
+          data,
+        ) > 0;
+      if (touching !== wasTouching) {
+        const contact = contacts[i]!;
+        contact.touching = touching;
+        if (touching) {
+          this.began[this.beganCount++] = contact;
+          this.wake(contact.bodyA);
+          this.wake(contact.bodyB);
+        } else {
+          this.recordEnd(contact);
+        }
       }
       i++;
     }
@@ -371,6 +386,7 @@ export class ContactManager {
       contact.bodyB.worldIndex,
       contact.shapeA.id,
       contact.shapeB.id,
+      contact.pairKind,
     );
   }
 

@@ -38,7 +38,7 @@ import {
   RADIUS_B,
   RESTITUTION,
 } from './contact-data.ts';
-import type { Shape } from './shape.ts';
+import type { Geometry, Shape } from './shape.ts';
 
 // The narrow-phase table: which collide function handles a pair of shape kinds, with shape A the
 // higher-ranked kind (segment > polygon > capsule > circle). One switch here instead of
@@ -120,170 +120,182 @@ export class Contact {
             : PAIR_SEGMENT_POLYGON;
   }
 
-  /**
-   * Narrow phase in full: recomputes the manifold at the bodies' current transforms into the
-   * contact's slot of `data` and carries the accumulated impulses over to points with the same
-   * feature id. Returns whether it touches. The contact manager's gates (contact-manager.ts) ran
-   * first: the shapes are within the margin in {@link narrowPhaseGate}, and the manifold could not
-   * be reused.
-   *
-   * Speculative contacts (Catto, "Speculative contacts", 2013): a point is kept while the gap is
-   * under SPECULATIVE_DISTANCE, or while the shapes approach fast enough to close the gap within
-   * this step of `dt` seconds; the solver then lets them close exactly the gap and no more. So a
-   * ball falling at 14 m/s stops at the floor's surface instead of sinking 0.2 m into it, and a
-   * body only passing by a corner gets no point (no "ghost" collision), because it does not
-   * approach along that point's normal.
-   */
-  update(dt: number, data: Float64Array): boolean {
-    const bodyA = this.bodyA;
-    const bodyB = this.bodyB;
-    const base = this.index * CONTACT_STRIDE;
-    const gate = narrowPhaseGate;
-    const margin = gate[GATE_MARGIN]!;
-    const reach = gate[GATE_REACH]!;
-    // The bodies' transforms as the manager copied them (body-poses.ts): no Body or Transform
-    // object is loaded unless a far speculative point needs the bodies' velocities.
-    const xfA = gateTransformA;
-    const xfB = gateTransformB;
-    const k = base + CACHE;
-    const p0 = base + POINTS;
-    const p1 = p0 + POINT_STRIDE;
-    const m = scratch;
-    const a = this.shapeA.geometry;
-    const b = this.shapeB.geometry;
-    m.speculativeDistance = margin;
-    // Kernels that find no point may return without a normal: clear the one the last call (of
-    // any world: the manifold is shared) left, so the slot holds the same numbers in a copy
-    // restored from a snapshot.
-    m.normalX = 0;
-    m.normalY = 0;
-    switch (this.pairKind) {
-      case PAIR_CIRCLES:
-        collideCircles(a as Circle, xfA, b as Circle, xfB, m);
-        break;
-      case PAIR_POLYGON_CIRCLE:
-        collidePolygonAndCircle(a as Polygon, xfA, b as Circle, xfB, m);
-        break;
-      case PAIR_POLYGONS:
-        collidePolygons(a as Polygon, xfA, b as Polygon, xfB, m);
-        break;
-      case PAIR_SEGMENT_CIRCLE:
-        collideSegmentAndCircle(a as Segment, xfA, b as Circle, xfB, m);
-        break;
-      case PAIR_SEGMENT_POLYGON:
-        collideSegmentAndPolygon(a as Segment, xfA, b as Polygon, xfB, m);
-        break;
-      case PAIR_CAPSULE_CIRCLE:
-        collideCapsuleAndCircle(a as Capsule, xfA, b as Circle, xfB, m);
-        break;
-      case PAIR_CAPSULES:
-        collideCapsules(a as Capsule, xfA, b as Capsule, xfB, m);
-        break;
-      case PAIR_POLYGON_CAPSULE:
-        collidePolygonAndCapsule(a as Polygon, xfA, b as Capsule, xfB, m);
-        break;
-      default:
-        collideSegmentAndCapsule(a as Segment, xfA, b as Capsule, xfB, m);
-        break;
-    }
-    if (reach > 0 && m.pointCount > 0) dropPassingPoints(m, bodyA, bodyB, dt);
-    // The solver pushes particles along their line of centres (see contact-solver.ts). Read
-    // here, not when the contact starts, because adding a shape can move a centre of mass.
-    const pairKind = this.pairKind;
-    if (pairKind === PAIR_CIRCLES) writeCentredCircleRadius(data, base + RADIUS_A, this.shapeA);
-    if (
-      pairKind === PAIR_CIRCLES ||
-      pairKind === PAIR_POLYGON_CIRCLE ||
-      pairKind === PAIR_SEGMENT_CIRCLE ||
-      pairKind === PAIR_CAPSULE_CIRCLE
-    ) {
-      writeCentredCircleRadius(data, base + RADIUS_B, this.shapeB);
-    }
-
-    // Carry the impulses of last step's points over to the new points with the same feature.
-    const oldCount = data[base + POINT_COUNT]!;
-    const id0 = data[p0 + P_ID]!;
-    const id1 = data[p1 + P_ID]!;
-    const normal0 = data[p0 + P_NORMAL_IMPULSE]!;
-    const tangent0 = data[p0 + P_TANGENT_IMPULSE]!;
-    const normal1 = data[p1 + P_NORMAL_IMPULSE]!;
-    const tangent1 = data[p1 + P_TANGENT_IMPULSE]!;
-    data[base + NORMAL_X] = m.normalX;
-    data[base + NORMAL_Y] = m.normalY;
-    data[base + POINT_COUNT] = m.pointCount;
-    for (let i = 0; i < m.pointCount; i++) {
-      const mp = m.points[i]!;
-      const p = p0 + i * POINT_STRIDE;
-      data[p + P_X] = mp.x;
-      data[p + P_Y] = mp.y;
-      data[p + P_SEPARATION] = mp.separation;
-      data[p + P_ID] = mp.id;
-      let normal = 0;
-      let tangent = 0;
-      if (oldCount > 0 && mp.id === id0) {
-        normal = normal0;
-        tangent = tangent0;
-      } else if (oldCount > 1 && mp.id === id1) {
-        normal = normal1;
-        tangent = tangent1;
-      }
-      data[p + P_NORMAL_IMPULSE] = normal;
-      data[p + P_TANGENT_IMPULSE] = tangent;
-      data[p + P_MAX_NORMAL_IMPULSE] = 0;
-      data[p + P_STEP_NORMAL_IMPULSE] = 0;
-      data[p + P_STEP_TANGENT_IMPULSE] = 0;
-    }
-    // B's pose in A's frame, for the next step's reuse test.
-    data[k] = gate[GATE_REL_X]!;
-    data[k + 1] = gate[GATE_REL_Y]!;
-    data[k + 2] = gate[GATE_REL_C]!;
-    data[k + 3] = gate[GATE_REL_S]!;
-    this.storeCache(data, base, xfA, xfB);
-    this.touching = m.pointCount > 0;
-    return this.touching;
-  }
-
-  /** Keeps the manifold for reuse; B's pose in A's frame is already in the cache's first 4 slots. */
-  private storeCache(data: Float64Array, base: number, xfA: Transform, xfB: Transform): void {
-    const count = data[base + POINT_COUNT]!;
-    // Only polygon-like pairs are worth it: the circle kernels cost less than the bookkeeping.
-    const kind = this.pairKind;
-    if (
-      count === 0 ||
-      kind === PAIR_CIRCLES ||
-      kind === PAIR_POLYGON_CIRCLE ||
-      kind === PAIR_SEGMENT_CIRCLE ||
-      kind === PAIR_CAPSULE_CIRCLE
-    ) {
-      data[base + HAS_CACHE] = 0;
-      return;
-    }
-    const k = base + CACHE;
-    const nx = data[base + NORMAL_X]!;
-    const ny = data[base + NORMAL_Y]!;
-    for (let i = 0; i < count; i++) {
-      const p = base + POINTS + i * POINT_STRIDE;
-      const half = 0.5 * data[p + P_SEPARATION]!;
-      // Surface points: the manifold point is midway between them along the normal.
-      const ax = data[p + P_X]! - half * nx - xfA.x;
-      const ay = data[p + P_Y]! - half * ny - xfA.y;
-      const bx = data[p + P_X]! + half * nx - xfB.x;
-      const by = data[p + P_Y]! + half * ny - xfB.y;
-      const q = k + 4 + 4 * i;
-      data[q] = xfA.c * ax + xfA.s * ay;
-      data[q + 1] = -xfA.s * ax + xfA.c * ay;
-      data[q + 2] = xfB.c * bx + xfB.s * by;
-      data[q + 3] = -xfB.s * bx + xfB.c * by;
-    }
-    data[k + 12] = xfA.c * nx + xfA.s * ny;
-    data[k + 13] = -xfA.s * nx + xfA.c * ny;
-    data[base + HAS_CACHE] = 1;
-  }
-
   /** The body on the other side of the contact. */
   other(body: Body): Body {
     return body === this.bodyA ? this.bodyB : this.bodyA;
   }
+}
+
+/**
+ * Narrow phase in full for contact slot `slot`: recomputes the manifold of geometries `a` and `b`
+ * (pair kind `kind`) at the transforms in {@link gateTransformA} and {@link gateTransformB} into
+ * the slot of `data`, and carries the accumulated impulses over to points with the same feature
+ * id. Returns the number of points (the contact touches when it is not 0); the caller keeps
+ * `Contact.touching` equal to that. The contact manager's gates (contact-manager.ts) ran first:
+ * the shapes are within the margin in {@link narrowPhaseGate}, and the manifold could not be
+ * reused. The Contact object, `contacts[slot]`, is read only for circle pairs and far speculative
+ * points, so the common pair is computed from the slot, the geometries and the transforms alone.
+ *
+ * Speculative contacts (Catto, "Speculative contacts", 2013): a point is kept while the gap is
+ * under SPECULATIVE_DISTANCE, or while the shapes approach fast enough to close the gap within
+ * this step of `dt` seconds; the solver then lets them close exactly the gap and no more. So a
+ * ball falling at 14 m/s stops at the floor's surface instead of sinking 0.2 m into it, and a
+ * body only passing by a corner gets no point (no "ghost" collision), because it does not
+ * approach along that point's normal.
+ */
+export function updateManifold(
+  contacts: readonly Contact[],
+  slot: number,
+  kind: number,
+  a: Geometry,
+  b: Geometry,
+  dt: number,
+  data: Float64Array,
+): number {
+  const base = slot * CONTACT_STRIDE;
+  const gate = narrowPhaseGate;
+  const margin = gate[GATE_MARGIN]!;
+  const reach = gate[GATE_REACH]!;
+  const xfA = gateTransformA;
+  const xfB = gateTransformB;
+  const k = base + CACHE;
+  const p0 = base + POINTS;
+  const p1 = p0 + POINT_STRIDE;
+  const m = scratch;
+  m.speculativeDistance = margin;
+  // Kernels that find no point may return without a normal: clear the one the last call (of
+  // any world: the manifold is shared) left, so the slot holds the same numbers in a copy
+  // restored from a snapshot.
+  m.normalX = 0;
+  m.normalY = 0;
+  switch (kind) {
+    case PAIR_CIRCLES:
+      collideCircles(a as Circle, xfA, b as Circle, xfB, m);
+      break;
+    case PAIR_POLYGON_CIRCLE:
+      collidePolygonAndCircle(a as Polygon, xfA, b as Circle, xfB, m);
+      break;
+    case PAIR_POLYGONS:
+      collidePolygons(a as Polygon, xfA, b as Polygon, xfB, m);
+      break;
+    case PAIR_SEGMENT_CIRCLE:
+      collideSegmentAndCircle(a as Segment, xfA, b as Circle, xfB, m);
+      break;
+    case PAIR_SEGMENT_POLYGON:
+      collideSegmentAndPolygon(a as Segment, xfA, b as Polygon, xfB, m);
+      break;
+    case PAIR_CAPSULE_CIRCLE:
+      collideCapsuleAndCircle(a as Capsule, xfA, b as Circle, xfB, m);
+      break;
+    case PAIR_CAPSULES:
+      collideCapsules(a as Capsule, xfA, b as Capsule, xfB, m);
+      break;
+    case PAIR_POLYGON_CAPSULE:
+      collidePolygonAndCapsule(a as Polygon, xfA, b as Capsule, xfB, m);
+      break;
+    default:
+      collideSegmentAndCapsule(a as Segment, xfA, b as Capsule, xfB, m);
+      break;
+  }
+  if (reach > 0 && hasFarPoint(m)) {
+    const contact = contacts[slot]!;
+    dropPassingPoints(m, contact.bodyA, contact.bodyB, dt);
+  }
+  // The solver pushes particles along their line of centres (see contact-solver.ts). Read
+  // here, not when the contact starts, because adding a shape can move a centre of mass.
+  if (kind === PAIR_CIRCLES)
+    writeCentredCircleRadius(data, base + RADIUS_A, contacts[slot]!.shapeA);
+  if (
+    kind === PAIR_CIRCLES ||
+    kind === PAIR_POLYGON_CIRCLE ||
+    kind === PAIR_SEGMENT_CIRCLE ||
+    kind === PAIR_CAPSULE_CIRCLE
+  ) {
+    writeCentredCircleRadius(data, base + RADIUS_B, contacts[slot]!.shapeB);
+  }
+
+  // Carry the impulses of last step's points over to the new points with the same feature.
+  const oldCount = data[base + POINT_COUNT]!;
+  const id0 = data[p0 + P_ID]!;
+  const id1 = data[p1 + P_ID]!;
+  const normal0 = data[p0 + P_NORMAL_IMPULSE]!;
+  const tangent0 = data[p0 + P_TANGENT_IMPULSE]!;
+  const normal1 = data[p1 + P_NORMAL_IMPULSE]!;
+  const tangent1 = data[p1 + P_TANGENT_IMPULSE]!;
+  data[base + NORMAL_X] = m.normalX;
+  data[base + NORMAL_Y] = m.normalY;
+  data[base + POINT_COUNT] = m.pointCount;
+  for (let i = 0; i < m.pointCount; i++) {
+    const mp = m.points[i]!;
+    const p = p0 + i * POINT_STRIDE;
+    data[p + P_X] = mp.x;
+    data[p + P_Y] = mp.y;
+    data[p + P_SEPARATION] = mp.separation;
+    data[p + P_ID] = mp.id;
+    let normal = 0;
+    let tangent = 0;
+    if (oldCount > 0 && mp.id === id0) {
+      normal = normal0;
+      tangent = tangent0;
+    } else if (oldCount > 1 && mp.id === id1) {
+      normal = normal1;
+      tangent = tangent1;
+    }
+    data[p + P_NORMAL_IMPULSE] = normal;
+    data[p + P_TANGENT_IMPULSE] = tangent;
+    data[p + P_MAX_NORMAL_IMPULSE] = 0;
+    data[p + P_STEP_NORMAL_IMPULSE] = 0;
+    data[p + P_STEP_TANGENT_IMPULSE] = 0;
+  }
+  // B's pose in A's frame, for the next step's reuse test.
+  data[k] = gate[GATE_REL_X]!;
+  data[k + 1] = gate[GATE_REL_Y]!;
+  data[k + 2] = gate[GATE_REL_C]!;
+  data[k + 3] = gate[GATE_REL_S]!;
+  storeCache(data, base, kind, xfA, xfB);
+  return m.pointCount;
+}
+
+/** Keeps the manifold for reuse; B's pose in A's frame is already in the cache's first 4 slots. */
+function storeCache(
+  data: Float64Array,
+  base: number,
+  kind: number,
+  xfA: Transform,
+  xfB: Transform,
+): void {
+  const count = data[base + POINT_COUNT]!;
+  // Only polygon-like pairs are worth it: the circle kernels cost less than the bookkeeping.
+  if (
+    count === 0 ||
+    kind === PAIR_CIRCLES ||
+    kind === PAIR_POLYGON_CIRCLE ||
+    kind === PAIR_SEGMENT_CIRCLE ||
+    kind === PAIR_CAPSULE_CIRCLE
+  ) {
+    data[base + HAS_CACHE] = 0;
+    return;
+  }
+  const k = base + CACHE;
+  const nx = data[base + NORMAL_X]!;
+  const ny = data[base + NORMAL_Y]!;
+  for (let i = 0; i < count; i++) {
+    const p = base + POINTS + i * POINT_STRIDE;
+    const half = 0.5 * data[p + P_SEPARATION]!;
+    // Surface points: the manifold point is midway between them along the normal.
+    const ax = data[p + P_X]! - half * nx - xfA.x;
+    const ay = data[p + P_Y]! - half * ny - xfA.y;
+    const bx = data[p + P_X]! + half * nx - xfB.x;
+    const by = data[p + P_Y]! + half * ny - xfB.y;
+    const q = k + 4 + 4 * i;
+    data[q] = xfA.c * ax + xfA.s * ay;
+    data[q + 1] = -xfA.s * ax + xfA.c * ay;
+    data[q + 2] = xfB.c * bx + xfB.s * by;
+    data[q + 3] = -xfB.s * bx + xfB.c * by;
+  }
+  data[k + 12] = xfA.c * nx + xfA.s * ny;
+  data[k + 13] = -xfA.s * nx + xfA.c * ny;
+  data[base + HAS_CACHE] = 1;
 }
 
 /** Writes the radius of a circle shape centred on its body's centre of mass, else 0, to data[at]. */
@@ -314,6 +326,14 @@ export const narrowPhaseGate = new Float64Array(6);
 /** @internal The transforms of body A and body B of that contact. */
 export const gateTransformA: Transform = new Transform();
 export const gateTransformB: Transform = new Transform();
+
+/** True if a point of `m` lies as far as the speculative distance (dropPassingPoints' work). */
+function hasFarPoint(m: Manifold): boolean {
+  for (let i = 0; i < m.pointCount; i++) {
+    if (m.points[i]!.separation >= SPECULATIVE_DISTANCE) return true;
+  }
+  return false;
+}
 
 /** Keeps far speculative points only where the bodies approach along the normal fast enough. */
 function dropPassingPoints(m: Manifold, bodyA: Body, bodyB: Body, dt: number): void {

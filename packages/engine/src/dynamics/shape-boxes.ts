@@ -1,7 +1,9 @@
 import type { AABB } from '../geometry/aabb.ts';
+import type { Geometry } from './shape.ts';
 
 // Every shape's tight and fat boxes, by shape id, so the narrow phase's gates read numbers, not
-// each contact's Shape and AABB objects (contact-manager.ts). A copy: Shape.aabb and
+// each contact's Shape and AABB objects (contact-manager.ts); and each shape's geometry, so the
+// full narrow phase reaches it without the Contact and Shape objects. A copy: Shape.aabb and
 // Shape.fatAABB stay the boxes the rest of the engine reads, and every write to them writes
 // here too (Shape.computeAABB, Shape.fatAABBChanged). Layout per shape id, stride 8 doubles:
 //   0 minX, 1 minY, 2 maxX, 3 maxY       tight box at the body's pose (m)
@@ -12,6 +14,8 @@ export const BOXES_STRIDE = 8;
 /** The flat copy of every shape's boxes in a world, by shape id. */
 export class ShapeBoxes {
   data: Float64Array = new Float64Array(BOXES_STRIDE * 64);
+  /** Each shape's geometry by shape id (null for a free id). */
+  readonly geometries: (Geometry | null)[] = [];
 
   /** Makes room for shape id `id`, keeping what is stored. */
   reserve(id: number): void {

@@ -261,9 +261,12 @@ export class Shape {
 
   /** @internal Joins a world's flat copy of the boxes (this shape's id is set), or leaves it. */
   attachBoxes(boxes: ShapeBoxes | null): void {
+    if (this.boxes !== null) this.boxes.geometries[this.id] = null;
     this.boxes = boxes;
     if (boxes === null) return;
     boxes.reserve(this.id);
+    while (boxes.geometries.length <= this.id) boxes.geometries.push(null);
+    boxes.geometries[this.id] = this.geometry;
     boxes.setTight(this.id, this.aabb);
     boxes.setFat(this.id, this.fatAABB);
   }
