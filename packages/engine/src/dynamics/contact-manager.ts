@@ -70,6 +70,11 @@ export class ContactManager {
   private readonly pendingA: Shape[] = [];
   private readonly pendingB: Shape[] = [];
   private pendingCount = 0;
+
+  /** Contacts there will be once createPending has run. */
+  get countWithPending(): number {
+    return this.contacts.length + this.pendingCount;
+  }
   /** The bodies' poses and speeds for the narrow phase's gates, loaded at its start. */
   private readonly poses = new BodyPoses();
 

@@ -108,6 +108,14 @@ export class Solver {
   private readonly staticSoftness = new Softness();
 
   /**
+   * Makes room for a step of `bodies` bodies and `contacts` contacts in one move of the solver
+   * memory, before the narrow phase reads the contact slots.
+   */
+  reserve(bodies: number, contacts: number): void {
+    this.memory.reserveStep((bodies + 1) * STATE_STRIDE, bodies, contacts);
+  }
+
+  /**
    * Collects the awake bodies, gathers their forces for this step and loads their states. Must run
    * before {@link solve}; `bodies` is every body of the world.
    */

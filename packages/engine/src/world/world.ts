@@ -370,6 +370,8 @@ export class World {
     this.locked = true;
     try {
       this.broadPhase.updatePairs(this.onPair);
+      // Room for the whole step in one move of the solver memory, then the new contacts.
+      this.solver.reserve(this.bodyList.length, this.contactManager.countWithPending);
       this.contactManager.createPending();
       this.contactManager.collide(dt, this.bodyList);
       this.solver.gatherBodies(this.bodyList, dt);
