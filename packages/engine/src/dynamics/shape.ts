@@ -22,7 +22,7 @@ import type { Transform } from '../math/transform.ts';
 import type { Vec2Like } from '../math/vec2.ts';
 import type { Body } from './body.ts';
 import { filtersCollide, resolveFilter, type Filter, type FilterOptions } from './filter.ts';
-import type { ShapeBoxes } from './shape-boxes.ts';
+import type { ShapeTable } from './shape-table.ts';
 
 /** Sensor flag and collision filter, shared by every shape kind (and the body factories). */
 export interface CollisionOptions {
@@ -161,10 +161,10 @@ export class Shape {
   /** @internal The broad phase's fattened box. */
   readonly fatAABB: AABB = new AABB();
   /**
-   * @internal The world's flat copy of every shape's boxes (shape-boxes.ts), which every write
-   * to {@link aabb} and {@link fatAABB} updates; null outside a world.
+   * @internal The world's flat copy of what its contact loops read of every shape (boxes, filter,
+   * geometry; shape-table.ts), which every write to those updates; null outside a world.
    */
-  boxes: ShapeBoxes | null = null;
+  table: ShapeTable | null = null;
 
   /** `geometry` is built from `options` unless given (a part of a split polygon). */
   constructor(body: Body, options: ShapeOptions, field: string, geometry?: Geometry) {
@@ -221,6 +221,10 @@ export class Shape {
     this.categoryBits = filter.category;
     this.maskBits = filter.mask;
     this.groupIndex = filter.group;
+    const table = this.table;
+    if (table !== null) {
+      table.setFilter(this.id, filter.category, filter.mask, filter.group, this.sensor);
+    }
   }
 
   /** The shape's bounding box in world coordinates (m), at the body's current pose. */
@@ -248,27 +252,28 @@ export class Shape {
     else if (g.kind === 'polygon') computePolygonAABB(g, xf, box);
     else if (g.kind === 'capsule') computeCapsuleAABB(g, xf, box);
     else computeSegmentAABB(g, xf, box);
-    const boxes = this.boxes;
-    if (boxes !== null) boxes.setTight(this.id, box);
+    const table = this.table;
+    if (table !== null) table.setTight(this.id, box);
     return box;
   }
 
   /** @internal Copies {@link fatAABB}, just written, into the world's flat copy. */
   fatAABBChanged(): void {
-    const boxes = this.boxes;
-    if (boxes !== null) boxes.setFat(this.id, this.fatAABB);
+    const table = this.table;
+    if (table !== null) table.setFat(this.id, this.fatAABB);
   }
 
-  /** @internal Joins a world's flat copy of the boxes (this shape's id is set), or leaves it. */
-  attachBoxes(boxes: ShapeBoxes | null): void {
-    if (this.boxes !== null) this.boxes.geometries[this.id] = null;
-    this.boxes = boxes;
-    if (boxes === null) return;
-    boxes.reserve(this.id);
-    while (boxes.geometries.length <= this.id) boxes.geometries.push(null);
-    boxes.geometries[this.id] = this.geometry;
-    boxes.setTight(this.id, this.aabb);
-    boxes.setFat(this.id, this.fatAABB);
+  /** @internal Joins a world's shape table (this shape's id is set), or leaves it (null). */
+  attachTable(table: ShapeTable | null): void {
+    if (this.table !== null) this.table.geometries[this.id] = null;
+    this.table = table;
+    if (table === null) return;
+    const id = this.id;
+    table.reserve(id);
+    table.geometries[id] = this.geometry;
+    table.setTight(id, this.aabb);
+    table.setFat(id, this.fatAABB);
+    table.setFilter(id, this.categoryBits, this.maskBits, this.groupIndex, this.sensor);
   }
 }
 

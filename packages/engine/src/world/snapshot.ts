@@ -17,7 +17,7 @@ import type { Duration } from '../dynamics/force.ts';
 import type { Islands } from '../dynamics/island.ts';
 import type { Sensors } from '../dynamics/sensor.ts';
 import { CONVEX_PART, type Shape, type ShapeOptions } from '../dynamics/shape.ts';
-import type { ShapeBoxes } from '../dynamics/shape-boxes.ts';
+import type { ShapeTable } from '../dynamics/shape-table.ts';
 import type { Joint } from '../dynamics/joints/joint.ts';
 import { buildJoint, readJoint, saveJoint, type JointPlan } from './joint-snapshot.ts';
 import {
@@ -119,7 +119,7 @@ export interface WorldInternals {
   readonly contactManager: ContactManager;
   readonly sensors: Sensors;
   readonly shapesById: (Shape | null)[];
-  readonly shapeBoxes: ShapeBoxes;
+  readonly shapeTable: ShapeTable;
   readonly freeShapeIds: number[];
   nextBodyId: number;
   stepCount: number;
@@ -920,7 +920,7 @@ function loadWorld(w: WorldInternals, snapshot: unknown): void {
   for (let id = 0; id < slots; id++) {
     const shape = shapes[id] ?? null;
     w.shapesById.push(shape);
-    shape?.attachBoxes(w.shapeBoxes);
+    shape?.attachTable(w.shapeTable);
   }
   w.freeShapeIds.push(...free);
   importBroadPhaseState(w.broadPhase, { trees, moved });

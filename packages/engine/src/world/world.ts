@@ -46,7 +46,7 @@ import { Islands } from '../dynamics/island.ts';
 import type { Joint } from '../dynamics/joints/joint.ts';
 import { Sensors } from '../dynamics/sensor.ts';
 import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
-import { ShapeBoxes } from '../dynamics/shape-boxes.ts';
+import { ShapeTable } from '../dynamics/shape-table.ts';
 import { Solver } from '../dynamics/solver.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
 import type { WorldInternals } from './snapshot.ts';
@@ -81,11 +81,11 @@ export class World {
   private readonly bounds = new BodyBounds(this.broadPhase);
   private readonly islands = new Islands();
   private readonly solver = new Solver();
-  private readonly shapeBoxes = new ShapeBoxes();
+  private readonly shapeTable = new ShapeTable();
   private readonly contactManager = new ContactManager(
     this.islands,
     this.solver.memory,
-    this.shapeBoxes,
+    this.shapeTable,
   );
   private readonly continuous = new ContinuousSolver();
   private readonly sensors = new Sensors();
@@ -649,7 +649,7 @@ export class World {
     const id = this.freeShapeIds.length > 0 ? this.freeShapeIds.pop()! : this.shapesById.length;
     shape.id = id;
     this.shapesById[id] = shape;
-    shape.attachBoxes(this.shapeBoxes);
+    shape.attachTable(this.shapeTable);
     const box = this.bounds.speculativeBox(shape, this.lastStep);
     shape.proxyKey = this.broadPhase.createProxy(box, PROXY_TYPE[shape.body.type], id, false);
     this.broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
@@ -662,7 +662,7 @@ export class World {
     this.broadPhase.destroyProxy(shape.proxyKey);
     this.shapesById[shape.id] = null;
     this.freeShapeIds.push(shape.id);
-    shape.attachBoxes(null);
+    shape.attachTable(null);
     shape.id = -1;
     shape.proxyKey = -1;
   }
@@ -911,7 +911,7 @@ export class World {
       contactManager: this.contactManager,
       sensors: this.sensors,
       shapesById: this.shapesById,
-      shapeBoxes: this.shapeBoxes,
+      shapeTable: this.shapeTable,
       freeShapeIds: this.freeShapeIds,
       get nextBodyId(): number {
         return world.nextBodyId;

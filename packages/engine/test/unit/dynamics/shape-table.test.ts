@@ -1,19 +1,19 @@
 import { describe, expect, it } from 'vitest';
 import { World, box, particle, restoreSnapshot, takeSnapshot, wall } from '@physical/engine';
 
-// The narrow phase decides most contacts from flat copies of the shapes' boxes (shape-boxes.ts)
+// The narrow phase decides most contacts from flat copies of the shapes' boxes (shape-table.ts)
 // and of the bodies' poses (body-poses.ts). A stale copy would skip a contact that touches, so
 // every path that moves a box must write the copy too, and a shape that left its world must not.
 
 type Internals = ReturnType<World['internals']>;
 
 function expectCopiesMatch(world: World): number {
-  const { shapesById, shapeBoxes } = world.internals() as Internals;
+  const { shapesById, shapeTable } = world.internals() as Internals;
   let checked = 0;
   for (const shape of shapesById) {
     if (shape === null) continue;
     const p = shape.id * 8;
-    const copy = Array.from(shapeBoxes.data.subarray(p, p + 8));
+    const copy = Array.from(shapeTable.data.subarray(p, p + 8));
     const { aabb, fatAABB } = shape;
     expect(copy).toEqual([
       aabb.minX,
@@ -25,6 +25,14 @@ function expectCopiesMatch(world: World): number {
       fatAABB.maxX,
       fatAABB.maxY,
     ]);
+    const f = Array.from(shapeTable.filters.subarray(shape.id * 4, shape.id * 4 + 4));
+    expect(f).toEqual([
+      shape.categoryBits | 0,
+      shape.maskBits | 0,
+      shape.groupIndex,
+      shape.sensor ? 1 : 0,
+    ]);
+    expect(shapeTable.geometries[shape.id]).toBe(shape.geometry);
     checked++;
   }
   return checked;
@@ -43,8 +51,8 @@ function pile(): World {
   return world;
 }
 
-describe("the narrow phase's flat copy of the shapes' boxes", () => {
-  it('equals every shape box after steps, teleports, removals, adds and a restore', () => {
+describe("the contact loops' shape table (boxes, filters, geometries)", () => {
+  it('equals every shape after steps, teleports, filter changes, removals, adds and a restore', () => {
     const world = pile();
     for (let step = 0; step < 90; step++) world.step(1 / 60);
     expect(expectCopiesMatch(world)).toBe(13);
@@ -53,6 +61,7 @@ describe("the narrow phase's flat copy of the shapes' boxes", () => {
     const [, first, second] = world.bodies;
     first!.position = { x: 4, y: -1 };
     first!.angle = 0.7;
+    first!.shapes[0]!.filter = { category: 0x80000000, mask: 0xfffffffe, group: -3 };
     world.remove(second!);
     world.add(box({ position: { x: 0, y: -3 }, width: 1, height: 0.2 }));
     expectCopiesMatch(world);
