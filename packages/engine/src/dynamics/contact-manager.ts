@@ -320,8 +320,7 @@ export class ContactManager {
   private wake(body: Body): void {
     if (body.awake) return;
     this.islands.wake(body);
-    const woken = this.islands.lastWoken;
-    this.poses.markAwake(woken, woken.length);
+    this.poses.markAwake(this.islands.lastWoken, this.islands.wokenCount);
   }
 
   /** Destroys every contact of a body (it is being removed), waking what touched it. */

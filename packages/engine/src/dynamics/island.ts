@@ -45,26 +45,32 @@ export class Islands {
     }
   }
 
-  /** The bodies the last {@link wake} woke (none if it found its body awake). */
+  /** The bodies the last {@link wake} woke: the first {@link wokenCount} (none if it found its body awake). */
   get lastWoken(): readonly Body[] {
     return this.woken;
   }
 
+  /** How many bodies the last {@link wake} woke. */
+  wokenCount = 0;
+
   /** Wakes a body and every sleeping body its island touches. */
   wake(body: Body): void {
-    const woken = this.woken;
-    woken.length = 0;
+    // Counts, not `length = 0`: emptying an array that way drops its backing store, and the next
+    // wake would allocate a new one.
+    this.wokenCount = 0;
     if (body.type === 'static') return;
     body.sleepTime = 0;
     if (body.awake) return;
     const stack = this.stack;
-    stack.length = 0;
+    const woken = this.woken;
+    let top = 0;
+    let count = 0;
     body.awake = true;
-    stack.push(body);
-    while (stack.length > 0) {
-      const current = stack.pop()!;
+    stack[top++] = body;
+    while (top > 0) {
+      const current = stack[--top]!;
       current.sleepTime = 0;
-      woken.push(current);
+      woken[count++] = current;
       if (current.type === 'kinematic') continue;
       for (let i = 0; i < current.contacts.length; i++) {
         const contact = current.contacts[i]!;
@@ -72,18 +78,19 @@ export class Islands {
         const other = contact.other(current);
         if (other.type === 'static' || other.awake) continue;
         other.awake = true;
-        stack.push(other);
+        stack[top++] = other;
       }
       for (let i = 0; i < current.jointList.length; i++) {
         const joint = current.jointList[i]!;
         const other = joint.bodyA === current ? joint.bodyB : joint.bodyA;
         if (other.type === 'static' || other.awake) continue;
         other.awake = true;
-        stack.push(other);
+        stack[top++] = other;
       }
     }
+    this.wokenCount = count;
     const onWake = this.onWake;
-    if (onWake !== null) for (let i = 0; i < woken.length; i++) onWake(woken[i]!);
+    if (onWake !== null) for (let i = 0; i < count; i++) onWake(woken[i]!);
   }
 
   /** Puts a body and its whole island to sleep now. */
