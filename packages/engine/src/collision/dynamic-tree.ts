@@ -396,7 +396,11 @@ export class DynamicTree {
     return this.boxes[4 * proxyId + 3]!;
   }
 
-  /** True if `aabb` overlaps the box of any proxy: a query that stops at the first one. */
+  /**
+   * True if `aabb` overlaps the box of any proxy: a query that stops at the first one. Its own
+   * loop rather than query() with a callback: a third callback at query's call site made the
+   * pair search slower (rain, 7 alternating runs: 14.59 -> 14.93 ms a step).
+   */
   overlapsAny(aabb: AABB): boolean {
     if (this.root === NULL_NODE) return false;
     const minX = aabb.minX;

@@ -173,6 +173,7 @@ export class ContactManager {
     const slotBodies = this.slots.bodies;
     const slotShapes = this.slots.shapes;
     const kinds = this.slots.kinds;
+    const geometries = this.table.geometries;
     const gate = narrowPhaseGate;
     let i = 0;
     while (i < contacts.length) {
@@ -290,7 +291,6 @@ export class ContactManager {
       xfB.c = cB;
       xfB.s = sB;
       const wasTouching = data[base + POINT_COUNT] !== 0;
-      const geometries = this.table.geometries;
       const touching =
         updateManifold(
           contacts,

@@ -81,10 +81,8 @@ export class SolverMemory {
   /** Makes room for `count` contact slots, keeping their contents. */
   reserveContacts(count: number): void {
     if (count * this.contactStride <= this.capacities[CONTACT_DATA]!) return;
-    const slots = grown(this.capacities[CONTACT_DATA]! / this.contactStride, count);
     const wanted = this.capacities.slice();
-    wanted[CONTACT_DATA] = slots * this.contactStride;
-    wanted[CONTACT_BODIES] = 2 * slots;
+    this.sizeContacts(wanted, count);
     this.layout(wanted, this.wasm !== null);
   }
 
@@ -96,17 +94,10 @@ export class SolverMemory {
 
   /** Makes room for `count` constraints; moves to the WebAssembly kernel at the threshold. */
   reserveConstraints(count: number): void {
-    const toWasm =
-      this.wasm !== null || (!this.wasmRefused && count >= kernelSettings.minConstraints);
-    const capacity = this.capacities[CONSTRAINT_ORDER]!;
-    if (count <= capacity && toWasm === (this.wasm !== null)) return;
-    const n = grown(capacity, count);
+    const toWasm = this.wantsKernel(count);
+    if (count <= this.capacities[CONSTRAINT_ORDER]! && toWasm === (this.wasm !== null)) return;
     const wanted = this.capacities.slice();
-    wanted[CONSTRAINT_DATA] = n * this.constraintStride;
-    wanted[CONSTRAINT_BODIES] = 2 * n;
-    wanted[CONSTRAINT_ORDER] = n;
-    wanted[CONSTRAINT_SLOTS] = n;
-    wanted[CIRCLE_PAIRS] = n;
+    this.sizeConstraints(wanted, count);
     this.layout(wanted, toWasm);
   }
 
@@ -118,8 +109,7 @@ export class SolverMemory {
    */
   reserveStep(stateDoubles: number, bodies: number, contacts: number): void {
     const have = this.capacities;
-    const toWasm =
-      this.wasm !== null || (!this.wasmRefused && contacts >= kernelSettings.minConstraints);
+    const toWasm = this.wantsKernel(contacts);
     // Nothing to do in a step like the last one: checked before anything is allocated.
     if (
       stateDoubles <= have[STATES]! &&
@@ -133,16 +123,31 @@ export class SolverMemory {
     const wanted = have.slice();
     wanted[STATES] = grown(have[STATES]!, stateDoubles);
     wanted[BODY_TABLE] = grown(have[BODY_TABLE]!, bodies * this.tableStride);
-    const slots = grown(have[CONTACT_DATA]! / this.contactStride, contacts);
+    this.sizeContacts(wanted, contacts);
+    this.sizeConstraints(wanted, contacts);
+    this.layout(wanted, toWasm);
+  }
+
+  /** Whether a step of `count` contacts runs on the WebAssembly kernel (once moved, it stays). */
+  private wantsKernel(count: number): boolean {
+    return this.wasm !== null || (!this.wasmRefused && count >= kernelSettings.minConstraints);
+  }
+
+  /** Grows `wanted`'s contact regions to hold `count` slots (no smaller than they are). */
+  private sizeContacts(wanted: number[], count: number): void {
+    const slots = grown(wanted[CONTACT_DATA]! / this.contactStride, count);
     wanted[CONTACT_DATA] = slots * this.contactStride;
     wanted[CONTACT_BODIES] = 2 * slots;
-    const n = grown(have[CONSTRAINT_ORDER]!, contacts);
+  }
+
+  /** Grows `wanted`'s constraint regions to hold `count` constraints (no smaller than they are). */
+  private sizeConstraints(wanted: number[], count: number): void {
+    const n = grown(wanted[CONSTRAINT_ORDER]!, count);
     wanted[CONSTRAINT_DATA] = n * this.constraintStride;
     wanted[CONSTRAINT_BODIES] = 2 * n;
     wanted[CONSTRAINT_ORDER] = n;
     wanted[CONSTRAINT_SLOTS] = n;
     wanted[CIRCLE_PAIRS] = n;
-    this.layout(wanted, toWasm);
   }
 
   private reserve(region: number, elements: number): void {
