@@ -450,12 +450,20 @@ export function refreshCirclePairs(constraints: ContactConstraints, s: Float64Ar
   }
 }
 
-/** Applies last step's accumulated impulses, so resting contacts start where they left off. */
-export function warmStartContacts(constraints: ContactConstraints, s: Float64Array): void {
+/**
+ * Applies last step's accumulated impulses, so resting contacts start where they left off; to
+ * the constraints at positions `from` to `to` (exclusive) of the visiting order.
+ */
+export function warmStartContacts(
+  constraints: ContactConstraints,
+  s: Float64Array,
+  from: number,
+  to: number,
+): void {
   const c = constraints.data;
   const indices = constraints.bodies;
   const order = constraints.order;
-  for (let n = 0; n < constraints.count; n++) {
+  for (let n = from; n < to; n++) {
     const i = order[n]!;
     const base = i * STRIDE;
     const a = indices[2 * i]!;
@@ -532,13 +540,16 @@ export function warmStartContacts(constraints: ContactConstraints, s: Float64Arr
 }
 
 /**
- * One pass over every contact. With `useBias` the soft position correction pushes overlapping
- * shapes apart (at most `maxPushSpeed`); without it ("relax") the pass removes the velocity that
- * push added, so resting bodies do not gain energy from correction.
+ * One pass over the constraints at positions `from` to `to` (exclusive) of the visiting order.
+ * With `useBias` the soft position correction pushes overlapping shapes apart (at most
+ * `maxPushSpeed`); without it ("relax") the pass removes the velocity that push added, so resting
+ * bodies do not gain energy from correction.
  */
 export function solveContacts(
   constraints: ContactConstraints,
   s: Float64Array,
+  from: number,
+  to: number,
   inverseH: number,
   maxPushSpeed: number,
   restitutionThreshold: number,
@@ -547,7 +558,7 @@ export function solveContacts(
   const c = constraints.data;
   const indices = constraints.bodies;
   const order = constraints.order;
-  for (let n = 0; n < constraints.count; n++) {
+  for (let n = from; n < to; n++) {
     const i = order[n]!;
     const base = i * STRIDE;
     const a = indices[2 * i]!;

@@ -44,6 +44,7 @@ import {
   STATES,
 } from './solver-memory.ts';
 import { Softness } from './softness.ts';
+import { SolverBatches } from './solver-batches.ts';
 
 /** World settings the solver reads each step. */
 export interface SolverSettings {
@@ -104,6 +105,8 @@ export class Solver {
   fastBulletCount = 0;
   /** The ground-up sweep under heavy bodies resting on light ones (contact-solver.ts). */
   private readonly shock = new ShockPropagation();
+  /** Batches of islands for a step whose constraints outgrow the cache (solver-batches.ts). */
+  private readonly batches = new SolverBatches();
   private readonly contactSoftness = new Softness();
   private readonly staticSoftness = new Softness();
 
@@ -194,8 +197,6 @@ export class Solver {
     const memory = this.memory;
     const subSteps = settings.subSteps;
     const h = dt / subSteps;
-    const inverseH = 1 / h;
-    const threshold = settings.restitutionThreshold;
 
     // A contact spring stiffer than a quarter of the sub-step rate would be under-resolved.
     const contactHertz = Math.min(settings.contactHertz, (0.25 * subSteps) / dt);
@@ -255,75 +256,31 @@ export class Solver {
     const joints = this.joints;
     joints.prepare(dt, subSteps, contactHertz, this.awakeCount);
 
-    for (let step = 0; step < subSteps; step++) {
-      integrateVelocities(this.params, this.awakeCount, s, settings, h);
-      refreshCirclePairs(constraints, s);
-      joints.warmStart(s);
-      if (kernel !== null) {
-        kernel.warmStart(
-          memory.offsets[CONSTRAINT_DATA]!,
-          memory.offsets[CONSTRAINT_BODIES]!,
-          memory.offsets[CONSTRAINT_ORDER]!,
-          memory.offsets[STATES]!,
-          constraints.count,
-        );
-      } else warmStartContacts(constraints, s);
-      joints.solve(s, true);
-      if (kernel !== null) {
-        kernel.solve(
-          memory.offsets[CONSTRAINT_DATA]!,
-          memory.offsets[CONSTRAINT_BODIES]!,
-          memory.offsets[CONSTRAINT_ORDER]!,
-          memory.offsets[STATES]!,
-          constraints.count,
-          inverseH,
-          settings.maxContactPushSpeed,
-          threshold,
-          1,
-        );
-      } else solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, true);
-      if (shock.count > 0) {
-        shock.solve(
-          constraints,
-          s,
-          inverseH,
-          shockBiasRate,
-          settings.maxContactPushSpeed,
-          threshold,
-          true,
+    // Many islands whose constraints outgrow the cache run batch by batch (solver-batches.ts);
+    // joints, heavy-on-light sweeps and particle pairs span the whole step's lists, so a step
+    // with any of them runs whole.
+    const batches = this.batches;
+    if (
+      joints.activeCount === 0 &&
+      shock.count === 0 &&
+      constraints.circlePairCount === 0 &&
+      batches.build(constraints.order, constraints.count, constraints.bodies, this.awakeCount)
+    ) {
+      const orderStart = batches.orderStart;
+      const bodyStart = batches.bodyStart;
+      for (let k = 0; k < batches.count; k++) {
+        this.subSteps(
+          settings,
+          h,
+          orderStart[k]!,
+          orderStart[k + 1]!,
+          batches.bodies,
+          bodyStart[k]!,
+          bodyStart[k + 1]!,
         );
       }
-      joints.solveChains(s, true);
-      integratePositions(this.awakeCount, s, h);
-      joints.solveChains(s, false, true);
-      refreshCirclePairs(constraints, s);
-      joints.solve(s, false);
-      if (kernel !== null) {
-        kernel.solve(
-          memory.offsets[CONSTRAINT_DATA]!,
-          memory.offsets[CONSTRAINT_BODIES]!,
-          memory.offsets[CONSTRAINT_ORDER]!,
-          memory.offsets[STATES]!,
-          constraints.count,
-          inverseH,
-          settings.maxContactPushSpeed,
-          threshold,
-          0,
-        );
-      } else
-        solveContacts(constraints, s, inverseH, settings.maxContactPushSpeed, threshold, false);
-      if (shock.count > 0) {
-        shock.solve(
-          constraints,
-          s,
-          inverseH,
-          shockBiasRate,
-          settings.maxContactPushSpeed,
-          threshold,
-          false,
-        );
-      }
-      joints.solveChains(s, false);
+    } else {
+      this.subSteps(settings, h, 0, constraints.count, null, 0, this.awakeCount);
     }
     if (kernel !== null) {
       const o = memory.offsets;
@@ -335,6 +292,88 @@ export class Solver {
       );
     } else storeImpulses(constraints, contactData);
     joints.finish();
+  }
+
+  /**
+   * The sub-steps of a step, for the constraints at positions `from` to `to` of the visiting
+   * order and the awake bodies `bodyList[bodyFrom .. bodyTo)` (with `bodyList` null, the awake
+   * indices bodyFrom .. bodyTo themselves): the whole step, or one batch of islands.
+   */
+  private subSteps(
+    settings: SolverSettings,
+    h: number,
+    from: number,
+    to: number,
+    bodyList: Int32Array | null,
+    bodyFrom: number,
+    bodyTo: number,
+  ): void {
+    const constraints = this.constraints;
+    const memory = this.memory;
+    const kernel = memory.kernel;
+    const s = this.states.data;
+    const joints = this.joints;
+    const shock = this.shock;
+    const shockBiasRate = this.staticSoftness.biasRate;
+    const inverseH = 1 / h;
+    const threshold = settings.restitutionThreshold;
+    const maxPushSpeed = settings.maxContactPushSpeed;
+    const count = to - from;
+    for (let step = 0; step < settings.subSteps; step++) {
+      integrateVelocities(this.params, bodyList, bodyFrom, bodyTo, s, settings, h);
+      refreshCirclePairs(constraints, s);
+      joints.warmStart(s);
+      // Offsets in bytes: the order holds 4-byte indices.
+      const order = memory.offsets[CONSTRAINT_ORDER]! + 4 * from;
+      if (kernel !== null) {
+        kernel.warmStart(
+          memory.offsets[CONSTRAINT_DATA]!,
+          memory.offsets[CONSTRAINT_BODIES]!,
+          order,
+          memory.offsets[STATES]!,
+          count,
+        );
+      } else warmStartContacts(constraints, s, from, to);
+      joints.solve(s, true);
+      if (kernel !== null) {
+        kernel.solve(
+          memory.offsets[CONSTRAINT_DATA]!,
+          memory.offsets[CONSTRAINT_BODIES]!,
+          order,
+          memory.offsets[STATES]!,
+          count,
+          inverseH,
+          maxPushSpeed,
+          threshold,
+          1,
+        );
+      } else solveContacts(constraints, s, from, to, inverseH, maxPushSpeed, threshold, true);
+      if (shock.count > 0) {
+        shock.solve(constraints, s, inverseH, shockBiasRate, maxPushSpeed, threshold, true);
+      }
+      joints.solveChains(s, true);
+      integratePositions(bodyList, bodyFrom, bodyTo, s, h);
+      joints.solveChains(s, false, true);
+      refreshCirclePairs(constraints, s);
+      joints.solve(s, false);
+      if (kernel !== null) {
+        kernel.solve(
+          memory.offsets[CONSTRAINT_DATA]!,
+          memory.offsets[CONSTRAINT_BODIES]!,
+          order,
+          memory.offsets[STATES]!,
+          count,
+          inverseH,
+          maxPushSpeed,
+          threshold,
+          0,
+        );
+      } else solveContacts(constraints, s, from, to, inverseH, maxPushSpeed, threshold, false);
+      if (shock.count > 0) {
+        shock.solve(constraints, s, inverseH, shockBiasRate, maxPushSpeed, threshold, false);
+      }
+      joints.solveChains(s, false);
+    }
   }
 
   /**
@@ -499,11 +538,14 @@ function gatherForces(body: Body, dt: number): void {
 
 /**
  * Semi-implicit Euler, velocity half: v += h (F / m + g), with damping and the thesis's drag
- * applied implicitly (v / (1 + h c)) so that no damping value can reverse a velocity.
+ * applied implicitly (v / (1 + h c)) so that no damping value can reverse a velocity; for the
+ * awake bodies list[from .. to), or from .. to themselves when `list` is null.
  */
 function integrateVelocities(
   params: Float64Array,
-  count: number,
+  list: Int32Array | null,
+  from: number,
+  to: number,
   s: Float64Array,
   settings: SolverSettings,
   h: number,
@@ -515,7 +557,8 @@ function integrateVelocities(
   // rotation of the contact and joint anchors is meaningless, and a joint pulling a tiny body
   // by a long lever could spin it up without bound until it became NaN.
   const maxAngularSpeed = (0.25 * Math.PI) / h;
-  for (let i = 0; i < count; i++) {
+  for (let n = from; n < to; n++) {
+    const i = list === null ? n : list[n]!;
     const q = i * PARAM_STRIDE;
     const invMass = params[q + INV_MASS]!;
     if (invMass === 0) continue; // kinematic: keeps the velocity it was given
@@ -553,9 +596,19 @@ function integrateVelocities(
   }
 }
 
-/** Semi-implicit Euler, position half: x += h v with the velocity just solved. */
-function integratePositions(count: number, s: Float64Array, h: number): void {
-  for (let i = 0; i < count; i++) {
+/**
+ * Semi-implicit Euler, position half: x += h v with the velocity just solved; for the awake
+ * bodies list[from .. to), or from .. to themselves when `list` is null.
+ */
+function integratePositions(
+  list: Int32Array | null,
+  from: number,
+  to: number,
+  s: Float64Array,
+  h: number,
+): void {
+  for (let n = from; n < to; n++) {
+    const i = list === null ? n : list[n]!;
     const k = (i + 1) * STATE_STRIDE;
     const w = s[k + W]!;
     s[k + DP_X] += h * s[k + V_X]!;

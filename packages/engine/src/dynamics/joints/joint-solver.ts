@@ -22,6 +22,10 @@ export class JointSolver {
   /** Joints solved this step (the first `count`). */
   private readonly active: Joint[] = [];
   private count = 0;
+  /** Joints solved this step. */
+  get activeCount(): number {
+    return this.count;
+  }
   private readonly step: JointStep = { h: 0, inverseH: 0, dt: 0, softness: new Softness() };
   /** The exact solve of hinge chains with unlike masses, once a hinge has been solved. */
   chains: PinChains | null = null;
