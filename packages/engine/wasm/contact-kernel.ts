@@ -804,8 +804,15 @@ export function prepare(
 }
 
 /** storeImpulses (contact-solver.ts). */
-export function storeImpulses(cPtr: usize, slotsPtr: usize, dataPtr: usize, count: i32): void {
-  for (let i: i32 = 0; i < count; i++) {
+export function storeImpulses(
+  cPtr: usize,
+  slotsPtr: usize,
+  dataPtr: usize,
+  orderPtr: usize,
+  count: i32,
+): void {
+  for (let n: i32 = 0; n < count; n++) {
+    const i = load<i32>(orderPtr + ((<usize>n) << 2));
     const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
     const m = dataPtr + ((<usize>(load<i32>(slotsPtr + ((<usize>i) << 2)) * CONTACT_STRIDE)) << 3);
     const pointCount = <i32>ld(cb, POINT_COUNT);

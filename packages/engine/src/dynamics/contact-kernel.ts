@@ -45,7 +45,14 @@ export interface ContactKernel {
   /** The last prepare's counts. */
   readonly circlePairCount: { readonly value: number };
   readonly heavyOnLightCount: { readonly value: number };
-  storeImpulses(constraints: number, slots: number, contactData: number, count: number): void;
+  /** Stores the `count` constraints listed from `order` (a byte offset into the order). */
+  storeImpulses(
+    constraints: number,
+    slots: number,
+    contactData: number,
+    order: number,
+    count: number,
+  ): void;
   warmStart(
     constraints: number,
     bodies: number,

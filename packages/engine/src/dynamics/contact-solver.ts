@@ -1021,10 +1021,17 @@ export function solveContacts(
  * Copies the accumulated impulses back to the contacts' slots for warm starting, and the impulses
  * the step delivered (sum over the sub-steps, plus restitution) for events.
  */
-export function storeImpulses(constraints: ContactConstraints, contactData: Float64Array): void {
+export function storeImpulses(
+  constraints: ContactConstraints,
+  contactData: Float64Array,
+  from: number,
+  to: number,
+): void {
   const c = constraints.data;
   const slots = constraints.slots;
-  for (let i = 0; i < constraints.count; i++) {
+  const order = constraints.order;
+  for (let n = from; n < to; n++) {
+    const i = order[n]!;
     const base = i * STRIDE;
     const m = slots[i]! * CONTACT_STRIDE;
     const pointCount = c[base + POINT_COUNT]!;

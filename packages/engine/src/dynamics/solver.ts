@@ -282,22 +282,14 @@ export class Solver {
     } else {
       this.subSteps(settings, h, 0, constraints.count, null, 0, this.awakeCount);
     }
-    if (kernel !== null) {
-      const o = memory.offsets;
-      kernel.storeImpulses(
-        o[CONSTRAINT_DATA]!,
-        o[CONSTRAINT_SLOTS]!,
-        o[CONTACT_DATA]!,
-        constraints.count,
-      );
-    } else storeImpulses(constraints, contactData);
     joints.finish();
   }
 
   /**
    * The sub-steps of a step, for the constraints at positions `from` to `to` of the visiting
    * order and the awake bodies `bodyList[bodyFrom .. bodyTo)` (with `bodyList` null, the awake
-   * indices bodyFrom .. bodyTo themselves): the whole step, or one batch of islands.
+   * indices bodyFrom .. bodyTo themselves): the whole step, or one batch of islands. Then stores
+   * those constraints' impulses in their contacts' slots.
    */
   private subSteps(
     settings: SolverSettings,
@@ -374,6 +366,17 @@ export class Solver {
       }
       joints.solveChains(s, false);
     }
+    // Each constraint's impulses go to its own contact slot: a batch stores its own while they
+    // are still in cache (the order of the stores changes nothing).
+    if (kernel !== null) {
+      kernel.storeImpulses(
+        memory.offsets[CONSTRAINT_DATA]!,
+        memory.offsets[CONSTRAINT_SLOTS]!,
+        memory.offsets[CONTACT_DATA]!,
+        memory.offsets[CONSTRAINT_ORDER]! + 4 * from,
+        count,
+      );
+    } else storeImpulses(constraints, memory.contactData, from, to);
   }
 
   /**
