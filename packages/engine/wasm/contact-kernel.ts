@@ -620,54 +620,84 @@ const MAX_CONDITION_NUMBER: f64 = 1000;
 export let circlePairCount: i32 = 0;
 export let heavyOnLightCount: i32 = 0;
 
-/** prepareContacts (contact-solver.ts); returns the number of constraints. */
-export function prepare(
-  dataPtr: usize,
-  contactBodiesPtr: usize,
-  tablePtr: usize,
-  sPtr: usize,
-  cPtr: usize,
-  bodiesPtr: usize,
-  slotsPtr: usize,
-  circlePairsPtr: usize,
-  contactCount: i32,
-  contactBiasRate: f64,
-  contactMassScale: f64,
-  contactImpulseScale: f64,
-  staticBiasRate: f64,
-  staticMassScale: f64,
-  staticImpulseScale: f64,
-  contactHertz: f64,
-  zeta: f64,
-  h: f64,
-  dt: f64,
-): i32 {
-  circlePairCount = 0;
-  heavyOnLightCount = 0;
-  let i: i32 = 0;
-  for (let slot: i32 = 0; slot < contactCount; slot++) {
+// The per-contact bodies of the preparation, as static members so that AssemblyScript's `@inline`
+// decorates a member, where TypeScript's grammar (and so Prettier) allows a decorator.
+// eslint-disable-next-line @typescript-eslint/no-extraneous-class
+class Preparation {
+  /**
+   * Whether contact `slot` becomes constraint `i` (it has points and a moving body); if so,
+   * records the constraint's slot and state offsets and counts it as a circle pair (listing it)
+   * or a heavy-on-light pair.
+   */
+  @inline
+  static classify(
+    slot: i32,
+    i: i32,
+    dataPtr: usize,
+    contactBodiesPtr: usize,
+    tablePtr: usize,
+    bodiesPtr: usize,
+    slotsPtr: usize,
+    circlePairsPtr: usize,
+  ): bool {
     const m = dataPtr + ((<usize>(slot * CONTACT_STRIDE)) << 3);
-    const pointCount = ld(m, C_POINT_COUNT);
-    if (pointCount == 0) continue;
+    if (ld(m, C_POINT_COUNT) == 0) return false;
     const tA =
       tablePtr +
       ((<usize>(load<i32>(contactBodiesPtr + ((<usize>slot) << 3)) * TABLE_STRIDE)) << 3);
     const tB =
       tablePtr +
       ((<usize>(load<i32>(contactBodiesPtr + ((<usize>slot) << 3), 4) * TABLE_STRIDE)) << 3);
-    const indexA = <i32>ld(tA, TABLE_SLOT);
-    const indexB = <i32>ld(tB, TABLE_SLOT);
     const mA = ld(tA, TABLE_INV_MASS);
     const mB = ld(tB, TABLE_INV_MASS);
-    if (mA == 0 && mB == 0) continue;
+    if (mA == 0 && mB == 0) return false;
+    store<i32>(slotsPtr + ((<usize>i) << 2), slot);
+    store<i32>(bodiesPtr + ((<usize>i) << 3), <i32>ld(tA, TABLE_SLOT) * STATE_STRIDE);
+    store<i32>(bodiesPtr + ((<usize>i) << 3), <i32>ld(tB, TABLE_SLOT) * STATE_STRIDE, 4);
+    if (mA != 0 && mB != 0 && (mA > mB ? mA / mB : mB / mA) > 2) heavyOnLightCount++;
+    if (ld(m, C_RADIUS_A) > 0 && ld(m, C_RADIUS_B) > 0) {
+      store<i32>(circlePairsPtr + ((<usize>circlePairCount) << 2), i);
+      circlePairCount++;
+    }
+    return true;
+  }
+
+  /** Fills constraint `i` from contact `slot` (classified before); a call, not inlined, to keep the module small. */
+  static fill(
+    slot: i32,
+    i: i32,
+    dataPtr: usize,
+    contactBodiesPtr: usize,
+    tablePtr: usize,
+    sPtr: usize,
+    cPtr: usize,
+    bodiesPtr: usize,
+    contactBiasRate: f64,
+    contactMassScale: f64,
+    contactImpulseScale: f64,
+    staticBiasRate: f64,
+    staticMassScale: f64,
+    staticImpulseScale: f64,
+    contactHertz: f64,
+    zeta: f64,
+    h: f64,
+    dt: f64,
+  ): void {
+    const m = dataPtr + ((<usize>(slot * CONTACT_STRIDE)) << 3);
+    const pointCount = ld(m, C_POINT_COUNT);
+    const tA =
+      tablePtr +
+      ((<usize>(load<i32>(contactBodiesPtr + ((<usize>slot) << 3)) * TABLE_STRIDE)) << 3);
+    const tB =
+      tablePtr +
+      ((<usize>(load<i32>(contactBodiesPtr + ((<usize>slot) << 3), 4) * TABLE_STRIDE)) << 3);
+    const mA = ld(tA, TABLE_INV_MASS);
+    const mB = ld(tB, TABLE_INV_MASS);
     const iA = ld(tA, TABLE_INV_I);
     const iB = ld(tB, TABLE_INV_I);
-    store<i32>(slotsPtr + ((<usize>i) << 2), slot);
     const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
-    const a = indexA * STATE_STRIDE;
-    const b = indexB * STATE_STRIDE;
-    store<i32>(bodiesPtr + ((<usize>i) << 3), a);
-    store<i32>(bodiesPtr + ((<usize>i) << 3), b, 4);
+    const a = load<i32>(bodiesPtr + ((<usize>i) << 3));
+    const b = load<i32>(bodiesPtr + ((<usize>i) << 3), 4);
     const immovable = mA == 0 || mB == 0;
     const nx = ld(m, C_NORMAL_X);
     const ny = ld(m, C_NORMAL_Y);
@@ -685,7 +715,6 @@ export function prepare(
     if (!immovable) {
       const ratio = mA > mB ? mA / mB : mB / mA;
       if (ratio > 2) {
-        heavyOnLightCount++;
         // Softness.setForMassRatio, then Softness.set (softness.ts).
         const hertz = Math.min(contactHertz * Math.sqrt(ratio), 0.25 / h);
         const omega = 2 * Math.PI * hertz;
@@ -726,10 +755,6 @@ export function prepare(
       const total = mA + mB;
       st(cb, SHIFT_WEIGHT_A, mA / total);
       st(cb, SHIFT_WEIGHT_B, mB / total);
-    }
-    if (radiusA > 0 && radiusB > 0) {
-      store<i32>(circlePairsPtr + ((<usize>circlePairCount) << 2), i);
-      circlePairCount++;
     }
     const tx = ny;
     const ty = -nx;
@@ -798,9 +823,155 @@ export function prepare(
         st(cb, BLOCK, 1);
       }
     }
+  }
+}
+
+/** prepareContacts (contact-solver.ts); returns the number of constraints. */
+export function prepare(
+  dataPtr: usize,
+  contactBodiesPtr: usize,
+  tablePtr: usize,
+  sPtr: usize,
+  cPtr: usize,
+  bodiesPtr: usize,
+  slotsPtr: usize,
+  circlePairsPtr: usize,
+  contactCount: i32,
+  contactBiasRate: f64,
+  contactMassScale: f64,
+  contactImpulseScale: f64,
+  staticBiasRate: f64,
+  staticMassScale: f64,
+  staticImpulseScale: f64,
+  contactHertz: f64,
+  zeta: f64,
+  h: f64,
+  dt: f64,
+): i32 {
+  circlePairCount = 0;
+  heavyOnLightCount = 0;
+  let i: i32 = 0;
+  for (let slot: i32 = 0; slot < contactCount; slot++) {
+    if (
+      !Preparation.classify(
+        slot,
+        i,
+        dataPtr,
+        contactBodiesPtr,
+        tablePtr,
+        bodiesPtr,
+        slotsPtr,
+        circlePairsPtr,
+      )
+    ) {
+      continue;
+    }
+    Preparation.fill(
+      slot,
+      i,
+      dataPtr,
+      contactBodiesPtr,
+      tablePtr,
+      sPtr,
+      cPtr,
+      bodiesPtr,
+      contactBiasRate,
+      contactMassScale,
+      contactImpulseScale,
+      staticBiasRate,
+      staticMassScale,
+      staticImpulseScale,
+      contactHertz,
+      zeta,
+      h,
+      dt,
+    );
     i++;
   }
   return i;
+}
+
+/**
+ * The first half of {@link prepare}: which contacts become constraints, their slots, state
+ * offsets and counts, without filling them; {@link prepareListed} fills them later (a batch of
+ * islands at a time, solver-batches.ts). Returns the number of constraints.
+ */
+export function classify(
+  dataPtr: usize,
+  contactBodiesPtr: usize,
+  tablePtr: usize,
+  bodiesPtr: usize,
+  slotsPtr: usize,
+  circlePairsPtr: usize,
+  contactCount: i32,
+): i32 {
+  circlePairCount = 0;
+  heavyOnLightCount = 0;
+  let i: i32 = 0;
+  for (let slot: i32 = 0; slot < contactCount; slot++) {
+    if (
+      Preparation.classify(
+        slot,
+        i,
+        dataPtr,
+        contactBodiesPtr,
+        tablePtr,
+        bodiesPtr,
+        slotsPtr,
+        circlePairsPtr,
+      )
+    ) {
+      i++;
+    }
+  }
+  return i;
+}
+
+/** The second half of {@link prepare} for the `count` constraints listed from `orderPtr`. */
+export function prepareListed(
+  dataPtr: usize,
+  contactBodiesPtr: usize,
+  tablePtr: usize,
+  sPtr: usize,
+  cPtr: usize,
+  bodiesPtr: usize,
+  slotsPtr: usize,
+  orderPtr: usize,
+  count: i32,
+  contactBiasRate: f64,
+  contactMassScale: f64,
+  contactImpulseScale: f64,
+  staticBiasRate: f64,
+  staticMassScale: f64,
+  staticImpulseScale: f64,
+  contactHertz: f64,
+  zeta: f64,
+  h: f64,
+  dt: f64,
+): void {
+  for (let n: i32 = 0; n < count; n++) {
+    const i = load<i32>(orderPtr + ((<usize>n) << 2));
+    Preparation.fill(
+      load<i32>(slotsPtr + ((<usize>i) << 2)),
+      i,
+      dataPtr,
+      contactBodiesPtr,
+      tablePtr,
+      sPtr,
+      cPtr,
+      bodiesPtr,
+      contactBiasRate,
+      contactMassScale,
+      contactImpulseScale,
+      staticBiasRate,
+      staticMassScale,
+      staticImpulseScale,
+      contactHertz,
+      zeta,
+      h,
+      dt,
+    );
+  }
 }
 
 /** storeImpulses (contact-solver.ts). */

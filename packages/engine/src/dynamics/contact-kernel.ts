@@ -42,7 +42,42 @@ export interface ContactKernel {
     h: number,
     dt: number,
   ): number;
-  /** The last prepare's counts. */
+  /**
+   * prepare's first half: which contacts become constraints (their slots, state offsets, the
+   * circle-pair list and the counts below), without filling them. Returns their number.
+   */
+  classify(
+    contactData: number,
+    contactBodies: number,
+    table: number,
+    bodies: number,
+    slots: number,
+    circlePairs: number,
+    contactCount: number,
+  ): number;
+  /** prepare's second half, for the `count` classified constraints listed from `order`. */
+  prepareListed(
+    contactData: number,
+    contactBodies: number,
+    table: number,
+    states: number,
+    constraints: number,
+    bodies: number,
+    slots: number,
+    order: number,
+    count: number,
+    contactBiasRate: number,
+    contactMassScale: number,
+    contactImpulseScale: number,
+    staticBiasRate: number,
+    staticMassScale: number,
+    staticImpulseScale: number,
+    contactHertz: number,
+    zeta: number,
+    h: number,
+    dt: number,
+  ): void;
+  /** The last prepare's or classify's counts. */
   readonly circlePairCount: { readonly value: number };
   readonly heavyOnLightCount: { readonly value: number };
   /** Stores the `count` constraints listed from `order` (a byte offset into the order). */

@@ -48,6 +48,21 @@ export class SolverBatches {
   private skip = 0;
 
   /**
+   * Whether a step of up to `contacts` constraints may be batched, asked once per step before
+   * {@link build}. Islands change slowly: after a build found one island holding most
+   * constraints (one big pile), this says no for RETRY_STEPS steps, since finding the islands
+   * costs ~2 % of such a step. Whether a step is batched never changes its result.
+   */
+  wants(contacts: number): boolean {
+    if (contacts < batchSettings.minConstraints) return false;
+    if (this.skip > 0) {
+      this.skip--;
+      return false;
+    }
+    return true;
+  }
+
+  /**
    * Groups the first `count` constraints of `order` into batches of whole islands and rewrites
    * `order` so that each batch's constraints are together, in their original relative order.
    * `constraintBodies` holds each constraint's two state offsets (slot * STATE_STRIDE, 0 for a
@@ -62,13 +77,6 @@ export class SolverBatches {
   ): boolean {
     this.count = 0;
     if (count < batchSettings.minConstraints || count < 2) return false;
-    // Islands change slowly: after finding one island holding most constraints (one big pile),
-    // look again only every RETRY_STEPS steps, since finding the islands costs ~2 % of such a
-    // step. Whether a step is batched never changes its result.
-    if (this.skip > 0) {
-      this.skip--;
-      return false;
-    }
     this.reserve(awakeCount, count);
     const parent = this.parent;
     const size = this.size;

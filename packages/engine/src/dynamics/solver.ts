@@ -203,31 +203,53 @@ export class Solver {
     this.contactSoftness.set(contactHertz, settings.contactDampingRatio, h);
     this.staticSoftness.set(2 * contactHertz, settings.contactDampingRatio, h);
     const kernel = memory.kernel;
+    // Joints first (they do not depend on the contacts): whether the step may run in batches of
+    // islands decides how the contacts are prepared.
+    const joints = this.joints;
+    joints.prepare(dt, subSteps, contactHertz, this.awakeCount);
+    const batches = this.batches;
+    const batchable = joints.activeCount === 0 && batches.wants(contactCount);
+    // With the kernel and batches in view, contacts are only classified here and each batch
+    // fills its constraints just before its sub-steps, while they stay in cache.
+    let filled = true;
     if (kernel !== null) {
       const o = memory.offsets;
-      const soft = this.contactSoftness;
-      const hard = this.staticSoftness;
-      constraints.count = kernel.prepare(
-        o[CONTACT_DATA]!,
-        o[CONTACT_BODIES]!,
-        o[BODY_TABLE]!,
-        o[STATES]!,
-        o[CONSTRAINT_DATA]!,
-        o[CONSTRAINT_BODIES]!,
-        o[CONSTRAINT_SLOTS]!,
-        o[CIRCLE_PAIRS]!,
-        contactCount,
-        soft.biasRate,
-        soft.massScale,
-        soft.impulseScale,
-        hard.biasRate,
-        hard.massScale,
-        hard.impulseScale,
-        soft.hertz,
-        soft.zeta,
-        soft.h,
-        dt,
-      );
+      if (batchable) {
+        constraints.count = kernel.classify(
+          o[CONTACT_DATA]!,
+          o[CONTACT_BODIES]!,
+          o[BODY_TABLE]!,
+          o[CONSTRAINT_BODIES]!,
+          o[CONSTRAINT_SLOTS]!,
+          o[CIRCLE_PAIRS]!,
+          contactCount,
+        );
+        filled = false;
+      } else {
+        const soft = this.contactSoftness;
+        const hard = this.staticSoftness;
+        constraints.count = kernel.prepare(
+          o[CONTACT_DATA]!,
+          o[CONTACT_BODIES]!,
+          o[BODY_TABLE]!,
+          o[STATES]!,
+          o[CONSTRAINT_DATA]!,
+          o[CONSTRAINT_BODIES]!,
+          o[CONSTRAINT_SLOTS]!,
+          o[CIRCLE_PAIRS]!,
+          contactCount,
+          soft.biasRate,
+          soft.massScale,
+          soft.impulseScale,
+          hard.biasRate,
+          hard.massScale,
+          hard.impulseScale,
+          soft.hertz,
+          soft.zeta,
+          soft.h,
+          dt,
+        );
+      }
       constraints.circlePairCount = kernel.circlePairCount.value;
       constraints.heavyOnLightCount = kernel.heavyOnLightCount.value;
     } else {
@@ -245,23 +267,24 @@ export class Solver {
     }
     scrambleOrder(constraints.order, constraints.count);
     const shock = this.shock;
-    const shockBiasRate = this.staticSoftness.biasRate;
+    // The heavy-on-light sweep reads the prepared constraints.
+    if (!filled && constraints.heavyOnLightCount > 0) {
+      this.fill(0, constraints.count, dt);
+      filled = true;
+    }
     shock.prepare(
       constraints,
       this.awakeCount,
-      shockBiasRate,
+      this.staticSoftness.biasRate,
       settings.gravityX,
       settings.gravityY,
     );
-    const joints = this.joints;
-    joints.prepare(dt, subSteps, contactHertz, this.awakeCount);
 
     // Many islands whose constraints outgrow the cache run batch by batch (solver-batches.ts);
     // joints, heavy-on-light sweeps and particle pairs span the whole step's lists, so a step
     // with any of them runs whole.
-    const batches = this.batches;
     if (
-      joints.activeCount === 0 &&
+      batchable &&
       shock.count === 0 &&
       constraints.circlePairCount === 0 &&
       batches.build(constraints.order, constraints.count, constraints.bodies, this.awakeCount)
@@ -269,6 +292,7 @@ export class Solver {
       const orderStart = batches.orderStart;
       const bodyStart = batches.bodyStart;
       for (let k = 0; k < batches.count; k++) {
+        if (!filled) this.fill(orderStart[k]!, orderStart[k + 1]!, dt);
         this.subSteps(
           settings,
           h,
@@ -280,9 +304,41 @@ export class Solver {
         );
       }
     } else {
+      if (!filled) this.fill(0, constraints.count, dt);
       this.subSteps(settings, h, 0, constraints.count, null, 0, this.awakeCount);
     }
     joints.finish();
+  }
+
+  /**
+   * Fills the classified constraints at positions `from` to `to` of the visiting order (the
+   * WebAssembly kernel's prepare, second half); each depends only on its own contact.
+   */
+  private fill(from: number, to: number, dt: number): void {
+    const o = this.memory.offsets;
+    const soft = this.contactSoftness;
+    const hard = this.staticSoftness;
+    this.memory.kernel!.prepareListed(
+      o[CONTACT_DATA]!,
+      o[CONTACT_BODIES]!,
+      o[BODY_TABLE]!,
+      o[STATES]!,
+      o[CONSTRAINT_DATA]!,
+      o[CONSTRAINT_BODIES]!,
+      o[CONSTRAINT_SLOTS]!,
+      o[CONSTRAINT_ORDER]! + 4 * from,
+      to - from,
+      soft.biasRate,
+      soft.massScale,
+      soft.impulseScale,
+      hard.biasRate,
+      hard.massScale,
+      hard.impulseScale,
+      soft.hertz,
+      soft.zeta,
+      soft.h,
+      dt,
+    );
   }
 
   /**
