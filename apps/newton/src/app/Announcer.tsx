@@ -1,12 +1,5 @@
 import { Box } from '@mui/material';
-import {
-  useCallback,
-  useEffect,
-  useLayoutEffect,
-  useRef,
-  useState,
-  type ReactElement,
-} from 'react';
+import { useCallback, useEffect, useRef, useState, type ReactElement } from 'react';
 import { playEventTone } from './sound.ts';
 
 /** Shortest time between two announcements (ms): a screen reader finishes a short sentence. */
@@ -71,9 +64,12 @@ export function useAnnouncer(name: string): {
     [pump],
   );
 
-  // The gap counts from when the text reached the page (a busy frame delays the commit): a
-  // layout effect runs in the commit itself, before the timer can fire.
-  useLayoutEffect(() => {
+  // The gap counts from when the text reached the page (a busy frame delays the commit), and
+  // from after the whole commit: a passive effect runs once the commit's task is over, so after
+  // a screen reader (or a MutationObserver) has seen the change. A layout effect ran inside the
+  // commit, and a long commit then shortened the next gap as the page showed it (1,362 ms
+  // between two texts in a loaded CI run).
+  useEffect(() => {
     if (text === '') return;
     state.current.lastAt = performance.now();
     state.current.pending = false;
