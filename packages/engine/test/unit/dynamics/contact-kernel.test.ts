@@ -4,6 +4,7 @@ import type { Body } from '@physical/engine';
 import { kernelSettings } from '../../../src/dynamics/solver-memory.ts';
 import { CONTACT_KERNEL_HEX } from '../../../src/dynamics/contact-kernel-binary.ts';
 import { compileContactKernel } from '../../../scripts/contact-kernel-build.ts';
+import { bodyStates, differingBits } from './body-states.ts';
 
 // The WebAssembly contact kernel (wasm/contact-kernel.ts) is a port of contact-solver.ts' passes
 // with the same operations in the same order: a world must come out bit for bit the same whichever
@@ -47,29 +48,14 @@ function run(minConstraints: number, steps: number): { states: Float64Array; use
   kernelSettings.minConstraints = minConstraints;
   const { world, bodies } = build();
   for (let i = 0; i < steps; i++) world.step(1 / 60);
-  const states = new Float64Array(bodies.length * 6);
-  bodies.forEach((b, i) => {
-    states.set(
-      [
-        b.position.x,
-        b.position.y,
-        b.angle,
-        b.linearVelocity.x,
-        b.linearVelocity.y,
-        b.angularVelocity,
-      ],
-      i * 6,
-    );
-  });
+  const states = bodyStates(bodies);
   const solver = (world as unknown as { solver: { memory: { kernel: unknown } } }).solver;
   return { states, usedKernel: solver.memory.kernel !== null };
 }
 
 function expectBitwiseEqual(a: Float64Array, b: Float64Array): void {
   expect(a.length).toBe(b.length);
-  let differing = 0;
-  for (let i = 0; i < a.length; i++) if (!Object.is(a[i], b[i])) differing++;
-  expect(differing).toBe(0);
+  expect(differingBits(a, b)).toBe(0);
 }
 
 describe('the WebAssembly contact kernel', () => {

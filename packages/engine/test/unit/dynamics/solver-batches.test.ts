@@ -4,6 +4,7 @@ import type { Body } from '@physical/engine';
 import { STATE_STRIDE } from '../../../src/dynamics/body-state.ts';
 import { batchSettings, SolverBatches } from '../../../src/dynamics/solver-batches.ts';
 import { kernelSettings } from '../../../src/dynamics/solver-memory.ts';
+import { bodyStates, differingBits } from './body-states.ts';
 
 // Batches of islands (solver-batches.ts) must change when a constraint is solved, never what
 // comes out: a world solved batch by batch is bit for bit the world solved whole.
@@ -64,25 +65,8 @@ function run(steps: number): Run {
     world.step(1 / 60);
     mostBatches = Math.max(mostBatches, solver.batches.count);
   }
-  const states = new Float64Array(bodies.length * 6);
-  bodies.forEach((b, i) => {
-    const values = [
-      b.position.x,
-      b.position.y,
-      b.angle,
-      b.linearVelocity.x,
-      b.linearVelocity.y,
-      b.angularVelocity,
-    ];
-    states.set(values, i * 6);
-  });
+  const states = bodyStates(bodies);
   return { states, mostBatches };
-}
-
-function differing(a: Float64Array, b: Float64Array): number {
-  let count = 0;
-  for (let i = 0; i < a.length; i++) if (!Object.is(a[i], b[i])) count++;
-  return count;
 }
 
 describe('solving a step in batches of islands', () => {
@@ -97,7 +81,7 @@ describe('solving a step in batches of islands', () => {
       expect(whole.mostBatches).toBe(0);
       // Eight piles, the paddle joining two of them for a while: several batches.
       expect(batched.mostBatches).toBeGreaterThanOrEqual(4);
-      expect(differing(whole.states, batched.states)).toBe(0);
+      expect(differingBits(whole.states, batched.states)).toBe(0);
     });
   }
 });
