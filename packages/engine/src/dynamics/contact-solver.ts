@@ -40,6 +40,7 @@ import {
 import type { SolverMemory } from './solver-memory.ts';
 import { LINEAR_SLOP } from '../core/constants.ts';
 import { Softness } from './softness.ts';
+import { hypot } from '../math/hypot.ts';
 
 // Scratch for a heavy/light pair's softness (prepare), so the hot path allocates nothing.
 const pairSoftness = new Softness();
@@ -1109,7 +1110,7 @@ export class ShockPropagation {
     gravityY: number,
   ): void {
     this.count = 0;
-    const gravity = Math.hypot(gravityX, gravityY);
+    const gravity = hypot(gravityX, gravityY);
     if (constraints.heavyOnLightCount === 0 || gravity === 0) return;
     const count = constraints.count;
     const c = constraints.data;
