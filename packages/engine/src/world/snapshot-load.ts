@@ -6,6 +6,8 @@ import {
   CONTACT_STRIDE,
   FRICTION,
   HAS_CACHE,
+  NORMAL_X,
+  NORMAL_Y,
   POINT_COUNT,
   RESTITUTION,
 } from '../dynamics/contact-data.ts';
@@ -28,6 +30,8 @@ import {
   obj,
   positive,
   ranged,
+  SAVED_COORDINATE,
+  SAVED_IMPULSE,
 } from './snapshot-values.ts';
 
 // Loading a snapshot into a new, empty world: every section read and checked, then every
@@ -42,9 +46,15 @@ function readTree(path: string, v: unknown): TreeState {
     root: int(`${path}.root`, field(o, path, 'root'), -1, 1 << 26),
     freeList: int(`${path}.freeList`, field(o, path, 'freeList'), -1, 1 << 26),
     leafCount: int(`${path}.leafCount`, field(o, path, 'leafCount'), 0, 1 << 26),
-    boxes: arr(`${path}.boxes`, field(o, path, 'boxes')).map((x, i) =>
-      num(`${path}.boxes[${i}]`, x),
-    ),
+    // Free nodes may hold anything the tree left there, infinities included; a live box is
+    // within the saved coordinate range.
+    boxes: arr(`${path}.boxes`, field(o, path, 'boxes')).map((x, i) => {
+      const value = num(`${path}.boxes[${i}]`, x);
+      if (Number.isFinite(value) && Math.abs(value) > SAVED_COORDINATE) {
+        fail(`${path}.boxes[${i}]`, `must be within ${SAVED_COORDINATE} m, got ${value}.`);
+      }
+      return value;
+    }),
     child1: ints('child1'),
     child2: ints('child2'),
     parent: ints('parent'),
@@ -102,18 +112,19 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
   // Bodies and shapes.
   const bodyEntries = arr('bodies', field(root, '', 'bodies'));
   const shapes: (Shape | null)[] = new Array<Shape | null>(slots).fill(null);
-  const bodyIds = new Set<number>();
   const contactLists: number[][] = [];
   bodyEntries.forEach((entry, i) => {
     const path = `bodies[${i}]`;
     const { body, contacts } = readBody(path, obj(path, entry));
-    if (body.id >= w.nextBodyId || bodyIds.has(body.id)) {
+    // Bodies join at the end of the list with the next id and leave by splice, so the ids of a
+    // world's bodies ascend: entries out of order (two swapped) are not a world's.
+    const previous = i > 0 ? w.bodies[i - 1]!.id : -1;
+    if (body.id >= w.nextBodyId || body.id <= previous) {
       fail(
         `${path}.id`,
-        `must be unique and below world.nextBodyId (${w.nextBodyId}), got ${body.id}.`,
+        `must be above the previous body's id (${previous}) and below world.nextBodyId (${w.nextBodyId}), got ${body.id}.`,
       );
     }
-    bodyIds.add(body.id);
     body.shapeList.forEach((shape, j) => {
       if (shape.id >= slots || shapes[shape.id] !== null) {
         fail(
@@ -205,16 +216,10 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
     const b = shapes[ids[1]!] ?? null;
     if (a === null || b === null)
       fail(`${path}.shapes`, `refers to a shape that does not exist (${ids.join(', ')}).`);
-    if (
-      a.body === b.body ||
-      a.sensor ||
-      b.sensor ||
-      (a.body.type !== 'dynamic' && b.body.type !== 'dynamic')
-    ) {
-      fail(
-        `${path}.shapes`,
-        'must be two non-sensor shapes of different bodies, one of them dynamic.',
-      );
+    // Both bodies may be non-dynamic: a body the app made static by writing `body.type` keeps
+    // its contacts until they end.
+    if (a.body === b.body || a.sensor || b.sensor) {
+      fail(`${path}.shapes`, 'must be two non-sensor shapes of different bodies.');
     }
     const joint = jointBetween.get(pairKey(a.body.worldIndex, b.body.worldIndex));
     if (joint !== undefined) {
@@ -247,6 +252,16 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
     }
     if (values[FRICTION]! < 0 || values[RESTITUTION]! < 0) {
       fail(`${path}.data`, 'has a negative friction or restitution.');
+    }
+    values.forEach((x, k) => {
+      if (Math.abs(x) > SAVED_IMPULSE) {
+        fail(`${path}.data[${k}]`, `must be at most ${SAVED_IMPULSE} in size, got ${x}.`);
+      }
+    });
+    // The narrow phase writes a unit normal with every manifold point.
+    const normal = Math.sqrt(values[NORMAL_X]! ** 2 + values[NORMAL_Y]! ** 2);
+    if (values[POINT_COUNT]! > 0 && !(Math.abs(normal - 1) <= 1e-6)) {
+      fail(`${path}.data[${NORMAL_X}]`, `must hold a unit normal, got one of length ${normal}.`);
     }
     w.contactManager.slots.data.set(values, contact.index * CONTACT_STRIDE);
     contacts.push(contact);

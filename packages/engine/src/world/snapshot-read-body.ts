@@ -1,6 +1,6 @@
 import { PhysicalError } from '../core/errors.ts';
 import { Body, type BodyType } from '../dynamics/body.ts';
-import type { Duration } from '../dynamics/force.ts';
+import { Force, type Duration } from '../dynamics/force.ts';
 import { CONVEX_PART, type Shape, type ShapeOptions } from '../dynamics/shape.ts';
 import {
   MAX_ACCELERATION,
@@ -27,11 +27,17 @@ import {
   finites,
   int,
   MAX_ID,
-  nonNegative,
   num,
   obj,
   positive,
   ranged,
+  bounded,
+  SAVED_ANGLE,
+  SAVED_ANGULAR_SPEED,
+  SAVED_COORDINATE,
+  SAVED_DURATION,
+  SAVED_IMPULSE,
+  SAVED_SPEED,
   type Obj,
 } from './snapshot-values.ts';
 import type { ResolvedWorldOptions } from './world-options.ts';
@@ -40,7 +46,6 @@ import type { ResolvedWorldOptions } from './world-options.ts';
 // as the factories and setters check it, each PhysicalError naming its field.
 
 const BODY_TYPES: readonly BodyType[] = ['static', 'kinematic', 'dynamic'];
-const PROXY_TYPE: Record<BodyType, number> = { static: 0, kinematic: 1, dynamic: 2 };
 
 /** @internal The world settings a snapshot holds. */
 export function readSettings(s: Obj): ResolvedWorldOptions {
@@ -193,7 +198,8 @@ function readBox(
   v: unknown,
   box: { set(a: number, b: number, c: number, d: number): unknown },
 ): void {
-  const b = finites(path, v, 4);
+  const b = bounded(path, v, 4, SAVED_COORDINATE);
+  if (b[0]! > b[2]! || b[1]! > b[3]!) fail(path, 'must hold minX, minY, maxX, maxY in order.');
   box.set(b[0]!, b[1]!, b[2]!, b[3]!);
 }
 
@@ -258,15 +264,17 @@ export function readBody(path: string, o: Obj): { body: Body; contacts: number[]
     readBox(`${b.sp}.fatAABB`, field(b.so, b.sp, 'fatAABB'), shape.fatAABB);
     shape.id = int(`${b.sp}.id`, field(b.so, b.sp, 'id'), 0, MAX_ID);
     shape.proxyKey = int(`${b.sp}.proxyKey`, field(b.so, b.sp, 'proxyKey'), 0, 0x7fffffff);
-    if ((shape.proxyKey & 3) !== PROXY_TYPE[type]) {
-      fail(`${b.sp}.proxyKey`, `does not belong to a ${type} body's tree.`);
-    }
+    // The key names the tree (its low two bits, 3 is none); a body whose type the app wrote
+    // keeps its proxies in the tree of its old type, so any tree is taken.
+    if ((shape.proxyKey & 3) === 3) fail(`${b.sp}.proxyKey`, 'names no tree.');
   });
   // The mass was computed from the shapes again (the same arithmetic); polygons may have been
   // rewritten with their exact numbers just now, so compute it once more from those.
   body.updateMassData();
 
   const xf = finites(`${path}.transform`, field(o, path, 'transform'), 4);
+  ranged(`${path}.transform[0]`, xf[0], -SAVED_COORDINATE, SAVED_COORDINATE);
+  ranged(`${path}.transform[1]`, xf[1], -SAVED_COORDINATE, SAVED_COORDINATE);
   // The saved cosine and sine are used as they are (the solver integrates them), so they must
   // be a rotation: a unit vector, within what integration and normalization leave.
   if (Math.abs(xf[2]! * xf[2]! + xf[3]! * xf[3]! - 1) > 1e-6) {
@@ -279,19 +287,25 @@ export function readBody(path: string, o: Obj): { body: Body; contacts: number[]
   body.transform.y = xf[1]!;
   body.transform.c = xf[2]!;
   body.transform.s = xf[3]!;
-  body.angleValue = finite(`${path}.angle`, field(o, path, 'angle'));
-  const center = finites(`${path}.center`, field(o, path, 'center'), 2);
+  body.angleValue = ranged(`${path}.angle`, field(o, path, 'angle'), -SAVED_ANGLE, SAVED_ANGLE);
+  const center = bounded(`${path}.center`, field(o, path, 'center'), 2, SAVED_COORDINATE);
   body.centerX = center[0]!;
   body.centerY = center[1]!;
   const start = finites(`${path}.start`, field(o, path, 'start'), 3);
+  ranged(`${path}.start[0]`, start[0], -SAVED_COORDINATE, SAVED_COORDINATE);
+  ranged(`${path}.start[1]`, start[1], -SAVED_COORDINATE, SAVED_COORDINATE);
+  ranged(`${path}.start[2]`, start[2], -SAVED_ANGLE, SAVED_ANGLE);
   body.center0X = start[0]!;
   body.center0Y = start[1]!;
   body.angle0 = start[2]!;
   const velocity = finites(`${path}.velocity`, field(o, path, 'velocity'), 3);
+  ranged(`${path}.velocity[0]`, velocity[0], -SAVED_SPEED, SAVED_SPEED);
+  ranged(`${path}.velocity[1]`, velocity[1], -SAVED_SPEED, SAVED_SPEED);
+  ranged(`${path}.velocity[2]`, velocity[2], -SAVED_ANGULAR_SPEED, SAVED_ANGULAR_SPEED);
   body.velocityX = velocity[0]!;
   body.velocityY = velocity[1]!;
   body.angularVelocityValue = velocity[2]!;
-  const applied = finites(`${path}.applied`, field(o, path, 'applied'), 3);
+  const applied = bounded(`${path}.applied`, field(o, path, 'applied'), 3, SAVED_IMPULSE);
   body.forceX = applied[0]!;
   body.forceY = applied[1]!;
   body.torqueValue = applied[2]!;
@@ -324,9 +338,9 @@ export function readBody(path: string, o: Obj): { body: Body; contacts: number[]
     Number.MAX_SAFE_INTEGER,
   );
 
+  // A body the app made static or kinematic by writing `body.type` keeps its forces (unused):
+  // the snapshot takes every state the API can make, so the world's own snapshot restores.
   const forces = arr(`${path}.forces`, field(o, path, 'forces'));
-  if (forces.length > 0 && type !== 'dynamic')
-    fail(`${path}.forces`, `must be empty on a ${type} body.`);
   forces.forEach((f, i) => {
     const fp = `${path}.forces[${i}]`;
     const fo = obj(fp, f);
@@ -339,21 +353,24 @@ export function readBody(path: string, o: Obj): { body: Body; contacts: number[]
     if (durationValue === 'constant' || durationValue === 'instant') duration = durationValue;
     else duration = ranged(`${fp}.duration`, durationValue, Number.MIN_VALUE, MAX_DURATION);
     const remaining = num(`${fp}.remaining`, field(fo, fp, 'remaining'));
-    if (remaining !== Infinity && !Number.isFinite(remaining))
-      fail(`${fp}.remaining`, 'must be finite or Infinity.');
+    if (remaining !== Infinity && !(Math.abs(remaining) <= MAX_DURATION))
+      fail(`${fp}.remaining`, `must be Infinity or from -1 to ${MAX_DURATION}, got ${remaining}.`);
     const point = field(fo, fp, 'point');
     if (remaining !== Infinity && remaining < 0 && (duration !== 'instant' || remaining !== -1))
       fail(
         `${fp}.remaining`,
         `must be zero or more (or -1 for an instant force), got ${remaining}.`,
       );
-    const force = body.applyForce({ x: 0, y: 0 }, { duration });
+    const force = new Force(0, 0, 0, duration);
+    // Body.applyForce refuses non-dynamic bodies; a restored body takes its saved forces as they
+    // were (attachForce is what applyForce ends with).
+    (body as unknown as { attachForce(f: Force): void }).attachForce(force);
     force.xValue = vector[0]!;
     force.yValue = vector[1]!;
     force.torqueValue = torque;
     force.remainingValue = remaining;
     if (point !== null) {
-      const local = finites(`${fp}.point`, point, 2);
+      const local = bounded(`${fp}.point`, point, 2, SAVED_COORDINATE);
       force.localPointX = local[0]!;
       force.localPointY = local[1]!;
       force.hasPoint = true;
@@ -361,8 +378,7 @@ export function readBody(path: string, o: Obj): { body: Body; contacts: number[]
   });
   // Set after the forces: attaching a force wakes the body.
   body.awake = bool(`${path}.awake`, field(o, path, 'awake'));
-  if (type === 'static' && body.awake) fail(`${path}.awake`, 'must be false on a static body.');
-  body.sleepTime = nonNegative(`${path}.sleepTime`, field(o, path, 'sleepTime'));
+  body.sleepTime = ranged(`${path}.sleepTime`, field(o, path, 'sleepTime'), 0, SAVED_DURATION);
   const contacts = arr(`${path}.contacts`, field(o, path, 'contacts')).map((c, i) =>
     int(`${path}.contacts[${i}]`, c, 0, MAX_ID),
   );
