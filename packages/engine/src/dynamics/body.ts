@@ -290,9 +290,9 @@ export class Body<UserData = unknown> {
 
   // ---------------------------------------------------------------- pose and velocity
 
-  /** The world this body is in, or null. */
+  /** The world this body is in, or null (null at once when its removal is queued in a listener). */
   get world(): World | null {
-    return this.worldRef;
+    return this.removalPending ? null : this.worldRef;
   }
 
   /**

@@ -175,9 +175,9 @@ export abstract class Joint<UserData = unknown> {
     this.userData = options.userData;
   }
 
-  /** The world this joint is in, or null. */
+  /** The world this joint is in, or null (null at once when its removal is queued in a listener). */
   get world(): World | null {
-    return this.worldRef;
+    return this.removalPending ? null : this.worldRef;
   }
 
   /**
