@@ -76,14 +76,21 @@ export class EventDispatch {
     const manager = this.contactManager;
     const count = manager.endedCount;
     manager.endedCount = 0;
+    const endedA = manager.endedA;
+    const endedB = manager.endedB;
     for (let i = 0; i < count; i++) {
-      this.emitContact('contactEnd', manager.endedA[i]!, manager.endedB[i]!);
+      this.emitContact('contactEnd', endedA[i]!, endedB[i]!);
+      // Reported: the list no longer keeps the shapes (of a removed body) reachable.
+      endedA[i] = endedB[i] = null as unknown as Shape;
     }
     const sensors = this.sensors;
     const ended = sensors.endedCount;
     sensors.endedCount = 0;
+    const endedSensor = sensors.endedSensor;
+    const endedVisitor = sensors.endedVisitor;
     for (let i = 0; i < ended; i++) {
-      this.emitSensor('sensorEnd', sensors.endedSensor[i]!, sensors.endedVisitor[i]!);
+      this.emitSensor('sensorEnd', endedSensor[i]!, endedVisitor[i]!);
+      endedSensor[i] = endedVisitor[i] = null as unknown as Shape;
     }
   }
 
@@ -131,6 +138,9 @@ export class EventDispatch {
     } else {
       deliver(worldListeners, sensorListeners, visitorListeners, event, sensorBody, visitorBody);
     }
+    // The reused event keeps no body reachable once delivered (a removed one, with its userData).
+    event.sensorShape = event.visitorShape = null as unknown as Shape;
+    event.sensorBody = event.visitorBody = null as unknown as Body;
   }
 
   private emitContact(type: 'contactBegin' | 'contactEnd', shapeA: Shape, shapeB: Shape): void {
@@ -151,6 +161,8 @@ export class EventDispatch {
     } else {
       deliver(worldListeners, listenersA, listenersB, event, bodyA, bodyB);
     }
+    event.shapeA = event.shapeB = null as unknown as Shape;
+    event.bodyA = event.bodyB = null as unknown as Body;
   }
 
   /** An end: every world listener, then each body's own while the body is in the world. */
@@ -193,6 +205,7 @@ export class EventDispatch {
       if (event.normalImpulse <= 0) continue;
       deliver(worldListeners, listenersA, listenersB, event, bodyA, bodyB);
     }
+    forgetBodies(event);
   }
 
   /** Fills the reused collision event from a contact's slot (also `World.forEachContact`). */
@@ -249,6 +262,12 @@ export class EventDispatch {
         callWhileBoth(listeners, body, body, body);
     }
   }
+}
+
+/** The reused collision event keeps no body reachable between steps. */
+export function forgetBodies(event: CollisionEventData): void {
+  event.shapeA = event.shapeB = null as unknown as Shape;
+  event.bodyA = event.bodyB = null as unknown as Body;
 }
 
 /** A begin, collision or move: world listeners, then each body's, while neither is queued out. */

@@ -30,7 +30,7 @@ import { Sensors } from '../dynamics/sensor.ts';
 import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
 import { ShapeTable } from '../dynamics/shape-table.ts';
 import { Solver } from '../dynamics/solver.ts';
-import { EventDispatch } from './event-dispatch.ts';
+import { EventDispatch, forgetBodies } from './event-dispatch.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
 import type { WorldInternals } from './snapshot.ts';
 import { ShapeQueries, type QueryPose, type ShapeCastHit } from './shape-queries.ts';
@@ -89,6 +89,10 @@ export class World {
   private readonly onPair = (shapeIdA: number, shapeIdB: number): void => {
     this.contactManager.addPair(shapeIdA, shapeIdB, this.shapesById);
   };
+  /** Whether the step's lists still point at bodies of the last step (see releaseReferences). */
+  private holdsReferences = false;
+  /** Most bodies since the memory was last sized down (see releaseMemory). */
+  private mostBodies = 0;
   private lastStep = 1 / 60;
   private stepCount = 0;
 
@@ -367,6 +371,7 @@ export class World {
       );
     }
     this.locked = true;
+    this.holdsReferences = true;
     let thrown: Thrown | null = null;
     try {
       this.broadPhase.updatePairs(this.onPair);
@@ -490,6 +495,7 @@ export class World {
       this.events.fillCollisionEvent(contact, event);
       visitor(event);
     }
+    forgetBodies(event);
   }
 
   // ---------------------------------------------------------------- events
@@ -583,6 +589,7 @@ export class World {
     body.center0Y = body.centerY;
     body.angle0 = body.angleValue;
     this.bodyList.push(body);
+    if (this.bodyList.length > this.mostBodies) this.mostBodies = this.bodyList.length;
     for (const shape of body.shapeList) this.createProxy(shape);
     callAll(this.listeners.get('bodyAdded'), body);
   }
@@ -643,7 +650,38 @@ export class World {
     body.worldIndex = -1;
     body.removalPending = false;
     body.solverIndex = 0;
+    this.releaseReferences();
+    this.islands.releaseWoken();
+    this.releaseMemory();
     callAll(this.listeners.get('bodyRemoved'), body);
+  }
+
+  /**
+   * A removed body (and its userData) must not stay reachable from the world: the step's lists
+   * still point at the last step's bodies and shapes, so the first removal after a step
+   * overwrites them with null (in place: the next step allocates nothing). Pooled contacts drop
+   * theirs when they go back to the pool (ContactManager.destroyContact).
+   */
+  private releaseReferences(): void {
+    if (!this.holdsReferences) return;
+    this.holdsReferences = false;
+    this.solver.releaseReferences();
+    this.contactManager.releaseReferences();
+    this.islands.releaseReferences();
+    this.sensors.releaseReferences();
+  }
+
+  /**
+   * Once the world has lost three quarters of its most bodies, the room sized for them goes too
+   * (solver memory, per-body tables, pooled contacts), so a world emptied of 100,000 bodies
+   * weighs about what an empty one does. The next steps grow it again if needed.
+   */
+  private releaseMemory(): void {
+    const count = this.bodyList.length;
+    if (this.mostBodies < 1024 || 4 * count > this.mostBodies) return;
+    this.mostBodies = count;
+    this.solver.shrink(this.contactManager.contacts.length);
+    this.contactManager.shrink();
   }
 
   private createProxy(shape: Shape): void {
