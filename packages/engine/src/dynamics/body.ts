@@ -1,4 +1,4 @@
-import { PhysicalError } from '../core/errors.ts';
+import { PhysicalError, readOnly } from '../core/errors.ts';
 import { Listeners, type ListenerCount } from '../core/listeners.ts';
 import {
   describeValue,
@@ -137,8 +137,17 @@ export const bodyListeners: ListenerCount = { total: 0 };
  * Coordinates are SI in a y-down world by default (x right, y down, like the screen).
  */
 export class Body<UserData = unknown> {
+  /** @internal The type behind {@link type}. */
+  typeValue: BodyType;
   /** Dynamic, static or kinematic; fixed at creation. */
-  readonly type: BodyType;
+  get type(): BodyType {
+    return this.typeValue;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set type(_value: never) {
+    readOnly('type', 'a body keeps the type it was made with (make a new body)');
+  }
+
   /** Anything the app keeps with the body. */
   userData: UserData | undefined;
 
@@ -251,7 +260,7 @@ export class Body<UserData = unknown> {
   constructor(options: BodyOptions<UserData> = {}) {
     optionalObject('options', options, 'an object of body options');
     const type = requireOneOf('type', options.type ?? 'dynamic', BODY_TYPES);
-    this.type = type;
+    this.typeValue = type;
     const position = options.position ?? { x: 0, y: 0 };
     requireVector('position', position);
     this.angleValue = requireAngle('angle', options.angle ?? 0);
