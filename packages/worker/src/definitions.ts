@@ -27,6 +27,7 @@ import {
   type WeldJointOptions,
 } from '@physical/engine';
 import type { BodyId } from './ids.ts';
+import { plainCopy } from './plain-copy.ts';
 
 // A body or joint crosses to the worker as its definition (the factory's name and options), and
 // both sides build it with the same engine factory: the page first, so bad input throws the
@@ -164,12 +165,36 @@ function missing(field: string, id: unknown): never {
   );
 }
 
-/** The definition as posted: without `userData`, which stays on the page. */
-export function postable<T extends object>(definition: T): T {
-  if (!('userData' in definition)) return definition;
+/**
+ * Checks a body definition on the page and builds the page's copy: `posted` is the plain copy the
+ * worker receives (without `userData`, which stays on the page), and the page's body is built
+ * from those very values, so a definition the page accepts is one the worker accepts.
+ */
+export function prepareBody(definition: BodyDefinition): { posted: BodyDefinition; body: Body } {
+  requireDefinition(definition, BODY_KINDS);
+  const posted = plainCopy(withoutUserData(definition), '') as BodyDefinition;
+  const body = buildBody(
+    'userData' in definition
+      ? ({ ...posted, userData: (definition as { userData?: unknown }).userData } as BodyDefinition)
+      : posted,
+  );
+  return { posted, body };
+}
+
+/** As {@link prepareBody}, for a joint between the bodies `bodyOf` resolves. */
+export function prepareJoint(
+  definition: JointDefinition,
+  bodyOf: (id: BodyId) => Body,
+): { posted: JointDefinition; joint: Joint } {
+  requireDefinition(definition, JOINT_KINDS);
+  const posted = plainCopy(withoutUserData(definition), '') as JointDefinition;
+  return { posted, joint: buildJoint(posted, bodyOf) };
+}
+
+function withoutUserData(definition: object): object {
   const rest = { ...definition } as Record<string, unknown>;
   delete rest['userData'];
-  return rest as T;
+  return rest;
 }
 
 function withoutKind<T extends object>(options: T): Omit<T, 'kind'> {

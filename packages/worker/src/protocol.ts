@@ -33,21 +33,25 @@ export type BodyOperation =
   | { readonly op: 'wake' }
   | { readonly op: 'sleep' };
 
+/** @internal The body properties a page may set, checked at run time by `WorkerWorld.set`. */
+export const BODY_PROPERTIES = [
+  'position',
+  'angle',
+  'linearVelocity',
+  'angularVelocity',
+  'gravityScale',
+  'linearDamping',
+  'angularDamping',
+  'drag',
+  'fixedRotation',
+  'bullet',
+  'allowSleep',
+  'mass',
+  'inertia',
+] as const;
+
 /** Body properties a page may set. */
-export type BodyProperty =
-  | 'position'
-  | 'angle'
-  | 'linearVelocity'
-  | 'angularVelocity'
-  | 'gravityScale'
-  | 'linearDamping'
-  | 'angularDamping'
-  | 'drag'
-  | 'fixedRotation'
-  | 'bullet'
-  | 'allowSleep'
-  | 'mass'
-  | 'inertia';
+export type BodyProperty = (typeof BODY_PROPERTIES)[number];
 
 /** World settings a page may change while it runs. */
 export type WorldSetting = 'gravity' | 'subSteps' | 'restitutionThreshold' | 'enableSleep';
@@ -120,4 +124,12 @@ export type FromWorker =
       readonly events: readonly unknown[] | null;
     }
   | { readonly type: 'reply'; readonly queryId: number; readonly value: unknown }
-  | { readonly type: 'failure'; readonly message: string; readonly field: string | null };
+  | {
+      readonly type: 'failure';
+      readonly message: string;
+      readonly field: string | null;
+      /** The query the worker failed to answer, or null. */
+      readonly queryId: number | null;
+      /** Steps asked for that the worker did not take (they send no frame). */
+      readonly lostSteps: number;
+    };

@@ -36,15 +36,22 @@ export interface WorkerEndpoint {
  * serveWorld();
  * ```
  *
- * Returns the world, so the worker may also build scenes or run logic next to it (whatever it
- * adds there is not known to the page).
+ * Resolves with the world the worker simulates, once the page's `WorkerWorld` has connected and
+ * the world was made with its options, so the worker may also build scenes or run logic next to
+ * it: what it adds there is simulated, but not known to the page (the page receives neither its
+ * poses nor events that name it).
  */
-export function serveWorld(endpoint: WorkerEndpoint = self as unknown as WorkerEndpoint): World {
-  return new WorldServer(endpoint).world;
+export function serveWorld(
+  endpoint: WorkerEndpoint = self as unknown as WorkerEndpoint,
+): Promise<World> {
+  return new Promise((resolve) => new WorldServer(endpoint, resolve));
 }
 
 class WorldServer {
+  /** Made on `init`, with the page's options. */
   world = new World();
+  private initialized = false;
+  private readonly onInit: (world: World) => void;
   private readonly endpoint: WorkerEndpoint;
   private readonly bodies = new Map<number, Body>();
   private readonly ids = new Map<Body, number>();
@@ -59,16 +66,35 @@ class WorldServer {
   private events: WorkerEvent[] = [];
   private readonly offs = new Map<StreamedEvent, () => void>();
 
-  constructor(endpoint: WorkerEndpoint) {
+  /** Steps of the current `step` message not taken yet (reported lost if one fails). */
+  private stepsLeft = 0;
+
+  constructor(endpoint: WorkerEndpoint, onInit: (world: World) => void) {
     this.endpoint = endpoint;
+    this.onInit = onInit;
     endpoint.addEventListener('message', (event) => {
+      const message = event.data as ToWorker;
       try {
-        this.handle(event.data as ToWorker);
+        this.handle(message);
       } catch (error) {
-        // The page validates first, so this is a bug or a race (a body removed in a listener):
-        // report it rather than die silently.
+        // The page validates first, so this is a bug, a race or the worker's own code (a
+        // listener that throws): report it rather than die silently, and settle what the page
+        // waits for (the query, the steps not taken).
         const field = error instanceof PhysicalError ? error.field : null;
-        this.post({ type: 'failure', message: String((error as Error).message ?? error), field });
+        const queryId =
+          message !== null && typeof message === 'object' && message.type === 'query'
+            ? message.queryId
+            : null;
+        const lostSteps = this.stepsLeft;
+        this.stepsLeft = 0;
+        this.events = []; // a failed step's events name a state the page never receives
+        this.post({
+          type: 'failure',
+          message: String((error as Error | undefined)?.message ?? error),
+          field,
+          queryId,
+          lostSteps,
+        });
       }
     });
   }
@@ -86,10 +112,13 @@ class WorldServer {
   private handle(message: ToWorker): void {
     switch (message.type) {
       case 'init':
+        if (this.initialized) throw new Error('a worker serves one WorkerWorld (init twice).');
         this.world = new World(message.options);
+        this.initialized = true;
         this.shared = message.shared === null ? null : new SharedPoses(message.shared);
         this.renderer =
           message.offscreen === null ? null : new OffscreenRenderer(message.offscreen);
+        this.onInit(this.world);
         return;
       case 'add': {
         const body = buildBody(message.definition);
@@ -124,7 +153,11 @@ class WorldServer {
         (this.world as unknown as Record<string, unknown>)[message.name] = message.value;
         return;
       case 'step':
-        for (let i = 0; i < message.count; i++) this.step(message.dt);
+        this.stepsLeft = message.count;
+        for (let i = 0; i < message.count; i++) {
+          this.step(message.dt);
+          this.stepsLeft--;
+        }
         // One drawing per step request: the page asks at most its frame rate's worth.
         this.renderer?.draw(this.world);
         return;

@@ -16,24 +16,25 @@ import {
   type RemoteDrawing,
 } from '@physical/canvas';
 import {
-  buildBody,
-  buildJoint,
-  postable,
+  prepareBody,
+  prepareJoint,
   type BodyDefinition,
   type JointDefinition,
 } from './definitions.ts';
+import { plainCopy, plainVector } from './plain-copy.ts';
 import type { WorkerEvent, WorkerWorldEvents } from './events.ts';
 import type { OffscreenView } from './offscreen-renderer.ts';
 import type { BodyId, ForceId, JointId } from './ids.ts';
 import { createSharedPoses, POSE_STRIDE, SharedPoses } from './pose-stream.ts';
-import type {
-  BodyOperation,
-  BodyProperty,
-  FromWorker,
-  Query,
-  StreamedEvent,
-  ToWorker,
-  WorldSetting,
+import {
+  BODY_PROPERTIES,
+  type BodyOperation,
+  type BodyProperty,
+  type FromWorker,
+  type Query,
+  type StreamedEvent,
+  type ToWorker,
+  type WorldSetting,
 } from './protocol.ts';
 
 /** Options of a {@link WorkerWorld}. */
@@ -116,6 +117,8 @@ export class WorkerWorld implements DrawingSource {
   private readonly worker: WorkerLike;
   /** Page copies of the bodies and joints: for checking input, drawing and hit-testing. */
   private readonly mirror: World;
+  /** An empty world that checks each step's dt with the engine's own rule (stepping it is free). */
+  private readonly checker = new World();
   private readonly bodyById = new Map<number, Body>();
   private readonly idByBody = new Map<Body, number>();
   private readonly jointById = new Map<number, Joint>();
@@ -145,6 +148,8 @@ export class WorkerWorld implements DrawingSource {
   private awake = 0;
   private stepsValue = 0;
   private sentSteps = 0;
+  /** Steps asked for that will never come back (the worker failed while taking them). */
+  private lostSteps = 0;
   private failure: Error | null = null;
   private listening = '';
 
@@ -153,7 +158,8 @@ export class WorkerWorld implements DrawingSource {
       throw new PhysicalError('options', `must be an object, got ${String(options)}.`);
     }
     this.worker = worker;
-    this.mirror = new World(options.world ?? {});
+    const worldOptions = plainCopy(options.world ?? {}, 'world') as WorldOptions;
+    this.mirror = new World(worldOptions);
     const isolated =
       typeof SharedArrayBuffer !== 'undefined' &&
       (globalThis as { crossOriginIsolated?: boolean }).crossOriginIsolated === true;
@@ -179,7 +185,7 @@ export class WorkerWorld implements DrawingSource {
     );
     const offscreen = options.offscreen ?? null;
     this.post(
-      { type: 'init', options: options.world ?? {}, shared: memory, offscreen },
+      { type: 'init', options: worldOptions, shared: memory, offscreen },
       offscreen === null ? [] : [offscreen.canvas],
     );
   }
@@ -191,9 +197,13 @@ export class WorkerWorld implements DrawingSource {
    * Bad options throw the engine's PhysicalError here, before anything is posted.
    */
   add<UserData>(definition: BodyDefinition<UserData>): BodyId {
-    const body = buildBody(definition);
+    // Checked, copied and posted before the page's copy joins: a definition the worker could not
+    // receive leaves both worlds as they were.
+    const { posted, body } = prepareBody(definition as BodyDefinition);
+    const id = this.nextBodyId;
+    this.post({ type: 'add', id, definition: posted });
+    this.nextBodyId++;
     this.mirror.add(body);
-    const id = this.nextBodyId++;
     this.bodyById.set(id, body);
     this.idByBody.set(body, id);
     this.ensureCapacity(id);
@@ -203,7 +213,6 @@ export class WorkerWorld implements DrawingSource {
       poses[3 * id + 1] = position.y;
       poses[3 * id + 2] = body.angle;
     }
-    this.post({ type: 'add', id, definition: postable(definition) });
     this.changed();
     this.emit('bodyAdded');
     return id as BodyId;
@@ -212,6 +221,7 @@ export class WorkerWorld implements DrawingSource {
   /** Removes a body (and its joints). Unknown ids throw a PhysicalError naming `id`. */
   remove(id: BodyId): void {
     const body = this.requireBody(id);
+    this.post({ type: 'remove', id });
     for (const [jointId, joint] of this.jointById) {
       if (joint.bodyA === body || joint.bodyB === body) this.jointById.delete(jointId);
     }
@@ -219,7 +229,6 @@ export class WorkerWorld implements DrawingSource {
     this.bodyById.delete(id);
     this.idByBody.delete(body);
     this.stale.delete(id);
-    this.post({ type: 'remove', id });
     this.emit('bodyRemoved');
   }
 
@@ -235,11 +244,12 @@ export class WorkerWorld implements DrawingSource {
 
   /** Adds a joint between bodies of this world (ids in place of bodies) and returns its id. */
   addJoint(definition: JointDefinition): JointId {
-    const joint = buildJoint(definition, (id) => this.requireBody(id, 'body'));
+    const { posted, joint } = prepareJoint(definition, (id) => this.requireBody(id, 'body'));
+    const id = this.nextJointId;
+    this.post({ type: 'addJoint', id, definition: posted });
+    this.nextJointId++;
     this.mirror.addJoint(joint);
-    const id = this.nextJointId++;
     this.jointById.set(id, joint);
-    this.post({ type: 'addJoint', id, definition });
     this.changed();
     return id as JointId;
   }
@@ -248,9 +258,9 @@ export class WorkerWorld implements DrawingSource {
   removeJoint(id: JointId): void {
     const joint = this.jointById.get(id);
     if (joint === undefined) throw new PhysicalError('id', `no joint ${String(id)} in this world.`);
+    this.post({ type: 'removeJoint', id });
     this.jointById.delete(id);
     if (joint.world !== null) this.mirror.removeJoint(joint);
-    this.post({ type: 'removeJoint', id });
   }
 
   /**
@@ -278,13 +288,15 @@ export class WorkerWorld implements DrawingSource {
     options: { duration?: Duration; point?: Vec2Like } = {},
   ): ForceId {
     const body = this.requireBody(id);
-    body.removeForce(body.applyForce(force, options));
+    const plainForce = plainVector(force) as Vec2Like;
+    const plainOptions = plainCopy(options, 'options') as { duration?: Duration; point?: Vec2Like };
+    body.removeForce(body.applyForce(plainForce, plainOptions));
     const forceId = this.nextForceId++;
     this.operate(id, {
       op: 'applyForce',
-      force: { x: force.x, y: force.y },
-      duration: options.duration,
-      ...(options.point === undefined ? {} : { point: { x: options.point.x, y: options.point.y } }),
+      force: plainForce,
+      duration: plainOptions.duration,
+      ...(plainOptions.point === undefined ? {} : { point: plainOptions.point }),
       forceId,
     });
     return forceId as ForceId;
@@ -293,15 +305,19 @@ export class WorkerWorld implements DrawingSource {
   /** Applies a torque (N m) for a duration; returns its id. */
   applyTorque(id: BodyId, torque: number, options: { duration?: Duration } = {}): ForceId {
     const body = this.requireBody(id);
-    body.removeForce(body.applyTorque(torque, options));
+    const plainOptions = plainCopy(options, 'options') as { duration?: Duration };
+    body.removeForce(body.applyTorque(torque, plainOptions));
     const forceId = this.nextForceId++;
-    this.operate(id, { op: 'applyTorque', torque, duration: options.duration, forceId });
+    this.operate(id, { op: 'applyTorque', torque, duration: plainOptions.duration, forceId });
     return forceId as ForceId;
   }
 
   /** Stops a force or torque before its duration ends. */
   removeForce(id: BodyId, force: ForceId): void {
     this.requireBody(id);
+    if (!Number.isInteger(force) || force < 1 || force >= this.nextForceId) {
+      throw new PhysicalError('force', `must be a force id from this world, got ${String(force)}.`);
+    }
     this.operate(id, { op: 'removeForce', forceId: force });
   }
 
@@ -314,11 +330,13 @@ export class WorkerWorld implements DrawingSource {
   /** Applies an impulse (N s) at a world point (default: the centre of mass). */
   applyImpulse(id: BodyId, impulse: Vec2Like, point?: Vec2Like): void {
     const body = this.requireBody(id);
-    checkOnCopy(body, (copy) => copy.applyImpulse(impulse, point));
+    const plainImpulse = plainVector(impulse) as Vec2Like;
+    const plainPoint = plainVector(point) as Vec2Like | undefined;
+    checkOnCopy(body, (copy) => copy.applyImpulse(plainImpulse, plainPoint));
     this.operate(id, {
       op: 'applyImpulse',
-      impulse: { x: impulse.x, y: impulse.y },
-      ...(point === undefined ? {} : { point: { x: point.x, y: point.y } }),
+      impulse: plainImpulse,
+      ...(plainPoint === undefined ? {} : { point: plainPoint }),
     });
   }
 
@@ -331,7 +349,7 @@ export class WorkerWorld implements DrawingSource {
 
   /** Sets the velocity of the centre of mass (m/s). */
   setLinearVelocity(id: BodyId, velocity: Vec2Like): void {
-    this.set(id, 'linearVelocity', { x: velocity.x, y: velocity.y });
+    this.set(id, 'linearVelocity', velocity);
   }
 
   /** Sets the angular velocity (rad/s). */
@@ -341,7 +359,7 @@ export class WorkerWorld implements DrawingSource {
 
   /** Teleports a body (m); it is drawn there at once. */
   setPosition(id: BodyId, position: Vec2Like): void {
-    this.set(id, 'position', { x: position.x, y: position.y });
+    this.set(id, 'position', position);
   }
 
   /** Turns a body (rad); it is drawn so at once. */
@@ -351,10 +369,22 @@ export class WorkerWorld implements DrawingSource {
 
   /**
    * Sets a property of a body as `body[property] = value` would (checked on the page copy first:
-   * the same PhysicalError).
+   * the same PhysicalError). Only the settable properties ({@link BodyProperty}) are accepted;
+   * another name throws a PhysicalError naming `property`.
    */
   set(id: BodyId, property: BodyProperty, value: unknown): void {
     const body = this.requireBody(id);
+    if (
+      typeof property !== 'string' ||
+      !(BODY_PROPERTIES as readonly string[]).includes(property)
+    ) {
+      throw new PhysicalError(
+        'property',
+        `must be one of ${BODY_PROPERTIES.join(', ')}, got ${describe(property)}.`,
+      );
+    }
+    // Vectors are read once into plain { x, y }: the page checks what the worker receives.
+    if (property === 'position' || property === 'linearVelocity') value = plainVector(value);
     (body as unknown as Record<string, unknown>)[property] = value;
     if (property === 'position' || property === 'angle') {
       const position = body.position;
@@ -387,7 +417,7 @@ export class WorkerWorld implements DrawingSource {
   }
 
   set gravity(value: Vec2Like) {
-    this.setting('gravity', value, { x: value.x, y: value.y });
+    this.setting('gravity', plainVector(value));
   }
 
   /** Sub-steps per step. */
@@ -396,7 +426,7 @@ export class WorkerWorld implements DrawingSource {
   }
 
   set subSteps(value: number) {
-    this.setting('subSteps', value, value);
+    this.setting('subSteps', value);
   }
 
   /** Restitution threshold (m/s). */
@@ -405,7 +435,7 @@ export class WorkerWorld implements DrawingSource {
   }
 
   set restitutionThreshold(value: number) {
-    this.setting('restitutionThreshold', value, value);
+    this.setting('restitutionThreshold', value);
   }
 
   /** Whether resting bodies sleep. */
@@ -414,7 +444,7 @@ export class WorkerWorld implements DrawingSource {
   }
 
   set enableSleep(value: boolean) {
-    this.setting('enableSleep', value, value);
+    this.setting('enableSleep', value);
   }
 
   // ------------------------------------------------------------------ time
@@ -425,12 +455,9 @@ export class WorkerWorld implements DrawingSource {
    * step behind the worker, and never waits for it.
    */
   step(dt: number = 1 / 60): void {
-    if (!(dt > 0) || !Number.isFinite(dt)) {
-      throw new PhysicalError(
-        'dt',
-        `must be a positive, finite number of seconds, got ${String(dt)}.`,
-      );
-    }
+    // The engine's own rule (range, and 0 is no step), thrown here rather than in the worker.
+    this.checker.step(dt);
+    if (dt === 0) return;
     this.requestSteps(dt, 1);
   }
 
@@ -454,6 +481,7 @@ export class WorkerWorld implements DrawingSource {
       );
     }
     const dt = 1 / stepsPerSecond;
+    this.checker.step(dt);
     let last = -1;
     let debt = 0;
     let handle = 0;
@@ -493,7 +521,7 @@ export class WorkerWorld implements DrawingSource {
    * behind the page. {@link step} itself always queues.
    */
   get stepsInFlight(): number {
-    return this.sentSteps - this.stepsValue - this.frames.length;
+    return this.sentSteps - this.stepsValue - this.frames.length - this.lostSteps;
   }
 
   /**
@@ -538,23 +566,30 @@ export class WorkerWorld implements DrawingSource {
 
   /** The full state of a body, read from the worker. */
   getBody(id: BodyId): Promise<WorkerBodyState | null> {
+    if (!Number.isInteger(id)) {
+      throw new PhysicalError('id', `must be a body id, got ${describe(id)}.`);
+    }
     return this.ask({ kind: 'body', id }) as Promise<WorkerBodyState | null>;
   }
 
   /** The first body hit by a ray, read from the worker. */
   rayCast(from: Vec2Like, to: Vec2Like): Promise<WorkerRayCastHit | null> {
-    this.mirror.rayCast(from, to); // checks the points
-    return this.ask({
-      kind: 'rayCast',
-      from: { x: from.x, y: from.y },
-      to: { x: to.x, y: to.y },
-    }) as Promise<WorkerRayCastHit | null>;
+    const a = plainVector(from) as Vec2Like;
+    const b = plainVector(to) as Vec2Like;
+    this.mirror.rayCast(a, b); // checks the points
+    return this.ask({ kind: 'rayCast', from: a, to: b }) as Promise<WorkerRayCastHit | null>;
   }
 
   /** Bodies whose boxes overlap a box (m), read from the worker. */
   bodiesInAABB(box: { minX: number; minY: number; maxX: number; maxY: number }): Promise<BodyId[]> {
-    this.mirror.bodiesInAABB(box);
-    const { minX, minY, maxX, maxY } = box;
+    const copy = plainCopy(box, 'box') as {
+      minX: number;
+      minY: number;
+      maxX: number;
+      maxY: number;
+    };
+    this.mirror.bodiesInAABB(copy);
+    const { minX, minY, maxX, maxY } = copy;
     return this.ask({ kind: 'bodiesInAABB', box: { minX, minY, maxX, maxY } }) as Promise<BodyId[]>;
   }
 
@@ -683,9 +718,18 @@ export class WorkerWorld implements DrawingSource {
     this.emit('wake');
   }
 
-  private setting(name: WorldSetting, value: unknown, posted: unknown): void {
-    (this.mirror as unknown as Record<string, unknown>)[name] = value;
-    this.post({ type: 'setting', name, value: posted });
+  /** Checks a setting on the page's world (the engine's own error), then posts what it holds. */
+  private setting(name: WorldSetting, value: unknown): void {
+    const mirror = this.mirror as unknown as Record<string, unknown>;
+    const before = mirror[name];
+    mirror[name] = value;
+    const held = name === 'gravity' ? plainVector(this.mirror.gravity) : mirror[name];
+    try {
+      this.post({ type: 'setting', name, value: held });
+    } catch (error) {
+      mirror[name] = name === 'gravity' ? plainVector(before) : before;
+      throw error;
+    }
     this.changed();
   }
 
@@ -699,7 +743,12 @@ export class WorkerWorld implements DrawingSource {
     const queryId = this.nextQueryId++;
     return new Promise((resolve, reject) => {
       this.pending.set(queryId, { resolve, reject });
-      this.post({ type: 'query', queryId, query });
+      try {
+        this.post({ type: 'query', queryId, query });
+      } catch (error) {
+        this.pending.delete(queryId);
+        reject(error as Error);
+      }
     });
   }
 
@@ -722,17 +771,46 @@ export class WorkerWorld implements DrawingSource {
           message.field === null
             ? new Error(message.message)
             : new PhysicalError(message.field, message.message.replace(`${message.field}: `, ''));
+        // A request the worker failed to answer settles with the error; steps it failed to take
+        // never come back, so they stop counting as in flight.
+        this.lostSteps += message.lostSteps;
+        if (message.queryId !== null) {
+          const entry = this.pending.get(message.queryId);
+          this.pending.delete(message.queryId);
+          entry?.reject(error);
+        }
         this.emit('error', error);
         return;
       }
     }
   }
 
+  /**
+   * Calls the listeners of a step's events. An event naming a body that is not in the page's
+   * world (removed since the worker recorded it, even by an earlier listener of the same batch,
+   * or one the worker added itself) is dropped: no event names a body after `remove` returned.
+   */
   private dispatch(events: readonly WorkerEvent[]): void {
     for (const event of events) {
       const set = this.listeners.get(event.type);
       if (set === undefined) continue;
-      for (const listener of set) (listener as (event: WorkerEvent) => void)(event);
+      for (const listener of set) {
+        if (!this.namesKnownBodies(event)) break;
+        (listener as (event: WorkerEvent) => void)(event);
+      }
+    }
+  }
+
+  private namesKnownBodies(event: WorkerEvent): boolean {
+    const known = this.bodyById;
+    switch (event.type) {
+      case 'move':
+        return known.has(event.body);
+      case 'sensorBegin':
+      case 'sensorEnd':
+        return known.has(event.sensorBody) && known.has(event.visitorBody);
+      default:
+        return known.has(event.bodyA) && known.has(event.bodyB);
     }
   }
 
@@ -845,10 +923,20 @@ export class WorkerWorld implements DrawingSource {
   private fail(error: Error, report = true): void {
     if (this.failure !== null) return;
     this.failure = error;
+    // Nothing more comes back: no step stays in flight.
+    this.lostSteps = this.sentSteps - this.stepsValue - this.frames.length;
     for (const { reject } of this.pending.values()) reject(error);
     this.pending.clear();
     if (report) this.emit('error', error);
   }
+}
+
+function describe(value: unknown): string {
+  return typeof value === 'string'
+    ? `'${value}'`
+    : typeof value === 'symbol'
+      ? 'a symbol'
+      : String(value);
 }
 
 /** Marks a frame whose poses are in shared memory. */

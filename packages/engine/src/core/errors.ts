@@ -12,3 +12,11 @@ export class PhysicalError extends Error {
     this.field = field;
   }
 }
+
+/**
+ * @internal The setter of a field that is read-only in the typings: plain JavaScript cannot
+ * write it either (the world would then disagree with itself), it gets this error instead.
+ */
+export function readOnly(field: string, why: string): never {
+  throw new PhysicalError(field, `is read-only: ${why}`);
+}

@@ -1,10 +1,10 @@
 import { PhysicalError } from '../core/errors.ts';
-import { requireFinite, requireObject, requireSize } from '../core/validate.ts';
+import { MAX_SIZE, requireFinite, requireObject, requireSize } from '../core/validate.ts';
 import { LINEAR_SLOP, MAX_POLYGON_VERTICES } from '../core/constants.ts';
 import type { Vec2Like } from '../math/vec2.ts';
 import { Body, type BodyOptions } from './body.ts';
 import type { FilterOptions } from './filter.ts';
-import type { MaterialOptions } from './shape.ts';
+import type { MaterialOptions, ShapeOptions } from './shape.ts';
 import { cosSin } from '../math/trigonometry.ts';
 
 // The bodies the thesis's users reach for, one call each. Each takes the body options plus the
@@ -74,6 +74,25 @@ export interface WallOptions<UserData = unknown> extends Omit<
   readonly type?: 'static' | 'kinematic';
 }
 
+/**
+ * Builds the factory's body. The shape it makes is checked as `shapes[0]` of a body; an error
+ * there names the option the user wrote instead (`width`, `filter.categoryBits`, `vertices[2].x`;
+ * `rename` maps a shape field the factory derived, such as a capsule's centres, to its option).
+ */
+function build<UserData>(
+  options: Omit<BodyOptions<UserData>, 'shapes'>,
+  shape: ShapeOptions,
+  rename: (field: string) => string = (field) => field,
+): Body<UserData> {
+  try {
+    return new Body<UserData>({ ...options, shapes: [shape] });
+  } catch (error) {
+    if (!(error instanceof PhysicalError) || !error.field.startsWith('shapes[0]')) throw error;
+    const inner = error.field.slice('shapes[0]'.length).replace(/^\./, '');
+    throw new PhysicalError(rename(inner), error.message.slice(error.field.length + 2));
+  }
+}
+
 function material(options: MaterialOptions): MaterialOptions {
   const result: {
     density?: number;
@@ -93,27 +112,25 @@ function material(options: MaterialOptions): MaterialOptions {
 /** A circle body: the thesis's particle. Dynamic unless `type` says otherwise. */
 export function particle<UserData = unknown>(options: ParticleOptions<UserData>): Body<UserData> {
   requireObject('options', options, 'an object of particle options');
-  return new Body<UserData>({
-    ...options,
-    shapes: [{ type: 'circle', radius: options.radius, ...material(options) }],
-  });
+  return build(options, { type: 'circle', radius: options.radius, ...material(options) }, (f) =>
+    f === '' ? 'radius' : f,
+  );
 }
 
 /** A rectangle body of `width` x `height` metres, centred on its position. */
 export function box<UserData = unknown>(options: BoxOptions<UserData>): Body<UserData> {
   requireObject('options', options, 'an object of box options');
-  return new Body<UserData>({
-    ...options,
-    shapes: [
-      {
-        type: 'box',
-        width: options.width,
-        height: options.height,
-        radius: options.radius ?? 0,
-        ...material(options),
-      },
-    ],
-  });
+  return build(
+    options,
+    {
+      type: 'box',
+      width: options.width,
+      height: options.height,
+      radius: options.radius ?? 0,
+      ...material(options),
+    },
+    (f) => (f === '' ? 'width' : f),
+  );
 }
 
 /**
@@ -131,19 +148,22 @@ export function capsule<UserData = unknown>(options: CapsuleOptions<UserData>): 
         'For a round body use particle().',
     );
   }
+  if (length > MAX_SIZE) {
+    throw new PhysicalError('length', `must be at most ${MAX_SIZE} m, got ${length}.`);
+  }
   const half = 0.5 * length;
-  return new Body<UserData>({
-    ...options,
-    shapes: [
-      {
-        type: 'capsule',
-        center1: { x: -half, y: 0 },
-        center2: { x: half, y: 0 },
-        radius: options.radius,
-        ...material(options),
-      },
-    ],
-  });
+  return build(
+    options,
+    {
+      type: 'capsule',
+      center1: { x: -half, y: 0 },
+      center2: { x: half, y: 0 },
+      radius: options.radius,
+      ...material(options),
+    },
+    // The centres come from length.
+    (f) => (f === '' || f.startsWith('center') ? 'length' : f),
+  );
 }
 
 /**
@@ -168,10 +188,10 @@ export function regularPolygon<UserData = unknown>(
     cosSin((2 * Math.PI * i) / sides, rotation);
     vertices.push({ x: radius * rotation[0]!, y: radius * rotation[1]! });
   }
-  return new Body<UserData>({
-    ...options,
-    shapes: [{ type: 'polygon', vertices, ...material(options) }],
-  });
+  // The vertices come from sides and radius.
+  return build(options, { type: 'polygon', vertices, ...material(options) }, (f) =>
+    f === '' || f.startsWith('vertices') ? 'radius' : f,
+  );
 }
 
 /**
@@ -182,17 +202,16 @@ export function regularPolygon<UserData = unknown>(
  */
 export function polygon<UserData = unknown>(options: PolygonOptions<UserData>): Body<UserData> {
   requireObject('options', options, 'an object of polygon options');
-  return new Body<UserData>({
-    ...options,
-    shapes: [
-      {
-        type: 'polygon',
-        vertices: options.vertices,
-        radius: options.radius ?? 0,
-        ...material(options),
-      },
-    ],
-  });
+  return build(
+    options,
+    {
+      type: 'polygon',
+      vertices: options.vertices,
+      radius: options.radius ?? 0,
+      ...material(options),
+    },
+    (f) => (f === '' ? 'vertices' : f),
+  );
 }
 
 /**
@@ -201,17 +220,15 @@ export function polygon<UserData = unknown>(options: PolygonOptions<UserData>): 
  */
 export function wall<UserData = unknown>(options: WallOptions<UserData>): Body<UserData> {
   requireObject('options', options, 'an object of wall options');
-  return new Body<UserData>({
-    ...options,
-    type: options.type ?? 'static',
-    shapes: [
-      {
-        type: 'segment',
-        from: options.from,
-        to: options.to,
-        oneSided: options.oneSided ?? false,
-        ...material(options),
-      },
-    ],
-  });
+  return build(
+    { ...options, type: options.type ?? 'static' },
+    {
+      type: 'segment',
+      from: options.from,
+      to: options.to,
+      oneSided: options.oneSided ?? false,
+      ...material(options),
+    },
+    (f) => (f === '' ? 'from' : f),
+  );
 }

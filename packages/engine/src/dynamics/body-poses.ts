@@ -17,6 +17,13 @@ export class BodyPoses {
   /** 1 where the body is awake (Body.awake), else 0. */
   awake: Uint8Array = new Uint8Array(64);
 
+  /** Frees the room of a world that shrank (the next load grows it again). */
+  shrink(): void {
+    if (this.awake.length <= 64) return;
+    this.awake = new Uint8Array(64);
+    this.data = new Float64Array(POSE_STRIDE * 64);
+  }
+
   /** Copies every body's numbers; `bodies` is the world's body list (index = world index). */
   load(bodies: readonly Body[]): void {
     const count = bodies.length;

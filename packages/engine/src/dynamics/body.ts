@@ -1,4 +1,4 @@
-import { PhysicalError } from '../core/errors.ts';
+import { PhysicalError, readOnly } from '../core/errors.ts';
 import { Listeners, type ListenerCount } from '../core/listeners.ts';
 import {
   describeValue,
@@ -138,8 +138,17 @@ export const bodyListeners: ListenerCount = { total: 0 };
  * Coordinates are SI in a y-down world by default (x right, y down, like the screen).
  */
 export class Body<UserData = unknown> {
+  /** @internal The type behind {@link type}. */
+  typeValue: BodyType;
   /** Dynamic, static or kinematic; fixed at creation. */
-  readonly type: BodyType;
+  get type(): BodyType {
+    return this.typeValue;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set type(_value: never) {
+    readOnly('type', 'a body keeps the type it was made with (make a new body)');
+  }
+
   /** Anything the app keeps with the body. */
   userData: UserData | undefined;
 
@@ -252,7 +261,7 @@ export class Body<UserData = unknown> {
   constructor(options: BodyOptions<UserData> = {}) {
     optionalObject('options', options, 'an object of body options');
     const type = requireOneOf('type', options.type ?? 'dynamic', BODY_TYPES);
-    this.type = type;
+    this.typeValue = type;
     const position = options.position ?? { x: 0, y: 0 };
     requireVector('position', position);
     this.angleValue = requireAngle('angle', options.angle ?? 0);
@@ -291,9 +300,9 @@ export class Body<UserData = unknown> {
 
   // ---------------------------------------------------------------- pose and velocity
 
-  /** The world this body is in, or null. */
+  /** The world this body is in, or null (null at once when its removal is queued in a listener). */
   get world(): World | null {
-    return this.worldRef;
+    return this.removalPending ? null : this.worldRef;
   }
 
   /**

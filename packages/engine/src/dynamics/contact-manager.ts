@@ -1,3 +1,4 @@
+import { releaseFrom } from '../core/release.ts';
 import { PairSet } from '../collision/pair-set.ts';
 import { LINEAR_SLOP, SPECULATIVE_DISTANCE } from '../core/constants.ts';
 import type { Body } from './body.ts';
@@ -392,7 +393,33 @@ export class ContactManager {
     }
     contact.index = -1;
     contact.touching = false;
+    contact.release();
     this.pool.push(contact);
+  }
+
+  /**
+   * Drops the references the per-step lists still hold past their counts (a removed body's
+   * shapes): overwritten with null in place. The ends not yet reported stay.
+   */
+  releaseReferences(): void {
+    releaseFrom(this.began, 0);
+    this.beganCount = 0;
+    releaseFrom(this.endedA, this.endedCount);
+    releaseFrom(this.endedB, this.endedCount);
+    releaseFrom(this.pendingA, this.pendingCount);
+    releaseFrom(this.pendingB, this.pendingCount);
+  }
+
+  /** Frees the pooled contacts and the per-step lists' room after the world shrank a lot. */
+  shrink(): void {
+    this.pool.length = 0;
+    this.began.length = 0;
+    this.beganCount = 0;
+    this.endedA.length = this.endedCount;
+    this.endedB.length = this.endedCount;
+    this.pendingA.length = this.pendingCount;
+    this.pendingB.length = this.pendingCount;
+    this.poses.shrink();
   }
 
   private setPair(contact: Contact): void {

@@ -85,6 +85,12 @@ export class Contact {
   indexInA = -1;
   indexInB = -1;
 
+  /** Forgets its shapes and bodies when it goes back to the pool (a removed body is released). */
+  release(): void {
+    this.shapeA = this.shapeB = null as unknown as Shape;
+    this.bodyA = this.bodyB = null as unknown as Body;
+  }
+
   /**
    * Sets up a pooled contact for a new pair in slot `index` of `data`; a and b must already be
    * ordered (see shouldSwap).

@@ -1,4 +1,4 @@
-import { PhysicalError } from '../core/errors.ts';
+import { PhysicalError, readOnly } from '../core/errors.ts';
 import {
   describeValue,
   MAX_DURATION,
@@ -60,8 +60,16 @@ export class Force {
   localPointY = -0;
   /** @internal */
   hasPoint = false;
+  /** @internal Behind {@link duration}. */
+  durationValue: Duration;
   /** The duration it was created with. */
-  readonly duration: Duration;
+  get duration(): Duration {
+    return this.durationValue;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set duration(_value: never) {
+    readOnly('duration', 'a force keeps the duration it was applied with');
+  }
   /** @internal Seconds left, behind {@link remaining}; -1 for an `'instant'` force not yet applied. */
   remainingValue = -0;
   /** @internal Removal hook set by the owning body. */
@@ -74,7 +82,7 @@ export class Force {
     this.xValue = requireRange('x', x, -MAX_FORCE, MAX_FORCE, 'N');
     this.yValue = requireRange('y', y, -MAX_FORCE, MAX_FORCE, 'N');
     this.torqueValue = requireRange('torque', torque, -MAX_FORCE, MAX_FORCE, 'N m');
-    this.duration = validateDuration(duration);
+    this.durationValue = validateDuration(duration);
     this.remainingValue =
       duration === 'constant' ? Infinity : duration === 'instant' ? -1 : duration;
   }

@@ -1,3 +1,4 @@
+import { releaseFrom } from '../core/release.ts';
 import type { Body } from './body.ts';
 
 /**
@@ -21,6 +22,31 @@ export class Islands {
   private held = false;
   /** collect's rest threshold (s); a double from the start, so V8 keeps the field unboxed. */
   private minimumRest = 0.5;
+
+  /** Drops the references its search lists hold (a removed body must not stay reachable). */
+  releaseReferences(): void {
+    releaseFrom(this.stack, 0);
+    releaseFrom(this.woken, 0);
+    releaseFrom(this.members, 0);
+    this.wokenCount = 0;
+    this.wokenUsed = 0;
+    this.memberCount = 0;
+  }
+
+  /**
+   * Drops what wakes wrote since the last release (a removal wakes the removed body's island,
+   * the body itself included): as much as they wrote, so each removal pays for its own wake.
+   */
+  releaseWoken(): void {
+    const stack = this.stack;
+    const woken = this.woken;
+    for (let i = 0; i < this.wokenUsed; i++) {
+      stack[i] = null as unknown as Body;
+      woken[i] = null as unknown as Body;
+    }
+    this.wokenUsed = 0;
+    this.wokenCount = 0;
+  }
 
   /** Puts to sleep every island of `awake` bodies that has rested for `timeToSleep` seconds. */
   sleepRestingIslands(awake: readonly Body[], count: number, timeToSleep: number): void {
@@ -52,6 +78,8 @@ export class Islands {
 
   /** How many bodies the last {@link wake} woke. */
   wokenCount = 0;
+  /** Entries of `stack` and `woken` that wakes wrote since the last release. */
+  private wokenUsed = 0;
 
   /** Wakes a body and every sleeping body its island touches. */
   wake(body: Body): void {
@@ -89,6 +117,7 @@ export class Islands {
       }
     }
     this.wokenCount = count;
+    if (count > this.wokenUsed) this.wokenUsed = count;
     const onWake = this.onWake;
     if (onWake !== null) for (let i = 0; i < count; i++) onWake(woken[i]!);
   }

@@ -1,3 +1,4 @@
+import { releaseFrom } from '../core/release.ts';
 import type { BroadPhase } from '../collision/broad-phase.ts';
 import { DistanceOutput, DistanceProxy, shapeDistance } from '../collision/distance.ts';
 import { AABB } from '../geometry/aabb.ts';
@@ -73,6 +74,19 @@ export class Sensors {
       list.splice(at, 1);
       this.recordEnd(this.shapes[i]!, shape);
     }
+  }
+
+  /**
+   * Drops the references its per-step lists hold past their counts (a removed body's shapes);
+   * the begins and ends not yet reported stay.
+   */
+  releaseReferences(): void {
+    releaseFrom(this.beganSensor, this.beganCount);
+    releaseFrom(this.beganVisitor, this.beganCount);
+    releaseFrom(this.endedSensor, this.endedCount);
+    releaseFrom(this.endedVisitor, this.endedCount);
+    releaseFrom(this.found, 0);
+    this.foundCount = 0;
   }
 
   /** Finds every sensor's overlaps now and records what began and ended since last time. */

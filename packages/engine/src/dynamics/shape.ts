@@ -1,4 +1,4 @@
-import { PhysicalError } from '../core/errors.ts';
+import { PhysicalError, readOnly } from '../core/errors.ts';
 import {
   describeValue,
   MAX_DENSITY,
@@ -131,18 +131,50 @@ export type Geometry = Circle | Polygon | Segment | Capsule;
  * body; read its properties, or change the material at any time.
  */
 export class Shape {
+  /** @internal Behind {@link body}. */
+  bodyValue: Body;
   /** The body this shape belongs to. */
-  readonly body: Body;
+  get body(): Body {
+    return this.bodyValue;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set body(_value: never) {
+    readOnly('body', 'a shape stays on the body it was made for');
+  }
+  /** @internal Behind {@link geometry}. */
+  geometryValue: Geometry;
   /** Geometry in the body's frame (read-only: build a new shape to change it). */
-  readonly geometry: Geometry;
+  get geometry(): Geometry {
+    return this.geometryValue;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set geometry(_value: never) {
+    readOnly('geometry', 'build a new shape to change it');
+  }
+  /** @internal Behind {@link density}. */
+  densityValue = 1;
   /** Mass per area (kg/m^2). Read-only: a shape keeps the density it was built with. */
-  readonly density: number = 1;
+  get density(): number {
+    return this.densityValue;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set density(_value: never) {
+    readOnly('density', 'a shape keeps the density it was built with (add a new shape)');
+  }
   /** @internal Friction behind {@link friction}. */
   frictionValue = 0.6;
   /** @internal Restitution behind {@link restitution}. */
   restitutionValue = -0;
+  /** @internal Behind {@link sensor}. */
+  sensorValue = false;
   /** True for a sensor: it reports overlaps and never collides. Fixed at creation. */
-  readonly sensor: boolean = false;
+  get sensor(): boolean {
+    return this.sensorValue;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set sensor(_value: never) {
+    readOnly('sensor', 'a shape is a sensor or not from its creation (add a new shape)');
+  }
   /** @internal Filter bits (see {@link filter}). */
   categoryBits = 1;
   /** @internal */
@@ -168,13 +200,13 @@ export class Shape {
 
   /** `geometry` is built from `options` unless given (a part of a split polygon). */
   constructor(body: Body, options: ShapeOptions, field: string, geometry?: Geometry) {
-    this.body = body;
+    this.bodyValue = body;
     requireObject(field, options, 'a shape description object');
-    this.density = requireNonNegative(`${field}.density`, options.density ?? 1, MAX_DENSITY);
+    this.densityValue = requireNonNegative(`${field}.density`, options.density ?? 1, MAX_DENSITY);
     this.frictionValue = requireFriction(`${field}.friction`, options.friction ?? 0.6);
     this.restitutionValue = requireRestitution(`${field}.restitution`, options.restitution ?? 0);
-    this.geometry = geometry ?? createGeometries(options, field)[0]!;
-    this.sensor = optionalBoolean(`${field}.sensor`, options.sensor, false);
+    this.geometryValue = geometry ?? createGeometries(options, field)[0]!;
+    this.sensorValue = optionalBoolean(`${field}.sensor`, options.sensor, false);
     this.setFilter(resolveFilter(`${field}.filter`, options.filter));
   }
 

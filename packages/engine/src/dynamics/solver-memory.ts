@@ -68,8 +68,27 @@ export class SolverMemory {
     private readonly contactStride: number,
     private readonly tableStride: number,
   ) {
-    const initial = [64 * 8, 256 * constraintStride, 512, 256, 256, 256];
-    this.layout(initial.concat([256 * contactStride, 512, 64 * tableStride]), false);
+    this.layout(this.initialCapacities(), false);
+  }
+
+  private initialCapacities(): number[] {
+    const initial = [64 * 8, 256 * this.constraintStride, 512, 256, 256, 256];
+    return initial.concat([256 * this.contactStride, 512, 64 * this.tableStride]);
+  }
+
+  /**
+   * Shrinks back to the first sizes, keeping room for (and the numbers of) `contacts` contact
+   * slots: for a world that lost most of its bodies. Leaves the WebAssembly memory (which cannot
+   * shrink) for an ArrayBuffer; a later step with many contacts moves back to the kernel.
+   */
+  shrink(contacts: number): void {
+    const wanted = this.initialCapacities();
+    this.sizeContacts(wanted, contacts);
+    const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
+    if (total >= this.buffer.byteLength / 2) return; // not worth a move
+    this.wasm = null;
+    this.kernel = null;
+    this.layout(wanted, false);
   }
 
   /** Makes room for `doubles` state numbers; returns the states' view. */
@@ -189,7 +208,8 @@ export class SolverMemory {
     }
     const bytes = new Uint8Array(buffer);
     const from = this.offsets;
-    const sizes = this.capacities.map((c, r) => c * ELEMENT_BYTES[r]!);
+    // A region keeps what fits (all of it when growing; the live part when shrinking).
+    const sizes = this.capacities.map((c, r) => Math.min(c, capacities[r]!) * ELEMENT_BYTES[r]!);
     if (buffer === oldBuffer) {
       // The same memory, big enough: regions only move up, so move the last first, so none
       // overwrites one not yet moved.

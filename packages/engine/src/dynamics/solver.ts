@@ -1,3 +1,4 @@
+import { releaseFrom } from '../core/release.ts';
 import type { Body } from './body.ts';
 import type { BodyBounds } from './body-bounds.ts';
 import {
@@ -109,6 +110,34 @@ export class Solver {
   private readonly batches = new SolverBatches();
   private readonly contactSoftness = new Softness();
   private readonly staticSoftness = new Softness();
+
+  /**
+   * Drops the references the per-step lists hold to the last step's bodies and joints (a removed
+   * body must not stay reachable): overwritten with null in place, no allocation. Only the step
+   * reads these lists.
+   */
+  releaseReferences(): void {
+    releaseFrom(this.awake, 0);
+    this.awakeCount = 0;
+    releaseFrom(this.fastBodies, 0);
+    this.fastCount = 0;
+    releaseFrom(this.fastBullets, 0);
+    this.fastBulletCount = 0;
+    this.joints.releaseReferences();
+  }
+
+  /**
+   * Frees the room sized for many more bodies and contacts than the world now has (`contacts`
+   * live contact slots, kept); the next steps grow it again as needed.
+   */
+  shrink(contacts: number): void {
+    this.releaseReferences();
+    this.awake.length = 0;
+    this.fastBodies.length = 0;
+    this.fastBullets.length = 0;
+    if (this.params.length > PARAM_STRIDE * 64) this.params = new Float64Array(PARAM_STRIDE * 64);
+    this.memory.shrink(contacts);
+  }
 
   /**
    * Makes room for a step of `bodies` bodies and `contacts` contacts in one move of the solver

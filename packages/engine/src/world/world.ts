@@ -14,29 +14,11 @@ import {
 } from '../core/validate.ts';
 import { BroadPhase, type ProxyType } from '../collision/broad-phase.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
-import { bodyListeners, type Body } from '../dynamics/body.ts';
-import type { Contact } from '../dynamics/contact.ts';
-import {
-  CONTACT_STRIDE,
-  NORMAL_X,
-  NORMAL_Y,
-  POINT_COUNT,
-  POINT_STRIDE,
-  POINTS,
-  P_RELATIVE_VELOCITY,
-  P_SEPARATION,
-  P_STEP_NORMAL_IMPULSE,
-  P_STEP_TANGENT_IMPULSE,
-  P_X,
-  P_Y,
-} from '../dynamics/contact-data.ts';
+import type { Body } from '../dynamics/body.ts';
 import { BodyBounds } from '../dynamics/body-bounds.ts';
 import { ContactManager } from '../dynamics/contact-manager.ts';
 import { ContinuousSolver } from '../dynamics/continuous.ts';
 import {
-  CollisionEventData,
-  ContactEventData,
-  SensorEventData,
   WORLD_EVENT_NAMES,
   type BodyEvents,
   type ContactView,
@@ -48,6 +30,7 @@ import { Sensors } from '../dynamics/sensor.ts';
 import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
 import { ShapeTable } from '../dynamics/shape-table.ts';
 import { Solver } from '../dynamics/solver.ts';
+import { EventDispatch, forgetBodies } from './event-dispatch.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
 import type { WorldInternals } from './snapshot.ts';
 import { ShapeQueries, type QueryPose, type ShapeCastHit } from './shape-queries.ts';
@@ -89,7 +72,6 @@ export class World {
   );
   private readonly continuous = new ContinuousSolver();
   private readonly sensors = new Sensors();
-  private readonly sensorEvent = new SensorEventData();
   private readonly queries: WorldQueries;
   private readonly shapeQueries: ShapeQueries;
   private readonly shapesById: (Shape | null)[] = [];
@@ -102,12 +84,15 @@ export class World {
   private readonly pendingJointAdds: Joint[] = [];
   private readonly pendingJointRemoves: Joint[] = [];
   private readonly listeners = new Listeners<WorldEvents>(WORLD_EVENT_NAMES);
-  private readonly collisionEvent = new CollisionEventData();
-  private readonly contactEvent = new ContactEventData();
+  private readonly events: EventDispatch;
   private readonly gravityView: Vec2 = { x: 0, y: 0 };
   private readonly onPair = (shapeIdA: number, shapeIdB: number): void => {
     this.contactManager.addPair(shapeIdA, shapeIdB, this.shapesById);
   };
+  /** Whether the step's lists still point at bodies of the last step (see releaseReferences). */
+  private holdsReferences = false;
+  /** Most bodies since the memory was last sized down (see releaseMemory). */
+  private mostBodies = 0;
   private lastStep = 1 / 60;
   private stepCount = 0;
 
@@ -116,10 +101,14 @@ export class World {
     this.queries = new WorldQueries(this.broadPhase, this.shapesById);
     this.solver.joints.list = this.jointList;
     this.shapeQueries = new ShapeQueries(this.broadPhase, this.shapesById);
-    this.islands.onWake = (body) => {
-      const listeners = this.listeners.get('wake');
-      if (listeners !== undefined) callAll(listeners, body);
-    };
+    this.events = new EventDispatch(
+      this,
+      this.listeners,
+      this.contactManager,
+      this.sensors,
+      this.solver,
+    );
+    this.islands.onWake = (body) => this.events.emitWake(body);
   }
 
   // ---------------------------------------------------------------- settings
@@ -195,6 +184,13 @@ export class World {
         `must be a Body (for example particle({...})), got ${describeValue(body)}.`,
       );
     }
+    if (body.worldRef === this && body.removalPending) {
+      // Removed and added again before the removal applied: the removal is cancelled, and the
+      // body stays in the world as if neither call had been made.
+      this.pendingRemoves.splice(this.pendingRemoves.indexOf(body), 1);
+      body.removalPending = false;
+      return body;
+    }
     if (body.worldRef !== null) {
       throw new PhysicalError(
         'body',
@@ -234,14 +230,14 @@ export class World {
       return;
     }
     this.locked = true;
+    let thrown: Thrown | null = null;
     try {
       this.extractBody(body);
-      this.dispatchContactEnds();
-    } finally {
-      this.locked = false;
-      this.broadPhase.rebuildMoved();
+      this.events.dispatchEnds();
+    } catch (error) {
+      thrown = { error };
     }
-    this.flushPending();
+    this.unlock(thrown);
   }
 
   /** True if the body is in this world (or joins it at the end of the current step). */
@@ -277,6 +273,12 @@ export class World {
         `must be a Joint (for example revoluteJoint({...})), got ${describeValue(joint)}.`,
       );
     }
+    if (joint.worldRef === this && joint.removalPending) {
+      // As for bodies: removed and added again before the removal applied cancels the removal.
+      this.pendingJointRemoves.splice(this.pendingJointRemoves.indexOf(joint), 1);
+      joint.removalPending = false;
+      return joint;
+    }
     if (joint.worldRef !== null) {
       throw new PhysicalError(
         'joint',
@@ -297,13 +299,14 @@ export class World {
       return joint;
     }
     this.locked = true;
+    let thrown: Thrown | null = null;
     try {
       this.insertJoint(joint);
-      this.dispatchContactEnds();
-    } finally {
-      this.locked = false;
+      this.events.dispatchEnds();
+    } catch (error) {
+      thrown = { error };
     }
-    this.flushPending();
+    this.unlock(thrown);
     return joint;
   }
 
@@ -332,13 +335,13 @@ export class World {
       return;
     }
     this.locked = true;
+    let thrown: Thrown | null = null;
     try {
       this.extractJoint(joint);
-    } finally {
-      this.locked = false;
-      this.broadPhase.rebuildMoved();
+    } catch (error) {
+      thrown = { error };
     }
-    this.flushPending();
+    this.unlock(thrown);
   }
 
   // ---------------------------------------------------------------- stepping
@@ -368,6 +371,8 @@ export class World {
       );
     }
     this.locked = true;
+    this.holdsReferences = true;
+    let thrown: Thrown | null = null;
     try {
       this.broadPhase.updatePairs(this.onPair);
       // Room for the whole step in one move of the solver memory, then the new contacts.
@@ -397,12 +402,13 @@ export class World {
       }
       this.lastStep = dt;
       this.stepCount++;
-      this.dispatchEvents();
-    } finally {
-      this.locked = false;
-      this.broadPhase.rebuildMoved();
+      this.events.dispatchStep();
+    } catch (error) {
+      // A listener threw: the step's remaining events are not delivered, but the changes queued
+      // so far still apply (below), so the world is consistent when the error reaches the caller.
+      thrown = { error };
     }
-    this.flushPending();
+    this.unlock(thrown);
   }
 
   // ---------------------------------------------------------------- queries
@@ -483,12 +489,13 @@ export class World {
    */
   forEachContact(visitor: (contact: ContactView) => void): void {
     requireFunction('visitor', visitor);
-    const event = this.collisionEvent;
+    const event = this.events.collisionEvent;
     for (const contact of this.contactManager.contacts) {
       if (!contact.touching) continue;
-      this.fillCollisionEvent(contact, event);
+      this.events.fillCollisionEvent(contact, event);
       visitor(event);
     }
+    forgetBodies(event);
   }
 
   // ---------------------------------------------------------------- events
@@ -561,7 +568,7 @@ export class World {
     }
     this.broadPhase.bufferMove(shape.proxyKey);
     this.wakeBody(shape.body);
-    this.dispatchContactEnds();
+    this.events.dispatchEnds();
   }
 
   /** @internal */
@@ -569,7 +576,7 @@ export class World {
     if (shape.proxyKey < 0) return;
     this.contactManager.destroyContactsOfShape(shape);
     this.destroyProxy(shape);
-    this.dispatchContactEnds();
+    this.events.dispatchEnds();
   }
 
   // ---------------------------------------------------------------- internals
@@ -582,6 +589,7 @@ export class World {
     body.center0Y = body.centerY;
     body.angle0 = body.angleValue;
     this.bodyList.push(body);
+    if (this.bodyList.length > this.mostBodies) this.mostBodies = this.bodyList.length;
     for (const shape of body.shapeList) this.createProxy(shape);
     callAll(this.listeners.get('bodyAdded'), body);
   }
@@ -642,7 +650,38 @@ export class World {
     body.worldIndex = -1;
     body.removalPending = false;
     body.solverIndex = 0;
+    this.releaseReferences();
+    this.islands.releaseWoken();
+    this.releaseMemory();
     callAll(this.listeners.get('bodyRemoved'), body);
+  }
+
+  /**
+   * A removed body (and its userData) must not stay reachable from the world: the step's lists
+   * still point at the last step's bodies and shapes, so the first removal after a step
+   * overwrites them with null (in place: the next step allocates nothing). Pooled contacts drop
+   * theirs when they go back to the pool (ContactManager.destroyContact).
+   */
+  private releaseReferences(): void {
+    if (!this.holdsReferences) return;
+    this.holdsReferences = false;
+    this.solver.releaseReferences();
+    this.contactManager.releaseReferences();
+    this.islands.releaseReferences();
+    this.sensors.releaseReferences();
+  }
+
+  /**
+   * Once the world has lost three quarters of its most bodies, the room sized for them goes too
+   * (solver memory, per-body tables, pooled contacts), so a world emptied of 100,000 bodies
+   * weighs about what an empty one does. The next steps grow it again if needed.
+   */
+  private releaseMemory(): void {
+    const count = this.bodyList.length;
+    if (this.mostBodies < 1024 || 4 * count > this.mostBodies) return;
+    this.mostBodies = count;
+    this.solver.shrink(this.contactManager.contacts.length);
+    this.contactManager.shrink();
   }
 
   private createProxy(shape: Shape): void {
@@ -700,7 +739,29 @@ export class World {
     }
   }
 
+  /**
+   * Ends a locked section (a step, or a change that reports contact ends): unlocks, rebuilds the
+   * trees the step grew, then applies the changes listeners queued (the deferred point), even
+   * when a listener threw; then rethrows the first error.
+   */
+  private unlock(thrown: Thrown | null): void {
+    this.locked = false;
+    this.broadPhase.rebuildMoved();
+    try {
+      this.flushPending();
+    } catch (error) {
+      thrown ??= { error };
+    }
+    if (thrown !== null) throw thrown.error;
+  }
+
+  /**
+   * Applies the queued changes, and then the events they cause, which may queue more. A listener
+   * that throws (bodyAdded, bodyRemoved, jointRemoved, an end) does not stop the rest: every
+   * queued change applies, and the first error is rethrown at the end.
+   */
   private flushPending(): void {
+    let thrown: Thrown | null = null;
     while (
       this.pendingAdds.length > 0 ||
       this.pendingRemoves.length > 0 ||
@@ -716,181 +777,14 @@ export class World {
         while (this.pendingRemoves.length > 0) this.extractBody(this.pendingRemoves.shift()!);
         while (this.pendingAdds.length > 0) this.insertBody(this.pendingAdds.shift()!);
         while (this.pendingJointAdds.length > 0) this.insertJoint(this.pendingJointAdds.shift()!);
-        this.dispatchContactEnds();
+        this.events.dispatchEnds();
+      } catch (error) {
+        thrown ??= { error };
       } finally {
         this.locked = false;
       }
     }
-  }
-
-  private dispatchEvents(): void {
-    const manager = this.contactManager;
-    const began = manager.began;
-    if (manager.beganCount > 0) {
-      const event = this.contactEvent;
-      for (let i = 0; i < manager.beganCount; i++) {
-        const contact = began[i]!;
-        this.emitContact('contactBegin', event, contact.shapeA, contact.shapeB);
-      }
-    }
-    this.dispatchContactEnds();
-    this.dispatchSensorBegins();
-    this.dispatchCollisions();
-    this.dispatchMoves();
-  }
-
-  private dispatchContactEnds(): void {
-    const manager = this.contactManager;
-    const count = manager.endedCount;
-    manager.endedCount = 0;
-    for (let i = 0; i < count; i++) {
-      this.emitContact('contactEnd', this.contactEvent, manager.endedA[i]!, manager.endedB[i]!);
-    }
-    const sensors = this.sensors;
-    const ended = sensors.endedCount;
-    sensors.endedCount = 0;
-    for (let i = 0; i < ended; i++) {
-      this.emitSensor('sensorEnd', sensors.endedSensor[i]!, sensors.endedVisitor[i]!);
-    }
-  }
-
-  private dispatchSensorBegins(): void {
-    const sensors = this.sensors;
-    const count = sensors.beganCount;
-    sensors.beganCount = 0;
-    for (let i = 0; i < count; i++) {
-      this.emitSensor('sensorBegin', sensors.beganSensor[i]!, sensors.beganVisitor[i]!);
-    }
-  }
-
-  private emitSensor(type: 'sensorBegin' | 'sensorEnd', sensor: Shape, visitor: Shape): void {
-    const sensorBody = sensor.body;
-    const visitorBody = visitor.body;
-    const worldListeners = this.listeners.get(type);
-    const sensorListeners = sensorBody.listeners.get(type);
-    const visitorListeners = visitorBody.listeners.get(type);
-    if (
-      worldListeners === undefined &&
-      sensorListeners === undefined &&
-      visitorListeners === undefined
-    )
-      return;
-    if (type === 'sensorBegin' && (sensorBody.removalPending || visitorBody.removalPending)) return;
-    const event = this.sensorEvent;
-    event.sensorShape = sensor;
-    event.sensorBody = sensorBody;
-    event.visitorShape = visitor;
-    event.visitorBody = visitorBody;
-    callAll(worldListeners, event);
-    callAll(sensorListeners, event);
-    callAll(visitorListeners, event);
-  }
-
-  private emitContact(
-    type: 'contactBegin' | 'contactEnd',
-    event: ContactEventData,
-    shapeA: Shape,
-    shapeB: Shape,
-  ): void {
-    const bodyA = shapeA.body;
-    const bodyB = shapeB.body;
-    const worldListeners = this.listeners.get(type);
-    const listenersA = bodyA.listeners.get(type);
-    const listenersB = bodyB.listeners.get(type);
-    if (worldListeners === undefined && listenersA === undefined && listenersB === undefined)
-      return;
-    if (type === 'contactBegin' && (bodyA.removalPending || bodyB.removalPending)) return;
-    event.bodyA = bodyA;
-    event.bodyB = bodyB;
-    event.shapeA = shapeA;
-    event.shapeB = shapeB;
-    callAll(worldListeners, event);
-    callAll(listenersA, event);
-    callAll(listenersB, event);
-  }
-
-  private dispatchCollisions(): void {
-    const contacts = this.contactManager.contacts;
-    const slots = this.solver.constraints.slots;
-    const worldListeners = this.listeners.get('collision');
-    if (worldListeners === undefined && bodyListeners.total === 0) return;
-    const event = this.collisionEvent;
-    for (let i = 0; i < this.solver.constraints.count; i++) {
-      const contact = contacts[slots[i]!]!;
-      const bodyA = contact.bodyA;
-      const bodyB = contact.bodyB;
-      if (
-        worldListeners === undefined &&
-        bodyA.listeners.total === 0 &&
-        bodyB.listeners.total === 0
-      ) {
-        continue;
-      }
-      const listenersA = bodyA.listeners.get('collision');
-      const listenersB = bodyB.listeners.get('collision');
-      if (worldListeners === undefined && listenersA === undefined && listenersB === undefined)
-        continue;
-      if (bodyA.removalPending || bodyB.removalPending) continue;
-      this.fillCollisionEvent(contact, event);
-      if (event.normalImpulse <= 0) continue;
-      callAll(worldListeners, event);
-      callAll(listenersA, event);
-      callAll(listenersB, event);
-    }
-  }
-
-  private fillCollisionEvent(contact: Contact, event: CollisionEventData): void {
-    const data = this.contactManager.slots.data;
-    const base = contact.index * CONTACT_STRIDE;
-    const pointCount = data[base + POINT_COUNT]!;
-    let normalImpulse = 0;
-    let tangentImpulse = 0;
-    let approach = 0;
-    for (let j = 0; j < pointCount; j++) {
-      const p = base + POINTS + j * POINT_STRIDE;
-      // What the step delivered (all sub-steps plus restitution), not the per-sub-step warm start.
-      const pointNormal = data[p + P_STEP_NORMAL_IMPULSE]!;
-      const pointTangent = data[p + P_STEP_TANGENT_IMPULSE]!;
-      normalImpulse += pointNormal;
-      tangentImpulse += pointTangent;
-      approach = Math.max(approach, -data[p + P_RELATIVE_VELOCITY]!);
-      const point = event.points[j]!;
-      point.x = data[p + P_X]!;
-      point.y = data[p + P_Y]!;
-      point.separation = data[p + P_SEPARATION]!;
-      point.normalImpulse = pointNormal;
-      point.tangentImpulse = pointTangent;
-    }
-    event.bodyA = contact.bodyA;
-    event.bodyB = contact.bodyB;
-    event.shapeA = contact.shapeA;
-    event.shapeB = contact.shapeB;
-    event.normalX = data[base + NORMAL_X]!;
-    event.normalY = data[base + NORMAL_Y]!;
-    event.pointCount = pointCount;
-    event.normalImpulse = normalImpulse;
-    event.tangentImpulse = tangentImpulse;
-    event.approachSpeed = approach;
-  }
-
-  private dispatchMoves(): void {
-    const awake = this.solver.awake;
-    const worldListeners = this.listeners.get('move');
-    if (worldListeners === undefined && bodyListeners.total === 0) return;
-    for (let i = 0; i < this.solver.awakeCount; i++) {
-      const body = awake[i]!;
-      if (worldListeners === undefined && body.listeners.total === 0) continue;
-      const listeners = body.listeners.get('move');
-      if ((worldListeners === undefined && listeners === undefined) || body.removalPending)
-        continue;
-      const moved =
-        body.centerX !== body.center0X ||
-        body.centerY !== body.center0Y ||
-        body.angleValue !== body.angle0;
-      if (!moved) continue;
-      callAll(worldListeners, body);
-      callAll(listeners, body);
-    }
+    if (thrown !== null) throw thrown.error;
   }
 
   /**
@@ -938,6 +832,11 @@ export class World {
   get lastStepDuration(): number {
     return this.lastStep;
   }
+}
+
+/** An error caught in a locked section, rethrown once the deferred changes applied. */
+interface Thrown {
+  readonly error: unknown;
 }
 
 /** A joint made by one of the joint factories (it has the solver's methods and a world slot). */

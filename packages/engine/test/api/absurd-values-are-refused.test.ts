@@ -33,14 +33,14 @@ describe('absurd values are refused', () => {
     ['dt', () => scene().world.step(1e300)],
     // Found by the long fuzz run: a step of 1e-300 s turned a joint's impulse into an infinite force.
     ['dt', () => scene().world.step(1e-300)],
-    ['shapes[0].radius', () => particle({ radius: 1e50 })],
-    ['shapes[0].width', () => box({ width: 1e300, height: 1 })],
-    ['shapes[0].restitution', () => particle({ radius: 1, restitution: 1e300 })],
-    ['shapes[0].density', () => particle({ radius: 1, density: MAX })],
+    ['radius', () => particle({ radius: 1e50 })],
+    ['width', () => box({ width: 1e300, height: 1 })],
+    ['restitution', () => particle({ radius: 1, restitution: 1e300 })],
+    ['density', () => particle({ radius: 1, density: MAX })],
     ['mass', () => particle({ radius: 1, mass: MAX })],
     ['linearVelocity.x', () => particle({ radius: 1, linearVelocity: { x: MAX, y: 0 } })],
     ['position.x', () => particle({ radius: 1, position: { x: 1e100, y: 0 } })],
-    ['shapes[0].radius', () => capsule({ radius: 1e300, length: 1 })],
+    ['radius', () => capsule({ radius: 1e300, length: 1 })],
     ['gravity.y', () => new World({ gravity: { x: 0, y: MAX } })],
   ])('%s', (field, action) => {
     expect(physicalErrorOf(action).field).toBe(field);

@@ -27,9 +27,9 @@ describe('capsule input', () => {
     ['length', () => capsule({ length: NaN, radius: 0.2 })],
     ['length', () => capsule({ length: 0, radius: 0.2 })],
     ['length', () => capsule({ length: -1, radius: 0.2 })],
-    ['shapes[0].radius', () => capsule({ length: 1, radius: 0 })],
-    ['shapes[0].radius', () => capsule({ length: 1, radius: Infinity })],
-    ['shapes[0].density', () => capsule({ length: 1, radius: 0.2, density: 0 })],
+    ['radius', () => capsule({ length: 1, radius: 0 })],
+    ['radius', () => capsule({ length: 1, radius: Infinity })],
+    ['density', () => capsule({ length: 1, radius: 0.2, density: 0 })],
     [
       'shapes[0].center1',
       () =>
@@ -104,7 +104,7 @@ describe('polygon outlines', () => {
       { x: 0, y: 2 },
     ];
     const repeated = errorOf(() => polygon({ vertices: pinched }));
-    expect(repeated.field).toBe('shapes[0].vertices');
+    expect(repeated.field).toBe('vertices');
     expect(repeated.message).toMatch(/same point/);
     const flat = errorOf(() =>
       polygon({
@@ -123,7 +123,7 @@ describe('polygon outlines', () => {
     expect(errorOf(() => polygon({ vertices: tooMany })).message).toMatch(/at most 256/);
     expect(
       errorOf(() => polygon({ vertices: [square[0]!, { x: NaN, y: 1 }, square[2]!] })).field,
-    ).toBe('shapes[0].vertices[1].x');
+    ).toBe('vertices[1].x');
   });
 
   it('splits a concave outline into convex shapes on one body, keeping the material', () => {
@@ -225,7 +225,7 @@ describe('polygon outlines', () => {
         radius: 0.1,
       }),
     );
-    expect(error.field).toBe('shapes[0].radius');
+    expect(error.field).toBe('radius');
   });
 
   it('steps a world of capsules, concave bodies and rounded boxes without NaN', () => {

@@ -1,4 +1,4 @@
-import { PhysicalError } from '../../core/errors.ts';
+import { PhysicalError, readOnly } from '../../core/errors.ts';
 import {
   optionalBoolean,
   requireBoolean,
@@ -79,7 +79,13 @@ export const DISTANCE_STATE: JointStateLayout = {
  * own, the range limits one-sided and speculative like contacts.
  */
 export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
-  readonly type = 'distance' as const;
+  get type(): 'distance' {
+    return 'distance';
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set type(_value: never) {
+    readOnly('type', 'a joint keeps its kind');
+  }
   /** @internal Anchors in each body's frame (relative to the body origin, m). */
   localAnchorAX = -0;
   /** @internal */

@@ -1,3 +1,4 @@
+import { releaseFrom } from '../../core/release.ts';
 import type { Joint, JointStep } from './joint.ts';
 
 /**
@@ -8,6 +9,8 @@ import type { Joint, JointStep } from './joint.ts';
 export interface JointBatch {
   /** Forgets last step's joints. */
   clear(): void;
+  /** Forgets its joints (a removed body must not stay reachable through them). */
+  release(): void;
   /** Adds a joint of the batch's kind, already prepared for the step. */
   add(joint: Joint): void;
   warmStart(s: Float64Array): void;
@@ -42,6 +45,11 @@ export abstract class FlatJointBatch<J extends BatchedJoint> implements JointBat
 
   clear(): void {
     this.count = 0;
+  }
+
+  release(): void {
+    this.count = 0;
+    releaseFrom(this.joints, 0);
   }
 
   add(joint: Joint): void {

@@ -1,3 +1,4 @@
+import { releaseFrom } from '../../core/release.ts';
 import { Softness } from '../softness.ts';
 import type { Joint, JointStep, JointType } from './joint.ts';
 import type { JointBatch } from './joint-batch.ts';
@@ -68,6 +69,14 @@ export class JointSolver {
     this.chains?.prepare(active, count, bodyCount, step.h);
     // After the chains: they add their pins' geometric stiffness to the joints' inertia.
     for (let i = 0; i < count; i++) this.batchOf[active[i]!.type]!.add(active[i]!);
+  }
+
+  /** Drops the references to the last step's joints (see Solver.releaseReferences). */
+  releaseReferences(): void {
+    releaseFrom(this.active, 0);
+    this.count = 0;
+    for (let i = 0; i < this.batches.length; i++) this.batches[i]!.release();
+    this.chains?.release();
   }
 
   /** Kind after kind, in the order the kinds first came. */

@@ -1,5 +1,5 @@
 import type { JointBatch } from './joint-batch.ts';
-import { PhysicalError } from '../../core/errors.ts';
+import { PhysicalError, readOnly } from '../../core/errors.ts';
 import {
   describeValue,
   MAX_ANGLE,
@@ -123,12 +123,36 @@ export function importLocalAnchors(state: JointState, joint: LocalAnchors): void
 export abstract class Joint<UserData = unknown> {
   /** What kind of joint this is. */
   abstract readonly type: JointType;
+  /** @internal Behind {@link bodyA}. */
+  bodyAValue: Body;
   /** First body (for a mouse joint, the dragged body, like {@link bodyB}). */
-  readonly bodyA: Body;
+  get bodyA(): Body {
+    return this.bodyAValue;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set bodyA(_value: never) {
+    readOnly('bodyA', 'a joint keeps its bodies (remove it and add a new one)');
+  }
+  /** @internal Behind {@link bodyB}. */
+  bodyBValue: Body;
   /** Second body: the reaction force and torque act on it. */
-  readonly bodyB: Body;
+  get bodyB(): Body {
+    return this.bodyBValue;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set bodyB(_value: never) {
+    readOnly('bodyB', 'a joint keeps its bodies (remove it and add a new one)');
+  }
+  /** @internal Behind {@link collideConnected}. */
+  collideConnectedValue: boolean;
   /** Whether the two bodies may collide with each other. */
-  readonly collideConnected: boolean;
+  get collideConnected(): boolean {
+    return this.collideConnectedValue;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set collideConnected(_value: never) {
+    readOnly('collideConnected', 'fixed when the joint is made');
+  }
   /** Anything the app keeps with the joint. */
   userData: UserData | undefined;
 
@@ -169,15 +193,19 @@ export abstract class Joint<UserData = unknown> {
   private readonly anchorViewB: Vec2 = { x: 0, y: 0 };
 
   constructor(options: JointOptions<UserData>, bodyA: Body, bodyB: Body) {
-    this.bodyA = bodyA;
-    this.bodyB = bodyB;
-    this.collideConnected = optionalBoolean('collideConnected', options.collideConnected, false);
+    this.bodyAValue = bodyA;
+    this.bodyBValue = bodyB;
+    this.collideConnectedValue = optionalBoolean(
+      'collideConnected',
+      options.collideConnected,
+      false,
+    );
     this.userData = options.userData;
   }
 
-  /** The world this joint is in, or null. */
+  /** The world this joint is in, or null (null at once when its removal is queued in a listener). */
   get world(): World | null {
-    return this.worldRef;
+    return this.removalPending ? null : this.worldRef;
   }
 
   /**
@@ -406,8 +434,15 @@ export function requireOrdered(
   lower: number,
   upperField: string,
   upper: number,
+  changed: 'lower' | 'upper' = 'lower',
 ): void {
-  if (lower > upper) {
-    throw new PhysicalError(lowerField, `must not exceed ${upperField} (${upper}), got ${lower}.`);
+  if (lower <= upper) return;
+  // The error names the bound the user changed (`slide.upper = -5` names upper, not lower).
+  if (changed === 'upper') {
+    throw new PhysicalError(
+      upperField,
+      `must not be below ${lowerField} (${lower}), got ${upper}.`,
+    );
   }
+  throw new PhysicalError(lowerField, `must not exceed ${upperField} (${upper}), got ${lower}.`);
 }

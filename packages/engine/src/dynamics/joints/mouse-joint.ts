@@ -1,4 +1,4 @@
-import { PhysicalError } from '../../core/errors.ts';
+import { PhysicalError, readOnly } from '../../core/errors.ts';
 import {
   describeValue,
   requireNonNegative,
@@ -68,7 +68,13 @@ export const MOUSE_STATE: JointStateLayout = {
  * cannot fling a heavy stack. `bodyA` and `bodyB` are both the dragged body.
  */
 export class MouseJoint<UserData = unknown> extends Joint<UserData> {
-  readonly type = 'mouse' as const;
+  get type(): 'mouse' {
+    return 'mouse';
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set type(_value: never) {
+    readOnly('type', 'a joint keeps its kind');
+  }
   /** @internal Grabbed point in the body's frame (relative to the origin, m). */
   localAnchorX = -0;
   /** @internal */

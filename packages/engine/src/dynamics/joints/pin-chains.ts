@@ -1,3 +1,4 @@
+import { releaseFrom } from '../../core/release.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, STATE_STRIDE, V_X, V_Y, W } from '../body-state.ts';
 
 /** What the chain solve needs of a hinge (RevoluteJoint). */
@@ -61,6 +62,13 @@ export class PinChains {
   private hinge1: Int32Array = new Int32Array(64);
   private hinge2: Int32Array = new Int32Array(64);
   private used: Uint8Array = new Uint8Array(16);
+
+  /** Forgets the last step's joints (see Solver.releaseReferences). */
+  release(): void {
+    this.chainCount = 0;
+    releaseFrom(this.joints, 0);
+    releaseFrom(this.pins, 0);
+  }
 
   /** Finds the chains among `joints` (prepared this step); `bodyCount`: awake bodies. */
   prepare(

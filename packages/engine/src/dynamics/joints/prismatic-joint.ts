@@ -1,4 +1,4 @@
-import { PhysicalError } from '../../core/errors.ts';
+import { PhysicalError, readOnly } from '../../core/errors.ts';
 import {
   optionalBoolean,
   requireBoolean,
@@ -87,7 +87,13 @@ export const PRISMATIC_STATE: JointStateLayout = {
  * motor, limits) first, then a 2x2 block for the perpendicular offset and the relative angle.
  */
 export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
-  readonly type = 'prismatic' as const;
+  get type(): 'prismatic' {
+    return 'prismatic';
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set type(_value: never) {
+    readOnly('type', 'a joint keeps its kind');
+  }
   /** @internal Anchors in each body's frame (relative to the body origin, m) and A's axis. */
   localAnchorAX = -0;
   /** @internal */
@@ -199,7 +205,7 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set lower(value: number) {
-    this.setLimits(value, this.upperLimit);
+    this.applyLimits(value, this.upperLimit, 'lower');
   }
 
   /** Highest translation (m). */
@@ -208,14 +214,18 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set upper(value: number) {
-    this.setLimits(this.lowerLimit, value);
+    this.applyLimits(this.lowerLimit, value, 'upper');
   }
 
   /** Sets both translation limits (m); wakes the bodies. */
   setLimits(lower: number, upper: number): void {
+    this.applyLimits(lower, upper, 'lower');
+  }
+
+  private applyLimits(lower: number, upper: number, changed: 'lower' | 'upper'): void {
     requireRange('lower', lower, -jointMax('lower'), jointMax('lower'));
     requireRange('upper', upper, -jointMax('upper'), jointMax('upper'));
-    requireOrdered('lower', lower, 'upper', upper);
+    requireOrdered('lower', lower, 'upper', upper, changed);
     this.lowerLimit = lower;
     this.upperLimit = upper;
     this.wakeBodies();

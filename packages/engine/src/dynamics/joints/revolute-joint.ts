@@ -1,3 +1,4 @@
+import { readOnly } from '../../core/errors.ts';
 import {
   optionalBoolean,
   requireBoolean,
@@ -83,7 +84,13 @@ export const REVOLUTE_STATE: JointStateLayout = {
  * limits speculative (they allow closing the gap within a sub-step) like contacts.
  */
 export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
-  readonly type = 'revolute' as const;
+  get type(): 'revolute' {
+    return 'revolute';
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set type(_value: never) {
+    readOnly('type', 'a joint keeps its kind');
+  }
   /** @internal Anchor in each body's frame (relative to the body origin, m). */
   localAnchorAX = -0;
   /** @internal */
@@ -187,7 +194,7 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set lowerAngle(value: number) {
-    this.setLimits(value, this.upper);
+    this.applyLimits(value, this.upper, 'lower');
   }
 
   /** Highest joint angle (rad). */
@@ -196,14 +203,18 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   set upperAngle(value: number) {
-    this.setLimits(this.lower, value);
+    this.applyLimits(this.lower, value, 'upper');
   }
 
   /** Sets both angle limits (rad) at once; wakes the bodies. */
   setLimits(lowerAngle: number, upperAngle: number): void {
+    this.applyLimits(lowerAngle, upperAngle, 'lower');
+  }
+
+  private applyLimits(lowerAngle: number, upperAngle: number, changed: 'lower' | 'upper'): void {
     requireRange('lowerAngle', lowerAngle, -jointMax('lowerAngle'), jointMax('lowerAngle'));
     requireRange('upperAngle', upperAngle, -jointMax('upperAngle'), jointMax('upperAngle'));
-    requireOrdered('lowerAngle', lowerAngle, 'upperAngle', upperAngle);
+    requireOrdered('lowerAngle', lowerAngle, 'upperAngle', upperAngle, changed);
     this.lower = lowerAngle;
     this.upper = upperAngle;
     this.wakeBodies();

@@ -1,3 +1,4 @@
+import { readOnly } from '../../core/errors.ts';
 import { requireNonNegative } from '../../core/validate.ts';
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
@@ -53,7 +54,13 @@ export const WELD_STATE: JointStateLayout = {
  * the biased pass only, a soft part with its own softness in both passes.
  */
 export class WeldJoint<UserData = unknown> extends Joint<UserData> {
-  readonly type = 'weld' as const;
+  get type(): 'weld' {
+    return 'weld';
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set type(_value: never) {
+    readOnly('type', 'a joint keeps its kind');
+  }
   /** @internal Anchor in each body's frame (relative to the body origin, m). */
   localAnchorAX = -0;
   /** @internal */
