@@ -1,9 +1,12 @@
 /* eslint-disable no-console -- a command-line script: its output is the report */
 // Consumer test: the libraries as users receive them. Packs every library, installs the
 // tarballs (and only registry packages besides) into projects in a temp dir outside the
-// workspace, type-checks them under strict tsc, builds them with Vite, runs the Node scripts,
-// drives the pages in Chromium (a body falls, a collision event arrives, a drag moves it), and
-// runs publint and attw on every tarball. Any failure exits non-zero.
+// workspace: React 19 + Vue 3 + Svelte 5 + plain Vite in one, React 18 with @types/react@18 in
+// another (each install must resolve its peers without --legacy-peer-deps). Type-checks them
+// under strict tsc, Vue's templates with vue-tsc and Svelte's with svelte-check (and a bad
+// template must fail each checker), builds them with Vite, runs the Node scripts, drives the
+// pages in Chromium (a body falls, a collision event arrives, a drag moves it), and runs
+// publint and attw on every tarball. Any failure exits non-zero.
 // Run: `npx tsx consumers/run.ts` (after `npm ci`; CI runs it from .ci/run).
 import { execFileSync } from 'node:child_process';
 import { cpSync, mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
@@ -34,6 +37,16 @@ function run(command: string, args: readonly string[], cwd: string): string {
     const { stdout = '', stderr = '' } = error as { stdout?: string; stderr?: string };
     throw new Error(`${shown} failed:\n${stdout}${stderr}`, { cause: error });
   }
+}
+
+/** Runs a command that must fail; returns its output. */
+function failing(command: () => unknown, name: string): string {
+  try {
+    command();
+  } catch (error) {
+    return error instanceof Error ? error.message : String(error);
+  }
+  throw new Error(`${name} passed a template it must reject`);
 }
 
 async function check(name: string, body: () => unknown): Promise<void> {
@@ -120,11 +133,47 @@ writeFileSync(
         ...dependencies,
         react: '^19.0.0',
         'react-dom': '^19.0.0',
+        svelte: '^5.0.0',
         vue: '^3.5.0',
       },
       devDependencies: {
         '@types/react': '^19.0.0',
         '@types/react-dom': '^19.0.0',
+        '@vitejs/plugin-react': '^6.0.0',
+        'svelte-check': '^4.0.0',
+        typescript: '^6.0.0',
+        vite: '^8.0.0',
+        'vue-tsc': '^3.0.0',
+      },
+    },
+    null,
+    2,
+  ),
+);
+// React 18 with its own types: the peers of canvas and react must accept @types/react@18
+// (a plain `npm install`, no --legacy-peer-deps, fails with ERESOLVE otherwise). Only the
+// packages a React page needs: @physical/dom is an optional peer of @physical/react.
+const react18 = join(work, 'react18');
+cpSync(join(root, 'consumers/projects/react18'), join(react18, 'react18'), { recursive: true });
+cpSync(join(root, 'consumers/projects/shared'), join(react18, 'shared'), { recursive: true });
+cpSync(join(root, 'consumers/projects/tsconfig.json'), join(react18, 'tsconfig.json'));
+writeFileSync(
+  join(react18, 'package.json'),
+  JSON.stringify(
+    {
+      name: 'physical-consumer-react18',
+      private: true,
+      type: 'module',
+      dependencies: {
+        '@physical/engine': dependencies['@physical/engine'],
+        '@physical/canvas': dependencies['@physical/canvas'],
+        '@physical/react': dependencies['@physical/react'],
+        react: '^18.3.0',
+        'react-dom': '^18.3.0',
+      },
+      devDependencies: {
+        '@types/react': '^18.3.0',
+        '@types/react-dom': '^18.3.0',
         '@vitejs/plugin-react': '^6.0.0',
         typescript: '^6.0.0',
         vite: '^8.0.0',
@@ -134,7 +183,11 @@ writeFileSync(
     2,
   ),
 );
-run('npm', ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel=error'], app);
+const install = ['install', '--no-audit', '--no-fund', '--prefer-offline', '--loglevel=error'];
+run('npm', install, app);
+await check('npm install into React 18 with @types/react@18 (peers resolve)', () =>
+  run('npm', install, react18),
+);
 
 await check('node ESM import', () => console.log(run(process.execPath, ['node/esm.mjs'], app)));
 await check('node CommonJS require (require of ESM)', () =>
@@ -148,6 +201,54 @@ await check('strict tsc over the Vite + TypeScript project (only @physical/canva
 await check('strict tsc over the React and Vue projects', () =>
   run(process.execPath, ['node_modules/typescript/bin/tsc', '-p', 'tsconfig.json'], app),
 );
+await check('strict tsc over the React 18 project (@types/react@18)', () =>
+  run(
+    process.execPath,
+    ['node_modules/typescript/bin/tsc', '-p', 'react18/tsconfig.json'],
+    react18,
+  ),
+);
+// The templates, with each framework's own checker: a good one passes, and a bad `fit` fails
+// (so the checker does see the tag's typings rather than an unknown element).
+await check('vue-tsc over a Vue SFC template (@physical/canvas/vue)', () =>
+  run(process.execPath, ['node_modules/vue-tsc/bin/vue-tsc.js', '-p', 'vue/tsconfig.json'], app),
+);
+await check('vue-tsc rejects a bad attribute in a template', () => {
+  const output = failing(
+    () =>
+      run(
+        process.execPath,
+        ['node_modules/vue-tsc/bin/vue-tsc.js', '-p', 'vue-bad/tsconfig.json'],
+        app,
+      ),
+    'vue-tsc',
+  );
+  if (!output.includes('sideways'))
+    throw new Error(`vue-tsc failed for another reason:\n${output}`);
+});
+const svelteCheck = (folder: string): string =>
+  run(
+    process.execPath,
+    [
+      'node_modules/svelte-check/bin/svelte-check',
+      '--workspace',
+      folder,
+      '--tsconfig',
+      `${folder}/tsconfig.json`,
+      '--fail-on-warnings',
+      '--output',
+      'human',
+    ],
+    app,
+  );
+await check('svelte-check over a Svelte 5 template (@physical/canvas/svelte)', () =>
+  svelteCheck('svelte'),
+);
+await check('svelte-check rejects a bad attribute in a template', () => {
+  const output = failing(() => svelteCheck('svelte-bad'), 'svelte-check');
+  if (!output.includes('sideways'))
+    throw new Error(`svelte-check failed for another reason:\n${output}`);
+});
 const pages = ['vite-ts', 'react', 'vue'] as const;
 for (const page of pages) {
   await check(`vite build ${page}`, () =>
@@ -158,6 +259,13 @@ for (const page of pages) {
     ),
   );
 }
+await check('vite build react18', () =>
+  run(
+    process.execPath,
+    ['node_modules/vite/bin/vite.js', 'build', 'react18', '--base', './', '--logLevel', 'warn'],
+    react18,
+  ),
+);
 
 // 4. The pages in Chromium.
 const types: Record<string, string> = {
@@ -166,7 +274,8 @@ const types: Record<string, string> = {
   '.css': 'text/css',
 };
 const server: Server = createServer((request, response) => {
-  const path = join(app, decodeURIComponent(new URL(request.url ?? '/', 'http://x').pathname));
+  const pathname = decodeURIComponent(new URL(request.url ?? '/', 'http://x').pathname);
+  const path = pathname.startsWith('/react18/') ? join(react18, pathname) : join(app, pathname);
   try {
     const file = statSync(path).isDirectory() ? join(path, 'index.html') : path;
     response.writeHead(200, { 'content-type': types[extname(file)] ?? 'application/octet-stream' });
@@ -233,7 +342,7 @@ async function drivePage(name: string): Promise<void> {
   }
 }
 
-for (const name of pages) {
+for (const name of [...pages, 'react18']) {
   await check(`${name} page in Chromium: falls, collides, drags`, async () => {
     // One retry, as the browser tests have: pointer input on a 2-core CI machine can miss a
     // frame. A page that fails twice fails the test; the first failure is printed either way.
