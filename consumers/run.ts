@@ -9,7 +9,15 @@
 // publint and attw on every tarball. Any failure exits non-zero.
 // Run: `npx tsx consumers/run.ts` (after `npm ci`; CI runs it from .ci/run).
 import { execFileSync } from 'node:child_process';
-import { cpSync, mkdtempSync, readFileSync, rmSync, statSync, writeFileSync } from 'node:fs';
+import {
+  cpSync,
+  mkdirSync,
+  mkdtempSync,
+  readFileSync,
+  rmSync,
+  statSync,
+  writeFileSync,
+} from 'node:fs';
 import { createServer, type Server } from 'node:http';
 import { tmpdir } from 'node:os';
 import { extname, join, resolve } from 'node:path';
@@ -63,7 +71,8 @@ function kib(bytes: number): string {
   return `${(bytes / 1024).toFixed(1)} kB`;
 }
 
-// 1. Pack: build each library once (prepack would rebuild its dependencies for each), then pack.
+// 1. Pack: build each library once (its `prepack` does the same: `tsc -b`, which skips the
+// libraries it builds on when they are up to date, and the CDN bundle), then pack.
 for (const name of libraries) run('npm', ['run', 'build', '-w', `@physical/${name}`], root);
 const tarballs: Record<string, string> = {};
 for (const name of libraries) {
@@ -272,6 +281,8 @@ const types: Record<string, string> = {
   '.html': 'text/html',
   '.js': 'text/javascript',
   '.css': 'text/css',
+  '.json': 'application/json',
+  '.map': 'application/json',
 };
 const server: Server = createServer((request, response) => {
   const pathname = decodeURIComponent(new URL(request.url ?? '/', 'http://x').pathname);
@@ -340,6 +351,99 @@ async function drivePage(name: string): Promise<void> {
   } finally {
     await page.close();
   }
+}
+
+// The READMEs' CDN snippets, as written, with the CDN's address pointed at the installed
+// tarballs' files: one ES module file per package, loaded by <script type="module">.
+const cdn = /https:\/\/cdn\.jsdelivr\.net\/npm\/@physical\/(\w+)@[\d.]+\//g;
+// React's own builds are CommonJS: one ES module of React and react-dom/client stands in for the
+// import map's CDN addresses (the binding and the page share one React).
+const reactNames = (module: string): string[] =>
+  Object.keys(
+    JSON.parse(
+      run(
+        process.execPath,
+        ['-e', `console.log(JSON.stringify(Object.keys(require('${module}'))))`],
+        app,
+      ),
+    ) as Record<string, unknown>,
+  ).filter((key) => /^[A-Za-z_$][\w$]*$/.test(key) && key !== 'default');
+await check('a local ES module build of React for the React snippet', async () => {
+  const ownNames = reactNames('react');
+  const clientNames = reactNames('react-dom/client').filter((key) => !ownNames.includes(key));
+  const { build } = await import('esbuild');
+  await build({
+    stdin: {
+      contents: [
+        `import React from 'react'; import * as client from 'react-dom/client';`,
+        `export default React;`,
+        `export const { ${ownNames.join(', ')} } = React;`,
+        `export const { ${clientNames.join(', ')} } = client;`,
+      ].join('\n'),
+      resolveDir: app,
+    },
+    bundle: true,
+    format: 'esm',
+    outfile: join(app, 'cdn/react.js'),
+    define: { 'process.env.NODE_ENV': '"production"' },
+    logLevel: 'error',
+  });
+});
+async function runSnippet(name: string): Promise<void> {
+  const readme = readFileSync(join(root, 'packages', name, 'README.md'), 'utf8');
+  const section = readme.split('## From a CDN, without a build')[1] ?? '';
+  const snippet = /```html\n([\s\S]*?)```/.exec(section)?.[1];
+  if (snippet === undefined) throw new Error(`no CDN snippet in packages/${name}/README.md`);
+  const html = snippet
+    .replace(cdn, `${origin}/node_modules/@physical/$1/`)
+    .replace(/https:\/\/esm\.sh\/react(-dom)?@\d+(\/client)?/g, `${origin}/cdn/react.js`);
+  if (/https?:\/\/(?!127\.0\.0\.1)/.test(html))
+    throw new Error(`snippet loads from outside:\n${html}`);
+  writeFileSync(
+    join(app, `cdn/${name}.html`),
+    `<!doctype html>\n<meta charset="utf-8" />\n${html}`,
+  );
+  const page = await browser.newPage({ viewport: { width: 900, height: 400 } });
+  const errors: string[] = [];
+  page.on('pageerror', (error) => errors.push(error.message));
+  page.on('requestfailed', (request) => errors.push(`failed: ${request.url()}`));
+  page.on('response', (response) => {
+    if (response.status() >= 400) errors.push(`${response.status()}: ${response.url()}`);
+  });
+  try {
+    await page.goto(`${origin}/cdn/${name}.html`);
+    if (name === 'engine') {
+      await page.waitForFunction('document.body.textContent.includes("rests at")');
+      const text = await page.evaluate('document.body.textContent');
+      const y = Number(/y = (-?[\d.]+) m/.exec(String(text))?.[1]);
+      // 1 m box on a wall at y = 0: its centre rests half a metre above (within the slop).
+      if (!(Math.abs(y + 0.5) < 0.02)) throw new Error(`engine snippet: ${String(text)}`);
+    } else if (name === 'dom') {
+      // The released buttons fall: their transforms move them down.
+      await page.waitForFunction(
+        `[...document.querySelectorAll('.chips button')].every((b) => /matrix|translate/.test(b.style.transform))`,
+        undefined,
+        { timeout: 15_000 },
+      );
+    } else {
+      // The element runs the world: 60 steps (1 s) taken and frames drawn.
+      await page.waitForFunction(
+        `(() => { const c = document.querySelector('physical-canvas'); return c !== null && c.world !== null && c.stepCount > 60 && c.frameCount > 10; })()`,
+        undefined,
+        { timeout: 15_000 },
+      );
+    }
+    if (errors.length > 0) throw new Error(errors.join('; '));
+  } finally {
+    await page.close();
+  }
+}
+mkdirSync(join(app, 'cdn'), { recursive: true });
+for (const name of libraries) {
+  await check(
+    `README CDN snippet of @physical/${name} in Chromium (dist/physical-${name}.bundle.js)`,
+    () => runSnippet(name),
+  );
 }
 
 for (const name of [...pages, 'react18']) {
