@@ -554,6 +554,10 @@ log(
   `- an app without joints or snapshots (World, box, particle, wall, polygon, Force): ${sizeLine(size.appWithoutJointsOrSnapshots)}`,
 );
 
+const { frontEndLines, measureFrontEnd } = await import('./size.ts');
+for (const line of frontEndLines(await measureFrontEnd())) log(line);
+log();
+
 // ---- Browser ----
 let browser: unknown = null;
 if (values.browser) {

@@ -35,7 +35,6 @@ export class SizeWarning {
       size > MAX_MOVING_SIZE
         ? ' Sizes are metres: if this is pixels, divide by your pixels per metre (<physical-canvas> draws 50 px per metre by default).'
         : '';
-    // eslint-disable-next-line no-console -- the point of a development warning
     console.warn(
       `Physical: a ${body.type} body ${Number(size.toPrecision(3))} m across; the solver is tuned for moving bodies of ${MIN_MOVING_SIZE} to ${MAX_MOVING_SIZE} m.${hint} (Shown once per world, in development builds only.)`,
     );
