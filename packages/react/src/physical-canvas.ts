@@ -141,7 +141,8 @@ function attributes(props: PhysicalCanvasProps): Record<string, string | true | 
  * `<physical-canvas>` element in React. Settings become attributes (so they appear in server
  * rendered HTML); the world, callbacks and events are attached on the client. Registers the
  * element on first mount; safe under StrictMode's double mounting; touches no `window` at import.
- * The ref is the element (for `screenToWorld`, `setStyle`, `invalidate`).
+ * The ref is the element (for `screenToWorld`, `setStyle`, `invalidate`, and `step()`: one fixed
+ * step of a paused canvas, drawn at once).
  */
 export const PhysicalCanvas: ForwardRefExoticComponent<
   PhysicalCanvasProps & RefAttributes<PhysicalCanvasElement | null>
