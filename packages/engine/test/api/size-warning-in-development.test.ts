@@ -1,13 +1,15 @@
-import { afterEach, beforeEach, describe, expect, it, vi } from 'vitest';
+import { afterEach, beforeEach, describe, expect, it, vi, type MockInstance } from 'vitest';
 import { World, box, particle, wall } from '@physical/engine';
 
 // Development builds warn once per world about a moving body outside 0.1..10 m (Box2D's unit
 // guidance); production builds (process.env.NODE_ENV === 'production') stay silent.
 describe('size warning', () => {
-  let warn: ReturnType<typeof vi.spyOn>;
+  // The engine's tests compile without DOM or Node types: the console as the warning uses it.
+  const host = globalThis as unknown as { console: { warn(message: string): void } };
+  let warn: MockInstance<(message: string) => void>;
   const nodeEnv = process.env['NODE_ENV'];
   beforeEach(() => {
-    warn = vi.spyOn(console, 'warn').mockImplementation(() => undefined);
+    warn = vi.spyOn(host.console, 'warn').mockImplementation(() => undefined);
   });
   afterEach(() => {
     warn.mockRestore();
