@@ -71,7 +71,7 @@ export async function startServer(): Promise<TestServer> {
     // React is CommonJS: pre-bundle it (and nothing else, so start-up stays quick).
     optimizeDeps: {
       noDiscovery: true,
-      include: ['react', 'react-dom/client', 'react/jsx-runtime'],
+      include: ['react', 'react-dom/client', 'react/jsx-runtime', 'react/jsx-dev-runtime'],
     },
   });
   await server.listen();

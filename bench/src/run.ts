@@ -564,6 +564,8 @@ log(
   `- takeSnapshot ${snapshots.takeMedianMs.toFixed(2)} ms, restoreSnapshot ${snapshots.restoreMedianMs.toFixed(2)} ms; ` +
     `as JSON: ${(snapshots.jsonBytes / 1024).toFixed(0)} KB, stringify ${snapshots.stringifyMedianMs.toFixed(2)} ms, parse ${snapshots.parseMedianMs.toFixed(2)} ms`,
 );
+const { frontEndLines, measureFrontEnd } = await import('./size.ts');
+for (const line of frontEndLines(await measureFrontEnd())) log(line);
 log();
 
 // ---- Browser ----

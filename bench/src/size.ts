@@ -57,3 +57,85 @@ export async function measureSize(): Promise<SizeReports> {
     appWithoutJointsOrSnapshots: await bundleSize(APP_ENTRY),
   };
 }
+
+/** What the front-end packages add, each against its budget (gzipped bytes, gzip -9). */
+export interface FrontEndSizes {
+  /** `World` and `box` alone: the engine's own figure, the base of the others. */
+  engine: SizeReport;
+  /** The same app with `<physical-canvas>` drawing it (`@physical/canvas/define`). */
+  engineWithCanvas: SizeReport;
+  /** The page side of a worker world: `WorkerWorld` and the canvas (the worker's file apart). */
+  workerPage: SizeReport;
+}
+
+/** `<physical-canvas>` adds at most this to an app beyond the engine (gzipped, issue #33). */
+export const CANVAS_BUDGET_BYTES = 10 * 1024;
+/** The page side of a worker world, canvas included, ships no solver and stays within this. */
+export const WORKER_PAGE_BUDGET_BYTES = 30 * 1024;
+
+const packages = fileURLToPath(new URL('../../packages/', import.meta.url));
+
+/** Bundles an app entry that imports the packages by name, resolved to their sources. */
+async function appSize(contents: string): Promise<SizeReport> {
+  const result = await build({
+    stdin: { contents, resolveDir: packages, sourcefile: 'app.ts', loader: 'ts' },
+    alias: {
+      '@physical/engine': `${packages}engine/src/index.ts`,
+      '@physical/canvas/define': `${packages}canvas/src/define.ts`,
+      '@physical/canvas': `${packages}canvas/src/index.ts`,
+      '@physical/worker': `${packages}worker/src/index.ts`,
+    },
+    bundle: true,
+    minify: true,
+    treeShaking: true,
+    format: 'esm',
+    platform: 'browser',
+    target: 'es2022',
+    write: false,
+    logLevel: 'silent',
+    // An app's production build: development checks off, as the app's bundler would set.
+    define: { 'process.env.NODE_ENV': '"production"' },
+  });
+  const code = result.outputFiles[0]!.contents;
+  return { minifiedBytes: code.byteLength, gzippedBytes: gzipSync(code, { level: 9 }).byteLength };
+}
+
+/** The engine's figure, the engine with the canvas, and a worker world's page. */
+export async function measureFrontEnd(): Promise<FrontEndSizes> {
+  const world = `const world = new World(); world.add(box({ width: 1, height: 1 }));`;
+  return {
+    engine: await appSize(
+      `import { World, box } from '@physical/engine'; ${world} world.step(); console.log(world);`,
+    ),
+    engineWithCanvas: await appSize(
+      `import { World, box } from '@physical/engine'; import '@physical/canvas/define'; ${world}
+       document.querySelector('physical-canvas')!.world = world;`,
+    ),
+    workerPage: await appSize(
+      `import { WorkerWorld } from '@physical/worker'; import '@physical/canvas/define';
+       const world = new WorkerWorld(new Worker(new URL('./physics.worker.js', import.meta.url), { type: 'module' }));
+       world.add({ kind: 'box', width: 1, height: 1 });
+       document.querySelector('physical-canvas')!.world = world;`,
+    ),
+  };
+}
+
+/** The report lines `npx tsx bench/src/size.ts` prints. */
+export function frontEndLines(sizes: FrontEndSizes): string[] {
+  const kb = (bytes: number): string => `${(bytes / 1024).toFixed(1)} KB`;
+  const added = sizes.engineWithCanvas.gzippedBytes - sizes.engine.gzippedBytes;
+  const verdict = (bytes: number, budget: number): string =>
+    `budget ${kb(budget)}: ${bytes <= budget ? 'met' : 'NOT met'}`;
+  return [
+    'Front-end sizes (esbuild, minified, production define; gzip -9):',
+    `- engine, World and box alone: ${kb(sizes.engine.gzippedBytes)} gzipped`,
+    `- <physical-canvas> adds: ${kb(added)} (${kb(sizes.engineWithCanvas.gzippedBytes)} with the engine); ${verdict(added, CANVAS_BUDGET_BYTES)}`,
+    `- a worker world's page (WorkerWorld + canvas): ${kb(sizes.workerPage.gzippedBytes)}; ${verdict(sizes.workerPage.gzippedBytes, WORKER_PAGE_BUDGET_BYTES)}`,
+  ];
+}
+
+// `npx tsx bench/src/size.ts` prints the front-end figures.
+if (process.argv[1] !== undefined && fileURLToPath(import.meta.url) === process.argv[1]) {
+  // eslint-disable-next-line no-console -- a command-line report
+  for (const line of frontEndLines(await measureFrontEnd())) console.log(line);
+}

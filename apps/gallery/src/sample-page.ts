@@ -75,10 +75,7 @@ export function renderSample(root: HTMLElement, scene: Scene): () => void {
   };
   play.addEventListener('click', () => setPaused(!canvas.paused));
   canvas.addEventListener('pausechange', ({ detail }) => setPaused(detail.paused));
-  step.addEventListener('click', () => {
-    world.step(STEP);
-    canvas.invalidate();
-  });
+  step.addEventListener('click', () => canvas.step());
   slow.addEventListener('click', () => {
     const on = canvas.timeScale === 1;
     canvas.timeScale = on ? SLOW_MOTION : 1;

@@ -102,13 +102,12 @@ const EVENTS = {
 const useClientLayoutEffect = typeof document === 'undefined' ? useEffect : useLayoutEffect;
 
 // React 19 sets a custom element's prop as the property of the same name when the element has
-// one (paused, origin, fit, debug, background), and as an attribute otherwise (the dashed names).
-// So each value has the type its property takes: a boolean for `paused` (not the attribute's ''),
-// the vector itself for `origin`. On the server React writes primitives as attributes and skips
-// objects, so rendered HTML stays valid.
-function attributes(
-  props: PhysicalCanvasProps,
-): Record<string, string | boolean | Vec2Like | undefined> {
+// one (paused, origin, fit, debug, background), and as an attribute otherwise (the dashed names);
+// React 18 sets every one as an attribute, turning `false` into "false" and an object into
+// "[object Object]". So each value is one both read alike: `paused` is `true` or absent (the
+// property takes the boolean; the attribute's presence means paused), `origin` the "x y" text
+// that both the property and the attribute parse. On the server they are written as attributes.
+function attributes(props: PhysicalCanvasProps): Record<string, string | true | undefined> {
   const { origin, viewBox, debug } = props;
   const text = (value: number | string | undefined): string | undefined =>
     value === undefined ? undefined : String(value);
@@ -116,13 +115,13 @@ function attributes(
     id: props.id,
     'aria-label': props['aria-label'],
     'pixels-per-meter': text(props.pixelsPerMeter),
-    origin,
+    origin: origin === undefined ? undefined : `${origin.x} ${origin.y}`,
     fit: props.fit,
     'view-box':
       viewBox === undefined || viewBox === null
         ? undefined
         : `${viewBox.x} ${viewBox.y} ${viewBox.width} ${viewBox.height}`,
-    paused: props.paused === true,
+    paused: props.paused === true ? true : undefined,
     'time-scale': text(props.timeScale),
     background: props.background,
     debug: debug === undefined ? undefined : typeof debug === 'string' ? debug : debug.join(' '),
@@ -142,7 +141,8 @@ function attributes(
  * `<physical-canvas>` element in React. Settings become attributes (so they appear in server
  * rendered HTML); the world, callbacks and events are attached on the client. Registers the
  * element on first mount; safe under StrictMode's double mounting; touches no `window` at import.
- * The ref is the element (for `screenToWorld`, `setStyle`, `invalidate`).
+ * The ref is the element (for `screenToWorld`, `setStyle`, `invalidate`, and `step()`: one fixed
+ * step of a paused canvas, drawn at once).
  */
 export const PhysicalCanvas: ForwardRefExoticComponent<
   PhysicalCanvasProps & RefAttributes<PhysicalCanvasElement | null>

@@ -22,10 +22,11 @@ describe('<PhysicalCanvas> on the server', () => {
       }),
     );
     expect(html).toMatch(/^<physical-canvas /);
-    // The origin is an object: React sets it as a property on the client and leaves it out of
-    // the server's HTML (never "[object Object]").
-    expect(html).not.toContain('origin=');
+    // The origin goes as "x y" text, which the attribute and the property both parse (React 18
+    // writes every prop of a custom element as an attribute: never "[object Object]").
+    expect(html).not.toContain('object');
     for (const attribute of [
+      'origin="1 2"',
       'pixels-per-meter="40"',
       'fit="contain"',
       'view-box="0 0 10 5"',
@@ -37,6 +38,17 @@ describe('<PhysicalCanvas> on the server', () => {
       expect(html).toContain(attribute);
     }
     expect(html).not.toContain('onBodyTap');
+  });
+});
+
+describe('<PhysicalCanvas> props React 18 writes as attributes', () => {
+  it('leaves `paused` out when false (React 18 would write paused="false": paused)', async () => {
+    const { renderToString } = await import('react-dom/server');
+    const html = renderToString(
+      createElement(PhysicalCanvas, { world: new World(), paused: false, origin: { x: 0, y: 0 } }),
+    );
+    expect(html).not.toMatch(/paused/);
+    expect(html).toContain('origin="0 0"');
   });
 });
 

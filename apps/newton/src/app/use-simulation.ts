@@ -33,13 +33,16 @@ export function useSimulation() {
   };
 }
 
-/** Advances paused worlds by one fixed step and redraws their canvases. */
+/**
+ * Advances paused worlds by one fixed step and draws them: through the canvas that runs each
+ * (`canvas.step()`: its own fixed step, drawn at once), or the world alone while unmounted.
+ */
 export function stepOnce(
   pairs: readonly { world: World; canvas: PhysicalCanvasElement | null }[],
 ): void {
   for (const { world, canvas } of pairs) {
-    world.step(STEP);
-    canvas?.invalidate();
+    if (canvas !== null && canvas.world === world) canvas.step();
+    else world.step(STEP);
   }
 }
 

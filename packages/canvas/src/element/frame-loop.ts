@@ -119,6 +119,18 @@ export class FrameLoop {
     this.lastTimeMs = null;
   }
 
+  /**
+   * Takes exactly one fixed step now, whatever the clock says, and renders it at `alpha` 1 (the
+   * state after the step; no time passes for fading things). For stepping a paused simulation by
+   * hand: the accumulator is untouched, so a running loop keeps its own pace.
+   */
+  stepOnce(): void {
+    this.target.step(this.fixedStep);
+    this.stepCount++;
+    this.target.render(1, 0);
+    this.frameCount++;
+  }
+
   /** Runs one frame at `timeMs` (ms): steps, renders, and requests the next frame if needed. */
   frame(timeMs: number): void {
     const last = this.lastTimeMs;

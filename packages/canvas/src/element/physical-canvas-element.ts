@@ -430,6 +430,23 @@ export class PhysicalCanvasElement extends ElementBase {
   }
 
   /**
+   * Advances the world by exactly one fixed step (`1 / stepsPerSecond` s) and draws the result
+   * at once: a "next step" button for a paused element (`canvas.paused = true`, then
+   * `canvas.step()` per press), in place of `world.step()` followed by {@link invalidate}. Goes
+   * through the element, so what a running element does per step happens too: collision arrows
+   * are recorded, a drag's mouse joint pulls, {@link stepCount} counts it. With a `WorkerWorld`
+   * the step is posted and its poses are drawn when they arrive. Also works while running (one
+   * step more than the clock gives). Without a world it throws a `CanvasSettingError` naming
+   * `world`.
+   */
+  step(): void {
+    if (this.worldValue === null) {
+      throw new CanvasSettingError('world', null, 'a world before step() (set canvas.world)');
+    }
+    this.loop.stepOnce();
+  }
+
+  /**
    * Asks for a frame: call it after changing the world by hand while paused (teleporting a body),
    * or after changing a style object in place. Other changes wake the element by themselves.
    */

@@ -88,6 +88,26 @@ describe('FrameLoop', () => {
     expect(scheduler.hasPendingFrame).toBe(false);
   });
 
+  it('stepOnce takes exactly one fixed step while paused and renders the new state', () => {
+    const { steps, renders, target } = recorder(() => true);
+    const { loop, scheduler } = started(target);
+    loop.paused = true;
+    loop.fixedStep = 1 / 120;
+    scheduler.advance(1000);
+    expect(steps).toEqual([]);
+    const before = { frames: loop.frameCount, renders: renders.length };
+    loop.stepOnce();
+    expect(steps).toEqual([1 / 120]);
+    expect(loop.stepCount).toBe(1);
+    expect(renders.length).toBe(before.renders + 1);
+    expect(renders.at(-1)).toEqual({ alpha: 1, elapsed: 0 });
+    expect(loop.frameCount).toBe(before.frames + 1);
+    // Paused time still adds no steps afterwards.
+    loop.invalidate();
+    scheduler.advance(1000);
+    expect(steps.length).toBe(1);
+  });
+
   it('requests no frames once settled, and resumes without a jump', () => {
     let settled = false;
     const { steps, target } = recorder(() => settled);

@@ -15,3 +15,13 @@ export const AABB_MARGIN = 0.1;
 
 /** Polygons may have at most this many vertices. */
 export const MAX_POLYGON_VERTICES = 8;
+
+/**
+ * The sizes of moving bodies (largest extent, m) the solver is tuned for: Box2D's guidance is
+ * "moving objects between 0.1 and 10 meters" (static ones may be larger). Outside it, the slop
+ * and margins above are too large or too small for the body; a development build warns (see
+ * world/size-warning.ts).
+ */
+export const MIN_MOVING_SIZE = 0.1;
+/** See {@link MIN_MOVING_SIZE}. */
+export const MAX_MOVING_SIZE = 10;

@@ -41,6 +41,7 @@ import {
   type ResolvedWorldOptions,
   type WorldOptions,
 } from './world-options.ts';
+import { SizeWarning } from './size-warning.ts';
 
 /** Events of a world: a body's events for every body, plus bodies added, removed and woken. */
 export type WorldEvents = BodyEvents & WorldOnlyEvents;
@@ -85,6 +86,7 @@ export class World {
   private readonly pendingJointRemoves: Joint[] = [];
   private readonly listeners = new Listeners<WorldEvents>(WORLD_EVENT_NAMES);
   private readonly events: EventDispatch;
+  private readonly sizeWarning = new SizeWarning();
   private readonly gravityView: Vec2 = { x: 0, y: 0 };
   private readonly onPair = (shapeIdA: number, shapeIdB: number): void => {
     this.contactManager.addPair(shapeIdA, shapeIdB, this.shapesById);
@@ -200,6 +202,7 @@ export class World {
       );
     }
     body.worldRef = this;
+    this.sizeWarning.check(body);
     if (this.locked) this.pendingAdds.push(body);
     else this.insertBody(body);
     return body;
@@ -501,8 +504,13 @@ export class World {
   // ---------------------------------------------------------------- events
 
   /**
-   * Listens to an event of every body: `'move'`, `'collision'`, `'contactBegin'`, `'contactEnd'`.
-   * Listeners run after the step, in the order added. Returns a function that removes the listener.
+   * Listens to an event of the world ({@link WorldEvents}). Each body's events, for every body:
+   * `'move'` (a body moved this step), `'collision'` (a body took part in a collision),
+   * `'contactBegin'` and `'contactEnd'` (two shapes started or stopped touching),
+   * `'sensorBegin'` and `'sensorEnd'` (a shape entered or left a sensor); and the world's own:
+   * `'bodyAdded'`, `'bodyRemoved'`, `'jointRemoved'` and `'wake'` (a sleeping body woke up).
+   * Step events run after the step, in the order the listeners were added. Returns a function
+   * that removes the listener. An unknown name throws a `PhysicalError` naming `type`.
    */
   on<K extends keyof WorldEvents>(type: K, listener: WorldEvents[K]): () => void {
     return this.listeners.on(type, listener);

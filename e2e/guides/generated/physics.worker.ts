@@ -1,0 +1,4 @@
+// physics.worker.ts
+import { serveWorld } from '@physical/worker';
+
+serveWorld();
