@@ -259,7 +259,9 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
       }
     });
     // The narrow phase writes a unit normal with every manifold point.
-    const normal = Math.sqrt(values[NORMAL_X]! ** 2 + values[NORMAL_Y]! ** 2);
+    const nx = values[NORMAL_X]!;
+    const ny = values[NORMAL_Y]!;
+    const normal = Math.sqrt(nx * nx + ny * ny);
     if (values[POINT_COUNT]! > 0 && !(Math.abs(normal - 1) <= 1e-6)) {
       fail(`${path}.data[${NORMAL_X}]`, `must hold a unit normal, got one of length ${normal}.`);
     }
