@@ -1,58 +1,89 @@
 // Contact kernel: warm start, solve and relax over the constraint layout of contact-solver.ts.
-const NORMAL_X: i32 = 0;
-const NORMAL_Y: i32 = 1;
-const FRICTION: i32 = 2;
-const RESTITUTION: i32 = 3;
-const INV_MASS_A: i32 = 4;
-const INV_I_A: i32 = 5;
-const INV_MASS_B: i32 = 6;
-const INV_I_B: i32 = 7;
-const BIAS_RATE: i32 = 8;
-const MASS_SCALE: i32 = 9;
-const IMPULSE_SCALE: i32 = 10;
-const POINT_COUNT: i32 = 11;
-const SHIFT_WEIGHT_A: i32 = 12;
-const SHIFT_WEIGHT_B: i32 = 13;
-const REF_DP_AX: i32 = 14;
-const REF_DP_AY: i32 = 15;
-const REF_DP_BX: i32 = 16;
-const REF_DP_BY: i32 = 17;
-const RADIUS_A: i32 = 18;
-const RADIUS_B: i32 = 19;
-const CENTER_DX: i32 = 20;
-const CENTER_DY: i32 = 21;
-const BLOCK_K11: i32 = 22;
-const BLOCK_K12: i32 = 23;
-const BLOCK_K22: i32 = 24;
-const BLOCK: i32 = 25;
-const POINTS: i32 = 26;
-const R_AX: i32 = 0;
-const R_AY: i32 = 1;
-const R_BX: i32 = 2;
-const R_BY: i32 = 3;
-const BASE_SEPARATION: i32 = 4;
-const NORMAL_IMPULSE: i32 = 5;
-const TANGENT_IMPULSE: i32 = 6;
-const MAX_NORMAL_IMPULSE: i32 = 7;
-const NORMAL_MASS: i32 = 8;
-const TANGENT_MASS: i32 = 9;
-const RELATIVE_VELOCITY: i32 = 10;
-const TOTAL_NORMAL_IMPULSE: i32 = 11;
-const TOTAL_TANGENT_IMPULSE: i32 = 12;
-const RN_A: i32 = 13;
-const RN_B: i32 = 14;
-const IMPACT: i32 = 15;
-const POINT_STRIDE: i32 = 16;
-const STRIDE: i32 = POINTS + 2 * POINT_STRIDE;
-
-const V_X: i32 = 0;
-const V_Y: i32 = 1;
-const W: i32 = 2;
-const DELTA_ANGLE: i32 = 3;
-const DP_X: i32 = 4;
-const DP_Y: i32 = 5;
-const Q_C: i32 = 6;
-const Q_S: i32 = 7;
+import {
+  BASE_SEPARATION,
+  BIAS_RATE,
+  BLOCK,
+  BLOCK_K11,
+  BLOCK_K12,
+  BLOCK_K22,
+  CENTER_DX,
+  CENTER_DY,
+  CONTACT_STRIDE,
+  C_BOUNCING_STEPS,
+  C_FRICTION,
+  C_MAX_NORMAL_IMPULSE,
+  C_NORMAL_IMPULSE,
+  C_NORMAL_X,
+  C_NORMAL_Y,
+  C_POINTS,
+  C_POINT_COUNT,
+  C_POINT_STRIDE,
+  C_RADIUS_A,
+  C_RADIUS_B,
+  C_RELATIVE_VELOCITY,
+  C_RESTITUTION,
+  C_SEPARATION,
+  C_STEP_NORMAL_IMPULSE,
+  C_STEP_TANGENT_IMPULSE,
+  C_TANGENT_IMPULSE,
+  C_X,
+  C_Y,
+  DELTA_ANGLE,
+  DP_X,
+  DP_Y,
+  FRICTION,
+  IMPACT,
+  IMPULSE_SCALE,
+  INV_I_A,
+  INV_I_B,
+  INV_MASS_A,
+  INV_MASS_B,
+  LINEAR_SLOP,
+  MASS_SCALE,
+  MAX_CONDITION_NUMBER,
+  MAX_NORMAL_IMPULSE,
+  NORMAL_IMPULSE,
+  NORMAL_MASS,
+  NORMAL_X,
+  NORMAL_Y,
+  POINTS,
+  POINT_COUNT,
+  POINT_STRIDE,
+  PRESSED_AFTER_BOUNCING_STEPS,
+  Q_C,
+  Q_S,
+  RADIUS_A,
+  RADIUS_B,
+  REF_DP_AX,
+  REF_DP_AY,
+  REF_DP_BX,
+  REF_DP_BY,
+  RELATIVE_VELOCITY,
+  RESTITUTION,
+  RN_A,
+  RN_B,
+  R_AX,
+  R_AY,
+  R_BX,
+  R_BY,
+  SHIFT_WEIGHT_A,
+  SHIFT_WEIGHT_B,
+  STATE_STRIDE,
+  STRIDE,
+  TABLE_CENTER_X,
+  TABLE_CENTER_Y,
+  TABLE_INV_I,
+  TABLE_INV_MASS,
+  TABLE_SLOT,
+  TABLE_STRIDE,
+  TANGENT_IMPULSE,
+  TANGENT_MASS,
+  TOTAL_NORMAL_IMPULSE,
+  TOTAL_TANGENT_IMPULSE,
+  V_X,
+  V_Y,
+  W,
+} from './contact-layout';
 
 function ld(p: usize, k: i32): f64 {
   return load<f64>(p + ((<usize>k) << 3));
@@ -580,41 +611,6 @@ export function solve(
     }
   }
 }
-
-// Contact data slots (contact-data.ts).
-const C_NORMAL_X: i32 = 0;
-const C_NORMAL_Y: i32 = 1;
-const C_POINT_COUNT: i32 = 2;
-const C_FRICTION: i32 = 3;
-const C_RESTITUTION: i32 = 4;
-const C_RADIUS_A: i32 = 5;
-const C_RADIUS_B: i32 = 6;
-const C_BOUNCING_STEPS: i32 = 22;
-const C_POINTS: i32 = 23;
-const C_X: i32 = 0;
-const C_Y: i32 = 1;
-const C_SEPARATION: i32 = 2;
-const C_NORMAL_IMPULSE: i32 = 4;
-const C_TANGENT_IMPULSE: i32 = 5;
-const C_MAX_NORMAL_IMPULSE: i32 = 6;
-const C_RELATIVE_VELOCITY: i32 = 7;
-const C_STEP_NORMAL_IMPULSE: i32 = 8;
-const C_STEP_TANGENT_IMPULSE: i32 = 9;
-const C_POINT_STRIDE: i32 = 10;
-const CONTACT_STRIDE: i32 = C_POINTS + 2 * C_POINT_STRIDE;
-
-// The body table (body-state.ts).
-const TABLE_SLOT: i32 = 0;
-const TABLE_INV_MASS: i32 = 1;
-const TABLE_INV_I: i32 = 2;
-const TABLE_CENTER_X: i32 = 3;
-const TABLE_CENTER_Y: i32 = 4;
-const TABLE_STRIDE: i32 = 5;
-const STATE_STRIDE: i32 = 8;
-
-const LINEAR_SLOP: f64 = 0.005;
-const PRESSED_AFTER_BOUNCING_STEPS: f64 = 3;
-const MAX_CONDITION_NUMBER: f64 = 1000;
 
 /** Counts of the last prepare: circle pairs listed, heavy-on-light constraints. */
 export let circlePairCount: i32 = 0;
