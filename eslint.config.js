@@ -26,6 +26,36 @@ const layerRules = layers.map((layer, index) => {
   };
 });
 
+// Math functions whose last bit each engine's math library decides (IEEE 754 fixes only + - * /
+// and sqrt; abs, min, max, floor, ceil, round, trunc, sign, fround, imul, clz32 are exact).
+const nonDeterministicMath = [
+  'sin',
+  'cos',
+  'tan',
+  'asin',
+  'acos',
+  'atan',
+  'atan2',
+  'sinh',
+  'cosh',
+  'tanh',
+  'asinh',
+  'acosh',
+  'atanh',
+  'hypot',
+  'exp',
+  'expm1',
+  'log',
+  'log1p',
+  'log2',
+  'log10',
+  'pow',
+  'cbrt',
+];
+const deterministicMath =
+  'The engine steps bit-identically in every JavaScript engine: use src/math/trigonometry.ts ' +
+  '(cosSin, atan2) or src/math/hypot.ts, built from + - * / and sqrt (README: determinism).';
+
 export default tseslint.config(
   {
     ignores: [
@@ -55,6 +85,27 @@ export default tseslint.config(
       'no-restricted-syntax': [
         'error',
         { selector: 'ExportAllDeclaration', message: 'List public names explicitly; no export *.' },
+        // x ** y is Math.pow.
+        {
+          selector: "BinaryExpression[operator='**'], AssignmentExpression[operator='**=']",
+          message: deterministicMath,
+        },
+      ],
+    },
+  },
+  {
+    // The kernel too: the JavaScript passes and the WebAssembly kernel stay bit for bit the same.
+    files: ['packages/engine/src/**/*.ts', 'packages/engine/wasm/**/*.ts'],
+    rules: {
+      // Each JavaScript engine has its own math library, so these differ in the last bit from
+      // one engine to another; the step uses src/math/trigonometry.ts and hypot.ts instead.
+      'no-restricted-properties': [
+        'error',
+        ...nonDeterministicMath.map((property) => ({
+          object: 'Math',
+          property,
+          message: deterministicMath,
+        })),
       ],
     },
   },

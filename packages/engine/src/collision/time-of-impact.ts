@@ -73,13 +73,7 @@ export function getSweepTransform(sweep: Sweep, t: number, out: Transform): Tran
   const cx = s * sweep.c1X + t * sweep.c2X;
   const cy = s * sweep.c1Y + t * sweep.c2Y;
   const angle = s * sweep.a1 + t * sweep.a2;
-  const c = Math.cos(angle);
-  const sn = Math.sin(angle);
-  out.c = c;
-  out.s = sn;
-  out.x = cx - (c * sweep.localCenterX - sn * sweep.localCenterY);
-  out.y = cy - (sn * sweep.localCenterX + c * sweep.localCenterY);
-  return out;
+  return out.setFromCenter(cx, cy, angle, sweep.localCenterX, sweep.localCenterY);
 }
 
 /** Largest distance from the sweep's centre of mass to a core vertex of the proxy (m). */

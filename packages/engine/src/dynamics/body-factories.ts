@@ -5,6 +5,7 @@ import type { Vec2Like } from '../math/vec2.ts';
 import { Body, type BodyOptions } from './body.ts';
 import type { FilterOptions } from './filter.ts';
 import type { MaterialOptions } from './shape.ts';
+import { cosSin } from '../math/trigonometry.ts';
 
 // The bodies the thesis's users reach for, one call each. Each takes the body options plus the
 // shape's size and material, so `particle({ position, radius, restitution })` is the whole story.
@@ -162,9 +163,10 @@ export function regularPolygon<UserData = unknown>(
   }
   const radius = requireSize('radius', options.radius);
   const vertices: Vec2Like[] = [];
+  const rotation = new Float64Array(2);
   for (let i = 0; i < sides; i++) {
-    const angle = (2 * Math.PI * i) / sides;
-    vertices.push({ x: radius * Math.cos(angle), y: radius * Math.sin(angle) });
+    cosSin((2 * Math.PI * i) / sides, rotation);
+    vertices.push({ x: radius * rotation[0]!, y: radius * rotation[1]! });
   }
   return new Body<UserData>({
     ...options,

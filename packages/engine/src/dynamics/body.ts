@@ -32,6 +32,7 @@ import { BODY_EVENT_NAMES, type BodyEvents } from './events.ts';
 import { Force, validateDuration, type ForceOptions, type TorqueOptions } from './force.ts';
 import type { Joint } from './joints/joint.ts';
 import { createGeometries, Shape, type ShapeOptions } from './shape.ts';
+import { hypot } from '../math/hypot.ts';
 
 /**
  * - `'dynamic'`: moved by forces and collisions; needs a positive mass.
@@ -802,7 +803,7 @@ export class Body<UserData = unknown> {
     for (const shape of this.shapeList) {
       const g = shape.geometry;
       if (g.kind === 'circle') {
-        const d = Math.hypot(g.centerX - cx, g.centerY - cy);
+        const d = hypot(g.centerX - cx, g.centerY - cy);
         maxExtent = Math.max(maxExtent, d + g.radius);
         minExtent = Math.min(minExtent, g.radius);
       } else if (g.kind === 'polygon') {
@@ -810,7 +811,7 @@ export class Body<UserData = unknown> {
         for (let i = 0; i < g.count; i++) {
           const vx = g.vertices[2 * i]!;
           const vy = g.vertices[2 * i + 1]!;
-          maxExtent = Math.max(maxExtent, Math.hypot(vx - cx, vy - cy) + g.radius);
+          maxExtent = Math.max(maxExtent, hypot(vx - cx, vy - cy) + g.radius);
           // Distance from the centroid to each edge: the polygon's inradius bound.
           const d =
             (vx - g.centroidX) * g.normals[2 * i]! + (vy - g.centroidY) * g.normals[2 * i + 1]!;
@@ -820,22 +821,18 @@ export class Body<UserData = unknown> {
       } else if (g.kind === 'capsule') {
         maxExtent = Math.max(
           maxExtent,
-          Math.hypot(g.x1 - cx, g.y1 - cy) + g.radius,
-          Math.hypot(g.x2 - cx, g.y2 - cy) + g.radius,
+          hypot(g.x1 - cx, g.y1 - cy) + g.radius,
+          hypot(g.x2 - cx, g.y2 - cy) + g.radius,
         );
         minExtent = Math.min(minExtent, g.radius);
       } else {
-        maxExtent = Math.max(
-          maxExtent,
-          Math.hypot(g.x1 - cx, g.y1 - cy),
-          Math.hypot(g.x2 - cx, g.y2 - cy),
-        );
+        maxExtent = Math.max(maxExtent, hypot(g.x1 - cx, g.y1 - cy), hypot(g.x2 - cx, g.y2 - cy));
         minExtent = 0;
       }
     }
     this.maxExtent = maxExtent;
     this.minExtent = minExtent === Infinity ? 0 : minExtent;
-    this.originReach = maxExtent + Math.hypot(cx, cy);
+    this.originReach = maxExtent + hypot(cx, cy);
   }
 
   /** One shape per geometry the options make (several for a concave polygon). */

@@ -37,6 +37,7 @@ import {
   TANGENT_MASS,
 } from './contact-constraint-layout.ts';
 import type { SolverMemory } from './solver-memory.ts';
+import { hypot } from '../math/hypot.ts';
 
 // The contact constraints of a step and the JavaScript that reads them between the kernel's passes
 // (the circle pairs' normals, the heavy-on-light sweep). The passes themselves (prepare, warm
@@ -212,7 +213,7 @@ export class ShockPropagation {
     gravityY: number,
   ): void {
     this.count = 0;
-    const gravity = Math.hypot(gravityX, gravityY);
+    const gravity = hypot(gravityX, gravityY);
     if (constraints.heavyOnLightCount === 0 || gravity === 0) return;
     const count = constraints.count;
     const c = constraints.data;

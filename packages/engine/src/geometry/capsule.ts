@@ -5,6 +5,7 @@ import type { Transform } from '../math/transform.ts';
 import type { AABB } from './aabb.ts';
 import type { MassData } from './mass-data.ts';
 import type { RayHit, RayInput } from './ray.ts';
+import { hypot } from '../math/hypot.ts';
 
 /**
  * A capsule (a pill, a stadium) in its body's local frame: every point within `radius` of the
@@ -42,7 +43,7 @@ export function makeCapsule(
   requireCoordinate(`${field}.center2.x`, x2);
   requireCoordinate(`${field}.center2.y`, y2);
   requireSize(`${field}.radius`, radius);
-  const length = Math.hypot(x2 - x1, y2 - y1);
+  const length = hypot(x2 - x1, y2 - y1);
   if (length < LINEAR_SLOP) {
     throw new PhysicalError(
       field,
@@ -63,7 +64,7 @@ export function makeCapsule(
  */
 export function computeCapsuleMass(capsule: Capsule, density: number, out: MassData): MassData {
   const r = capsule.radius;
-  const length = Math.hypot(capsule.x2 - capsule.x1, capsule.y2 - capsule.y1);
+  const length = hypot(capsule.x2 - capsule.x1, capsule.y2 - capsule.y1);
   const rectangleMass = density * 2 * r * length;
   const discMass = density * Math.PI * r * r;
   out.mass = rectangleMass + discMass;
@@ -142,7 +143,7 @@ export function rayCastCapsule(
   }
   const ex = capsule.x2 - capsule.x1;
   const ey = capsule.y2 - capsule.y1;
-  const length = Math.hypot(ex, ey);
+  const length = hypot(ex, ey);
   const ux = ex / length;
   const uy = ey / length;
   const r = capsule.radius;

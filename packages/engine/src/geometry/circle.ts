@@ -3,6 +3,7 @@ import type { Transform } from '../math/transform.ts';
 import type { AABB } from './aabb.ts';
 import type { MassData } from './mass-data.ts';
 import type { RayHit, RayInput } from './ray.ts';
+import { hypot } from '../math/hypot.ts';
 
 /** A circle in its body's local frame: the thesis's particle. */
 export interface Circle {
@@ -94,7 +95,7 @@ export function rayCastCircle(
   if (sx * sx + sy * sy < r * r) {
     return false;
   }
-  const length = Math.hypot(input.translationX, input.translationY);
+  const length = hypot(input.translationX, input.translationY);
   if (length === 0) {
     return false;
   }

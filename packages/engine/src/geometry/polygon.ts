@@ -14,6 +14,11 @@ import type { Vec2Like } from '../math/vec2.ts';
 import type { AABB } from './aabb.ts';
 import type { MassData } from './mass-data.ts';
 import type { RayHit, RayInput } from './ray.ts';
+import { hypot } from '../math/hypot.ts';
+import { atan2, cosSin } from '../math/trigonometry.ts';
+
+// Where cosSin writes makeBox's rotation.
+const rotation = new Float64Array(2);
 
 /**
  * A convex polygon in its body's local frame, vertices in counter-clockwise order in the
@@ -336,8 +341,9 @@ export function makeBox(
   requireAngle(`${field}.angle`, angle);
   requireNonNegative(`${field}.radius`, radius, MAX_SIZE);
   const polygon = out ?? createEmptyPolygon();
-  const c = Math.cos(angle);
-  const s = Math.sin(angle);
+  cosSin(angle, rotation);
+  const c = rotation[0]!;
+  const s = rotation[1]!;
   polygon.count = 4;
   polygon.radius = radius;
   const vertices = polygon.vertices;
@@ -414,7 +420,7 @@ export function computePolygonMass(polygon: Polygon, density: number, out: MassD
       const nx = normals[2 * i]!;
       const ny = normals[2 * i + 1]!;
       // Edge rectangle.
-      const length = Math.hypot(wx - vx, wy - vy);
+      const length = hypot(wx - vx, wy - vy);
       const rectangleArea = length * r;
       const rectangleX = 0.5 * (vx + wx) + 0.5 * r * nx;
       const rectangleY = 0.5 * (vy + wy) + 0.5 * r * ny;
@@ -427,7 +433,7 @@ export function computePolygonMass(polygon: Polygon, density: number, out: MassD
       // Vertex sector between the previous edge's normal and this edge's normal.
       const n0x = normals[2 * previous]!;
       const n0y = normals[2 * previous + 1]!;
-      const sweep = Math.atan2(n0x * ny - n0y * nx, n0x * nx + n0y * ny);
+      const sweep = atan2(n0x * ny - n0y * nx, n0x * nx + n0y * ny);
       const sectorArea = 0.5 * sweep * r * r;
       const sectorFirstX = ((r * r * r) / 3) * (ny - n0y);
       const sectorFirstY = ((r * r * r) / 3) * (n0x - nx);
@@ -662,7 +668,7 @@ function finishPolygon(polygon: Polygon): void {
     const next = i === count - 1 ? 0 : i + 1;
     const ex = vertices[2 * next]! - vertices[2 * i]!;
     const ey = vertices[2 * next + 1]! - vertices[2 * i + 1]!;
-    const length = Math.hypot(ex, ey);
+    const length = hypot(ex, ey);
     // Counter-clockwise winding: the outward normal is the edge turned clockwise.
     normals[2 * i] = ey / length;
     normals[2 * i + 1] = -ex / length;
@@ -688,7 +694,7 @@ function finishPolygon(polygon: Polygon): void {
 }
 
 function distance(ax: number, ay: number, bx: number, by: number): number {
-  return Math.hypot(bx - ax, by - ay);
+  return hypot(bx - ax, by - ay);
 }
 
 /** Twice the signed area (shoelace), relative to point 0 for precision. */
@@ -814,7 +820,7 @@ function findSelfIntersection(xs: Float64Array, ys: Float64Array, count: number)
     const fx = xs[i2]! - xs[i1]!;
     const fy = ys[i2]! - ys[i1]!;
     const cross = ex * fy - ey * fx;
-    const lengths = Math.hypot(ex, ey) * Math.hypot(fx, fy);
+    const lengths = hypot(ex, ey) * hypot(fx, fy);
     if (ex * fx + ey * fy < 0 && Math.abs(cross) <= 1e-12 * lengths) {
       return (i << 8) | i1;
     }

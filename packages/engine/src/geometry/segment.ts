@@ -4,6 +4,7 @@ import { requireCoordinate } from '../core/validate.ts';
 import type { Transform } from '../math/transform.ts';
 import type { AABB } from './aabb.ts';
 import type { RayHit, RayInput } from './ray.ts';
+import { hypot } from '../math/hypot.ts';
 
 /**
  * A line segment in its body's local frame: the thesis's wall. One-sided walls collide only
@@ -40,7 +41,7 @@ export function makeSegment(
   requireCoordinate(`${field}.y1`, y1);
   requireCoordinate(`${field}.x2`, x2);
   requireCoordinate(`${field}.y2`, y2);
-  const length = Math.hypot(x2 - x1, y2 - y1);
+  const length = hypot(x2 - x1, y2 - y1);
   if (length < LINEAR_SLOP) {
     throw new PhysicalError(
       field,
@@ -84,7 +85,7 @@ export function rayCastSegment(
   const by = xf.s * segment.x2 + xf.c * segment.y2 + xf.y;
   const ex = bx - ax;
   const ey = by - ay;
-  const length = Math.hypot(ex, ey);
+  const length = hypot(ex, ey);
   let nx = ey / length;
   let ny = -ex / length;
   const dx = input.translationX;

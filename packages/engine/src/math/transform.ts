@@ -1,3 +1,8 @@
+import { cosSin } from './trigonometry.ts';
+
+// Where cosSin writes: a typed array, so no number is boxed in the step's loops.
+const rotation = new Float64Array(2);
+
 /**
  * A rigid transform: translation (x, y) in metres and rotation stored as cosine c and sine s.
  * Storing c and s rather than the angle means kernels never call trigonometric functions.
@@ -17,8 +22,9 @@ export class Transform {
   set(x: number, y: number, angle: number): this {
     this.x = x;
     this.y = y;
-    this.c = Math.cos(angle);
-    this.s = Math.sin(angle);
+    cosSin(angle, rotation);
+    this.c = rotation[0]!;
+    this.s = rotation[1]!;
     return this;
   }
 
@@ -33,8 +39,9 @@ export class Transform {
     localX: number,
     localY: number,
   ): this {
-    const c = Math.cos(angle);
-    const s = Math.sin(angle);
+    cosSin(angle, rotation);
+    const c = rotation[0]!;
+    const s = rotation[1]!;
     this.c = c;
     this.s = s;
     this.x = centerX - (c * localX - s * localY);

@@ -29,6 +29,7 @@ import {
   positive,
   type SnapshotValue,
 } from './snapshot-values.ts';
+import { hypot } from '../math/hypot.ts';
 
 // Joints in world snapshots: one entry per joint, in world.joints order. An entry names its
 // bodies by index in the snapshot's bodies (a mouse joint has one, `body`), then lists its kind's
@@ -106,7 +107,7 @@ function readValue(path: string, kind: JointValueKind, v: unknown): number | boo
       return finites(path, v, 2);
     case 'unitVector': {
       const xy = finites(path, v, 2);
-      const length = Math.hypot(xy[0]!, xy[1]!);
+      const length = hypot(xy[0]!, xy[1]!);
       if (!(Math.abs(length - 1) <= UNIT_TOLERANCE)) {
         fail(path, `must be a unit vector, got one of length ${length}.`);
       }

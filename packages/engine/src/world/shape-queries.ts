@@ -28,6 +28,7 @@ import {
   type Shape,
   type ShapeOptions,
 } from '../dynamics/shape.ts';
+import { hypot } from '../math/hypot.ts';
 
 /** Where a query shape is placed: position of its origin (m) and rotation (rad, default 0). */
 export interface QueryPose {
@@ -109,7 +110,7 @@ export class ShapeQueries {
       ny = (coreResult.pointBY - coreResult.pointAY) / coreDistance;
     } else {
       // Cores overlap (a start inside a shape): the best normal is against the motion.
-      const length = Math.hypot(translation.x, translation.y);
+      const length = hypot(translation.x, translation.y);
       if (length > 0) {
         nx = -translation.x / length;
         ny = -translation.y / length;

@@ -25,6 +25,7 @@ import {
   stateNumber,
   worldAnchor,
 } from './joint.ts';
+import { hypot } from '../../math/hypot.ts';
 
 /**
  * Options of a {@link DistanceJoint}: a rod between two points (rigid), or a spring of given
@@ -125,7 +126,7 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
     this.localAnchorAY = localA.y;
     this.localAnchorBX = localB.x;
     this.localAnchorBY = localB.y;
-    const distance = Math.hypot(anchorB.x - anchorA.x, anchorB.y - anchorA.y);
+    const distance = hypot(anchorB.x - anchorA.x, anchorB.y - anchorA.y);
     this.rest = optionalNonNegative('length', options.length, distance);
     this.min = optionalNonNegative('minLength', options.minLength, 0);
     this.max =
@@ -153,7 +154,7 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   get currentLength(): number {
     const a = this.bodyA.getWorldPoint({ x: this.localAnchorAX, y: this.localAnchorAY });
     const b = this.bodyB.getWorldPoint({ x: this.localAnchorBX, y: this.localAnchorBY });
-    return Math.hypot(b.x - a.x, b.y - a.y);
+    return hypot(b.x - a.x, b.y - a.y);
   }
 
   /** Rest length (m), within [minLength, maxLength]. Setting it wakes the bodies. */

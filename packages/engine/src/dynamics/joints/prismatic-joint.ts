@@ -27,6 +27,7 @@ import {
   stateVector,
   worldAnchor,
 } from './joint.ts';
+import { hypot } from '../../math/hypot.ts';
 
 /** Options of a {@link PrismaticJoint}: a slider along an axis. */
 export interface PrismaticJointOptions<UserData = unknown> extends JointOptions<UserData> {
@@ -131,7 +132,7 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
     requireBodies(options);
     const anchor = requirePoint('anchor', options.anchor);
     const axis = requirePoint('axis', options.axis);
-    const axisLength = Math.hypot(axis.x, axis.y);
+    const axisLength = hypot(axis.x, axis.y);
     if (!(axisLength > 0)) throw new PhysicalError('axis', 'must not be the zero vector.');
     super(options, options.bodyA, options.bodyB);
     const localA = this.bodyA.getLocalPoint(anchor);
