@@ -19,4 +19,18 @@ describe('hypot: a vector length from + - * / and sqrt only', () => {
     // Relative error in units of 2^-52: one rounding in each of x^2 + y^2 and sqrt.
     expect(worst).toBeLessThanOrEqual(2);
   });
+
+  it('keeps its accuracy where the squares underflow or overflow', () => {
+    expect(hypot(0, 1e-323)).toBe(1e-323);
+    expect(hypot(-5e-324, 0)).toBe(5e-324);
+    for (const scale of [1e-300, 1e-200, 1e-160, 1e160, 1e200, 1e300]) {
+      const x = 3 * scale;
+      const y = 4 * scale;
+      const expected = Math.hypot(x, y);
+      expect(Math.abs(hypot(x, y) - expected) / (expected * Number.EPSILON)).toBeLessThanOrEqual(2);
+    }
+    expect(hypot(Number.MAX_VALUE, Number.MAX_VALUE)).toBe(Infinity);
+    expect(hypot(Infinity, NaN)).toBe(Infinity);
+    expect(hypot(NaN, 1)).toBeNaN();
+  });
 });
