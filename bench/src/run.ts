@@ -554,6 +554,18 @@ log(
   `- an app without joints or snapshots (World, box, particle, wall, polygon, Force): ${sizeLine(size.appWithoutJointsOrSnapshots)}`,
 );
 
+// ---- Rollback: snapshot and restore ----
+const { measureSnapshots } = await import('./snapshot.ts');
+const snapshots = measureSnapshots(quick ? 10 : 120, quick ? 3 : 15);
+log(
+  `Rollback (physical, ${snapshots.bodies} moving bodies, ${snapshots.joints} revolute joints, ${snapshots.contacts} contacts, saved after ${snapshots.stepsBefore} steps; median of ${snapshots.rounds}):`,
+);
+log(
+  `- takeSnapshot ${snapshots.takeMedianMs.toFixed(2)} ms, restoreSnapshot ${snapshots.restoreMedianMs.toFixed(2)} ms; ` +
+    `as JSON: ${(snapshots.jsonBytes / 1024).toFixed(0)} KB, stringify ${snapshots.stringifyMedianMs.toFixed(2)} ms, parse ${snapshots.parseMedianMs.toFixed(2)} ms`,
+);
+log();
+
 // ---- Browser ----
 let browser: unknown = null;
 if (values.browser) {
@@ -604,6 +616,7 @@ if (values.json) {
         steadyState,
         steadyStates,
         size,
+        snapshots,
         browser,
       },
       null,

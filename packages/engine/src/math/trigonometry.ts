@@ -54,17 +54,28 @@ const C6 = -1.13596475577881948265e-11;
  * gives NaN in both. Writes through `out` so that hot loops allocate nothing.
  */
 export function cosSin(angle: number, out: Float64Array): void {
-  let x = Math.abs(angle);
+  // The angle goes in through out[0], not as an argument: this wrapper is small enough for V8 to
+  // inline everywhere, while cosSinInPlace may not be, and V8 boxes (allocates) a fractional
+  // argument of a call it does not inline (dynamics/README.md).
+  out[0] = angle;
+  cosSinInPlace(out);
+}
+
+/** cosSin of the angle in out[0]. */
+function cosSinInPlace(out: Float64Array): void {
+  const angle = out[0]!;
+  const x = Math.abs(angle);
   if (!(x <= PIO4)) {
+    out[0] = x;
     if (!(x < MEDIUM)) {
       if (!(x < Infinity)) {
         out[0] = NaN;
         out[1] = NaN;
         return;
       }
-      x = remainderTau(x);
+      remainderTau(out);
     }
-    cosSinReduced(x, out);
+    cosSinReduced(out);
     if (angle < 0) out[1] = -out[1];
     return;
   }
@@ -87,10 +98,11 @@ export function cosSin(angle: number, out: Float64Array): void {
 }
 
 /**
- * cos and sin of x, pi/4 < x < 2^20 pi/2, into out[0] and out[1]: x = n pi/2 + (y0 + y1), then
- * the polynomials at y0 with its tail y1, turned by the quadrant n mod 4.
+ * cos and sin of x = out[0], 0 <= x < 2^20 pi/2, into out[0] and out[1]: x = n pi/2 + (y0 + y1),
+ * then the polynomials at y0 with its tail y1, turned by the quadrant n mod 4.
  */
-function cosSinReduced(x: number, out: Float64Array): void {
+function cosSinReduced(out: Float64Array): void {
+  const x = out[0]!;
   // n < 2^20 and each PIO2_k has 33 bits, so n * PIO2_k is exact; x - n PIO2_1 is exact too
   // (Sterbenz: the two are within a factor of 2).
   const n = Math.floor(x * INV_PIO2 + 0.5);
@@ -144,11 +156,13 @@ function cosSinReduced(x: number, out: Float64Array): void {
 }
 
 /**
- * x modulo TAU (the double nearest 2 pi) for finite x >= 2^20 pi/2, computed exactly: binary
- * long division, each subtraction exact since TAU 2^k <= r < TAU 2^(k+1) (Sterbenz). The
- * difference of TAU from 2 pi makes the result differ from x mod 2 pi by at most |x| 2^-53.
+ * Replaces x = out[0], finite and >= 2^20 pi/2, by x modulo TAU (the double nearest 2 pi),
+ * computed exactly: binary long division, each subtraction exact since TAU 2^k <= r <
+ * TAU 2^(k+1) (Sterbenz). The difference of TAU from 2 pi makes the result differ from
+ * x mod 2 pi by at most |x| 2^-53.
  */
-function remainderTau(x: number): number {
+function remainderTau(out: Float64Array): void {
+  const x = out[0]!;
   let m = TAU;
   while (m <= x * 0.5) m *= 2;
   let r = x;
@@ -156,7 +170,7 @@ function remainderTau(x: number): number {
     if (r >= m) r -= m;
     m *= 0.5;
   }
-  return r;
+  out[0] = r;
 }
 
 // atan(x) = ATAN_HI[i] + ATAN_LO[i] + atan(reduced) at x = 1/2, 1, 3/2 and infinity.

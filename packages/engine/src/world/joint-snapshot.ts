@@ -1,3 +1,4 @@
+import { MAX_TIME_STEP } from '../core/validate.ts';
 import type { Body } from '../dynamics/body.ts';
 import { DistanceJoint, DISTANCE_STATE } from '../dynamics/joints/distance-joint.ts';
 import {
@@ -20,13 +21,16 @@ import {
   encAll,
   fail,
   field,
-  finite,
   finites,
   int,
-  nonNegative,
   num,
   obj,
   positive,
+  ranged,
+  bounded,
+  SAVED_COORDINATE,
+  SAVED_IMPULSE,
+  SAVED_REACTION,
   type SnapshotValue,
 } from './snapshot-values.ts';
 import { hypot } from '../math/hypot.ts';
@@ -88,23 +92,42 @@ export interface JointPlan {
   readonly state: JointState;
 }
 
-function readValue(path: string, kind: JointValueKind, v: unknown): number | boolean | number[] {
+/**
+ * The largest size a saved joint value may have: the setters' limit for a setting, the reach of
+ * a saved world for an impulse or reaction, and the saved coordinate range for the rest (anchors,
+ * lengths, angles, targets).
+ */
+function limitOf(key: string): number {
+  const max = JOINT_MAX[key];
+  if (max !== undefined) return max;
+  if (key === 'subStepDuration') return MAX_TIME_STEP;
+  if (key.startsWith('reaction')) return SAVED_REACTION;
+  if (key === 'impulse' || key.endsWith('Impulse')) return SAVED_IMPULSE;
+  return SAVED_COORDINATE;
+}
+
+function readValue(
+  path: string,
+  kind: JointValueKind,
+  v: unknown,
+  max: number,
+): number | boolean | number[] {
   switch (kind) {
     case 'boolean':
       return bool(path, v);
     case 'finite':
-      return finite(path, v);
+      return ranged(path, v, -max, max);
     case 'nonNegative':
-      return nonNegative(path, v);
+      return ranged(path, v, 0, max);
     case 'positive':
-      return positive(path, v);
+      return ranged(path, positive(path, v), 0, max);
     case 'nonNegativeOrInfinity': {
       const x = num(path, v);
       if (x === Infinity) return x;
-      return nonNegative(path, x);
+      return ranged(path, x, 0, max);
     }
     case 'vector':
-      return finites(path, v, 2);
+      return bounded(path, v, 2, max);
     case 'unitVector': {
       const xy = finites(path, v, 2);
       const length = hypot(xy[0]!, xy[1]!);
@@ -135,6 +158,8 @@ export function readJoint(path: string, entry: unknown, bodies: readonly Body[])
   let bodyA: number;
   let bodyB: number;
   let collideConnected = false;
+  // The bodies of a joint may be of any type, as the API allows (a weld between two static
+  // bodies rests until one moves). A mouse joint is made on a dynamic body only.
   if (type === 'mouse') {
     bodyA = bodyB = int(`${path}.body`, field(o, path, 'body'), 0, last);
     if (bodies[bodyA]!.type !== 'dynamic') {
@@ -144,20 +169,12 @@ export function readJoint(path: string, entry: unknown, bodies: readonly Body[])
     bodyA = int(`${path}.bodyA`, field(o, path, 'bodyA'), 0, last);
     bodyB = int(`${path}.bodyB`, field(o, path, 'bodyB'), 0, last);
     if (bodyA === bodyB) fail(`${path}.bodyB`, `must be a different body from bodyA (${bodyA}).`);
-    if (bodies[bodyA]!.type !== 'dynamic' && bodies[bodyB]!.type !== 'dynamic') {
-      fail(`${path}.bodyB`, 'a joint needs at least one dynamic body; both are not.');
-    }
     collideConnected = bool(`${path}.collideConnected`, field(o, path, 'collideConnected'));
   }
   const state: JointState = {};
   for (const [key, kind] of fieldsOf(type)) {
-    const value = readValue(`${path}.${key}`, kind, field(o, path, key));
     // A user setting (stiffness, damping, motor, limits) within the range its setter allows.
-    const max = JOINT_MAX[key];
-    if (max !== undefined && typeof value === 'number' && Math.abs(value) > max) {
-      fail(`${path}.${key}`, `must be at most ${max} in size, got ${value}.`);
-    }
-    state[key] = value;
+    state[key] = readValue(`${path}.${key}`, kind, field(o, path, key), limitOf(key));
   }
   for (const [lower, upper] of LAYOUTS[type].ordered) {
     if ((state[lower] as number) > (state[upper] as number)) {

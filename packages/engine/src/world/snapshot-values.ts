@@ -1,5 +1,13 @@
 import { PhysicalError } from '../core/errors.ts';
-import { describeValue } from '../core/validate.ts';
+import {
+  describeValue,
+  MAX_ANGLE,
+  MAX_ANGULAR_SPEED,
+  MAX_COORDINATE,
+  MAX_DURATION,
+  MAX_FORCE,
+  MAX_SPEED,
+} from '../core/validate.ts';
 
 // How numbers are written into a snapshot, and the checked readers every section's loader uses:
 // each names the offending field as `snapshot.<path>` in its PhysicalError.
@@ -25,6 +33,27 @@ export type Obj = Record<string, unknown>;
 
 /** @internal Largest body or shape id a snapshot may hold. */
 export const MAX_ID = 0x1fffffff;
+
+// What a saved world may hold. The API's own limits bound what an app sets (a position within
+// MAX_COORDINATE, a speed within MAX_SPEED); a simulated world may go past them (a body falls,
+// a joint accumulates impulse), so its snapshot is read with margins above them. What the
+// margins rule out is what no world reaches and what overflows a double within a step once
+// squared or multiplied: a flipped byte's 1e300 centre, a 4.7e219 impulse.
+
+/** @internal Largest |coordinate| of a saved position, centre, box or anchor (m). */
+export const SAVED_COORDINATE = 1e4 * MAX_COORDINATE;
+/** @internal Largest |angle| saved (rad): unwrapped angles grow with every turn. */
+export const SAVED_ANGLE = 1e3 * MAX_ANGLE;
+/** @internal Largest |component| of a saved linear velocity (m/s); the solver may exceed its clamp within a step. */
+export const SAVED_SPEED = 100 * MAX_SPEED;
+/** @internal Largest saved |angular velocity| (rad/s): the solver's clamp is a quarter turn per sub-step. */
+export const SAVED_ANGULAR_SPEED = 1e3 * MAX_ANGULAR_SPEED;
+/** @internal Longest saved time (s): a sleep timer or a force's time left. */
+export const SAVED_DURATION = 1e3 * MAX_DURATION;
+/** @internal Largest |component| of a saved force, torque or accumulated impulse (N, N m, N s). */
+export const SAVED_IMPULSE = 1e6 * MAX_FORCE;
+/** @internal Largest |component| of a saved reaction (impulse over the step: N, N m). */
+export const SAVED_REACTION = SAVED_IMPULSE / 1e-6;
 
 /** @internal */
 export function enc(x: number): SnapshotNumber {
@@ -64,6 +93,10 @@ export function arr(path: string, v: unknown, length?: number): unknown[] {
   if (!Array.isArray(v)) fail(path, `must be an array, got ${describe(v)}.`);
   if (length !== undefined && v.length !== length) {
     fail(path, `must hold ${length} entries, got ${v.length}.`);
+  }
+  // A structured clone (postMessage, IndexedDB) keeps holes, and map() and forEach() skip them.
+  for (let i = 0; i < v.length; i++) {
+    if (!(i in v)) fail(`${path}[${i}]`, 'is missing (a hole in the array).');
   }
   return v;
 }
@@ -111,6 +144,11 @@ export function positive(path: string, v: unknown): number {
 /** @internal */
 export function finites(path: string, v: unknown, length: number): number[] {
   return arr(path, v, length).map((x, i) => finite(`${path}[${i}]`, x));
+}
+
+/** @internal `length` numbers, each from -max to max. */
+export function bounded(path: string, v: unknown, length: number, max: number): number[] {
+  return arr(path, v, length).map((x, i) => ranged(`${path}[${i}]`, x, -max, max));
 }
 
 /** @internal */

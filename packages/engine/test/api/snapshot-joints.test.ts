@@ -333,11 +333,6 @@ describe('bad joint snapshots', () => {
     const same = fresh();
     same.joints[0]!['bodyB'] = same.joints[0]!['bodyA'];
     expect(load(same)).toThrow(/snapshot\.joints\[0\]\.bodyB: must be a different body/);
-    const statics = fresh();
-    statics.joints[0]!['bodyB'] = 0; // the ground wall, like bodyA (the static pivot)
-    expect(load(statics)).toThrow(
-      /snapshot\.joints\[0\]\.bodyB: a joint needs at least one dynamic/,
-    );
     const mouse = fresh();
     mouse.joints[index('mouse')]!['body'] = 0;
     expect(load(mouse)).toThrow(
@@ -366,7 +361,7 @@ describe('bad joint snapshots', () => {
     expect(load(axis)).toThrow(/\.localAxis: must be a unit vector/);
     const impulse = fresh();
     impulse.joints[0]!['lowerImpulse'] = -1;
-    expect(load(impulse)).toThrow(/snapshot\.joints\[0\]\.lowerImpulse: must be zero or more/);
+    expect(load(impulse)).toThrow(/snapshot\.joints\[0\]\.lowerImpulse: must be from 0 to/);
     const flag = fresh();
     flag.joints[0]!['enableMotor'] = 1;
     expect(load(flag)).toThrow(/snapshot\.joints\[0\]\.enableMotor: must be true or false/);
