@@ -6,7 +6,7 @@ import { existsSync, writeFileSync } from 'node:fs';
 import { cpus } from 'node:os';
 import { fileURLToPath } from 'node:url';
 import { parseArgs } from 'node:util';
-import { ENGINES } from './engines/index.ts';
+import { ENGINES, NOT_BY_DEFAULT } from './engines/index.ts';
 import { SCENES, UNSUPPORTED } from './scenes/index.ts';
 import type { SizeReport } from './size.ts';
 import type { WorkerResult } from './worker.ts';
@@ -60,7 +60,7 @@ const allScenes = [...Object.keys(SCENES), ...Object.keys(UNSUPPORTED)].sort();
 const sceneNames = values.scenes ? values.scenes.split(',').map((s) => s.trim()) : allScenes;
 const engineIds = values.engines
   ? values.engines.split(',').map((s) => s.trim())
-  : Object.keys(ENGINES);
+  : Object.keys(ENGINES).filter((e) => !NOT_BY_DEFAULT.has(e));
 for (const s of sceneNames) {
   if (!SCENES[s] && !UNSUPPORTED[s]) throw new Error(`unknown scene ${s}; known: ${allScenes}`);
 }

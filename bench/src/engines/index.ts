@@ -1,8 +1,12 @@
 import type { Engine } from '../types.ts';
 
+/** Engines run only when named with --engines (variants of one engine). */
+export const NOT_BY_DEFAULT: ReadonlySet<string> = new Set(['physical-javascript']);
+
 /** Every engine the bench knows, in table order; each loads lazily (only in its own worker). */
 export const ENGINES: Record<string, () => Promise<Engine>> = {
   physical: async () => (await import('./physical.ts')).physical,
+  'physical-javascript': async () => (await import('./physical.ts')).physicalJavaScript,
   'box2d3-wasm': async () => (await import('./box2d3.ts')).loadBox2d3(),
   'box2d-wasm': async () => (await import('./box2d-wasm.ts')).loadBox2dWasm(),
   '@box2d/core': async () => (await import('./box2d-core.ts')).box2dCore,

@@ -111,112 +111,127 @@ export const physical: Engine = {
   id: 'physical',
   kind: 'js',
   settings: `subSteps ${SUB_STEPS}, contact 30 Hz / damping 10, push-out 3 m/s, sleep per scene, continuous on (defaults), revolute motor where the scene has one; measured from packages/engine/dist (tsc build)`,
-  create(scene) {
-    const world = new PhysicalWorld({
-      gravity: { x: scene.gravity.x, y: -scene.gravity.y },
-      subSteps: SUB_STEPS,
-      enableSleep: scene.sleep,
-      enableContinuous: true,
+  create: (scene) => createWorld(scene, 'auto'),
+};
+
+/**
+ * Physical with `kernel: 'javascript'`: the contact passes' JavaScript build only, as where
+ * WebAssembly cannot compile (a Content-Security-Policy without 'wasm-unsafe-eval'). Not in the
+ * default engine list; `--engines physical,physical-javascript` compares the two builds.
+ */
+export const physicalJavaScript: Engine = {
+  ...physical,
+  id: 'physical-javascript',
+  settings: `${physical.settings}; kernel: 'javascript'`,
+  create: (scene) => createWorld(scene, 'javascript'),
+};
+
+function createWorld(scene: SceneDesc, kernel: 'auto' | 'javascript'): World {
+  const world = new PhysicalWorld({
+    gravity: { x: scene.gravity.x, y: -scene.gravity.y },
+    subSteps: SUB_STEPS,
+    enableSleep: scene.sleep,
+    enableContinuous: true,
+    kernel,
+  });
+  const notes = new Set<string>();
+  const bodies: Body[] = [];
+  let ground: Body | null = null;
+  const makeBody = (desc: BodyDesc): Body => {
+    if (desc.sleepThreshold !== undefined) {
+      notes.add('no per-body sleep threshold (Box2D bodyDef.sleepThreshold): the default');
+    }
+    return new Body({
+      type: desc.type,
+      position: { x: desc.x, y: -desc.y },
+      angle: -(desc.angle ?? 0),
+      linearVelocity: { x: desc.vx ?? 0, y: -(desc.vy ?? 0) },
+      angularVelocity: -(desc.w ?? 0),
+      linearDamping: desc.linearDamping ?? 0,
+      asleep: desc.asleep ?? false,
+      allowSleep: desc.enableSleep ?? true,
+      shapes: desc.shapes.map((s) =>
+        s.filter
+          ? { ...shapeOptions(scene, s), filter: s.filter }
+          : // Box2D's joint_grid filter: category 2, mask ~2, so no two shapes ever collide.
+            scene.shapesCollide === false
+            ? { ...shapeOptions(scene, s), filter: { category: 2, mask: 0xfffffffd } }
+            : shapeOptions(scene, s),
+      ),
     });
-    const notes = new Set<string>();
-    const bodies: Body[] = [];
-    let ground: Body | null = null;
-    const makeBody = (desc: BodyDesc): Body => {
-      if (desc.sleepThreshold !== undefined) {
-        notes.add('no per-body sleep threshold (Box2D bodyDef.sleepThreshold): the default');
-      }
-      return new Body({
-        type: desc.type,
-        position: { x: desc.x, y: -desc.y },
-        angle: -(desc.angle ?? 0),
-        linearVelocity: { x: desc.vx ?? 0, y: -(desc.vy ?? 0) },
-        angularVelocity: -(desc.w ?? 0),
-        linearDamping: desc.linearDamping ?? 0,
-        asleep: desc.asleep ?? false,
-        allowSleep: desc.enableSleep ?? true,
-        shapes: desc.shapes.map((s) =>
-          s.filter
-            ? { ...shapeOptions(scene, s), filter: s.filter }
-            : // Box2D's joint_grid filter: category 2, mask ~2, so no two shapes ever collide.
-              scene.shapesCollide === false
-              ? { ...shapeOptions(scene, s), filter: { category: 2, mask: 0xfffffffd } }
-              : shapeOptions(scene, s),
-        ),
-      });
-    };
-    const makeJoint = (joint: JointDesc, list: readonly Body[], descs: readonly BodyDesc[]) =>
+  };
+  const makeJoint = (joint: JointDesc, list: readonly Body[], descs: readonly BodyDesc[]) =>
+    world.addJoint(
+      revoluteJoint({
+        bodyA: list[joint.a]!,
+        bodyB: list[joint.b]!,
+        ...revoluteOptions(joint, descs[joint.a]!, descs[joint.b]!, notes),
+      }),
+    );
+  for (const desc of scene.bodies) {
+    const body = makeBody(desc);
+    world.add(body);
+    bodies.push(body);
+    if (desc.type === 'static' && ground === null) ground = body;
+    if (desc.motor) {
+      if (ground === null) throw new Error('a motor needs a static body before it');
+      // y-down: a positive (counter-clockwise) Box2D speed is a negative angular velocity here.
       world.addJoint(
         revoluteJoint({
-          bodyA: list[joint.a]!,
-          bodyB: list[joint.b]!,
-          ...revoluteOptions(joint, descs[joint.a]!, descs[joint.b]!, notes),
+          bodyA: ground,
+          bodyB: body,
+          anchor: { x: desc.x, y: -desc.y },
+          enableMotor: true,
+          motorSpeed: -desc.motor.speed,
+          maxMotorTorque: unlimited(desc.motor.maxTorque),
         }),
       );
-    for (const desc of scene.bodies) {
-      const body = makeBody(desc);
-      world.add(body);
-      bodies.push(body);
-      if (desc.type === 'static' && ground === null) ground = body;
-      if (desc.motor) {
-        if (ground === null) throw new Error('a motor needs a static body before it');
-        // y-down: a positive (counter-clockwise) Box2D speed is a negative angular velocity here.
-        world.addJoint(
-          revoluteJoint({
-            bodyA: ground,
-            bodyB: body,
-            anchor: { x: desc.x, y: -desc.y },
-            enableMotor: true,
-            motorSpeed: -desc.motor.speed,
-            maxMotorTorque: unlimited(desc.motor.maxTorque),
-          }),
-        );
-      }
     }
-    for (const joint of scene.joints ?? []) makeJoint(joint, bodies, scene.bodies);
-    const groups = new Map<number, Body[]>();
-    let nextGroup = 0;
-    if (scene.bodies.some((b) => b.hitEvents)) notes.add('no hit-event listener registered');
-    return {
-      get notes() {
-        return [...notes];
-      },
-      createGroup(group: BodyGroupDesc) {
-        const list = group.bodies.map((desc) => world.add(makeBody(desc)));
-        for (const joint of group.joints) makeJoint(joint, list, group.bodies);
-        groups.set(nextGroup, list);
-        return nextGroup++;
-      },
-      destroyGroup(handle) {
-        // Removing a body removes its joints.
-        for (const body of groups.get(handle) ?? []) world.remove(body);
-        groups.delete(handle);
-      },
-      groupPoses() {
-        const poses: Pose[] = [];
-        for (const list of groups.values()) {
-          for (const body of list) {
-            poses.push({ x: body.position.x, y: -body.position.y, angle: -body.angle });
-          }
+  }
+  for (const joint of scene.joints ?? []) makeJoint(joint, bodies, scene.bodies);
+  const groups = new Map<number, Body[]>();
+  let nextGroup = 0;
+  if (scene.bodies.some((b) => b.hitEvents)) notes.add('no hit-event listener registered');
+  return {
+    get notes() {
+      return [...notes];
+    },
+    createGroup(group: BodyGroupDesc) {
+      const list = group.bodies.map((desc) => world.add(makeBody(desc)));
+      for (const joint of group.joints) makeJoint(joint, list, group.bodies);
+      groups.set(nextGroup, list);
+      return nextGroup++;
+    },
+    destroyGroup(handle) {
+      // Removing a body removes its joints.
+      for (const body of groups.get(handle) ?? []) world.remove(body);
+      groups.delete(handle);
+    },
+    groupPoses() {
+      const poses: Pose[] = [];
+      for (const list of groups.values()) {
+        for (const body of list) {
+          poses.push({ x: body.position.x, y: -body.position.y, angle: -body.angle });
         }
-        return poses;
-      },
-      step() {
-        world.step(DT);
-      },
-      pose(index): Pose {
-        const body = bodies[index]!;
-        const p = body.position;
-        return { x: p.x, y: -p.y, angle: -body.angle };
-      },
-      moveKinematicTo(index, x, y, angle) {
-        const body = bodies[index]!;
-        const p = body.position;
-        body.linearVelocity = { x: (x - p.x) / DT, y: (-y - p.y) / DT };
-        body.angularVelocity = (-angle - body.angle) / DT;
-      },
-    } satisfies World;
-  },
-};
+      }
+      return poses;
+    },
+    step() {
+      world.step(DT);
+    },
+    pose(index): Pose {
+      const body = bodies[index]!;
+      const p = body.position;
+      return { x: p.x, y: -p.y, angle: -body.angle };
+    },
+    moveKinematicTo(index, x, y, angle) {
+      const body = bodies[index]!;
+      const p = body.position;
+      body.linearVelocity = { x: (x - p.x) / DT, y: (-y - p.y) / DT };
+      body.angularVelocity = (-angle - body.angle) / DT;
+    },
+  } satisfies World;
+}
 
 /**
  * Box2D's scenes write "no limit" as FLT_MAX (3.4e38); Physical refuses forces and torques past

@@ -1,58 +1,115 @@
-// Contact kernel: warm start, solve and relax over the constraint layout of contact-solver.ts.
-const NORMAL_X: i32 = 0;
-const NORMAL_Y: i32 = 1;
-const FRICTION: i32 = 2;
-const RESTITUTION: i32 = 3;
-const INV_MASS_A: i32 = 4;
-const INV_I_A: i32 = 5;
-const INV_MASS_B: i32 = 6;
-const INV_I_B: i32 = 7;
-const BIAS_RATE: i32 = 8;
-const MASS_SCALE: i32 = 9;
-const IMPULSE_SCALE: i32 = 10;
-const POINT_COUNT: i32 = 11;
-const SHIFT_WEIGHT_A: i32 = 12;
-const SHIFT_WEIGHT_B: i32 = 13;
-const REF_DP_AX: i32 = 14;
-const REF_DP_AY: i32 = 15;
-const REF_DP_BX: i32 = 16;
-const REF_DP_BY: i32 = 17;
-const RADIUS_A: i32 = 18;
-const RADIUS_B: i32 = 19;
-const CENTER_DX: i32 = 20;
-const CENTER_DY: i32 = 21;
-const BLOCK_K11: i32 = 22;
-const BLOCK_K12: i32 = 23;
-const BLOCK_K22: i32 = 24;
-const BLOCK: i32 = 25;
-const POINTS: i32 = 26;
-const R_AX: i32 = 0;
-const R_AY: i32 = 1;
-const R_BX: i32 = 2;
-const R_BY: i32 = 3;
-const BASE_SEPARATION: i32 = 4;
-const NORMAL_IMPULSE: i32 = 5;
-const TANGENT_IMPULSE: i32 = 6;
-const MAX_NORMAL_IMPULSE: i32 = 7;
-const NORMAL_MASS: i32 = 8;
-const TANGENT_MASS: i32 = 9;
-const RELATIVE_VELOCITY: i32 = 10;
-const TOTAL_NORMAL_IMPULSE: i32 = 11;
-const TOTAL_TANGENT_IMPULSE: i32 = 12;
-const RN_A: i32 = 13;
-const RN_B: i32 = 14;
-const IMPACT: i32 = 15;
-const POINT_STRIDE: i32 = 16;
-const STRIDE: i32 = POINTS + 2 * POINT_STRIDE;
-
-const V_X: i32 = 0;
-const V_Y: i32 = 1;
-const W: i32 = 2;
-const DELTA_ANGLE: i32 = 3;
-const DP_X: i32 = 4;
-const DP_Y: i32 = 5;
-const Q_C: i32 = 6;
-const Q_S: i32 = 7;
+// The contact passes: prepare, warm start, solve and relax, store. The one source of each:
+// scripts/contact-kernel-build.ts compiles this file to WebAssembly and turns the same optimised
+// module into JavaScript (Binaryen's wasm2js) for hosts where WebAssembly cannot compile; both
+// builds give bit-identical worlds. Written in AssemblyScript's portable subset: f64 and i32
+// arithmetic, memory read and written only through load/store (ld/st below) at the byte offsets
+// the solver passes in (solver-memory.ts), no allocation, no runtime. The layout constants come
+// from contact-layout.ts, generated from the engine's definitions (contact-constraint-layout.ts,
+// contact-data.ts, body-state.ts).
+//
+// Contact constraints of one step, prepared once into flat arrays so the sub-step loops touch only
+// numbers (Box2D v3 prepares contact constraints the same way, "b2PrepareContactsTask").
+//
+// Sequential impulses (Catto, GDC 2006 "Fast and simple physics using sequential impulses") with
+// accumulated, clamped impulses; soft contacts and sub-stepping (Catto, Box2D v3 "soft step") for
+// position error: no separate position pass, anchors fixed for the step, the separation updated
+// from the bodies' pose change. Normal first, then friction limited by the new normal impulse.
+//
+// Two-point manifolds (a face on a face) solve their two normal impulses together, as one 2x2
+// block LCP (Box2D v2's block solver, Catto's b2ContactSolver, for the case enumeration), in the
+// solve and relax passes and at the moment of impact. Why: point after point, the first point of
+// a flat landing takes the whole impulse and the second a smaller one, so a box dropped flat picks
+// up spin (9 rad/s and 19 m of rolling at e = 1); the block gives both points their exact share and
+// a flat drop stays flat to the last bit (test/fidelity/symmetric-impacts.test.ts). Sequential
+// stays for ill-conditioned blocks (points nearly on top of each other, where K^-1 trades huge
+// opposite impulses), for mixed pairs (one point bouncing, the other not yet touching), and for
+// friction: friction of a straight landing is zero at both points, and measured spin stays 0 with
+// friction 0.6, so no symmetric friction pass was needed.
+import {
+  BASE_SEPARATION,
+  BIAS_RATE,
+  BLOCK,
+  BLOCK_K11,
+  BLOCK_K12,
+  BLOCK_K22,
+  CENTER_DX,
+  CENTER_DY,
+  CONTACT_STRIDE,
+  C_BOUNCING_STEPS,
+  C_FRICTION,
+  C_MAX_NORMAL_IMPULSE,
+  C_NORMAL_IMPULSE,
+  C_NORMAL_X,
+  C_NORMAL_Y,
+  C_POINTS,
+  C_POINT_COUNT,
+  C_POINT_STRIDE,
+  C_RADIUS_A,
+  C_RADIUS_B,
+  C_RELATIVE_VELOCITY,
+  C_RESTITUTION,
+  C_SEPARATION,
+  C_STEP_NORMAL_IMPULSE,
+  C_STEP_TANGENT_IMPULSE,
+  C_TANGENT_IMPULSE,
+  C_X,
+  C_Y,
+  DELTA_ANGLE,
+  DP_X,
+  DP_Y,
+  FRICTION,
+  IMPACT,
+  IMPULSE_SCALE,
+  INV_I_A,
+  INV_I_B,
+  INV_MASS_A,
+  INV_MASS_B,
+  LINEAR_SLOP,
+  MASS_SCALE,
+  MAX_CONDITION_NUMBER,
+  MAX_NORMAL_IMPULSE,
+  NORMAL_IMPULSE,
+  NORMAL_MASS,
+  NORMAL_X,
+  NORMAL_Y,
+  POINTS,
+  POINT_COUNT,
+  POINT_STRIDE,
+  PRESSED_AFTER_BOUNCING_STEPS,
+  Q_C,
+  Q_S,
+  RADIUS_A,
+  RADIUS_B,
+  REF_DP_AX,
+  REF_DP_AY,
+  REF_DP_BX,
+  REF_DP_BY,
+  RELATIVE_VELOCITY,
+  RESTITUTION,
+  RN_A,
+  RN_B,
+  R_AX,
+  R_AY,
+  R_BX,
+  R_BY,
+  SHIFT_WEIGHT_A,
+  SHIFT_WEIGHT_B,
+  STATE_STRIDE,
+  STRIDE,
+  TABLE_CENTER_X,
+  TABLE_CENTER_Y,
+  TABLE_INV_I,
+  TABLE_INV_MASS,
+  TABLE_SLOT,
+  TABLE_STRIDE,
+  TANGENT_IMPULSE,
+  TANGENT_MASS,
+  TOTAL_NORMAL_IMPULSE,
+  TOTAL_TANGENT_IMPULSE,
+  V_X,
+  V_Y,
+  W,
+} from './contact-layout';
 
 function ld(p: usize, k: i32): f64 {
   return load<f64>(p + ((<usize>k) << 3));
@@ -77,6 +134,10 @@ function advancePose(k: usize, dx: f64, dy: f64, angle: f64): void {
   }
 }
 
+/**
+ * Applies last step's accumulated impulses, so resting contacts start where they left off; to the
+ * `count` constraints listed from `orderPtr`.
+ */
 export function warmStart(
   cPtr: usize,
   bodiesPtr: usize,
@@ -106,18 +167,21 @@ export function warmStart(
     let vBy = ld(sb, V_Y);
     let wB = ld(sb, W);
     const pointCount = <i32>ld(cb, POINT_COUNT);
+    // Lever arms to the common point of application (see Preparation.fill).
     const shiftA = ld(cb, SHIFT_WEIGHT_A);
     const shiftB = ld(cb, SHIFT_WEIGHT_B);
     const dpAx = ld(sa, DP_X);
     const dpAy = ld(sa, DP_Y);
     const dpBx = ld(sb, DP_X);
     const dpBy = ld(sb, DP_Y);
+    // Motion since the lever arms were set: the step's start, or a circle pair's refresh.
     const eAx = dpAx - ld(cb, REF_DP_AX);
     const eAy = dpAy - ld(cb, REF_DP_AY);
     const eBx = dpBx - ld(cb, REF_DP_BX);
     const eBy = dpBy - ld(cb, REF_DP_BY);
     const shiftX = shiftA * eAx + shiftB * eBx;
     const shiftY = shiftA * eAy + shiftB * eBy;
+    // The shift as cross products with n and t (see RN_A).
     const sAx = shiftX - eAx;
     const sAy = shiftY - eAy;
     const sBx = shiftX - eBx;
@@ -128,6 +192,7 @@ export function warmStart(
     const dtB = -(sBx * nx + sBy * ny);
     for (let j = 0; j < pointCount; j++) {
       const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+      // A bounce is a one-off impulse, not a contact force to carry into the next sub-step.
       if (ld(p, IMPACT) == 2) {
         st(p, IMPACT, 3);
         st(p, NORMAL_IMPULSE, 0);
@@ -158,6 +223,11 @@ export function warmStart(
   }
 }
 
+/**
+ * One pass over the `count` constraints listed from `orderPtr`. With `useBias` the soft position
+ * correction pushes overlapping shapes apart (at most `maxPushSpeed`); without it ("relax") the
+ * pass removes the velocity that push added, so resting bodies do not gain energy from correction.
+ */
 export function solve(
   cPtr: usize,
   bodiesPtr: usize,
@@ -194,6 +264,9 @@ export function solve(
     const dpAy = ld(sa, DP_Y);
     const dpBx = ld(sb, DP_X);
     const dpBy = ld(sb, DP_Y);
+    // Lever arms to the common point of application (see Preparation.fill), as cross products
+    // with n and t (see RN_A): the prepared ones plus the shift of the common point since the
+    // arms were set (the step's start, or a circle pair's refresh).
     const shiftA = ld(cb, SHIFT_WEIGHT_A);
     const shiftB = ld(cb, SHIFT_WEIGHT_B);
     const eAx = dpAx - ld(cb, REF_DP_AX);
@@ -209,6 +282,8 @@ export function solve(
     const dnA = sAx * ny - sAy * nx;
     const dnB = sBx * ny - sBy * nx;
     let bounced = false;
+    // The normal in each body's rotated frame, so that each point's separation costs two dot
+    // products: (q r) . n = r . (q^T n).
     const qAc = ld(sa, Q_C);
     const qAs = ld(sa, Q_S);
     const qBc = ld(sb, Q_C);
@@ -220,6 +295,9 @@ export function solve(
     const dpn = (dpBx - dpAx) * nx + (dpBy - dpAy) * ny;
     const pointCount = <i32>ld(cb, POINT_COUNT);
 
+    // Two-point manifolds are solved as one block when both points are plain contacts, or both
+    // bounce now; otherwise (one point waits for its impact, or K is ill-conditioned, see
+    // Preparation.fill) the points go one after the other below.
     let firstSequential = 0;
     if (ld(cb, BLOCK) == 1) {
       const p1 = cb + ((<usize>POINTS) << 3);
@@ -241,6 +319,7 @@ export function solve(
       const k11 = ld(cb, BLOCK_K11);
       const k12 = ld(cb, BLOCK_K12);
       const k22 = ld(cb, BLOCK_K22);
+      // Each point's target as in the sequential pass below: bias, and the softness gamma.
       let bias1: f64 = 0;
       let gamma1: f64 = 0;
       if (separation1 > 0) bias1 = separation1 * inverseH;
@@ -260,6 +339,7 @@ export function solve(
       const vn2 = dvn + wB * n2B - wA * n2A;
       const accumulated1 = ld(p1, NORMAL_IMPULSE);
       const accumulated2 = ld(p2, NORMAL_IMPULSE);
+      // The impact test of the sequential pass (see there), on the velocities before the pass.
       let isImpact1 = false;
       let isImpact2 = false;
       if (restitution > 0) {
@@ -277,12 +357,24 @@ export function solve(
           (impact2 == 1 || vn2 + bias2 < 0);
       }
       if (!isImpact1 && !isImpact2) {
+        // Both points push: the mixed LCP  w = A x + q >= 0, x >= 0, x . w = 0  for the new
+        // accumulated impulses x (Box2D v2's block solver, Catto's b2ContactSolver, enumerates
+        // its four cases the same way). With the soft step, the sequential update of one point
+        //   dx = -massScale (vn + bias) / K - impulseScale x_old
+        // is, writing massScale = a2 / (1 + a2) and impulseScale = 1 / (1 + a2) (softness.ts),
+        //   vn + K dx + bias + gamma x_new = 0  with  gamma = K / a2 = K impulseScale / massScale:
+        // a rigid constraint plus a compliance gamma on the total impulse. Both points together:
+        //   w = vn + K (x - x_old) + bias + Gamma x,  so  A = K + Gamma,  q = vn + bias - K x_old,
+        // with Gamma = diag(gamma1, gamma2). With one point this is exactly the sequential update;
+        // A is better conditioned than K, so the check on K in Preparation.fill covers it.
         const a11 = k11 + gamma1;
         const a22 = k22 + gamma2;
         const q1 = vn1 + bias1 - (k11 * accumulated1 + k12 * accumulated2);
         const q2 = vn2 + bias2 - (k12 * accumulated1 + k22 * accumulated2);
+        // Case 4: both separate.
         let x1: f64 = -1;
         let x2: f64 = -1;
+        // Case 1: both push, w = 0.
         const det = a11 * a22 - k12 * k12;
         const y1 = (k12 * q2 - a22 * q1) / det;
         const y2 = (k12 * q1 - a11 * q2) / det;
@@ -290,11 +382,13 @@ export function solve(
           x1 = y1;
           x2 = y2;
         } else {
+          // Case 2: only point 1 pushes; point 2 must not approach.
           const z1 = -q1 / a11;
           if (z1 >= 0 && k12 * z1 + q2 >= 0) {
             x1 = z1;
             x2 = 0;
           } else {
+            // Case 3: only point 2 pushes.
             const z2 = -q2 / a22;
             if (z2 >= 0 && k12 * z2 + q1 >= 0) {
               x1 = 0;
@@ -305,6 +399,7 @@ export function solve(
             }
           }
         }
+        // Rounding can leave no case satisfied (a nearly degenerate K): then sequential below.
         if (x1 >= 0 && x2 >= 0) {
           firstSequential = 2;
           if (restitution > 0) {
@@ -330,11 +425,15 @@ export function solve(
           wB += iB * (n1B * dx1 + n2B * dx2);
         }
       } else if (isImpact1 && isImpact2 && !useBias && separation1 <= 0 && separation2 <= 0) {
+        // Both points hit in this sub-step: one collision, resolved at once at the moment of
+        // contact (see the single-point case below), so neither point takes the other's share.
+        // Back to the moment of contact: the mean of the two points' times, symmetric in them.
         const back = min<f64>(0.5 * (separation1 / vn1 + separation2 / vn2), 1 / inverseH);
         const tAx = dpAx - vAx * back;
         const tAy = dpAy - vAy * back;
         const tBx = dpBx - vBx * back;
         const tBy = dpBy - vBy * back;
+        // The common point of application, where it was at that moment.
         const eAx = tAx - ld(cb, REF_DP_AX);
         const eAy = tAy - ld(cb, REF_DP_AY);
         const eBx = tBx - ld(cb, REF_DP_BX);
@@ -361,6 +460,8 @@ export function solve(
         const b11 = mAB + iA * rn1A * rn1A + iB * rn1B * rn1B;
         const b22 = mAB + iA * rn2A * rn2A + iB * rn2B * rn2B;
         const b12 = mAB + iA * rn1A * rn2A + iB * rn1B * rn2B;
+        // Newton's law per point as an LCP: w = B x + (1 + e) approach >= 0, x >= 0, x . w = 0:
+        // each point leaves at e times its approach, or faster with no impulse of its own.
         const q1 = (1 + restitution) * approach1;
         const q2 = (1 + restitution) * approach2;
         let x1: f64 = -1;
@@ -407,6 +508,7 @@ export function solve(
           vBx += dvBx;
           vBy += dvBy;
           wB += dwB;
+          // And forward again with the new velocities: the exact path of the collision.
           if (a != 0) advancePose(sa, dvAx * back, dvAy * back, dwA * back);
           if (b != 0) advancePose(sb, dvBx * back, dvBy * back, dwB * back);
           bounced = true;
@@ -416,6 +518,7 @@ export function solve(
 
     for (let j = firstSequential; j < pointCount; j++) {
       const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+      // Current separation: the anchors moved with their bodies since the step began.
       const separation =
         dpn +
         (ld(p, R_BX) * nBx + ld(p, R_BY) * nBy) -
@@ -427,6 +530,7 @@ export function solve(
       let massScale: f64 = 1;
       let impulseScale: f64 = 0;
       if (separation > 0) {
+        // Speculative: allow closing exactly the gap within this sub-step, no more.
         bias = separation * inverseH;
       } else if (useBias) {
         bias = max<f64>(biasRate * separation, -maxPushSpeed);
@@ -435,6 +539,15 @@ export function solve(
       }
       const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * leverB - wA * leverA;
       const accumulated = ld(p, NORMAL_IMPULSE);
+      // Restitution (Newton's law) at the moment of impact. An impact is an approach faster than
+      // the threshold on a point not already pushing (a resting contact is always warm-started,
+      // so it never counts, and never jitters). The solve pass lets it go; the relax pass, once
+      // the shapes touch, applies the whole collision impulse -(1 + e) m vn along the normal of
+      // that instant, and moves both bodies on by their velocity change for the part of the
+      // sub-step left after the moment of contact: the exact trajectory of two colliding
+      // bodies, so momentum, angular momentum and (for e = 1) energy are kept. A bounce after all
+      // the sub-steps (Box2D v3) comes after the normal of sliding particles has turned and after
+      // gravity has changed the approach, and cannot bounce a particle twice in one step.
       if (restitution > 0) {
         const impactState = ld(p, IMPACT);
         if (
@@ -444,9 +557,11 @@ export function solve(
           (impactState == 1 || vn + bias < 0)
         ) {
           if (useBias || separation > 0) {
+            // Not touching yet: the impact happens when the positions get there.
             st(p, IMPACT, useBias ? 1 : 0);
             continue;
           }
+          // Back to the moment of contact: the overlap divided by the approach speed ago.
           const back = min<f64>(separation / vn, 1 / inverseH);
           const tAx = dpAx - vAx * back;
           const tAy = dpAy - vAy * back;
@@ -461,6 +576,7 @@ export function solve(
           const radiusA = ld(cb, RADIUS_A);
           const radiusB = ld(cb, RADIUS_B);
           if (radiusA > 0 && radiusB > 0) {
+            // Two particles meet along the line through their centres at that moment.
             const cx = ld(cb, CENTER_DX) + tBx - tAx;
             const cy = ld(cb, CENTER_DY) + tBy - tAy;
             const length = Math.sqrt(cx * cx + cy * cy);
@@ -522,6 +638,7 @@ export function solve(
       );
       const impulse = newImpulse - accumulated;
       st(p, NORMAL_IMPULSE, newImpulse);
+      // The relax pass ends the sub-step: the accumulated impulse is what acted in it.
       if (!useBias) st(p, TOTAL_NORMAL_IMPULSE, ld(p, TOTAL_NORMAL_IMPULSE) + newImpulse);
       if (impulse > ld(p, MAX_NORMAL_IMPULSE)) st(p, MAX_NORMAL_IMPULSE, impulse);
       vAx -= mA * impulse * nx;
@@ -533,6 +650,7 @@ export function solve(
     }
 
     if (bounced) {
+      // The bounce moved the bodies on: friction acts at the common point where it is now.
       const eAx = ld(sa, DP_X) - ld(cb, REF_DP_AX);
       const eAy = ld(sa, DP_Y) - ld(cb, REF_DP_AY);
       const eBx = ld(sb, DP_X) - ld(cb, REF_DP_BX);
@@ -551,6 +669,7 @@ export function solve(
       const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
       const leverA = dtA - (ld(p, R_AX) * nx + ld(p, R_AY) * ny);
       const leverB = dtB - (ld(p, R_BX) * nx + ld(p, R_BY) * ny);
+      // Slip along t = (ny, -nx).
       const vt = (vBx - vAx) * ny - (vBy - vAy) * nx + wB * leverB - wA * leverA;
       const accumulated = ld(p, TANGENT_IMPULSE);
       const maxFriction = friction * ld(p, NORMAL_IMPULSE);
@@ -580,41 +699,6 @@ export function solve(
     }
   }
 }
-
-// Contact data slots (contact-data.ts).
-const C_NORMAL_X: i32 = 0;
-const C_NORMAL_Y: i32 = 1;
-const C_POINT_COUNT: i32 = 2;
-const C_FRICTION: i32 = 3;
-const C_RESTITUTION: i32 = 4;
-const C_RADIUS_A: i32 = 5;
-const C_RADIUS_B: i32 = 6;
-const C_BOUNCING_STEPS: i32 = 22;
-const C_POINTS: i32 = 23;
-const C_X: i32 = 0;
-const C_Y: i32 = 1;
-const C_SEPARATION: i32 = 2;
-const C_NORMAL_IMPULSE: i32 = 4;
-const C_TANGENT_IMPULSE: i32 = 5;
-const C_MAX_NORMAL_IMPULSE: i32 = 6;
-const C_RELATIVE_VELOCITY: i32 = 7;
-const C_STEP_NORMAL_IMPULSE: i32 = 8;
-const C_STEP_TANGENT_IMPULSE: i32 = 9;
-const C_POINT_STRIDE: i32 = 10;
-const CONTACT_STRIDE: i32 = C_POINTS + 2 * C_POINT_STRIDE;
-
-// The body table (body-state.ts).
-const TABLE_SLOT: i32 = 0;
-const TABLE_INV_MASS: i32 = 1;
-const TABLE_INV_I: i32 = 2;
-const TABLE_CENTER_X: i32 = 3;
-const TABLE_CENTER_Y: i32 = 4;
-const TABLE_STRIDE: i32 = 5;
-const STATE_STRIDE: i32 = 8;
-
-const LINEAR_SLOP: f64 = 0.005;
-const PRESSED_AFTER_BOUNCING_STEPS: f64 = 3;
-const MAX_CONDITION_NUMBER: f64 = 1000;
 
 /** Counts of the last prepare: circle pairs listed, heavy-on-light constraints. */
 export let circlePairCount: i32 = 0;
@@ -652,6 +736,8 @@ class Preparation {
     const mB = ld(tB, TABLE_INV_MASS);
     if (mA == 0 && mB == 0) return false;
     store<i32>(slotsPtr + ((<usize>i) << 2), slot);
+    // Sleeping or static bodies are solved as immovable (slot 0, no inverse mass); awake
+    // kinematic ones too.
     store<i32>(bodiesPtr + ((<usize>i) << 3), <i32>ld(tA, TABLE_SLOT) * STATE_STRIDE);
     store<i32>(bodiesPtr + ((<usize>i) << 3), <i32>ld(tB, TABLE_SLOT) * STATE_STRIDE, 4);
     if (mA != 0 && mB != 0 && (mA > mB ? mA / mB : mB / mA) > 2) heavyOnLightCount++;
@@ -684,6 +770,7 @@ class Preparation {
     dt: f64,
   ): void {
     const m = dataPtr + ((<usize>(slot * CONTACT_STRIDE)) << 3);
+    // Touching: the manifold has a point (Contact.touching).
     const pointCount = ld(m, C_POINT_COUNT);
     const tA =
       tablePtr +
@@ -698,6 +785,7 @@ class Preparation {
     const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
     const a = load<i32>(bodiesPtr + ((<usize>i) << 3));
     const b = load<i32>(bodiesPtr + ((<usize>i) << 3), 4);
+    // Stiffer against immovable bodies: nothing on the other side gives way.
     const immovable = mA == 0 || mB == 0;
     const nx = ld(m, C_NORMAL_X);
     const ny = ld(m, C_NORMAL_Y);
@@ -712,6 +800,7 @@ class Preparation {
     st(cb, BIAS_RATE, immovable ? staticBiasRate : contactBiasRate);
     st(cb, MASS_SCALE, immovable ? staticMassScale : contactMassScale);
     st(cb, IMPULSE_SCALE, immovable ? staticImpulseScale : contactImpulseScale);
+    // Heavy on light: the soft contact's stiffness follows the heavier body's mass (softness.ts).
     if (!immovable) {
       const ratio = mA > mB ? mA / mB : mB / mA;
       if (ratio > 2) {
@@ -749,6 +838,7 @@ class Preparation {
     st(cb, REF_DP_BX, 0);
     st(cb, REF_DP_BY, 0);
     if (radiusB > 0 && radiusA == 0) {
+      // On the circle's line of centres, so the circle gets no torque from a normal impulse.
       st(cb, SHIFT_WEIGHT_A, 0);
       st(cb, SHIFT_WEIGHT_B, 1);
     } else {
@@ -779,6 +869,7 @@ class Preparation {
       st(p, R_AX, rAx);
       st(p, R_AY, rAy);
       st(p, R_BX, rBx);
+      // Separation later = baseline + (change of the anchors' world positions) . n.
       st(p, R_BY, rBy);
       st(p, BASE_SEPARATION, ld(mp, C_SEPARATION) - ((rBx - rAx) * nx + (rBy - rAy) * ny));
       st(p, NORMAL_IMPULSE, ld(mp, C_NORMAL_IMPULSE));
@@ -797,15 +888,21 @@ class Preparation {
       const rtB = rBx * ty - rBy * tx;
       const kTangent = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
       st(p, TANGENT_MASS, kTangent > 0 ? 1 / kTangent : 0);
+      // Normal approach velocity before the step, for restitution; replaced by the velocity at the
+      // first push of the step (see solve).
       const dvx = vBx - wB * rBy - (vAx - wA * rAy);
       const dvy = vBy + wB * rBx - (vAy + wA * rAx);
       const approach = dvx * nx + dvy * ny;
       st(p, RELATIVE_VELOCITY, approach);
+      // A pressed point (see PRESSED_AFTER_BOUNCING_STEPS) overlapping deeper than this step's
+      // approach explains is a contact for this step, not an impact.
       const separation = ld(mp, C_SEPARATION);
       if (pressed && separation < Math.min(approach * dt, 0) - LINEAR_SLOP) st(p, IMPACT, 4);
     }
     st(cb, BLOCK, 0);
     if (count == 2) {
+      // The normal block K (the inverse mass seen by the two points together): K_jj = 1 / normal
+      // mass, K_12 couples them through the bodies' rotation.
       const p1 = cb + ((<usize>POINTS) << 3);
       const p2 = p1 + ((<usize>POINT_STRIDE) << 3);
       const rn1A = ld(p1, R_AX) * ny - ld(p1, R_AY) * nx;
@@ -818,6 +915,9 @@ class Preparation {
       st(cb, BLOCK_K11, k11);
       st(cb, BLOCK_K12, k12);
       st(cb, BLOCK_K22, k22);
+      // Condition number check (Box2D v2's b2ContactSolver, k_maxConditionNumber): two points
+      // almost on top of each other make K nearly singular, and its inverse would trade huge
+      // opposite impulses; those manifolds stay sequential, which is well-defined for any K.
       const kMax = Math.max(k11, k22);
       if (kMax > 0 && kMax * kMax < MAX_CONDITION_NUMBER * (k11 * k22 - k12 * k12)) {
         st(cb, BLOCK, 1);
@@ -826,7 +926,15 @@ class Preparation {
   }
 }
 
-/** prepareContacts (contact-solver.ts); returns the number of constraints. */
+/**
+ * Makes a constraint of every touching contact (slots 0..`contactCount` - 1 of the contact data)
+ * with something that can move, computing effective masses, the anchors relative to each centre
+ * of mass and the separation baseline from the contact's slot. Reads the bodies from the body
+ * table (body-state.ts) through the slot's world indices, and velocities from the states (already
+ * loaded with the bodies' velocities of this step's start) for restitution. Visits the contacts in
+ * slot order, so the contact data streams through memory; the sub-step passes use the order.
+ * Returns the number of constraints.
+ */
 export function prepare(
   dataPtr: usize,
   contactBodiesPtr: usize,
@@ -974,7 +1082,10 @@ export function prepareListed(
   }
 }
 
-/** storeImpulses (contact-solver.ts). */
+/**
+ * Copies the accumulated impulses back to the contacts' slots for warm starting, and the impulses
+ * the step delivered (sum over the sub-steps, plus restitution) for events.
+ */
 export function storeImpulses(
   cPtr: usize,
   slotsPtr: usize,

@@ -1,16 +1,24 @@
 import { CONTACT_KERNEL_HEX } from './contact-kernel-binary.ts';
+import { createJavaScriptContactKernel } from './contact-kernel-javascript.ts';
 
-// The contact passes (prepare, warm start, solve, relax, store) compiled to WebAssembly from
-// wasm/contact-kernel.ts, a line-for-line port of contact-solver.ts' prepareContacts,
-// warmStartContacts, solveContacts and storeImpulses: the same operations in the same order on IEEE doubles, so both give bit-identical
-// results (test/unit/dynamics/contact-kernel.test.ts) and a world may switch between them at any
-// step. Why: V8 compiles WebAssembly when it loads, so a world's first steps run compiled code
-// instead of waiting for JavaScript to get hot, and the passes run without bounds checks or
-// deoptimisation.
+// The contact passes (prepare, warm start, solve, relax, store) have one source,
+// wasm/contact-kernel.ts (AssemblyScript), built twice by scripts/contact-kernel-build.ts: to
+// WebAssembly (contact-kernel-binary.ts) and, from the same optimised module, to JavaScript by
+// Binaryen's wasm2js (contact-kernel-javascript.ts). Both run the same IEEE double operations in
+// the same order, so they give bit-identical worlds (test/unit/dynamics/contact-kernel.test.ts)
+// and a world may switch between them at any step. WebAssembly is preferred: V8 compiles it when
+// it loads, so a world's first steps run compiled code instead of waiting for JavaScript to get
+// hot, and the passes run without bounds checks or deoptimisation. The JavaScript build runs
+// where WebAssembly cannot compile (a Content-Security-Policy without 'wasm-unsafe-eval') and in
+// worlds created with `kernel: 'javascript'`.
 
 /** The parts of the WebAssembly API used here (the engine's types assume only ES2022). */
 export interface WasmMemory {
   readonly buffer: ArrayBuffer;
+}
+/** What an instance of the kernel imports: the memory its pointers point into. */
+export interface KernelImports {
+  env: { memory: WasmMemory };
 }
 interface WasmApi {
   Memory: new (descriptor: { initial: number }) => WasmMemory;
@@ -122,26 +130,34 @@ function compile(): object | null {
     return new wasm.Module(bytes);
   } catch {
     // A Content-Security-Policy without 'wasm-unsafe-eval' refuses to compile: the JavaScript
-    // passes run instead.
+    // build runs instead.
     return null;
   }
 }
 
+const PAGE = 65536;
+
 /**
- * A memory of `pages` 64 KiB pages with the kernel bound to it, or null where WebAssembly cannot
- * run (then the JavaScript passes do the same work).
+ * A memory of at least `bytes` bytes with the kernel bound to it: WebAssembly when `webAssembly`
+ * is true and it can run (a WebAssembly memory of whole 64 KiB pages), else the JavaScript build
+ * over an ordinary ArrayBuffer. `webAssembly` in the result says which.
  */
 export function createContactKernel(
-  pages: number,
-): { memory: WasmMemory; kernel: ContactKernel } | null {
-  if (compiled === undefined) compiled = compile();
-  if (compiled === null || wasm === undefined) return null;
-  try {
-    const memory = new wasm.Memory({ initial: pages });
-    const instance = new wasm.Instance(compiled, { env: { memory } });
-    return { memory, kernel: instance.exports as ContactKernel };
-  } catch {
-    // Out of address space for another memory: this world keeps the JavaScript passes.
-    return null;
+  bytes: number,
+  webAssembly: boolean,
+): { memory: WasmMemory; kernel: ContactKernel; webAssembly: boolean } {
+  if (webAssembly) {
+    if (compiled === undefined) compiled = compile();
+    if (compiled !== null && wasm !== undefined) {
+      try {
+        const memory = new wasm.Memory({ initial: Math.ceil(bytes / PAGE) });
+        const instance = new wasm.Instance(compiled, { env: { memory } });
+        return { memory, kernel: instance.exports as ContactKernel, webAssembly: true };
+      } catch {
+        // Out of address space for another memory: this world runs the JavaScript build.
+      }
+    }
   }
+  const memory = { buffer: new ArrayBuffer(bytes) };
+  return { memory, kernel: createJavaScriptContactKernel({ env: { memory } }), webAssembly: false };
 }

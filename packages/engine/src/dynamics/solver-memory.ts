@@ -3,11 +3,11 @@ import { createContactKernel, type ContactKernel, type WasmMemory } from './cont
 // The solver's hot arrays in one block of memory: the body states and the body table
 // (body-state.ts), the contact data with each slot's bodies (contact-data.ts), and the contact
 // constraints with their body offsets, visiting order, source slots and circle pairs
-// (contact-solver.ts). The JavaScript passes read them through typed-array views; the WebAssembly
-// kernel (contact-kernel.ts) reads the same bytes at the regions' offsets. A world starts on an
-// ordinary ArrayBuffer and moves into a WebAssembly memory once it has
-// `kernelSettings.minConstraints` contacts: a small world gains nothing from the kernel and would
-// hold a memory's address-space reservation for nothing.
+// (contact-solver.ts). The contact kernel (contact-kernel.ts) reads them at the regions' byte
+// offsets, the rest of the solver through typed-array views. A world starts on an ordinary
+// ArrayBuffer run by the kernel's JavaScript build and moves into a WebAssembly memory once it has
+// `kernelSettings.minConstraints` contacts (never with `kernel: 'javascript'`, nor where
+// WebAssembly cannot compile).
 //
 // Regions, in this order, each growing by doubling (contents kept), each 8-byte aligned.
 
@@ -33,8 +33,6 @@ const REGIONS = 9;
 /** Bytes per element of each region. */
 const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8];
 
-const PAGE = 65536;
-
 /**
  * @internal When worlds move to the WebAssembly kernel: at this many contacts in a step
  * (`Infinity`: never). Tests set it to compare both kernels.
@@ -54,10 +52,10 @@ export class SolverMemory {
   bodyTable: Float64Array = new Float64Array(0);
   /** Byte offset of each region, for the kernel. */
   readonly offsets: number[] = new Array<number>(REGIONS).fill(0);
-  /** The WebAssembly passes over this memory, once it has moved there; null before. */
-  kernel: ContactKernel | null = null;
+  /** The contact passes over this memory: WebAssembly once it has moved there, else JavaScript. */
+  kernel!: ContactKernel;
   private wasm: WasmMemory | null = null;
-  /** Set when WebAssembly could not be had: stay on the ArrayBuffer, and do not ask again. */
+  /** Set when WebAssembly could not be had or is not wanted: stay on the ArrayBuffer, do not ask. */
   private wasmRefused = false;
   /** Elements each region holds. */
   private readonly capacities: number[] = new Array<number>(REGIONS).fill(0);
@@ -89,6 +87,20 @@ export class SolverMemory {
     this.wasm = null;
     this.kernel = null;
     this.layout(wanted, false);
+  }
+
+  /** Whether the passes run as WebAssembly now (else the kernel's JavaScript build). */
+  get usesWebAssembly(): boolean {
+    return this.wasm !== null;
+  }
+
+  /**
+   * Keeps this memory an ArrayBuffer run by the JavaScript build, with no attempt to compile
+   * WebAssembly from now on (World's `kernel: 'javascript'`); moves back if it had moved.
+   */
+  refuseWebAssembly(): void {
+    this.wasmRefused = true;
+    if (this.wasm !== null) this.layout(this.capacities.slice(), false);
   }
 
   /** Makes room for `doubles` state numbers; returns the states' view. */
@@ -184,27 +196,18 @@ export class SolverMemory {
       total += Math.ceil((capacities[r]! * ELEMENT_BYTES[r]!) / 8) * 8;
     }
     const oldBuffer = this.buffer;
-    let buffer: ArrayBuffer | null = null;
-    if (toWasm) {
-      if (this.wasm !== null && this.wasm.buffer.byteLength >= total) {
-        buffer = this.wasm.buffer;
-      } else {
-        // A new memory rather than memory.grow: growing detaches the old buffer, and the first
-        // detached ArrayBuffer of a process makes V8 check for detachment at every typed-array
-        // access of all optimised code from then on (measured: tumbler ~10 % slower).
-        const created = createContactKernel(Math.ceil(total / PAGE));
-        if (created !== null) {
-          this.wasm = created.memory;
-          this.kernel = created.kernel;
-          buffer = created.memory.buffer;
-        }
-      }
-    }
-    if (buffer === null) {
-      if (toWasm) this.wasmRefused = true;
-      this.wasm = null;
-      this.kernel = null;
-      buffer = new ArrayBuffer(total);
+    let buffer: ArrayBuffer;
+    if (this.wasm !== null && toWasm && this.wasm.buffer.byteLength >= total) {
+      buffer = this.wasm.buffer;
+    } else {
+      // A new memory rather than memory.grow: growing detaches the old buffer, and the first
+      // detached ArrayBuffer of a process makes V8 check for detachment at every typed-array
+      // access of all optimised code from then on (measured: tumbler ~10 % slower).
+      const created = createContactKernel(total, toWasm);
+      if (toWasm && !created.webAssembly) this.wasmRefused = true;
+      this.wasm = created.webAssembly ? created.memory : null;
+      this.kernel = created.kernel;
+      buffer = created.memory.buffer;
     }
     const bytes = new Uint8Array(buffer);
     const from = this.offsets;

@@ -19,16 +19,12 @@ import {
   V_Y,
   W,
 } from './body-state.ts';
-import { CONTACT_STRIDE, type ContactData } from './contact-data.ts';
+import { CONTACT_STRIDE } from './contact-data.ts';
 import {
   CONSTRAINT_STRIDE,
   ContactConstraints,
-  prepareContacts,
   refreshCirclePairs,
   ShockPropagation,
-  solveContacts,
-  storeImpulses,
-  warmStartContacts,
 } from './contact-solver.ts';
 import { ContinuousSolver } from './continuous.ts';
 import { JointSolver } from './joints/joint-solver.ts';
@@ -214,15 +210,13 @@ export class Solver {
   }
 
   /**
-   * Solves the step for the gathered bodies and the given contacts (the touching ones become
-   * constraints); `contactData` holds the contacts' numbers (see contact-data.ts).
+   * Solves the step for the gathered bodies and the first `contactCount` contact slots of the
+   * solver memory (the touching ones become constraints; see contact-data.ts).
    */
-  solve(contacts: ContactData, contactCount: number, settings: SolverSettings, dt: number): void {
+  solve(contactCount: number, settings: SolverSettings, dt: number): void {
     const constraints = this.constraints;
     // Room first: growing the memory replaces every view of it, `s` included.
     constraints.reserve(contactCount);
-    const contactData = contacts.data;
-    const s = this.states.data;
     const memory = this.memory;
     const subSteps = settings.subSteps;
     const h = dt / subSteps;
@@ -238,62 +232,48 @@ export class Solver {
     joints.prepare(dt, subSteps, contactHertz, this.awakeCount);
     const batches = this.batches;
     const batchable = joints.activeCount === 0 && batches.wants(contactCount);
-    // With the kernel and batches in view, contacts are only classified here and each batch
-    // fills its constraints just before its sub-steps, while they stay in cache.
+    // With batches in view, contacts are only classified here and each batch fills its
+    // constraints just before its sub-steps, while they stay in cache.
     let filled = true;
-    if (kernel !== null) {
-      const o = memory.offsets;
-      if (batchable) {
-        constraints.count = kernel.classify(
-          o[CONTACT_DATA]!,
-          o[CONTACT_BODIES]!,
-          o[BODY_TABLE]!,
-          o[CONSTRAINT_BODIES]!,
-          o[CONSTRAINT_SLOTS]!,
-          o[CIRCLE_PAIRS]!,
-          contactCount,
-        );
-        filled = false;
-      } else {
-        const soft = this.contactSoftness;
-        const hard = this.staticSoftness;
-        constraints.count = kernel.prepare(
-          o[CONTACT_DATA]!,
-          o[CONTACT_BODIES]!,
-          o[BODY_TABLE]!,
-          o[STATES]!,
-          o[CONSTRAINT_DATA]!,
-          o[CONSTRAINT_BODIES]!,
-          o[CONSTRAINT_SLOTS]!,
-          o[CIRCLE_PAIRS]!,
-          contactCount,
-          soft.biasRate,
-          soft.massScale,
-          soft.impulseScale,
-          hard.biasRate,
-          hard.massScale,
-          hard.impulseScale,
-          soft.hertz,
-          soft.zeta,
-          soft.h,
-          dt,
-        );
-      }
-      constraints.circlePairCount = kernel.circlePairCount.value;
-      constraints.heavyOnLightCount = kernel.heavyOnLightCount.value;
-    } else {
-      prepareContacts(
-        constraints,
+    const o = memory.offsets;
+    if (batchable) {
+      constraints.count = kernel.classify(
+        o[CONTACT_DATA]!,
+        o[CONTACT_BODIES]!,
+        o[BODY_TABLE]!,
+        o[CONSTRAINT_BODIES]!,
+        o[CONSTRAINT_SLOTS]!,
+        o[CIRCLE_PAIRS]!,
         contactCount,
-        contactData,
-        contacts.bodies,
-        memory.bodyTable,
-        s,
-        this.contactSoftness,
-        this.staticSoftness,
+      );
+      filled = false;
+    } else {
+      const soft = this.contactSoftness;
+      const hard = this.staticSoftness;
+      constraints.count = kernel.prepare(
+        o[CONTACT_DATA]!,
+        o[CONTACT_BODIES]!,
+        o[BODY_TABLE]!,
+        o[STATES]!,
+        o[CONSTRAINT_DATA]!,
+        o[CONSTRAINT_BODIES]!,
+        o[CONSTRAINT_SLOTS]!,
+        o[CIRCLE_PAIRS]!,
+        contactCount,
+        soft.biasRate,
+        soft.massScale,
+        soft.impulseScale,
+        hard.biasRate,
+        hard.massScale,
+        hard.impulseScale,
+        soft.hertz,
+        soft.zeta,
+        soft.h,
         dt,
       );
     }
+    constraints.circlePairCount = kernel.circlePairCount.value;
+    constraints.heavyOnLightCount = kernel.heavyOnLightCount.value;
     scrambleOrder(constraints.order, constraints.count);
     const shock = this.shock;
     // The heavy-on-light sweep reads the prepared constraints.
@@ -347,7 +327,7 @@ export class Solver {
     const o = this.memory.offsets;
     const soft = this.contactSoftness;
     const hard = this.staticSoftness;
-    this.memory.kernel!.prepareListed(
+    this.memory.kernel.prepareListed(
       o[CONTACT_DATA]!,
       o[CONTACT_BODIES]!,
       o[BODY_TABLE]!,
@@ -402,29 +382,25 @@ export class Solver {
       joints.warmStart(s);
       // Offsets in bytes: the order holds 4-byte indices.
       const order = memory.offsets[CONSTRAINT_ORDER]! + 4 * from;
-      if (kernel !== null) {
-        kernel.warmStart(
-          memory.offsets[CONSTRAINT_DATA]!,
-          memory.offsets[CONSTRAINT_BODIES]!,
-          order,
-          memory.offsets[STATES]!,
-          count,
-        );
-      } else warmStartContacts(constraints, s, from, to);
+      kernel.warmStart(
+        memory.offsets[CONSTRAINT_DATA]!,
+        memory.offsets[CONSTRAINT_BODIES]!,
+        order,
+        memory.offsets[STATES]!,
+        count,
+      );
       joints.solve(s, true);
-      if (kernel !== null) {
-        kernel.solve(
-          memory.offsets[CONSTRAINT_DATA]!,
-          memory.offsets[CONSTRAINT_BODIES]!,
-          order,
-          memory.offsets[STATES]!,
-          count,
-          inverseH,
-          maxPushSpeed,
-          threshold,
-          1,
-        );
-      } else solveContacts(constraints, s, from, to, inverseH, maxPushSpeed, threshold, true);
+      kernel.solve(
+        memory.offsets[CONSTRAINT_DATA]!,
+        memory.offsets[CONSTRAINT_BODIES]!,
+        order,
+        memory.offsets[STATES]!,
+        count,
+        inverseH,
+        maxPushSpeed,
+        threshold,
+        1,
+      );
       if (shock.count > 0) {
         shock.solve(constraints, s, inverseH, shockBiasRate, maxPushSpeed, threshold, true);
       }
@@ -433,19 +409,17 @@ export class Solver {
       joints.solveChains(s, false, true);
       refreshCirclePairs(constraints, s);
       joints.solve(s, false);
-      if (kernel !== null) {
-        kernel.solve(
-          memory.offsets[CONSTRAINT_DATA]!,
-          memory.offsets[CONSTRAINT_BODIES]!,
-          order,
-          memory.offsets[STATES]!,
-          count,
-          inverseH,
-          maxPushSpeed,
-          threshold,
-          0,
-        );
-      } else solveContacts(constraints, s, from, to, inverseH, maxPushSpeed, threshold, false);
+      kernel.solve(
+        memory.offsets[CONSTRAINT_DATA]!,
+        memory.offsets[CONSTRAINT_BODIES]!,
+        order,
+        memory.offsets[STATES]!,
+        count,
+        inverseH,
+        maxPushSpeed,
+        threshold,
+        0,
+      );
       if (shock.count > 0) {
         shock.solve(constraints, s, inverseH, shockBiasRate, maxPushSpeed, threshold, false);
       }
@@ -453,15 +427,13 @@ export class Solver {
     }
     // Each constraint's impulses go to its own contact slot: a batch stores its own while they
     // are still in cache (the order of the stores changes nothing).
-    if (kernel !== null) {
-      kernel.storeImpulses(
-        memory.offsets[CONSTRAINT_DATA]!,
-        memory.offsets[CONSTRAINT_SLOTS]!,
-        memory.offsets[CONTACT_DATA]!,
-        memory.offsets[CONSTRAINT_ORDER]! + 4 * from,
-        count,
-      );
-    } else storeImpulses(constraints, memory.contactData, from, to);
+    kernel.storeImpulses(
+      memory.offsets[CONSTRAINT_DATA]!,
+      memory.offsets[CONSTRAINT_SLOTS]!,
+      memory.offsets[CONTACT_DATA]!,
+      memory.offsets[CONSTRAINT_ORDER]! + 4 * from,
+      count,
+    );
   }
 
   /**

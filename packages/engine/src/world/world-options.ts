@@ -1,5 +1,6 @@
 import { PhysicalError } from '../core/errors.ts';
 import {
+  describeValue,
   MAX_ACCELERATION,
   MAX_DAMPING_RATIO,
   MAX_DURATION,
@@ -49,6 +50,20 @@ export interface WorldOptions {
   readonly timeToSleep?: number;
   /** Continuous collision of fast bodies against static shapes (default true). */
   readonly enableContinuous?: boolean;
+  /**
+   * Which build of the contact passes runs (default `'auto'`). Both builds come from one source
+   * and give bit-identical results; only speed and what the page must allow differ.
+   *
+   * - `'auto'`: the JavaScript build while the world is small, then WebAssembly, compiled at run
+   *   time from bytes shipped inside the engine, once a step has 64 contacts; the JavaScript
+   *   build wherever WebAssembly cannot compile. A Content-Security-Policy must allow
+   *   `'wasm-unsafe-eval'` in `script-src` for WebAssembly; without it the browser refuses (and
+   *   reports a `securitypolicyviolation`) and the world carries on in JavaScript.
+   * - `'javascript'`: the JavaScript build only, with no attempt at WebAssembly, so a page
+   *   under a strict policy (`script-src 'self'`) reports no violation. Large scenes step
+   *   slower (see the guide "WebAssembly and Content-Security-Policy").
+   */
+  readonly kernel?: 'auto' | 'javascript';
 }
 
 /**
@@ -104,6 +119,13 @@ export function resolveWorldOptions(options: WorldOptions): ResolvedWorldOptions
   };
   requireRestitutionThreshold(resolved.restitutionThreshold);
   return resolved;
+}
+
+/** @internal The `kernel` option, validated (default `'auto'`). */
+export function resolveKernel(options: WorldOptions): 'auto' | 'javascript' {
+  const value: unknown = options.kernel;
+  if (value === undefined || value === 'auto' || value === 'javascript') return value ?? 'auto';
+  throw new PhysicalError('kernel', `must be 'auto' or 'javascript', got ${describeValue(value)}.`);
 }
 
 /** @internal The approach speed below which contacts do not bounce (m/s), 0 to MAX_SPEED. */

@@ -36,6 +36,7 @@ import type { WorldInternals } from './snapshot.ts';
 import { ShapeQueries, type QueryPose, type ShapeCastHit } from './shape-queries.ts';
 import {
   requireRestitutionThreshold,
+  resolveKernel,
   resolveWorldOptions,
   validateSubSteps,
   type ResolvedWorldOptions,
@@ -100,6 +101,7 @@ export class World {
 
   constructor(options: WorldOptions = {}) {
     this.settings = resolveWorldOptions(options);
+    if (resolveKernel(options) === 'javascript') this.solver.memory.refuseWebAssembly();
     this.queries = new WorldQueries(this.broadPhase, this.shapesById);
     this.solver.joints.list = this.jointList;
     this.shapeQueries = new ShapeQueries(this.broadPhase, this.shapesById);
@@ -383,12 +385,7 @@ export class World {
       this.contactManager.createPending();
       this.contactManager.collide(dt, this.bodyList);
       this.solver.gatherBodies(this.bodyList, dt);
-      this.solver.solve(
-        this.contactManager.slots,
-        this.contactManager.contacts.length,
-        this.settings,
-        dt,
-      );
+      this.solver.solve(this.contactManager.contacts.length, this.settings, dt);
       // The step moves its bodies' proxies together: their trees only grow until the rebuild
       // below (BroadPhase.deferring), which queries may precede, since grown trees stay exact.
       this.broadPhase.deferring = true;

@@ -1,14 +1,14 @@
 import { afterEach, describe, expect, it } from 'vitest';
 import { World, box, particle, regularPolygon, takeSnapshot, wall } from '@physical/engine';
 import type { Body } from '@physical/engine';
+import { readFileSync } from 'node:fs';
 import { kernelSettings } from '../../../src/dynamics/solver-memory.ts';
-import { CONTACT_KERNEL_HEX } from '../../../src/dynamics/contact-kernel-binary.ts';
-import { compileContactKernel } from '../../../scripts/contact-kernel-build.ts';
+import { buildContactKernel } from '../../../scripts/contact-kernel-build.ts';
 import { bodyStates, differingBits } from './body-states.ts';
 
-// The WebAssembly contact kernel (wasm/contact-kernel.ts) is a port of contact-solver.ts' passes
-// with the same operations in the same order: a world must come out bit for bit the same whichever
-// runs, and whenever it switches.
+// The contact kernel (wasm/contact-kernel.ts) is built to WebAssembly and, by wasm2js from the
+// same module, to JavaScript: a world must come out bit for bit the same whichever runs, and
+// whenever it switches. (Every sample: packages/scenes/test/kernel-builds.test.ts.)
 
 const DEFAULT_THRESHOLD = kernelSettings.minConstraints;
 afterEach(() => {
@@ -49,8 +49,12 @@ function run(minConstraints: number, steps: number): { states: Float64Array; use
   const { world, bodies } = build();
   for (let i = 0; i < steps; i++) world.step(1 / 60);
   const states = bodyStates(bodies);
-  const solver = (world as unknown as { solver: { memory: { kernel: unknown } } }).solver;
-  return { states, usedKernel: solver.memory.kernel !== null };
+  return { states, usedKernel: usesWebAssembly(world) };
+}
+
+function usesWebAssembly(world: World): boolean {
+  return (world as unknown as { solver: { memory: { usesWebAssembly: boolean } } }).solver.memory
+    .usesWebAssembly;
 }
 
 function expectBitwiseEqual(a: Float64Array, b: Float64Array): void {
@@ -58,8 +62,8 @@ function expectBitwiseEqual(a: Float64Array, b: Float64Array): void {
   expect(differingBits(a, b)).toBe(0);
 }
 
-describe('the WebAssembly contact kernel', () => {
-  it('gives bit-identical worlds to the JavaScript passes over 400 steps of bouncing, sliding and stacking', () => {
+describe('the contact kernel, built to WebAssembly and to JavaScript', () => {
+  it('gives bit-identical worlds in both builds over 400 steps of bouncing, sliding and stacking', () => {
     const js = run(Infinity, 400);
     const wasm = run(0, 400);
     expect(js.usedKernel).toBe(false);
@@ -67,14 +71,14 @@ describe('the WebAssembly contact kernel', () => {
     // The scene moved: a kernel that did nothing would not pass the comparison by accident.
     expect(js.states.some((v, i) => i % 6 === 1 && v > -0.5)).toBe(true);
     expectBitwiseEqual(wasm.states, js.states);
-  });
+  }, 30_000);
 
   it('leaves no trace when a world moves to it mid-run (at 40 contacts here)', () => {
     const js = run(Infinity, 300);
     const switched = run(40, 300);
     expect(switched.usedKernel).toBe(true);
     expectBitwiseEqual(switched.states, js.states);
-  });
+  }, 30_000);
 
   it('prepares constraints and stores impulses bit for bit too: a bouncy pile with heavy bodies', () => {
     // Pressed bouncing contacts, circle pairs and heavy-on-light pairs all go through prepare;
@@ -110,7 +114,50 @@ describe('the WebAssembly contact kernel', () => {
     expect(wasm.saved).toBe(js.saved);
   }, 30_000);
 
-  it('is shipped as compiled from its source (npm run build:kernel -w @physical/engine)', async () => {
-    expect(await compileContactKernel()).toBe(CONTACT_KERNEL_HEX);
-  }, 60_000);
+  it('never compiles WebAssembly in a world created with kernel: javascript', () => {
+    kernelSettings.minConstraints = 0;
+    const world = new World({ kernel: 'javascript' });
+    world.add(wall({ from: { x: -6, y: 0 }, to: { x: 6, y: 0 } }));
+    for (let i = 0; i < 100; i++) {
+      world.add(
+        box({
+          position: { x: -4.5 + (i % 10), y: -0.5 - Math.floor(i / 10) },
+          width: 1,
+          height: 1,
+        }),
+      );
+    }
+    for (let i = 0; i < 30; i++) world.step(1 / 60);
+    let contacts = 0;
+    world.forEachContact(() => contacts++);
+    expect(contacts).toBeGreaterThan(64);
+    expect(usesWebAssembly(world)).toBe(false);
+    // The default world of the same scene does move to WebAssembly (where Node can compile it).
+    const auto = new World({ kernel: 'auto' });
+    auto.add(wall({ from: { x: -6, y: 0 }, to: { x: 6, y: 0 } }));
+    for (let i = 0; i < 100; i++) {
+      auto.add(
+        box({
+          position: { x: -4.5 + (i % 10), y: -0.5 - Math.floor(i / 10) },
+          width: 1,
+          height: 1,
+        }),
+      );
+    }
+    auto.step(1 / 60);
+    expect(usesWebAssembly(auto)).toBe(true);
+  });
+
+  it('refuses a kernel option other than auto or javascript, naming it', () => {
+    expect(() => new World({ kernel: 'wasm' as 'auto' })).toThrow(
+      "kernel: must be 'auto' or 'javascript', got 'wasm'.",
+    );
+  });
+
+  it('is shipped as built from its source (npm run build:kernel -w @physical/engine)', async () => {
+    // The layout mirror, the WebAssembly bytes and the JavaScript build, each as committed.
+    for (const [path, text] of Object.entries(await buildContactKernel())) {
+      expect(readFileSync(path, 'utf8'), path).toBe(text);
+    }
+  }, 120_000);
 });
