@@ -4,6 +4,9 @@ import { createTheme } from '@mui/material';
 export const REDUCED_MOTION =
   typeof matchMedia === 'function' && matchMedia('(prefers-reduced-motion: reduce)').matches;
 
+/** A touch screen with no hover (a phone or tablet): tooltips wait for a long press. */
+const TOUCH = typeof matchMedia === 'function' && matchMedia('(hover: none)').matches;
+
 /** Material Design's dark theme, as the thesis chose; system fonts keep the download small. */
 export const theme = createTheme({
   ...(REDUCED_MOTION ? { transitions: { create: () => 'none' } } : {}),
@@ -23,7 +26,12 @@ export const theme = createTheme({
   components: {
     MuiButton: { defaultProps: { disableElevation: true } },
     MuiButtonBase: { defaultProps: { disableRipple: REDUCED_MOTION } },
-    MuiTooltip: { styleOverrides: { tooltip: { fontSize: '0.8125rem' } } },
+    MuiTooltip: {
+      // On a touch screen a tooltip opens on a long press only: a tap's emulated hover and the
+      // focus it leaves would open one that stays on the screen until the next tap elsewhere.
+      defaultProps: TOUCH ? { disableHoverListener: true, disableFocusListener: true } : {},
+      styleOverrides: { tooltip: { fontSize: '0.8125rem' } },
+    },
   },
 });
 

@@ -357,7 +357,15 @@ export function InertiaScreen({ active }: { active: boolean }) {
       panel={
         <>
           {region}
-          <Box sx={{ display: 'grid', gridTemplateColumns: 'repeat(4, auto)', gap: 1.5, px: 0.5 }}>
+          <Box
+            sx={{
+              display: 'grid',
+              gridTemplateColumns: 'repeat(auto-fill, minmax(84px, 1fr))',
+              columnGap: 1.5,
+              rowGap: 0.5,
+              px: 0.5,
+            }}
+          >
             <Readout
               name="speed"
               label={t('inertia.speed')}
@@ -394,7 +402,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
             timeScale={sim.timeScale}
             announce={announce}
           />
-          <Box sx={{ display: 'flex', gap: 1.5, alignItems: 'center', px: 0.5 }}>
+          <Box sx={{ display: 'flex', flexWrap: 'wrap', gap: 1.5, alignItems: 'center', px: 0.5 }}>
             <ElasticitySlider
               id="inertia-elasticity-label"
               label={t('inertia.elasticity')}
@@ -426,34 +434,6 @@ export function InertiaScreen({ active }: { active: boolean }) {
               </ToggleButton>
             </ToggleButtonGroup>
           </Box>
-          <Box sx={{ display: 'flex', gap: 1, py: 0.5 }}>
-            <Button
-              variant="outlined"
-              onClick={() => setDialogOpen(true)}
-              sx={{ flex: 1, minHeight: 48 }}
-              data-action="change-force"
-            >
-              {t('inertia.changeForce')}
-            </Button>
-            <Button
-              variant="contained"
-              color={applied ? 'secondary' : 'primary'}
-              onClick={toggleForce}
-              sx={{ flex: 1, minHeight: 48 }}
-              data-action="toggle-force"
-              aria-pressed={applied}
-            >
-              {applied ? t('inertia.stop') : t('inertia.apply')}
-            </Button>
-            <Button
-              variant="outlined"
-              onClick={returnObject}
-              sx={{ minHeight: 48, minWidth: 48 }}
-              data-action="return"
-            >
-              {t('inertia.return')}
-            </Button>
-          </Box>
           <ForceDialog
             open={dialogOpen}
             angle={angle}
@@ -462,6 +442,36 @@ export function InertiaScreen({ active }: { active: boolean }) {
             onClose={() => setDialogOpen(false)}
             onConfirm={confirmForce}
           />
+        </>
+      }
+      actions={
+        <>
+          <Button
+            variant="outlined"
+            onClick={() => setDialogOpen(true)}
+            sx={{ flex: 1, minHeight: 48 }}
+            data-action="change-force"
+          >
+            {t('inertia.changeForce')}
+          </Button>
+          <Button
+            variant="contained"
+            color={applied ? 'secondary' : 'primary'}
+            onClick={toggleForce}
+            sx={{ flex: 1, minHeight: 48 }}
+            data-action="toggle-force"
+            aria-pressed={applied}
+          >
+            {applied ? t('inertia.stop') : t('inertia.apply')}
+          </Button>
+          <Button
+            variant="outlined"
+            onClick={returnObject}
+            sx={{ minHeight: 48, minWidth: 48 }}
+            data-action="return"
+          >
+            {t('inertia.return')}
+          </Button>
         </>
       }
       controls={{
