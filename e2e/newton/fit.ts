@@ -27,7 +27,7 @@ export function phoneOptions(
     isMobile: true,
     hasTouch: true,
     locale: 'en-US',
-    serviceWorkers: 'block',
+    serviceWorkers: 'allow',
   };
 }
 

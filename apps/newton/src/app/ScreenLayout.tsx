@@ -105,7 +105,7 @@ export function ScreenLayout({
           sx={{
             flex: '1 1 0',
             // Upright, the canvas keeps at least this share of the screen; the panel scrolls.
-            minHeight: sideBySide ? 0 : '42%',
+            minHeight: sideBySide ? 0 : '50%',
             minWidth: 0,
             display: 'flex',
             flexDirection: 'column',

@@ -125,7 +125,8 @@ export function ForcesScreen({ active }: { active: boolean }) {
   };
 
   const allFinished = finished >= tracks.length;
-  const time = simulatedTime(tracks[0]!.world);
+  // The run's clock: the track still running (a finished square rests, and its world stops).
+  const time = Math.max(...tracks.map((track) => simulatedTime(track.world)));
   const graph = (
     title: string,
     unitName: string,
