@@ -81,6 +81,8 @@ export function ScreenLayout({
             WebkitLineClamp: 2,
             WebkitBoxOrient: 'vertical',
             overflow: 'hidden',
+            // Two lines and the padding: no third line peeks out under the ellipsis.
+            maxHeight: 'calc(2.8em + 8px)',
           },
           [`@media ${SHORT_LANDSCAPE}`]: {
             py: 0.5,
