@@ -1,11 +1,12 @@
 import { describe, expect, it } from 'vitest';
 import {
+  accelerationFor,
   arrowLength,
   createForcesTrack,
   displacement,
   drawMysteryMass,
-  forceFor,
   isMysteryFound,
+  measuredAcceleration,
   MYSTERY_MAX,
   MYSTERY_MIN,
   opacityFor,
@@ -13,15 +14,38 @@ import {
 } from '../src/screens/forces/forces-scene.ts';
 
 describe('Forces scene', () => {
-  it('computes F = m a', () => {
-    expect(forceFor(1, 2)).toBe(2);
-    expect(forceFor(2, 2)).toBe(4);
-    expect(forceFor(0.5, 3)).toBe(1.5);
-    expect(createForcesTrack({ mass: 2, acceleration: 2 }).force).toBe(4);
+  it('computes a = F / m, and pushes with the force the learner set', () => {
+    expect(accelerationFor(2, 1)).toBe(2);
+    expect(accelerationFor(2, 2)).toBe(1);
+    expect(accelerationFor(1.5, 0.5)).toBe(3);
+    expect(createForcesTrack({ mass: 2, force: 4 }).force).toBe(4);
+  });
+
+  it('measures a = F / m to 1e-9 from the first step to the stop (2 x / t^2 read 2.125 at 4 steps)', () => {
+    for (const [mass, force] of [
+      [1, 2],
+      [1.5, 2],
+      [5, 2],
+    ] as const) {
+      const track = createForcesTrack({ mass, force });
+      expect(measuredAcceleration(track)).toBeNull();
+      let finished = false;
+      startTrack(track, () => (finished = true));
+      for (let step = 1; step <= 600; step++) {
+        track.world.step(1 / 60);
+        const a = measuredAcceleration(track)!;
+        expect(Math.abs(a - force / mass)).toBeLessThan(1e-9);
+        if (step === 4 && mass === 1) {
+          // The ruler and clock from rest: the integrator's half sub-step of lead, a (1 + h / t).
+          expect((2 * displacement(track)) / (4 / 60) ** 2).toBeCloseTo(2.125, 9);
+        }
+      }
+      expect(finished).toBe(true);
+    }
   });
 
   it('gives the square the mass the learner set', () => {
-    expect(createForcesTrack({ mass: 2.5, acceleration: 1 }).square.mass).toBeCloseTo(2.5, 12);
+    expect(createForcesTrack({ mass: 2.5, force: 1 }).square.mass).toBeCloseTo(2.5, 12);
   });
 
   it('draws heavier squares more opaque and bigger forces longer', () => {
@@ -31,8 +55,8 @@ describe('Forces scene', () => {
   });
 
   it('moves (1 kg, 2 N) and (2 kg, 4 N) together: same x within 1 mm after 1 s', () => {
-    const light = createForcesTrack({ mass: 1, acceleration: 2 });
-    const heavy = createForcesTrack({ mass: 2, acceleration: 2 });
+    const light = createForcesTrack({ mass: 1, force: 2 });
+    const heavy = createForcesTrack({ mass: 2, force: 4 });
     startTrack(light);
     startTrack(heavy);
     for (let i = 0; i < 60; i++) {
@@ -46,7 +70,7 @@ describe('Forces scene', () => {
   });
 
   it('without friction or gravity the square stays put until started', () => {
-    const track = createForcesTrack({ mass: 1, acceleration: 2 });
+    const track = createForcesTrack({ mass: 1, force: 2 });
     for (let i = 0; i < 60; i++) track.world.step(1 / 60);
     expect(displacement(track)).toBe(0);
   });

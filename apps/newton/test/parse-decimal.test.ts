@@ -10,7 +10,7 @@ describe('parseDecimal', () => {
   });
 
   it('refuses what is not a plain number instead of reinterpreting it', () => {
-    for (const text of ['abc', '-3', '0x10', '1e9', '2..5', '1 2', '+2', 'Infinity']) {
+    for (const text of ['abc', '-', '0x10', '1e9', '2..5', '1 2', '+2', 'Infinity', '--3']) {
       expect(parseDecimal(text, 0, 5)).toEqual({ ok: false, reason: 'notANumber' });
     }
     expect(parseDecimal('   ', 0, 5)).toEqual({ ok: false, reason: 'empty' });
@@ -19,5 +19,11 @@ describe('parseDecimal', () => {
   it('refuses numbers outside the range instead of clamping them', () => {
     expect(parseDecimal('0', 0.5, 5)).toEqual({ ok: false, reason: 'outOfRange' });
     expect(parseDecimal('9', 0.5, 5)).toEqual({ ok: false, reason: 'outOfRange' });
+  });
+
+  it('reads a negative number as a number out of the range, not as "not a number"', () => {
+    expect(parseDecimal('-3', 0.5, 5)).toEqual({ ok: false, reason: 'outOfRange' });
+    expect(parseDecimal('\u22122,5', 0.5, 5)).toEqual({ ok: false, reason: 'outOfRange' });
+    expect(parseDecimal('-0,5', -1, 5)).toEqual({ ok: true, value: -0.5 });
   });
 });

@@ -88,10 +88,15 @@ export function useAnnouncer(name: string): {
       aria-live="polite"
       aria-atomic="true"
       data-announcer={name}
+      // Visually hidden, one pixel in size: MUI reads the number 1 in `width` and `height` as
+      // 100 %, and a region as tall and wide as the window made the whole page scroll.
       sx={{
         position: 'absolute',
-        width: 1,
-        height: 1,
+        width: '1px',
+        height: '1px',
+        margin: '-1px',
+        padding: 0,
+        border: 0,
         overflow: 'hidden',
         clip: 'rect(0 0 0 0)',
         whiteSpace: 'nowrap',

@@ -78,7 +78,9 @@ export function App() {
 
 function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale) => void }) {
   const { t } = useI18n();
-  const wide = useMediaQuery('(min-width: 600px)', { noSsr: true });
+  // The rail on the side when there is room beside the screen: a tablet, or a phone turned
+  // sideways (a bar below would take a fifth of its height).
+  const wide = useMediaQuery('(min-width: 600px), (orientation: landscape)', { noSsr: true });
   const [screen, setScreen] = useState<ScreenId>(() => screenFromHash(location.hash));
   const [hintOpen, setHintOpen] = useState(false);
   // Screens stay mounted once shown (their worlds keep their state), hidden when not current.

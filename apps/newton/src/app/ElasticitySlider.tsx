@@ -20,7 +20,7 @@ export interface ElasticitySliderProps {
 export function ElasticitySlider({ id, label, value, onChange }: ElasticitySliderProps) {
   const { number } = useI18n();
   return (
-    <Box sx={{ flex: 1, minWidth: 0 }}>
+    <Box sx={{ flex: '1 1 140px', minWidth: 0, px: 1 }}>
       <Typography id={id} variant="caption" component="div">
         {label}: {number(value * 100, 0)} %
       </Typography>

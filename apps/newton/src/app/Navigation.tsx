@@ -61,7 +61,7 @@ export function NavRail({ current, onChange }: NavigationProps) {
       component="nav"
       aria-label={t('app.navigation')}
       sx={{
-        width: 88,
+        width: 80,
         flexShrink: 0,
         bgcolor: '#1e1e1e',
         borderRight: '1px solid rgba(255, 255, 255, 0.08)',
@@ -87,7 +87,7 @@ export function NavRail({ current, onChange }: NavigationProps) {
             sx={{
               flexDirection: 'column',
               gap: 0.5,
-              width: 80,
+              width: 72,
               py: 0.5,
               borderRadius: 2,
               color: selected ? 'primary.main' : 'text.secondary',

@@ -25,7 +25,14 @@ export function SimControls(props: SimControlsProps) {
     <Box
       role="toolbar"
       aria-label={t('controls.label')}
-      sx={{ display: 'flex', alignItems: 'center', gap: 0.25, px: 0.5, minHeight: 52 }}
+      sx={{
+        display: 'flex',
+        flexWrap: 'wrap',
+        alignItems: 'center',
+        columnGap: 0.25,
+        px: 0.5,
+        minHeight: 52,
+      }}
     >
       <Tooltip title={playLabel}>
         <IconButton

@@ -9,7 +9,10 @@ export type Locale = 'en' | 'de';
 export const LOCALES: readonly Locale[] = ['en', 'de'];
 const MESSAGES: Record<Locale, Record<MessageKey, string>> = { en, de };
 
-/** Translates a key, filling `{name}` placeholders from `values`. */
+/**
+ * Translates a key, filling `{name}` placeholders from `values`, and choosing a plural's form
+ * (`{count, plural, one {# particle} other {# particles}}`) by the locale's plural rules.
+ */
 export type Translate = (key: MessageKey, values?: Record<string, string | number>) => string;
 
 export interface I18n {
@@ -20,6 +23,9 @@ export interface I18n {
   /** A value with its SI unit, separated by a no-break space: "2 N", "0,50 m/s". */
   readonly unit: (value: number, unit: string, digits?: number, minDigits?: number) => string;
 }
+
+/** A plural in a message: `{name, plural, one {...} other {...}}` (ICU's form, these two cases). */
+const PLURAL = /\{(\w+), plural, one \{([^{}]*)\} other \{([^{}]*)\}\}/g;
 
 /** Builds the translator and formatters of a locale (pure; used by the provider and tests). */
 export function createI18n(locale: Locale): I18n {
@@ -38,12 +44,22 @@ export function createI18n(locale: Locale): I18n {
     // Avoid "-0".
     return format.format(Math.abs(value) < 0.5 * 10 ** -digits ? 0 : value);
   };
+  const plurals = new Intl.PluralRules(locale);
   return {
     locale,
     t: (key, values) =>
-      messages[key].replace(/\{(\w+)\}/g, (match, name: string) =>
-        values !== undefined && name in values ? String(values[name]) : match,
-      ),
+      messages[key]
+        // "{count, plural, one {# particle} other {# particles}}": the form the locale's plural
+        // rules pick for the number, with # as the number ("1 particle", "2 particles").
+        .replace(PLURAL, (match, name: string, one: string, other: string) => {
+          const value = values?.[name];
+          if (typeof value !== 'number') return match;
+          const form = plurals.select(value) === 'one' ? one : other;
+          return form.replace(/#/g, number(value, 2));
+        })
+        .replace(/\{(\w+)\}/g, (match, name: string) =>
+          values !== undefined && name in values ? String(values[name]) : match,
+        ),
     number,
     unit: (value, unit, digits, minDigits) => `${number(value, digits, minDigits)}\u00a0${unit}`,
   };

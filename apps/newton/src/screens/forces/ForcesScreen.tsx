@@ -1,9 +1,9 @@
-import { Box, Button, FormControlLabel, Switch, Typography, useMediaQuery } from '@mui/material';
+import { Box, Button, FormControlLabel, Switch, Typography } from '@mui/material';
 import type { PhysicalCanvasElement } from '@physical/canvas';
 import type { Force } from '@physical/engine';
 import { useCallback, useMemo, useRef, useState } from 'react';
 import { useAnnouncer } from '../../app/Announcer.tsx';
-import { SIDE_BY_SIDE, ScreenLayout } from '../../app/ScreenLayout.tsx';
+import { ScreenLayout } from '../../app/ScreenLayout.tsx';
 import { SQUARE_COLORS } from '../../app/theme.ts';
 import { simulatedTime, useSimulation } from '../../app/use-simulation.ts';
 import { useTicker } from '../../app/use-ticker.ts';
@@ -13,7 +13,6 @@ import { useI18n } from '../../i18n/i18n.tsx';
 import {
   createForcesTrack,
   drawMysteryMass,
-  forceFor,
   isMysteryFound,
   startTrack,
   type ForcesTrack,
@@ -24,9 +23,10 @@ import { SquareDialog } from './SquareDialog.tsx';
 import { TrackView } from './TrackView.tsx';
 
 const NAMES = ['A', 'B'] as const;
+/** The same force on 1 kg and on 2 kg: the learner sees the heavier one accelerate half as fast. */
 const DEFAULTS: readonly SquareSettings[] = [
-  { mass: 1, acceleration: 2 },
-  { mass: 2, acceleration: 2 },
+  { mass: 1, force: 2 },
+  { mass: 2, force: 2 },
 ];
 
 /**
@@ -39,16 +39,13 @@ function effectiveSettings(
   mysteryMass: number | null,
 ): readonly SquareSettings[] {
   if (!sameForce && mysteryMass === null) return settings;
-  const force = forceFor(settings[0]!.mass, settings[0]!.acceleration);
-  const mass = mysteryMass ?? settings[1]!.mass;
-  return [settings[0]!, { mass, acceleration: force / mass }];
+  return [settings[0]!, { mass: mysteryMass ?? settings[1]!.mass, force: settings[0]!.force }];
 }
 
-/** The second law: two squares, each pushed by F = m a, moving side by side. */
+/** The second law: two squares, each pushed by the learner's force F, their accelerations measured. */
 export function ForcesScreen({ active }: { active: boolean }) {
   const { t, unit } = useI18n();
   const sim = useSimulation();
-  const sideBySide = useMediaQuery(SIDE_BY_SIDE, { noSsr: true });
   const [settings, setSettings] = useState<readonly SquareSettings[]>(DEFAULTS);
   const [sameForce, setSameForce] = useState(false);
   // B's hidden mass (kg) while the mystery is on; revealed once the learner finds it.
@@ -63,7 +60,13 @@ export function ForcesScreen({ active }: { active: boolean }) {
   const forces = useRef<Force[]>([]);
   const canvases = useRef<(PhysicalCanvasElement | null)[]>([null, null]);
   const series = useMemo(
-    () => NAMES.map(() => ({ position: new TimeSeries(6), velocity: new TimeSeries(6) })),
+    () =>
+      NAMES.map(() => ({
+        position: new TimeSeries(6),
+        velocity: new TimeSeries(6),
+        acceleration: new TimeSeries(6),
+        force: new TimeSeries(6),
+      })),
     [],
   );
   const { announce, region } = useAnnouncer('forces');
@@ -77,9 +80,11 @@ export function ForcesScreen({ active }: { active: boolean }) {
     (next: readonly SquareSettings[], same: boolean, mystery: number | null) => {
       for (const force of forces.current) force.remove();
       forces.current = [];
-      for (const { position, velocity } of series) {
-        position.clear();
-        velocity.clear();
+      for (const item of series) {
+        item.position.clear();
+        item.velocity.clear();
+        item.acceleration.clear();
+        item.force.clear();
       }
       setStarted(false);
       setFinished(0);
@@ -120,41 +125,36 @@ export function ForcesScreen({ active }: { active: boolean }) {
   };
 
   const allFinished = finished >= tracks.length;
-  const time = simulatedTime(tracks[0]!.world);
+  // The run's clock: the track still running (a finished square rests, and its world stops).
+  const time = Math.max(...tracks.map((track) => simulatedTime(track.world)));
+  const graph = (
+    title: string,
+    unitName: string,
+    key: 'position' | 'velocity' | 'acceleration' | 'force',
+  ) => (
+    <TimeSeriesGraph
+      title={title}
+      unit={unitName}
+      window={6}
+      height={72}
+      lines={series.map((item, index) => ({
+        series: item[key],
+        color: SQUARE_COLORS[index]!,
+        label: NAMES[index]!,
+        dashed: index === 1,
+      }))}
+    />
+  );
+  // x(t) and v(t) beside a(t) and F(t): the cause and its effect on one time axis.
   const graphs = (
     <Box
-      sx={{
-        display: 'flex',
-        gap: 1,
-        px: 1,
-        pt: 0.5,
-        flexDirection: sideBySide ? 'column' : 'row',
-      }}
+      data-graphs="forces"
+      sx={{ display: 'grid', gridTemplateColumns: 'repeat(2, minmax(0, 1fr))', gap: 1 }}
     >
-      <TimeSeriesGraph
-        title={t('forces.position')}
-        unit="m"
-        window={6}
-        height={sideBySide ? 96 : 120}
-        lines={series.map((item, index) => ({
-          series: item.position,
-          color: SQUARE_COLORS[index]!,
-          label: NAMES[index]!,
-          dashed: index === 1,
-        }))}
-      />
-      <TimeSeriesGraph
-        title={t('forces.velocity')}
-        unit="m/s"
-        window={6}
-        height={sideBySide ? 96 : 120}
-        lines={series.map((item, index) => ({
-          series: item.velocity,
-          color: SQUARE_COLORS[index]!,
-          label: NAMES[index]!,
-          dashed: index === 1,
-        }))}
-      />
+      {graph(t('forces.position'), 'm', 'position')}
+      {graph(t('forces.velocity'), 'm/s', 'velocity')}
+      {graph(t('forces.accelerationGraph'), 'm/s²', 'acceleration')}
+      {graph(t('forces.forceGraph'), 'N', 'force')}
     </Box>
   );
 
@@ -179,6 +179,8 @@ export function ForcesScreen({ active }: { active: boolean }) {
               timeScale={sim.timeScale}
               position={series[index]!.position}
               velocity={series[index]!.velocity}
+              acceleration={series[index]!.acceleration}
+              force={series[index]!.force}
               hiddenMass={index === 1 && mysteryMass !== null && !mysteryFound}
               onEdit={() => {
                 // B's mass is the mystery: only A's force can be set.
@@ -187,19 +189,17 @@ export function ForcesScreen({ active }: { active: boolean }) {
               }}
               onPauseChange={sim.setPaused}
               forceOn={started && track.finishedAt === null}
-              time={time}
             />
           ))}
-          {!sideBySide && graphs}
         </Box>
       }
       panel={
         <>
           {region}
-          {sideBySide && graphs}
-          <Box sx={{ display: 'flex', gap: 1, alignItems: 'center', py: 0.5, flexWrap: 'wrap' }}>
+          {graphs}
+          <Box sx={{ px: 0.5 }}>
             <FormControlLabel
-              sx={{ flex: 1, minHeight: 48, mr: 0 }}
+              sx={{ minHeight: 48, mr: 0 }}
               control={
                 <Switch
                   checked={sameForce || mysteryMass !== null}
@@ -213,19 +213,6 @@ export function ForcesScreen({ active }: { active: boolean }) {
               }
               label={<Typography variant="body2">{t('forces.sameForce')}</Typography>}
             />
-            <Button
-              variant="contained"
-              onClick={start}
-              disabled={started}
-              sx={{ minHeight: 48, minWidth: 120 }}
-              data-action="start"
-            >
-              {allFinished
-                ? t('forces.finished')
-                : started
-                  ? t('forces.running')
-                  : t('forces.start')}
-            </Button>
           </Box>
           <MysteryMass
             mass={mysteryMass}
@@ -259,6 +246,17 @@ export function ForcesScreen({ active }: { active: boolean }) {
             onConfirm={confirm}
           />
         </>
+      }
+      actions={
+        <Button
+          variant="contained"
+          onClick={start}
+          disabled={started}
+          sx={{ minHeight: 48, flex: 1 }}
+          data-action="start"
+        >
+          {allFinished ? t('forces.finished') : started ? t('forces.running') : t('forces.start')}
+        </Button>
       }
       controls={{
         paused: sim.paused,

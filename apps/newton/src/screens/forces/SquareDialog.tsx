@@ -14,14 +14,7 @@ import { useEffect, useState } from 'react';
 import { AddIcon, MinusIcon } from '../../app/icons.tsx';
 import { parseDecimal } from '../../app/parse-decimal.ts';
 import { useI18n } from '../../i18n/i18n.tsx';
-import {
-  MAX_ACCELERATION,
-  MAX_MASS,
-  MIN_ACCELERATION,
-  MIN_MASS,
-  forceFor,
-  type SquareSettings,
-} from './forces-scene.ts';
+import { MAX_FORCE, MAX_MASS, MIN_FORCE, MIN_MASS, type SquareSettings } from './forces-scene.ts';
 
 export interface SquareDialogProps {
   readonly open: boolean;
@@ -124,20 +117,23 @@ function NumberField({ id, label, unit, text, min, max, step, onText }: FieldPro
   );
 }
 
-/** Sets a square's mass and desired acceleration; shows the force F = m a the app will apply. */
+/**
+ * Sets a square's mass and the force that will push it: the cause. The acceleration is the
+ * effect, for the learner to measure on the track (not given away here).
+ */
 export function SquareDialog({ open, name, settings, onClose, onConfirm }: SquareDialogProps) {
-  const { t, unit } = useI18n();
+  const { t } = useI18n();
   const [massText, setMassText] = useState(String(settings.mass));
-  const [accelerationText, setAccelerationText] = useState(String(settings.acceleration));
+  const [forceText, setForceText] = useState(String(settings.force));
   useEffect(() => {
     if (open) {
       setMassText(String(settings.mass));
-      setAccelerationText(String(settings.acceleration));
+      setForceText(String(settings.force));
     }
   }, [open, settings]);
   const mass = parseDecimal(massText, MIN_MASS, MAX_MASS);
-  const acceleration = parseDecimal(accelerationText, MIN_ACCELERATION, MAX_ACCELERATION);
-  const valid = mass.ok && acceleration.ok;
+  const force = parseDecimal(forceText, MIN_FORCE, MAX_FORCE);
+  const valid = mass.ok && force.ok;
   return (
     <Dialog
       open={open}
@@ -159,30 +155,15 @@ export function SquareDialog({ open, name, settings, onClose, onConfirm }: Squar
           onText={setMassText}
         />
         <NumberField
-          id="square-acceleration"
-          label={t('forces.acceleration')}
-          unit="m/s²"
-          text={accelerationText}
-          min={MIN_ACCELERATION}
-          max={MAX_ACCELERATION}
+          id="square-force"
+          label={t('forces.force')}
+          unit="N"
+          text={forceText}
+          min={MIN_FORCE}
+          max={MAX_FORCE}
           step={0.1}
-          onText={setAccelerationText}
+          onText={setForceText}
         />
-        <Box sx={{ p: 1.5, borderRadius: 2, bgcolor: 'rgba(255, 138, 101, 0.12)' }}>
-          <Typography variant="body2" sx={{ color: 'text.secondary' }}>
-            {t('forces.force')}
-          </Typography>
-          <Typography variant="h6" component="p" data-readout="dialog-force">
-            {mass.ok && acceleration.ok ? (
-              <>
-                {unit(mass.value, 'kg', 2)} · {unit(acceleration.value, 'm/s²', 2)} ={' '}
-                <b>{unit(forceFor(mass.value, acceleration.value), 'N', 2)}</b>
-              </>
-            ) : (
-              '–'
-            )}
-          </Typography>
-        </Box>
       </DialogContent>
       <DialogActions>
         <Button onClick={onClose} sx={{ minHeight: 48 }}>
@@ -193,9 +174,7 @@ export function SquareDialog({ open, name, settings, onClose, onConfirm }: Squar
           disabled={!valid}
           sx={{ minHeight: 48, minWidth: 64 }}
           onClick={() => {
-            if (mass.ok && acceleration.ok) {
-              onConfirm({ mass: mass.value, acceleration: acceleration.value });
-            }
+            if (mass.ok && force.ok) onConfirm({ mass: mass.value, force: force.value });
           }}
         >
           {t('app.ok')}

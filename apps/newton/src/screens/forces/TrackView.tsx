@@ -27,12 +27,12 @@ export interface TrackViewProps {
   readonly timeScale: number;
   readonly position: TimeSeries;
   readonly velocity: TimeSeries;
+  readonly acceleration: TimeSeries;
+  readonly force: TimeSeries;
   readonly onEdit: () => void;
   readonly onPauseChange: (paused: boolean) => void;
-  /** True while the force F = m a acts (after Start, before the stop). */
+  /** True while the learner's force F acts (after Start, before the stop). */
   readonly forceOn: boolean;
-  /** Simulated time since Start (s). */
-  readonly time: number;
   /** The square's mass is the learner's to find: shown as "?", and its shade gives nothing away. */
   readonly hiddenMass?: boolean;
 }
@@ -43,6 +43,7 @@ const VIEW_BOX = { x: -0.15, y: 0, width: TRACK_LENGTH + 0.3, height: TRACK_HEIG
 export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps>(
   function TrackView(props, ref) {
     const { name, track, color, paused, timeScale, position, velocity, onEdit } = props;
+    const { acceleration, force } = props;
     const { t, unit } = useI18n();
     const canvasRef = useRef<PhysicalCanvasElement | null>(null);
     useImperativeHandle(ref, () => canvasRef.current!, []);
@@ -77,6 +78,8 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
         if (position.times.length === 0 || time > position.lastTime) {
           position.push(time, displacement(current));
           velocity.push(time, current.square.linearVelocity.x);
+          acceleration.push(time, measuredAcceleration(current) ?? 0);
+          force.push(time, forceOnRef.current ? current.force : 0);
         }
         const scale = canvas.viewport.scale;
         // Ruler: a tick every metre from the start, labelled every two.
@@ -128,19 +131,19 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
           );
         }
       },
-      [position, velocity],
+      [position, velocity, acceleration, force],
     );
 
     const settings = track.settings;
     const forceText = unit(track.force, 'N', 2);
     const massText = props.hiddenMass === true ? '? kg' : unit(settings.mass, 'kg', 2);
-    const measured = measuredAcceleration(track, props.time);
+    const measured = measuredAcceleration(track);
     return (
       <Box
         sx={{
           position: 'relative',
           flex: 1,
-          minHeight: 120,
+          minHeight: 96,
           maxHeight: 200,
           display: 'flex',
           flexDirection: 'column',
@@ -174,9 +177,8 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
               {name}
             </Box>
             <span>
-              <span data-readout={`mass-${name}`}>{massText}</span>
-              {props.hiddenMass === true ? '' : ` · ${unit(settings.acceleration, 'm/s²', 2)}`} · F
-              = <b data-readout={`force-${name}`}>{forceText}</b>
+              <span data-readout={`mass-${name}`}>{massText}</span> · F ={' '}
+              <b data-readout={`force-${name}`}>{forceText}</b>
             </span>
             <EditIcon sx={{ fontSize: 18 }} />
           </ButtonBase>
@@ -187,6 +189,7 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
             sx={{
               ml: 'auto',
               px: 0.75,
+              fontSize: '0.8125rem',
               borderRadius: 1,
               fontVariantNumeric: 'tabular-nums',
               whiteSpace: 'nowrap',
@@ -196,11 +199,22 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
             {' · '}v = {unit(track.square.linearVelocity.x, 'm/s', 2, 2)}
             {' · '}a ={' '}
             <span data-readout={`a-${name}`}>
-              {measured === null ? '–' : unit(measured, 'm/s²', 2, 2)}
+              {measured === null ? '–' : unit(measured, 'm/s²', 3, 3)}
             </span>
           </Typography>
         </Box>
-        <Box sx={{ flex: 1, minHeight: 64, display: 'flex' }}>
+        <Box
+          sx={{ flex: 1, minHeight: 40, display: 'flex' }}
+          // The track's label says "activate to edit": Enter and Space open the editor, as a
+          // tap does (before the canvas's own Space, which would pause it).
+          onKeyDownCapture={(event) => {
+            if (event.key !== 'Enter' && event.key !== ' ') return;
+            if (event.target !== canvasRef.current || event.repeat) return;
+            event.preventDefault();
+            event.stopPropagation();
+            onEdit();
+          }}
+        >
           <PhysicalCanvas
             maxPixelRatio={CANVAS_PIXEL_RATIO}
             ref={canvasRef}

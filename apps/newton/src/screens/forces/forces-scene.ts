@@ -9,15 +9,18 @@ export const SQUARE_SIZE = 1;
 export const START_X = 0.7;
 export const MIN_MASS = 0.5;
 export const MAX_MASS = 5;
-export const MIN_ACCELERATION = 0;
-export const MAX_ACCELERATION = 5;
+export const MIN_FORCE = 0;
+export const MAX_FORCE = 10;
 
-/** What the learner sets for one square. */
+/**
+ * What the learner sets for one square: its mass and the force on it, the cause; the
+ * acceleration is the effect, measured from the motion.
+ */
 export interface SquareSettings {
   /** kg */
   readonly mass: number;
-  /** m/s^2 */
-  readonly acceleration: number;
+  /** N */
+  readonly force: number;
 }
 
 /** One of the Forces screen's two tracks: a world with a square at the left end. */
@@ -25,12 +28,17 @@ export interface ForcesTrack {
   readonly world: World;
   readonly square: Body;
   readonly settings: SquareSettings;
-  /** The force that gives the square the desired acceleration: F = m a (N). */
+  /** The force pushing the square while the run lasts (N). */
   readonly force: number;
   /** Simulated time (s) the square reached the stop at the end, or null while it has not. */
   finishedAt: number | null;
-  /** The acceleration measured over the whole run (2 x / t^2 at the stop), once finished. */
-  finalAcceleration: number | null;
+  /**
+   * The acceleration measured over the last step, Δv / Δt (m/s^2), or null before the first
+   * step; kept from the last step before the stop once the run is over.
+   */
+  acceleration: number | null;
+  /** The square's velocity (m/s) at the end of the last step, for the next Δv. */
+  lastVelocity: number;
 }
 
 /** The range a mystery mass is drawn from (kg), in tenths: inside the range a learner can type. */
@@ -50,9 +58,9 @@ export function isMysteryFound(guess: number, mass: number): boolean {
   return Math.abs(guess - mass) <= MYSTERY_TOLERANCE * mass;
 }
 
-/** Newton's second law solved for the force (N) from a mass (kg) and an acceleration (m/s^2). */
-export function forceFor(mass: number, acceleration: number): number {
-  return mass * acceleration;
+/** Newton's second law: the acceleration (m/s^2) a force (N) gives a mass (kg), a = F / m. */
+export function accelerationFor(force: number, mass: number): number {
+  return force / mass;
 }
 
 /** The square's opacity: the heavier, the more opaque (0.25 at the lightest, 1 at the heaviest). */
@@ -90,18 +98,32 @@ export function createForcesTrack(settings: SquareSettings): ForcesTrack {
     }),
   );
   square.mass = settings.mass;
-  return {
+  const track: ForcesTrack = {
     world,
     square,
     settings,
-    force: forceFor(settings.mass, settings.acceleration),
+    force: settings.force,
     finishedAt: null,
-    finalAcceleration: null,
+    acceleration: null,
+    lastVelocity: 0,
   };
+  // The acceleration as the velocity's change over each step. Not 2 x / t^2 from the ruler: the
+  // integrator (semi-implicit Euler in 4 sub-steps of h = 1/240 s) moves the square
+  // x = a t^2 / 2 + a h t / 2, so 2 x / t^2 = a (1 + h / t) read 2.13 m/s^2 for 2 at t = 4/60 s;
+  // its velocity gains exactly a h each sub-step, so Δv / Δt is a from the first step on.
+  // Listeners run after contactBegin: the step that meets the stop is not measured.
+  world.on('move', (body) => {
+    if (body !== square || track.finishedAt !== null) return;
+    const velocity = square.linearVelocity.x;
+    const dt = world.lastStepDuration;
+    if (dt > 0) track.acceleration = (velocity - track.lastVelocity) / dt;
+    track.lastVelocity = velocity;
+  });
+  return track;
 }
 
 /**
- * Applies the constant force F = m a to the square, to the right, until the square reaches the
+ * Applies the learner's constant force F to the square, to the right, until the square reaches the
  * stop at the end: there the run ends (the force is removed and the square rests against the
  * stop), so no force acts that the screen does not show. `onFinish` hears of it.
  */
@@ -112,7 +134,6 @@ export function startTrack(track: ForcesTrack, onFinish: () => void = () => unde
     stop();
     force.remove();
     track.finishedAt = track.world.steps / 60;
-    track.finalAcceleration = (2 * displacement(track)) / track.finishedAt ** 2;
     track.square.linearVelocity = { x: 0, y: 0 };
     track.square.sleep();
     onFinish();
@@ -120,14 +141,9 @@ export function startTrack(track: ForcesTrack, onFinish: () => void = () => unde
   return force;
 }
 
-/**
- * The acceleration measured from the motion since the start, 2 x / t^2 (m/s^2), as a student
- * would from the ruler and the clock (from rest under a constant force); null at t = 0.
- */
-export function measuredAcceleration(track: ForcesTrack, time: number): number | null {
-  if (track.finishedAt !== null) return track.finalAcceleration;
-  if (time <= 0) return null;
-  return (2 * displacement(track)) / (time * time);
+/** The acceleration measured from the motion (m/s^2), Δv / Δt over the last step; null at rest. */
+export function measuredAcceleration(track: ForcesTrack): number | null {
+  return track.acceleration;
 }
 
 /** The square's displacement from its start (m), as the ruler shows it. */

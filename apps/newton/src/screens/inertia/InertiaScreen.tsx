@@ -1,4 +1,12 @@
-import { Box, Button, ToggleButton, ToggleButtonGroup } from '@mui/material';
+import {
+  Box,
+  Button,
+  FormControlLabel,
+  Switch,
+  ToggleButton,
+  ToggleButtonGroup,
+  Typography,
+} from '@mui/material';
 import { CANVAS_PIXEL_RATIO } from '../../app/theme.ts';
 import {
   ARROW_COLORS,
@@ -71,6 +79,13 @@ export function InertiaScreen({ active }: { active: boolean }) {
   const [surface, setSurfaceState] = useState<Surface>('ice');
   const settingsRef = useRef({ elasticity, surface });
   settingsRef.current = { elasticity, surface };
+  // What the canvas shows besides the body: the arrows, and the values written beside them.
+  const [show, setShow] = useState({ vectors: true, values: true });
+  const showRef = useRef(show);
+  showRef.current = show;
+  useEffect(() => {
+    canvasRef.current?.invalidate();
+  }, [show]);
   const speed = useMemo(() => new TimeSeries(10), []);
   const { announce, region } = useAnnouncer('inertia');
   // The overlay draws labels in the current language without re-creating itself.
@@ -115,6 +130,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
     setElasticityState(1);
     setSurfaceState('ice');
     settingsRef.current = { elasticity: 1, surface: 'ice' };
+    setShow({ vectors: true, values: true });
     build();
   }, [build]);
 
@@ -165,13 +181,16 @@ export function InertiaScreen({ active }: { active: boolean }) {
         context.lineTo(current.width, y);
       }
       context.stroke();
-      drawArrow(
-        context,
-        scale,
-        centre,
-        { x: velocity.x * VELOCITY_ARROW_SCALE, y: velocity.y * VELOCITY_ARROW_SCALE },
-        { kind: 'velocity', width: 2 },
-      );
+      const { vectors, values } = showRef.current;
+      if (vectors) {
+        drawArrow(
+          context,
+          scale,
+          centre,
+          { x: velocity.x * VELOCITY_ARROW_SCALE, y: velocity.y * VELOCITY_ARROW_SCALE },
+          { kind: 'velocity', width: 2 },
+        );
+      }
       // Every force on the body, its value beside it, and their sum (dashed colour of its own).
       const applied = forceRef.current;
       const forces = forcesOn(current, applied === null ? null : { x: applied.x, y: applied.y });
@@ -186,8 +205,8 @@ export function InertiaScreen({ active }: { active: boolean }) {
         const size = Math.hypot(vector.x, vector.y);
         if (size < NO_FORCE) return;
         const tip = { x: vector.x * FORCE_ARROW_SCALE, y: vector.y * FORCE_ARROW_SCALE };
-        drawArrow(context, scale, centre, tip, { color, width });
-        texts.push({ at: { x: centre.x + tip.x, y: centre.y + tip.y }, text, color });
+        if (vectors) drawArrow(context, scale, centre, tip, { color, width });
+        if (values) texts.push({ at: { x: centre.x + tip.x, y: centre.y + tip.y }, text, color });
       };
       arrow(
         forces.applied,
@@ -217,7 +236,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
       context.textBaseline = 'middle';
       const cssWidth = context.canvas.width / ratio;
       const cssHeight = context.canvas.height / ratio;
-      if (net < NO_FORCE) {
+      if (net < NO_FORCE && values) {
         texts.push({
           at: { x: centre.x, y: centre.y - 0.75 },
           text: labels.balanced,
@@ -357,7 +376,15 @@ export function InertiaScreen({ active }: { active: boolean }) {
       panel={
         <>
           {region}
-          <Box sx={{ display: 'grid', gridTemplateColumns: 'repeat(4, auto)', gap: 1.5, px: 0.5 }}>
+          <Box
+            sx={{
+              display: 'grid',
+              gridTemplateColumns: 'repeat(auto-fill, minmax(84px, 1fr))',
+              columnGap: 1.5,
+              rowGap: 0.5,
+              px: 0.5,
+            }}
+          >
             <Readout
               name="speed"
               label={t('inertia.speed')}
@@ -394,7 +421,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
             timeScale={sim.timeScale}
             announce={announce}
           />
-          <Box sx={{ display: 'flex', gap: 1.5, alignItems: 'center', px: 0.5 }}>
+          <Box sx={{ display: 'flex', flexWrap: 'wrap', gap: 1.5, alignItems: 'center', px: 0.5 }}>
             <ElasticitySlider
               id="inertia-elasticity-label"
               label={t('inertia.elasticity')}
@@ -426,33 +453,23 @@ export function InertiaScreen({ active }: { active: boolean }) {
               </ToggleButton>
             </ToggleButtonGroup>
           </Box>
-          <Box sx={{ display: 'flex', gap: 1, py: 0.5 }}>
-            <Button
-              variant="outlined"
-              onClick={() => setDialogOpen(true)}
-              sx={{ flex: 1, minHeight: 48 }}
-              data-action="change-force"
-            >
-              {t('inertia.changeForce')}
-            </Button>
-            <Button
-              variant="contained"
-              color={applied ? 'secondary' : 'primary'}
-              onClick={toggleForce}
-              sx={{ flex: 1, minHeight: 48 }}
-              data-action="toggle-force"
-              aria-pressed={applied}
-            >
-              {applied ? t('inertia.stop') : t('inertia.apply')}
-            </Button>
-            <Button
-              variant="outlined"
-              onClick={returnObject}
-              sx={{ minHeight: 48, minWidth: 48 }}
-              data-action="return"
-            >
-              {t('inertia.return')}
-            </Button>
+          <Box sx={{ display: 'flex', flexWrap: 'wrap', columnGap: 1, px: 0.5 }}>
+            {(['vectors', 'values'] as const).map((name) => (
+              <FormControlLabel
+                key={name}
+                sx={{ minHeight: 48, mr: 0 }}
+                control={
+                  <Switch
+                    checked={show[name]}
+                    onChange={(_event, value) => {
+                      setShow((old) => ({ ...old, [name]: value }));
+                    }}
+                    slotProps={{ input: { 'data-control': `show-${name}` } as object }}
+                  />
+                }
+                label={<Typography variant="body2">{t(`inertia.show.${name}`)}</Typography>}
+              />
+            ))}
           </Box>
           <ForceDialog
             open={dialogOpen}
@@ -462,6 +479,36 @@ export function InertiaScreen({ active }: { active: boolean }) {
             onClose={() => setDialogOpen(false)}
             onConfirm={confirmForce}
           />
+        </>
+      }
+      actions={
+        <>
+          <Button
+            variant="outlined"
+            onClick={() => setDialogOpen(true)}
+            sx={{ flex: 1, minHeight: 48 }}
+            data-action="change-force"
+          >
+            {t('inertia.changeForce')}
+          </Button>
+          <Button
+            variant="contained"
+            color={applied ? 'secondary' : 'primary'}
+            onClick={toggleForce}
+            sx={{ flex: 1, minHeight: 48 }}
+            data-action="toggle-force"
+            aria-pressed={applied}
+          >
+            {applied ? t('inertia.stop') : t('inertia.apply')}
+          </Button>
+          <Button
+            variant="outlined"
+            onClick={returnObject}
+            sx={{ minHeight: 48, minWidth: 48 }}
+            data-action="return"
+          >
+            {t('inertia.return')}
+          </Button>
         </>
       }
       controls={{

@@ -358,7 +358,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
               </Typography>
             )}
           </Box>
-          <Box sx={{ display: 'flex', alignItems: 'center', gap: 1.5 }}>
+          <Box sx={{ display: 'flex', flexWrap: 'wrap', alignItems: 'center', gap: 1.5 }}>
             <Tooltip title={t('reactions.add')}>
               <IconButton
                 aria-label={t('reactions.add')}
@@ -376,7 +376,15 @@ export function ReactionsScreen({ active }: { active: boolean }) {
               }
               onLevel={() => changeTilt({ x: 0, y: 0 })}
             />
-            <Box sx={{ display: 'flex', flexDirection: 'column', gap: 1, flex: 1, minWidth: 0 }}>
+            <Box
+              sx={{
+                display: 'flex',
+                flexDirection: 'column',
+                gap: 1,
+                flex: '1 1 150px',
+                minWidth: 0,
+              }}
+            >
               <Readout
                 name="push"
                 label={t('reactions.pushForce')}
