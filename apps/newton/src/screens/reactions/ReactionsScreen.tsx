@@ -39,7 +39,7 @@ import {
   DEFAULT_ELASTICITY,
   clearParticles,
   createReactionsScene,
-  pushFor,
+  trayAcceleration,
   setElasticity,
   setTilt,
   spawnParticle,
@@ -206,7 +206,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
         );
       }
       for (const { arrow, opacity } of visible) {
-        const length = reactionArrowLength(arrow.force);
+        const length = reactionArrowLength(arrow.impulse);
         const from = { x: arrow.x, y: arrow.y };
         drawArrow(
           context,
@@ -273,7 +273,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   };
 
   const info = selected === null ? undefined : scene?.particles.get(selected);
-  const push = pushFor(tilt);
+  const push = trayAcceleration(tilt);
   const pushSize = Math.hypot(push.x, push.y);
   const momentum = scene === null ? { x: 0, y: 0 } : totalMomentum(scene);
   const momentumSize = Math.hypot(momentum.x, momentum.y);
@@ -382,8 +382,8 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                 label={t('reactions.pushForce')}
                 value={
                   pushSize < 1e-6
-                    ? unit(0, 'N')
-                    : `${unit(pushSize, 'N', 2)}, ${number(screenAngle(push), 0)}°`
+                    ? unit(0, 'm/s²')
+                    : `${unit(pushSize, 'm/s²', 2)}, ${number(screenAngle(push), 0)}°`
                 }
               />
               <Readout
