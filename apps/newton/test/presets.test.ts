@@ -1,5 +1,11 @@
 import { describe, expect, it } from 'vitest';
-import { parsePreset, presetFor, presetLink, presetNumber } from '../src/app/presets.ts';
+import {
+  forcesPreset,
+  parsePreset,
+  presetFor,
+  presetLink,
+  presetNumber,
+} from '../src/app/presets.ts';
 import { screenFromHash } from '../src/app/screens.ts';
 
 describe('preset links', () => {
@@ -54,5 +60,16 @@ describe('preset links', () => {
     expect(link).toBe('#reactions?mA=1&mB=2&vA=1.5&vB=-0.5&e=0&walls=0');
     expect(parsePreset(link).values).toEqual(values);
     expect(presetLink('inertia', {})).toBe('#inertia');
+  });
+
+  it('give Forces each square its mass and force (F for both, FA and FB for one)', () => {
+    expect(forcesPreset(parsePreset('#forces?mA=1&mB=2&F=3').values)).toEqual({
+      masses: [1, 2],
+      forces: [3, 3],
+    });
+    expect(forcesPreset(parsePreset('#forces?F=3&FB=1').values)).toEqual({
+      masses: [undefined, undefined],
+      forces: [3, 1],
+    });
   });
 });

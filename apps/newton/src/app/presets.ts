@@ -132,3 +132,20 @@ export function presetLink(
   const text = query.toString();
   return text === '' ? `#${screen}` : `#${screen}?${text}`;
 }
+
+/**
+ * What a Forces link sets for squares A and B: each mass (kg) and force (N), undefined where the
+ * link leaves the default (`F` sets both forces, `FA` and `FB` one each).
+ */
+export function forcesPreset(values: Preset['values']): {
+  readonly masses: readonly [number | undefined, number | undefined];
+  readonly forces: readonly [number | undefined, number | undefined];
+} {
+  const read = (name: string): number | undefined =>
+    typeof values[name] === 'number' ? values[name] : undefined;
+  const both = read('F');
+  return {
+    masses: [read('mA'), read('mB')],
+    forces: [read('FA') ?? both, read('FB') ?? both],
+  };
+}
