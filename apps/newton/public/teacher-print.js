@@ -1,3 +1,4 @@
+/* global window, document */
 // The teacher pages' "Print the worksheet" button: prints only the worksheet and its answer key
 // (teacher.css hides the rest while body has the class), then shows the whole page again.
 for (const button of document.querySelectorAll('button[data-print="worksheet"]')) {

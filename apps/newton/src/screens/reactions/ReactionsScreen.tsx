@@ -432,10 +432,10 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     };
   }, [scene, arrows, recorder, history, log, announce, t, unit, describe, momentData]);
 
-  // Paused: the description says where things are now.
+  // Paused, or another particle chosen or set up: the description says how things are now.
   useEffect(() => {
     if (sim.paused) describe();
-  }, [sim.paused, describe]);
+  }, [sim.paused, describe, chosen, version]);
 
   /** Goes to the saved moment `index` (paused there): step back and scrub. */
   const seek = (index: number): void => {
@@ -506,6 +506,12 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     window.addEventListener('keydown', onKey);
     return () => window.removeEventListener('keydown', onKey);
   }, [active, changeTilt]);
+
+  // The canvas is described by the live description (the React binding passes no aria props
+  // but the label).
+  useEffect(() => {
+    canvasRef.current?.setAttribute('aria-describedby', 'reactions-description');
+  }, [scene]);
 
   // Particles are outlined: the selected one white, the other chosen one blue.
   useEffect(() => {
@@ -830,7 +836,6 @@ export function ReactionsScreen({ active }: { active: boolean }) {
             onBackgroundTap={({ point }) => onTap(point, null)}
             onPauseChange={({ paused }) => sim.setPaused(paused)}
             aria-label={t('reactions.canvas')}
-            aria-describedby="reactions-description"
             style={{ flex: 1, height: 'auto' }}
           />
         </Box>
