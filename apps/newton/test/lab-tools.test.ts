@@ -32,7 +32,7 @@ describe('observeSteps', () => {
 describe('SnapshotHistory', () => {
   it('restores a world that steps on bit for bit as the original did', () => {
     const world = fallingWorld();
-    const history = new SnapshotHistory<string>(10);
+    const history = new SnapshotHistory<string>({ capacity: 10 });
     for (let i = 0; i < 5; i++) {
       world.step(1 / 60);
       history.record(world, world.steps / 60, `step ${world.steps}`);
@@ -46,7 +46,7 @@ describe('SnapshotHistory', () => {
 
   it('keeps the newest `capacity` entries and forgets the future after a rewind', () => {
     const world = fallingWorld();
-    const history = new SnapshotHistory<number>(3);
+    const history = new SnapshotHistory<number>({ capacity: 3 });
     for (let i = 0; i < 5; i++) {
       world.step(1 / 60);
       history.record(world, i, i);
@@ -57,7 +57,36 @@ describe('SnapshotHistory', () => {
     expect(history.length).toBe(1);
     expect(history.last!.data).toBe(2);
     expect(() => history.restore(5)).toThrow(/no entry 5/);
-    expect(() => new SnapshotHistory(1)).toThrow(/capacity/);
+    expect(() => new SnapshotHistory({ capacity: 1 })).toThrow(/capacity/);
+    expect(() => new SnapshotHistory({ capacity: 4, interval: 5 })).toThrow(/interval/);
+  });
+
+  it('with a snapshot every few steps, replays the steps between: the same world at every step', () => {
+    const world = fallingWorld();
+    const sparse = new SnapshotHistory<number>({ capacity: 20, interval: 4 });
+    const every = new SnapshotHistory<number>({ capacity: 20 });
+    for (let i = 0; i < 12; i++) {
+      world.step(1 / 60);
+      sparse.record(world, world.steps / 60, world.steps);
+      every.record(world, world.steps / 60, world.steps);
+    }
+    expect([...Array(12).keys()].filter((i) => sparse.entry(i)!.snapshot !== null)).toEqual([
+      0, 4, 8,
+    ]);
+    for (const index of [0, 3, 5, 11]) {
+      const { world: replayed, entry } = sparse.restore(index);
+      expect(entry.data).toBe(index + 1);
+      expect(takeSnapshot(replayed)).toEqual(takeSnapshot(every.restore(index).world));
+    }
+    // Full: the oldest kept entry still has a snapshot to replay from.
+    const small = new SnapshotHistory<number>({ capacity: 5, interval: 4 });
+    for (let i = 0; i < 9; i++) {
+      world.step(1 / 60);
+      small.record(world, i, i);
+    }
+    expect(small.entry(0)!.snapshot).not.toBeNull();
+    expect(small.length).toBeLessThanOrEqual(5 + 3);
+    expect(small.restore(small.length - 1).entry.data).toBe(8);
   });
 });
 
