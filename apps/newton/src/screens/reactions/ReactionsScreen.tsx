@@ -877,7 +877,17 @@ export function ReactionsScreen({ active }: { active: boolean }) {
             onChange={(_event, value: PanelTab) => setTab(value)}
             variant="fullWidth"
             aria-label={t('reactions.panel')}
-            sx={{ minHeight: 48, '& .MuiTab-root': { minHeight: 48, minWidth: 0, px: 0.25 } }}
+            sx={{
+              minHeight: 48,
+              // Five tabs side by side on a 320 px phone, in German too.
+              '& .MuiTab-root': {
+                minHeight: 48,
+                minWidth: 0,
+                px: 0.25,
+                fontSize: '0.8125rem',
+                letterSpacing: 0,
+              },
+            }}
           >
             {PANEL_TABS.map((id) => (
               <Tab
@@ -900,8 +910,9 @@ export function ReactionsScreen({ active }: { active: boolean }) {
               gap: 0.5,
               minHeight: 0,
               // A phone held upright: the panel keeps its height whatever the tab, so the tray
-              // does not jump; what does not fit scrolls inside it.
-              height: 196,
+              // does not jump; what does not fit scrolls inside it. Short phones give it less:
+              // the bars, the law, the tabs and the tray's least height take about 480 px.
+              height: 'clamp(88px, calc(100dvh - 480px), 196px)',
               overflowY: 'auto',
               [`@media ${SIDE_BY_SIDE}`]: { height: 'auto', overflowY: 'visible' },
             }}
