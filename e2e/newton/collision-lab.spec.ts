@@ -13,8 +13,6 @@ import {
 } from './lab.ts';
 import { assertQuiet, closeApp, numberIn, openApp, readout, screenshot } from './phone.ts';
 
-const sleep = (ms: number): Promise<void> => new Promise((resolve) => setTimeout(resolve, ms));
-
 for (const [kind, e, key] of [
   ['elastic', 1, 'End'],
   ['perfectly inelastic', 0, 'Home'],

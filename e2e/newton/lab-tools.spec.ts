@@ -1,5 +1,6 @@
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
+import type { Page } from 'playwright-core';
 import { test } from '../harness.ts';
 import { SMALL_PHONE, assertClosedForm, openTab, results, runUntilCollided } from './lab.ts';
 import { assertQuiet, closeApp, numberIn, openApp, readout, screenshot } from './phone.ts';
@@ -7,7 +8,7 @@ import { assertQuiet, closeApp, numberIn, openApp, readout, screenshot } from '.
 const ELASTIC = '#reactions?mA=1&mB=2&vA=1.5&vB=-0.5&e=1&walls=0&tilt=0';
 
 /** The simulated time the controls show (s). */
-async function shownTime(page: import('playwright-core').Page): Promise<number> {
+async function shownTime(page: Page): Promise<number> {
   return numberIn(await readout(page, 'time'));
 }
 
