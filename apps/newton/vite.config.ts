@@ -1,4 +1,5 @@
 import { createHash } from 'node:crypto';
+import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import react from '@vitejs/plugin-react';
 import { defineConfig, type Plugin } from 'vite';
@@ -25,6 +26,9 @@ function precacheManifest(): Plugin {
       for (const name of [
         'manifest.webmanifest',
         'teacher.html',
+        'teacher.de.html',
+        'teacher.css',
+        'teacher-print.js',
         'icons/icon.svg',
         'icons/icon-192.png',
         'icons/icon-512.png',
@@ -32,6 +36,10 @@ function precacheManifest(): Plugin {
         'icons/apple-touch-icon.png',
       ]) {
         files.push(`./${name}`);
+        // Copied from public/ as they are: their contents count too, so a changed teacher page
+        // makes a new version (and the service worker fetches it again).
+        hash.update(name);
+        hash.update(readFileSync(source(`public/${name}`)));
       }
       const version = hash.digest('hex').slice(0, 12);
       this.emitFile({

@@ -53,6 +53,7 @@ test('newton: with prefers-reduced-motion, controls have no transitions; without
   for (const reducedMotion of ['no-preference', 'reduce'] as const) {
     const app = await openApp(browser, '#reactions', { ...PHONE, reducedMotion });
     try {
+      await app.page.locator('#reactions [data-tab="options"]').click();
       durations[reducedMotion] = await app.page
         .locator('#reactions [data-control="elasticity"] .MuiSlider-thumb')
         .evaluate((thumb) => getComputedStyle(thumb).transitionDuration);

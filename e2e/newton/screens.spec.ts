@@ -175,14 +175,14 @@ test('newton: reactions, taps spawn particles, tilt pushes them, collisions show
     assert.match(await readout(page, 'particle-mass'), /kg$/);
     assert.equal(await readout(page, 'particle-impulse'), 'none yet');
 
-    // Lean the phone to the right: every particle is pushed right.
+    // Lean the phone to the right: the tray's gravity g sin 45° pulls every particle right.
     await page.evaluate(() =>
       window.dispatchEvent(
         new DeviceOrientationEvent('deviceorientation', { alpha: 0, beta: 0, gamma: 45 }),
       ),
     );
     await sleep(500);
-    assert.equal(await readout(page, 'push'), '0.71 N, 0°');
+    assert.equal(await readout(page, 'push'), '6.94 m/s², 0°');
     const [x1, y1] = (await readout(page, 'particle-position')).split(',').map(numberIn) as [
       number,
       number,

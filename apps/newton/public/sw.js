@@ -1,6 +1,7 @@
 // Newton's service worker: precaches every built file on install (the list and its version come
 // from precache-manifest.js, written by the build), answers from the cache first, and falls back
-// to the cached page for navigations, so the app reloads with the network off after one visit.
+// to the cached page for navigations (the app, or a teacher page for its own address), so the app
+// and its teacher pages reload with the network off after one visit.
 // Lookups ignore Vary: `vite preview` (npm start) answers with `Vary: Origin`, and a module
 // script's request carries an Origin header the cached copy was not fetched with.
 /* global self, caches, fetch, URL, Request, Response */
@@ -37,19 +38,23 @@ self.addEventListener('fetch', (event) => {
   const request = event.request;
   if (request.method !== 'GET' || new URL(request.url).origin !== self.location.origin) return;
   if (request.mode === 'navigate') {
-    // The page: the network when there is one (updates), else the cached copy.
+    // A page: the network when there is one (updates), else the cached copy of that very page
+    // (the teacher pages are pages of their own), and the app for any other address.
+    const url = new URL(request.url);
+    const page = /\/teacher(\.de)?\.html$/.test(url.pathname) ? url.pathname : null;
+    const key = page === null ? './index.html' : new URL(page, self.location.href).href;
     event.respondWith(
       fetch(request)
         .then((response) => {
           if (response.ok) {
             const copy = response.clone();
-            caches.open(CACHE).then((cache) => cache.put('./index.html', copy));
+            caches.open(CACHE).then((cache) => cache.put(key, copy));
           }
           return response;
         })
         .catch(() =>
           caches
-            .match('./index.html', { ignoreSearch: true, ignoreVary: true })
+            .match(key, { ignoreSearch: true, ignoreVary: true })
             .then((cached) => cached ?? Response.error()),
         ),
     );

@@ -1,15 +1,33 @@
 import { describe, expect, it } from 'vitest';
-import type { CollisionEvent } from '@physical/engine';
-import { CollisionArrows, ARROW_LIFETIME } from '../src/screens/reactions/collision-arrows.ts';
+import { type Body, type CollisionEvent, World, particle } from '@physical/engine';
 import {
+  CollisionArrows,
+  ARROW_LIFETIME,
+  averageForce,
+} from '../src/screens/reactions/collision-arrows.ts';
+import {
+  CollisionRecorder,
+  totalKineticEnergyOf,
+  totalMomentumOf,
+} from '../src/screens/reactions/collision-lab.ts';
+import { observeSteps } from '../src/lab/step-hook.ts';
+import {
+  GRAVITY,
   MAX_FILL,
-  PUSH_FORCE,
+  adoptWorld,
   clearParticles,
+  labelsByIndex,
+  particleLabel,
+  radiusForMass,
+  setParticleMass,
+  setTiltOn,
+  setUpLab,
+  setWallsOn,
+  trayAcceleration,
   filledArea,
   freeSpot,
   isFull,
   createReactionsScene,
-  pushFor,
   setElasticity,
   setTilt,
   spawnParticle,
@@ -29,17 +47,22 @@ describe('Reactions scene', () => {
     expect(scene.particles.size).toBe(0);
   });
 
-  it('pushes every particle with the same force: the lighter one accelerates more', () => {
+  it('tilts like a tray: m g sin θ on each particle, the same acceleration for every mass', () => {
     const scene = createReactionsScene(6, 9);
     const small = spawnParticle(scene, { x: 3, y: 1.5 }, () => 0);
     const big = spawnParticle(scene, { x: 3, y: 7.5 }, () => 1);
-    setTilt(scene, { x: 1, y: 0 });
+    // sin θ = 0.5: leaning 30°.
+    setTilt(scene, { x: 0.5, y: 0 });
     scene.world.step(1 / 60);
-    const impulseSmall = small.mass * small.linearVelocity.x;
-    const impulseBig = big.mass * big.linearVelocity.x;
-    expect(impulseSmall).toBeCloseTo(PUSH_FORCE / 60, 9);
-    expect(impulseBig).toBeCloseTo(PUSH_FORCE / 60, 9);
-    expect(small.linearVelocity.x).toBeGreaterThan(big.linearVelocity.x);
+    expect(small.linearVelocity.x).toBeCloseTo((GRAVITY * 0.5) / 60, 9);
+    expect(big.linearVelocity.x).toBeCloseTo((GRAVITY * 0.5) / 60, 9);
+    // The force m g sin θ grows with the mass.
+    expect(big.mass * big.linearVelocity.x).toBeGreaterThan(small.mass * small.linearVelocity.x);
+    // Switched off, the tilt pushes nothing.
+    setTiltOn(scene, false);
+    const v = big.linearVelocity.x;
+    scene.world.step(1 / 60);
+    expect(big.linearVelocity.x).toBe(v);
   });
 
   it('records equal and opposite arrows at each collision, fading out', () => {
@@ -56,7 +79,10 @@ describe('Reactions scene', () => {
     }
     const [first] = arrows.visible(time);
     expect(first).toBeDefined();
-    expect(first!.arrow.force).toBeGreaterThan(0);
+    // An elastic head-on hit of equal masses at 3 m/s: J = m u (e = 0.8: J = (1 + e) m u / 2).
+    const mass = a.mass;
+    expect(first!.arrow.impulse).toBeCloseTo((1.8 * mass * 3) / 2, 3);
+    expect(averageForce(first!.arrow.impulse, 0.01)).toBeCloseTo(first!.arrow.impulse * 100, 9);
     expect(Math.hypot(first!.arrow.nx, first!.arrow.ny)).toBeCloseTo(1, 9);
     expect(arrows.visible(time + ARROW_LIFETIME + 0.01)).toEqual([]);
   });
@@ -77,11 +103,11 @@ describe('device tilt', () => {
 });
 
 describe('Reactions push, elasticity and momentum', () => {
-  it('caps the push at 1 N in any direction: a diagonal full tilt is 1 N, not 1.41 N', () => {
-    const diagonal = pushFor({ x: 1, y: 1 });
-    expect(Math.hypot(diagonal.x, diagonal.y)).toBeCloseTo(1, 12);
-    expect(diagonal.x).toBeCloseTo(Math.SQRT1_2, 12);
-    expect(pushFor({ x: 0.5, y: 0 })).toEqual({ x: 0.5, y: 0 });
+  it('caps the tray acceleration at g in any direction: a diagonal full tilt is g, not 1.41 g', () => {
+    const diagonal = trayAcceleration({ x: 1, y: 1 });
+    expect(Math.hypot(diagonal.x, diagonal.y)).toBeCloseTo(GRAVITY, 12);
+    expect(diagonal.x).toBeCloseTo(GRAVITY * Math.SQRT1_2, 12);
+    expect(trayAcceleration({ x: 0.5, y: 0 })).toEqual({ x: GRAVITY / 2, y: 0 });
   });
 
   it('gives new particles the chosen elasticity and sums their momentum', () => {
@@ -123,7 +149,8 @@ describe('Reactions scene: a full box', () => {
       expect(body.position.y).toBeLessThan(7.5);
       expect(Math.hypot(body.linearVelocity.x, body.linearVelocity.y)).toBeLessThan(5);
     }
-  });
+    // 1,200 steps of a full box: 3.7 s on a quiet machine, over 7 s on a loaded one.
+  }, 30_000);
 
   it('finds a free spot for a new particle while there is one', () => {
     const scene = createReactionsScene(6, 9);
@@ -137,5 +164,86 @@ describe('Reactions scene: a full box', () => {
     expect(scene.world.overlapShape({ type: 'circle', radius: 0.45 }, { position: free })).toEqual(
       [],
     );
+  });
+});
+
+/** The closed form of a 1-D collision with restitution e: velocities after. */
+function closedForm(m1: number, m2: number, u1: number, u2: number, e: number): [number, number] {
+  const p = m1 * u1 + m2 * u2;
+  return [(p - m2 * e * (u1 - u2)) / (m1 + m2), (p + m1 * e * (u1 - u2)) / (m1 + m2)];
+}
+
+describe('Reactions collision lab', () => {
+  for (const e of [1, 0, 0.5]) {
+    it(`records before and after a 1-D collision with e = ${e} as the closed form says`, () => {
+      const scene = createReactionsScene(6, 9, e);
+      setTiltOn(scene, false);
+      const [a, b] = setUpLab(scene, [
+        { mass: 1, vx: 2 },
+        { mass: 2, vx: -0.5 },
+      ]) as [Body, Body];
+      expect(a.mass).toBeCloseTo(1, 12);
+      expect(b.mass).toBeCloseTo(2, 12);
+      const recorder = new CollisionRecorder();
+      recorder.setPair([a, b, 'A', 'B']);
+      scene.world.on('collision', (event) => recorder.collided(event));
+      observeSteps(scene.world, {
+        before: () => recorder.beforeStep(),
+        after: () => recorder.afterStep(scene.world.steps / 60),
+      });
+      for (let i = 0; i < 90; i++) scene.world.step(1 / 60);
+      const record = recorder.record!;
+      expect(record).not.toBeNull();
+      const [v1, v2] = closedForm(1, 2, 2, -0.5, e);
+      expect(record.before.map((s) => s.vx)).toEqual([2, -0.5]);
+      expect(record.after[0]!.vx).toBeCloseTo(v1, 6);
+      expect(record.after[1]!.vx).toBeCloseTo(v2, 6);
+      expect(totalMomentumOf(record.after).x).toBeCloseTo(totalMomentumOf(record.before).x, 9);
+      const lost = totalKineticEnergyOf(record.before) - totalKineticEnergyOf(record.after);
+      // KE lost: (1 - e^2) m1 m2 (u1 - u2)^2 / (2 (m1 + m2)).
+      expect(lost).toBeCloseTo(((1 - e * e) * 1 * 2 * 2.5 ** 2) / (2 * 3), 6);
+    });
+  }
+
+  it('walls off: particles pass through them with their momentum', () => {
+    const scene = createReactionsScene(6, 9, 1);
+    setTiltOn(scene, false);
+    setWallsOn(scene, false);
+    const [a] = setUpLab(scene, [{ mass: 1, vx: 5 }]) as [Body];
+    for (let i = 0; i < 120; i++) scene.world.step(1 / 60);
+    expect(a.position.x).toBeGreaterThan(6);
+    expect(a.linearVelocity.x).toBeCloseTo(5, 12);
+    setWallsOn(scene, true);
+    const [c] = setUpLab(scene, [{ mass: 1, vx: 5 }]) as [Body];
+    for (let i = 0; i < 120; i++) scene.world.step(1 / 60);
+    expect(c.position.x).toBeLessThan(6);
+  });
+
+  it('shows a mass by the size of its disc, and sets it exactly', () => {
+    const scene = createReactionsScene(6, 9, 1);
+    const body = spawnParticle(scene, { x: 3, y: 3 }, () => 0.5);
+    setParticleMass(body, 2);
+    expect(body.mass).toBeCloseTo(2, 12);
+    expect(body.shapes).toHaveLength(1);
+    const shape = body.shapes[0]!;
+    expect(shape.geometry.kind === 'circle' && shape.geometry.radius).toBe(radiusForMass(2));
+    expect(radiusForMass(1)).toBeLessThan(radiusForMass(2));
+    expect(particleLabel(0)).toBe('A');
+    expect(particleLabel(27)).toBe('B2');
+  });
+
+  it('names the particles of a restored world again by their index', () => {
+    const scene = createReactionsScene(6, 9, 1);
+    setUpLab(scene, [
+      { mass: 1, vx: 1 },
+      { mass: 2, vx: 0 },
+    ]);
+    const labels = labelsByIndex(scene);
+    const copy = new World({ gravity: { x: 0, y: 0 } });
+    for (const body of scene.world.bodies)
+      copy.add(particle({ position: body.position, radius: 0.2 }));
+    const adopted = adoptWorld(scene, copy, labels, scene.added);
+    expect([...adopted.particles.values()].map((info) => info.label)).toEqual(['A', 'B']);
+    expect(adopted.particles.has(copy.bodies[labels.indexOf('B')]!)).toBe(true);
   });
 });

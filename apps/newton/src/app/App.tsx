@@ -181,7 +181,7 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
         <DialogContent>
           <DialogContentText>{t(current.hint)}</DialogContentText>
           <DialogContentText sx={{ mt: 2 }}>
-            <a href="./teacher.html" style={{ color: '#82b1ff' }} data-action="teacher">
+            <a href={t('app.teacherPage')} style={{ color: '#82b1ff' }} data-action="teacher">
               {t('app.teacher')}
             </a>
           </DialogContentText>

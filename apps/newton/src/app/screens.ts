@@ -9,8 +9,8 @@ export const SCREENS: readonly { id: ScreenId; label: MessageKey; hint: MessageK
   { id: 'reactions', label: 'nav.reactions', hint: 'reactions.hint' },
 ];
 
-/** The screen named by a location hash ("#forces"), or the first. */
+/** The screen named by a location hash ("#forces", or a preset link "#forces?mA=1"), or the first. */
 export function screenFromHash(hash: string): ScreenId {
-  const id = hash.replace(/^#/, '');
+  const id = hash.replace(/^#/, '').split('?')[0];
   return SCREENS.find((screen) => screen.id === id)?.id ?? 'inertia';
 }

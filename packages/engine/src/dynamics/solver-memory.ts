@@ -85,7 +85,6 @@ export class SolverMemory {
     const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
-    this.kernel = null;
     this.layout(wanted, false);
   }
 

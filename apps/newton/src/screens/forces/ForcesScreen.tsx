@@ -3,6 +3,7 @@ import type { PhysicalCanvasElement } from '@physical/canvas';
 import type { Force } from '@physical/engine';
 import { useCallback, useMemo, useRef, useState } from 'react';
 import { useAnnouncer } from '../../app/Announcer.tsx';
+import { forcesPreset, presetFor } from '../../app/presets.ts';
 import { ScreenLayout } from '../../app/ScreenLayout.tsx';
 import { SQUARE_COLORS } from '../../app/theme.ts';
 import { simulatedTime, useSimulation } from '../../app/use-simulation.ts';
@@ -29,6 +30,15 @@ const DEFAULTS: readonly SquareSettings[] = [
   { mass: 2, force: 2 },
 ];
 
+/** The squares a preset link asks for: its masses and forces. */
+function presetSquares(defaults: readonly SquareSettings[]): readonly SquareSettings[] {
+  const preset = forcesPreset(presetFor('forces'));
+  return defaults.map((square, index) => ({
+    mass: preset.masses[index] ?? square.mass,
+    force: preset.forces[index] ?? square.force,
+  }));
+}
+
 /**
  * What each square gets: with "same force", B is pushed by A's force, whatever its mass; with a
  * mystery mass (kg), B has that hidden mass and A's force (the learner finds the mass from F / a).
@@ -46,13 +56,15 @@ function effectiveSettings(
 export function ForcesScreen({ active }: { active: boolean }) {
   const { t, unit } = useI18n();
   const sim = useSimulation();
-  const [settings, setSettings] = useState<readonly SquareSettings[]>(DEFAULTS);
+  // A preset link (#forces?mA=1&mB=2&F=3) chooses the first setup.
+  const [initial] = useState(() => presetSquares(DEFAULTS));
+  const [settings, setSettings] = useState<readonly SquareSettings[]>(initial);
   const [sameForce, setSameForce] = useState(false);
   // B's hidden mass (kg) while the mystery is on; revealed once the learner finds it.
   const [mysteryMass, setMysteryMass] = useState<number | null>(null);
   const [mysteryFound, setMysteryFound] = useState(false);
   const [tracks, setTracks] = useState<readonly ForcesTrack[]>(() =>
-    DEFAULTS.map((value) => createForcesTrack(value)),
+    initial.map((value) => createForcesTrack(value)),
   );
   const [started, setStarted] = useState(false);
   const [finished, setFinished] = useState(0);

@@ -18,6 +18,7 @@ import type { Force } from '@physical/engine';
 import { PhysicalCanvas } from '@physical/react';
 import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import { useAnnouncer } from '../../app/Announcer.tsx';
+import { presetFor, presetNumber } from '../../app/presets.ts';
 import { useOrientationRebuild } from '../../app/use-orientation-rebuild.ts';
 import { Readout } from '../../app/Readout.tsx';
 import { ScreenLayout } from '../../app/ScreenLayout.tsx';
@@ -70,13 +71,17 @@ export function InertiaScreen({ active }: { active: boolean }) {
   const [scene, setScene] = useState<InertiaScene | null>(null);
   const sceneRef = useRef<InertiaScene | null>(null);
   sceneRef.current = scene;
-  const [angle, setAngle] = useState(0);
-  const [magnitude, setMagnitude] = useState(1);
+  // A preset link (#inertia?F=2&angle=90&e=0.5&surface=wood) chooses the first setup.
+  const [preset] = useState(() => presetFor('inertia'));
+  const [angle, setAngle] = useState(() => presetNumber(preset, 'angle', 0));
+  const [magnitude, setMagnitude] = useState(() => presetNumber(preset, 'F', 1));
   const forceRef = useRef<Force | null>(null);
   const [applied, setApplied] = useState(false);
   const [dialogOpen, setDialogOpen] = useState(false);
-  const [elasticity, setElasticityState] = useState(1);
-  const [surface, setSurfaceState] = useState<Surface>('ice');
+  const [elasticity, setElasticityState] = useState(() => presetNumber(preset, 'e', 1));
+  const [surface, setSurfaceState] = useState<Surface>(() =>
+    preset['surface'] === 'wood' ? 'wood' : 'ice',
+  );
   const settingsRef = useRef({ elasticity, surface });
   settingsRef.current = { elasticity, surface };
   // What the canvas shows besides the body: the arrows, and the values written beside them.

@@ -1,4 +1,18 @@
-import { Box, Button, IconButton, Tooltip, Typography } from '@mui/material';
+import {
+  Box,
+  Button,
+  FormControlLabel,
+  IconButton,
+  MenuItem,
+  Switch,
+  Tab,
+  Tabs,
+  TextField,
+  ToggleButton,
+  ToggleButtonGroup,
+  Tooltip,
+  Typography,
+} from '@mui/material';
 import {
   ARROW_COLORS,
   drawArrow,
@@ -20,13 +34,19 @@ import { useAnnouncer } from '../../app/Announcer.tsx';
 import { REDUCED_MOTION, CANVAS_PIXEL_RATIO } from '../../app/theme.ts';
 import { AddIcon, DeleteIcon, PhoneTiltIcon } from '../../app/icons.tsx';
 import { useOrientationRebuild } from '../../app/use-orientation-rebuild.ts';
+import { presetFor } from '../../app/presets.ts';
 import { Readout } from '../../app/Readout.tsx';
-import { ScreenLayout } from '../../app/ScreenLayout.tsx';
+import { SIDE_BY_SIDE, ScreenLayout } from '../../app/ScreenLayout.tsx';
 import { STEP, simulatedTime, useSimulation } from '../../app/use-simulation.ts';
 import { useTicker } from '../../app/use-ticker.ts';
 import { clipToWalls } from '../../app/clip-to-walls.ts';
 import { ElasticitySlider } from '../../app/ElasticitySlider.tsx';
-import { useI18n } from '../../i18n/i18n.tsx';
+import { useI18n, type MessageKey } from '../../i18n/i18n.tsx';
+import { CsvExport } from '../../lab/CsvExport.tsx';
+import { MeasurementLog } from '../../lab/measurement-log.ts';
+import { RewindBar } from '../../lab/RewindBar.tsx';
+import { SnapshotHistory } from '../../lab/snapshot-history.ts';
+import { observeSteps } from '../../lab/step-hook.ts';
 import {
   requestTiltPermission,
   tiltNeedsPermission,
@@ -34,28 +54,141 @@ import {
   type Tilt,
 } from '../../sensors/device-tilt.ts';
 import { sceneSizeFor, screenAngle } from '../inertia/inertia-scene.ts';
-import { CollisionArrows, reactionArrowLength } from './collision-arrows.ts';
+import {
+  CONTACT_TIMES,
+  CollisionArrows,
+  DEFAULT_CONTACT_TIME,
+  averageForce,
+  reactionArrowLength,
+  type ArrowMeasure,
+} from './collision-arrows.ts';
+import {
+  CollisionRecorder,
+  kineticEnergyOf,
+  stateOf,
+  totalMomentumOf,
+  type CollisionRecord,
+} from './collision-lab.ts';
+import { LabResults } from './LabResults.tsx';
+import { LabSetup, type LabField, type LabRow } from './LabSetup.tsx';
 import {
   DEFAULT_ELASTICITY,
+  adoptWorld,
   clearParticles,
   createReactionsScene,
-  pushFor,
-  setElasticity,
-  setTilt,
-  spawnParticle,
   freeSpot,
   isFull,
-  totalMomentum,
+  labelsByIndex,
+  setElasticity,
+  setParticleMass,
+  setTilt,
+  setTiltOn,
+  setUpLab,
+  setWallsOn,
+  spawnParticle,
+  trayAcceleration,
+  type LabParticle,
   type ReactionsScene,
 } from './reactions-scene.ts';
 import { TILT_STEP, TiltPad } from './TiltPad.tsx';
+import {
+  HANDLE_REACH,
+  VELOCITY_ARROW_SCALE,
+  handlePoint,
+  velocityFromHandle,
+} from './velocity-handle.ts';
 
 const MARGIN = 0.1;
 const clampTilt = (value: number): number =>
   Math.round(Math.min(1, Math.max(-1, value)) * 100) / 100;
 const SELECTED_STYLE = { stroke: '#ffffff', lineWidth: 3 } as const;
+const CHOSEN_STYLE = { stroke: '#82b1ff', lineWidth: 2 } as const;
 /** Metres of arrow per kg m/s of momentum. */
 const MOMENTUM_ARROW_SCALE = 0.5;
+/** The chosen particles' velocity arrows, which a learner drags. */
+const HANDLE_COLOR = '#ffffff';
+/** Saved steps to rewind through: the last 5 s at 60 steps a second. */
+const HISTORY_STEPS = 300;
+/**
+ * A world snapshot every 0.5 s; stepping back replays from the one before. A snapshot of 50
+ * particles took 8.8 ms against 1.3 ms for their step (a loaded 2-core machine): one a step
+ * would cost the frame rate, one every 30 steps costs 0.3 ms a step.
+ */
+const SNAPSHOT_INTERVAL = 30;
+/** The collision lab's first setup: a light particle overtaking... no, meeting a heavy one. */
+const DEFAULT_LAB: readonly LabParticle[] = [
+  { mass: 1, vx: 1.5 },
+  { mass: 2, vx: -0.5 },
+];
+const PANEL_TABS = ['tray', 'setup', 'results', 'options', 'data'] as const;
+type PanelTab = (typeof PANEL_TABS)[number];
+const TAB_LABELS: Record<PanelTab, MessageKey> = {
+  tray: 'reactions.tabTray',
+  setup: 'reactions.tabSetup',
+  results: 'reactions.tabResults',
+  options: 'reactions.tabOptions',
+  data: 'reactions.tabData',
+};
+const CSV_MESSAGES: Record<'copied' | 'downloaded' | 'failed', MessageKey> = {
+  copied: 'lab.csvCopied',
+  downloaded: 'lab.csvDownloaded',
+  failed: 'lab.csvFailed',
+};
+
+/** The settings of the screen (what Reset all returns to its defaults). */
+interface Settings {
+  readonly elasticity: number;
+  readonly wallsOn: boolean;
+  readonly tiltOn: boolean;
+  readonly measure: ArrowMeasure;
+  readonly contactTime: number;
+  /** The collision lab's particles, or null for an empty box. */
+  readonly lab: readonly LabParticle[] | null;
+}
+
+const DEFAULT_SETTINGS: Settings = {
+  elasticity: DEFAULT_ELASTICITY,
+  wallsOn: true,
+  tiltOn: true,
+  measure: 'impulse',
+  contactTime: DEFAULT_CONTACT_TIME,
+  lab: null,
+};
+
+/** The settings a preset link (`#reactions?mA=1&vA=2...`) asks for, or null without one. */
+function settingsFromPreset(hash: string): Settings | null {
+  const values = presetFor('reactions', hash);
+  if (Object.keys(values).length === 0) return null;
+  const num = (name: string, fallback: number): number =>
+    typeof values[name] === 'number' ? values[name] : fallback;
+  return {
+    elasticity: num('e', DEFAULT_ELASTICITY),
+    wallsOn: values['walls'] !== '0',
+    tiltOn: values['tilt'] !== '0',
+    measure: values['arrows'] === 'force' ? 'force' : 'impulse',
+    contactTime: typeof values['dt'] === 'string' ? Number(values['dt']) : DEFAULT_CONTACT_TIME,
+    lab: [
+      {
+        mass: num('mA', DEFAULT_LAB[0]!.mass),
+        vx: num('vA', DEFAULT_LAB[0]!.vx),
+        vy: num('vAy', 0),
+      },
+      {
+        mass: num('mB', DEFAULT_LAB[1]!.mass),
+        vx: num('vB', DEFAULT_LAB[1]!.vx),
+        vy: num('vBy', 0),
+      },
+    ],
+  };
+}
+
+/** What a saved moment keeps beside the world: the names by body index and the lab's record. */
+interface MomentData {
+  readonly labels: (string | null)[];
+  readonly added: number;
+  readonly chosen: readonly string[];
+  readonly record: CollisionRecord | null;
+}
 
 /** Where tilt can be asked for and makes sense: a touch device whose browser asks first (iOS). */
 function tiltButtonUseful(): boolean {
@@ -70,12 +203,17 @@ function tiltButtonUseful(): boolean {
 function ownsArrowKeys(target: EventTarget | null): boolean {
   if (!(target instanceof Element)) return false;
   return (
-    target.closest('input, textarea, select, [role="slider"], [role="dialog"], [role="menu"]') !==
-    null
+    target.closest(
+      'input, textarea, select, [role="slider"], [role="dialog"], [role="menu"], [role="tab"], [role="listbox"]',
+    ) !== null
   );
 }
 
-/** The third law: particles pushed by the tilt, equal and opposite arrows at every collision. */
+/**
+ * The third law, and a collision lab: particles on a tray the phone tilts, equal and opposite
+ * arrows at every collision; two chosen particles with typed or dragged masses and velocities,
+ * their momentum and kinetic energy before and after they collide; step back, scrub and export.
+ */
 export function ReactionsScreen({ active }: { active: boolean }) {
   const { t, unit, number } = useI18n();
   const sim = useSimulation();
@@ -85,13 +223,37 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   const sceneRef = useRef<ReactionsScene | null>(null);
   sceneRef.current = scene;
   const arrows = useMemo(() => new CollisionArrows(), []);
+  const recorder = useMemo(() => new CollisionRecorder(), []);
+  const history = useMemo(
+    () =>
+      new SnapshotHistory<MomentData>({
+        capacity: HISTORY_STEPS,
+        interval: SNAPSHOT_INTERVAL,
+        step: STEP,
+      }),
+    [],
+  );
+  const log = useMemo(() => new MeasurementLog(), []);
+  const [initialPreset] = useState(() => settingsFromPreset(location.hash));
+  const [settings, setSettings] = useState<Settings>(initialPreset ?? DEFAULT_SETTINGS);
+  const settingsRef = useRef(settings);
+  settingsRef.current = settings;
   const [selected, setSelected] = useState<Body | null>(null);
+  const [chosen, setChosen] = useState<readonly Body[]>([]);
+  const chosenRef = useRef(chosen);
+  chosenRef.current = chosen;
   const [tilt, setTiltState] = useState<Tilt>({ x: 0, y: 0 });
   const [sensorOn, setSensorOn] = useState(false);
   const [needsPermission] = useState(tiltButtonUseful);
-  const [elasticity, setElasticityState] = useState(DEFAULT_ELASTICITY);
-  const elasticityRef = useRef(elasticity);
-  elasticityRef.current = elasticity;
+  const [tab, setTab] = useState<PanelTab>(initialPreset !== null ? 'setup' : 'tray');
+  /** The saved moment shown while rewound, or null when live at the newest. */
+  const [rewound, setRewound] = useState<number | null>(null);
+  const rewoundRef = useRef(rewound);
+  rewoundRef.current = rewound;
+  /** Bumped when the setup's values change from outside the table (the fields refill). */
+  const [version, bumpVersion] = useReducer((count: number) => count + 1, 0);
+  const [description, setDescription] = useState('');
+  const [exportStatus, setExportStatus] = useState('');
   const { announce, region } = useAnnouncer('reactions');
   const [, rerender] = useReducer((count: number) => count + 1, 0);
   useTicker(active && !sim.paused, 100, () => {
@@ -100,31 +262,143 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     return `${current.world.steps}:${current.particles.size}:${current.world.awakeBodyCount}`;
   });
 
-  const build = useCallback(() => {
-    const host = hostRef.current;
-    const size = sceneSizeFor(host?.clientWidth ?? 0, host?.clientHeight ?? 0);
-    arrows.clear();
-    setSelected(null);
-    setTiltState({ x: 0, y: 0 });
-    setScene(createReactionsScene(size.width, size.height, elasticityRef.current));
-  }, [arrows]);
+  const labelOf = useCallback(
+    (body: Body): string => sceneRef.current?.particles.get(body)?.label ?? '?',
+    [],
+  );
+
+  /** Makes `bodies` the lab's pair (from 0 to 2 particles) and starts a new record. */
+  const choosePair = useCallback(
+    (bodies: readonly Body[], current: ReactionsScene) => {
+      setChosen(bodies);
+      const [a, b] = bodies;
+      recorder.setPair(
+        a !== undefined && b !== undefined
+          ? [a, b, current.particles.get(a)!.label, current.particles.get(b)!.label]
+          : null,
+      );
+    },
+    [recorder],
+  );
+
+  /** A description of what is on the tray, for screen readers (live, polite). */
+  const describe = useCallback(
+    (current: ReactionsScene | null = sceneRef.current) => {
+      if (current === null) return;
+      const parts = [t('reactions.describeCount', { count: current.particles.size })];
+      for (const body of chosenRef.current) {
+        const info = current.particles.get(body);
+        if (info === undefined) continue;
+        const v = body.linearVelocity;
+        parts.push(
+          t('reactions.describeParticle', {
+            name: info.label,
+            mass: unit(body.mass, 'kg', 3),
+            vx: unit(v.x, 'm/s', 2),
+            vy: unit(v.y, 'm/s', 2),
+          }),
+        );
+      }
+      const record = recorder.record;
+      if (record !== null) {
+        const before = totalMomentumOf(record.before);
+        const after = totalMomentumOf(record.after);
+        parts.push(
+          t('reactions.describeRecord', {
+            before: unit(before.x, 'kg·m/s', 3),
+            after: unit(after.x, 'kg·m/s', 3),
+          }),
+        );
+      }
+      setDescription(parts.join(' '));
+    },
+    [t, unit, recorder],
+  );
+
+  /** A new scene with the settings (and the lab's particles, if any), paused for a lab. */
+  const build = useCallback(
+    (next: Settings = settingsRef.current) => {
+      const host = hostRef.current;
+      const size = sceneSizeFor(host?.clientWidth ?? 0, host?.clientHeight ?? 0);
+      arrows.clear();
+      history.clear();
+      log.clear();
+      setRewound(null);
+      setSelected(null);
+      setTiltState({ x: 0, y: 0 });
+      const created = createReactionsScene(size.width, size.height, next.elasticity);
+      setWallsOn(created, next.wallsOn);
+      setTiltOn(created, next.tiltOn);
+      let pair: Body[] = [];
+      if (next.lab !== null) {
+        pair = setUpLab(created, next.lab);
+        sim.setPaused(true);
+      }
+      sceneRef.current = created;
+      choosePair(pair, created);
+      setSelected(pair[0] ?? null);
+      bumpVersion();
+      setScene(created);
+      describe(created);
+    },
+    [arrows, history, log, sim, choosePair, describe],
+  );
 
   useLayoutEffect(() => {
     if (active && scene === null) build();
   }, [active, scene, build]);
-  useOrientationRebuild(hostRef, active ? scene : null, build);
+  const rebuild = useCallback(() => build(), [build]);
+  useOrientationRebuild(hostRef, active ? scene : null, rebuild);
 
-  // The thesis's onCollision: record the arrows and each particle's last impulse.
+  // A preset link followed while the screen is up sets it up again.
+  useEffect(() => {
+    const onHash = (): void => {
+      const next = settingsFromPreset(location.hash);
+      if (next === null) return;
+      setSettings(next);
+      setTab('setup');
+      build(next);
+    };
+    window.addEventListener('hashchange', onHash);
+    return () => window.removeEventListener('hashchange', onHash);
+  }, [build]);
+
+  const momentData = useCallback(
+    (current: ReactionsScene): MomentData => ({
+      labels: labelsByIndex(current),
+      added: current.added,
+      chosen: chosenRef.current.map((body) => current.particles.get(body)?.label ?? ''),
+      record: recorder.record,
+    }),
+    [recorder],
+  );
+
+  // Each step: the collision lab's record, the measurement log and a snapshot to rewind to.
   useEffect(() => {
     if (scene === null) return;
-    return scene.world.on('collision', (event) => {
-      arrows.record(event, STEP, simulatedTime(scene.world));
+    const world = scene.world;
+    if (history.length === 0) history.record(world, simulatedTime(world), momentData(scene));
+    const offCollision = world.on('collision', (event) => {
+      arrows.record(event, STEP, simulatedTime(world));
+      recorder.collided(event);
+      const measure = settingsRef.current.measure;
       if (
         event.normalImpulse > 0.02 &&
         scene.particles.has(event.bodyA) &&
         scene.particles.has(event.bodyB)
       ) {
-        announce(t('reactions.collided', { force: unit(event.normalImpulse / STEP, 'N', 1) }));
+        announce(
+          measure === 'impulse'
+            ? t('reactions.collidedImpulse', { impulse: unit(event.normalImpulse, 'N·s', 3) })
+            : t('reactions.collidedForce', {
+                force: unit(
+                  averageForce(event.normalImpulse, settingsRef.current.contactTime),
+                  'N',
+                  1,
+                ),
+                time: unit(settingsRef.current.contactTime, 's', 3),
+              }),
+        );
       }
       for (const body of [event.bodyA, event.bodyB]) {
         const info = scene.particles.get(body);
@@ -132,7 +406,78 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           info.lastImpulse = event.normalImpulse;
       }
     });
-  }, [scene, arrows, announce, t, unit]);
+    const offSteps = observeSteps(world, {
+      before: () => {
+        // Going on from a moment stepped back to: its future is rewritten.
+        const index = rewoundRef.current;
+        if (index !== null) {
+          const entry = history.entry(index);
+          history.truncateAfter(index);
+          if (entry !== undefined) log.truncateAfter(entry.time);
+          rewoundRef.current = null;
+          setRewound(null);
+        }
+        recorder.beforeStep();
+      },
+      after: () => {
+        const time = simulatedTime(world);
+        if (recorder.afterStep(time - STEP)) describe(scene);
+        const values = [];
+        for (const [body, info] of scene.particles) {
+          const state = stateOf(body, info.label);
+          const name = info.label;
+          values.push(
+            { name: `${name} x`, unit: 'm', value: state.x },
+            { name: `${name} y`, unit: 'm', value: state.y },
+            { name: `${name} vx`, unit: 'm/s', value: state.vx },
+            { name: `${name} vy`, unit: 'm/s', value: state.vy },
+            { name: `${name} px`, unit: 'kg m/s', value: state.mass * state.vx },
+            { name: `${name} py`, unit: 'kg m/s', value: state.mass * state.vy },
+            { name: `${name} KE`, unit: 'J', value: kineticEnergyOf(state) },
+          );
+        }
+        log.add(time, values);
+        history.record(world, time, momentData(scene));
+      },
+    });
+    return () => {
+      offCollision();
+      offSteps();
+    };
+  }, [scene, arrows, recorder, history, log, announce, t, unit, describe, momentData]);
+
+  // Paused, or another particle chosen or set up: the description says how things are now.
+  useEffect(() => {
+    if (sim.paused) describe();
+  }, [sim.paused, describe, chosen, version]);
+
+  /** Goes to the saved moment `index` (paused there): step back and scrub. */
+  const seek = (index: number): void => {
+    const current = sceneRef.current;
+    if (current === null || history.length === 0) return;
+    const clamped = Math.min(history.length - 1, Math.max(0, index));
+    sim.setPaused(true);
+    const { world, entry } = history.restore(clamped);
+    const next = adoptWorld(current, world, entry.data.labels, entry.data.added);
+    // The switches as they are now, not as they were.
+    const now = settingsRef.current;
+    setElasticity(next, now.elasticity);
+    setWallsOn(next, now.wallsOn);
+    next.tiltOn = now.tiltOn;
+    setTilt(next, current.tilt);
+    const byLabel = new Map([...next.particles].map(([body, info]) => [info.label, body]));
+    const pair = entry.data.chosen.flatMap((label) => byLabel.get(label) ?? []);
+    arrows.clear();
+    choosePair(pair, next);
+    recorder.record = entry.data.record;
+    setSelected(selected === null ? null : (byLabel.get(labelOf(selected)) ?? null));
+    rewoundRef.current = clamped;
+    setRewound(clamped);
+    sceneRef.current = next;
+    setScene(next);
+    bumpVersion();
+    describe(next);
+  };
 
   const changeTilt = useCallback((next: Tilt) => {
     const current = sceneRef.current;
@@ -176,12 +521,141 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     return () => window.removeEventListener('keydown', onKey);
   }, [active, changeTilt]);
 
-  const select = (body: Body | null): void => {
+  // The canvas is described by the live description (the React binding passes no aria props
+  // but the label).
+  useEffect(() => {
+    canvasRef.current?.setAttribute('aria-describedby', 'reactions-description');
+  }, [scene]);
+
+  // Particles are outlined: the selected one white, the other chosen one blue.
+  useEffect(() => {
     const canvas = canvasRef.current;
-    if (canvas !== null && selected !== null) canvas.setStyle(selected, null);
-    if (canvas !== null && body !== null) canvas.setStyle(body, SELECTED_STYLE);
+    if (canvas === null || scene === null) return;
+    for (const body of scene.particles.keys()) {
+      canvas.setStyle(
+        body,
+        body === selected ? SELECTED_STYLE : chosen.includes(body) ? CHOSEN_STYLE : null,
+      );
+    }
+    canvas.invalidate();
+  }, [scene, selected, chosen]);
+
+  /** Chooses a particle (a tap, or the keyboard): selected, and one of the lab's pair. */
+  const choose = (body: Body): void => {
+    if (scene === null) return;
     setSelected(body);
+    const pair = chosen.includes(body) ? chosen : [...chosen, body].slice(-2);
+    if (pair !== chosen) choosePair(pair, scene);
+    bumpVersion();
+    const info = scene.particles.get(body);
+    if (info !== undefined) {
+      announce(
+        t('reactions.chosen', {
+          name: info.label,
+          mass: unit(body.mass, 'kg', 3),
+          speed: unit(Math.hypot(body.linearVelocity.x, body.linearVelocity.y), 'm/s', 2),
+        }),
+        true,
+      );
+    }
   };
+
+  /** The keyboard's way to choose: the next particle by name after the selected one. */
+  const chooseNext = (): void => {
+    if (scene === null || scene.particles.size === 0) return;
+    const bodies = [...scene.particles.keys()];
+    const index = selected === null ? -1 : bodies.indexOf(selected);
+    choose(bodies[(index + 1) % bodies.length]!);
+  };
+
+  /** The lab's setup changes with what was typed: the chosen particle's mass or velocity. */
+  const changeLab = (label: string, field: LabField, value: number): void => {
+    if (scene === null) return;
+    const body = [...scene.particles].find(([, info]) => info.label === label)?.[0];
+    if (body === undefined) return;
+    if (field === 'mass') setParticleMass(body, value);
+    else {
+      const v = body.linearVelocity;
+      body.linearVelocity = field === 'vx' ? { x: value, y: v.y } : { x: v.x, y: value };
+    }
+    afterLabEdit();
+  };
+
+  /** After a typed or dragged change: a new record, the setup remembered for Restart. */
+  const afterLabEdit = (): void => {
+    const current = sceneRef.current;
+    if (current === null) return;
+    const pair = chosenRef.current;
+    choosePair(pair, current);
+    if (pair.length === 2) {
+      const lab = pair.map((body) => ({
+        mass: body.mass,
+        vx: body.linearVelocity.x,
+        vy: body.linearVelocity.y,
+      }));
+      setSettings((old) => ({ ...old, lab }));
+    }
+    // The saved moments led to another state: this is the new start.
+    history.clear();
+    history.record(current.world, simulatedTime(current.world), momentData(current));
+    rewoundRef.current = null;
+    setRewound(null);
+    canvasRef.current?.invalidate();
+    describe(current);
+    rerender();
+  };
+
+  // Dragging a chosen particle's velocity arrow sets its velocity (presses near a handle only;
+  // every other press goes on to the canvas: taps add and choose particles).
+  useEffect(() => {
+    const host = hostRef.current;
+    if (host === null || scene === null) return;
+    let dragging: { body: Body; pointerId: number } | null = null;
+    const toWorld = (event: PointerEvent) =>
+      canvasRef.current?.clientToWorld(event.clientX, event.clientY);
+    const onDown = (event: PointerEvent): void => {
+      const point = toWorld(event);
+      if (point === undefined) return;
+      for (const body of chosenRef.current) {
+        const handle = handlePoint(body);
+        if (Math.hypot(handle.x - point.x, handle.y - point.y) > HANDLE_REACH) continue;
+        dragging = { body, pointerId: event.pointerId };
+        host.setPointerCapture(event.pointerId);
+        event.preventDefault();
+        event.stopPropagation();
+        sim.setPaused(true);
+        setSelected(body);
+        return;
+      }
+    };
+    const onMove = (event: PointerEvent): void => {
+      if (dragging === null || event.pointerId !== dragging.pointerId) return;
+      const point = toWorld(event);
+      if (point === undefined) return;
+      event.stopPropagation();
+      dragging.body.linearVelocity = velocityFromHandle(dragging.body, point);
+      canvasRef.current?.invalidate();
+      rerender();
+    };
+    const onUp = (event: PointerEvent): void => {
+      if (dragging === null || event.pointerId !== dragging.pointerId) return;
+      event.stopPropagation();
+      dragging = null;
+      bumpVersion();
+      afterLabEdit();
+    };
+    host.addEventListener('pointerdown', onDown, true);
+    host.addEventListener('pointermove', onMove, true);
+    host.addEventListener('pointerup', onUp, true);
+    host.addEventListener('pointercancel', onUp, true);
+    return () => {
+      host.removeEventListener('pointerdown', onDown, true);
+      host.removeEventListener('pointermove', onMove, true);
+      host.removeEventListener('pointerup', onUp, true);
+      host.removeEventListener('pointercancel', onUp, true);
+    };
+    // afterLabEdit reads refs only: listening again on each render is not needed.
+  }, [scene, sim.setPaused]);
 
   const drawOverlay = useCallback<OverlayDrawer>(
     (context, canvas) => {
@@ -189,10 +663,13 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       if (current === null) return;
       const visible = arrows.visible(simulatedTime(current.world));
       const scale = canvas.viewport.scale;
+      const { measure, contactTime } = settingsRef.current;
       clipToWalls(context, current.width, current.height);
-      // Momentum arrows: m v of each particle.
+      const lab = chosenRef.current;
+      // Momentum arrows m v of the other particles; the chosen ones' velocity arrows, to drag.
       for (const body of current.particles.keys()) {
         const v = body.linearVelocity;
+        if (lab.includes(body)) continue;
         if (Math.hypot(v.x, v.y) < 0.02) continue;
         drawArrow(
           context,
@@ -206,8 +683,11 @@ export function ReactionsScreen({ active }: { active: boolean }) {
         );
       }
       for (const { arrow, opacity } of visible) {
-        const length = reactionArrowLength(arrow.force);
+        const value =
+          measure === 'impulse' ? arrow.impulse : averageForce(arrow.impulse, contactTime);
+        const length = reactionArrowLength(value, measure);
         const from = { x: arrow.x, y: arrow.y };
+        const style = { width: 3, opacity: REDUCED_MOTION ? 1 : opacity };
         drawArrow(
           context,
           scale,
@@ -215,8 +695,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           { x: arrow.nx * length, y: arrow.ny * length },
           {
             kind: 'force',
-            width: 3,
-            opacity: REDUCED_MOTION ? 1 : opacity,
+            ...style,
           },
         );
         drawArrow(
@@ -226,12 +705,52 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           { x: -arrow.nx * length, y: -arrow.ny * length },
           {
             kind: 'impulse',
-            width: 3,
-            opacity: REDUCED_MOTION ? 1 : opacity,
+            ...style,
           },
         );
       }
       context.restore();
+      // Outside the clip: a handle may sit past a wall, and must stay reachable.
+      for (const body of lab) {
+        const tip = handlePoint(body);
+        const v = body.linearVelocity;
+        const speed = Math.hypot(v.x, v.y);
+        if (speed > 0.02) {
+          const start = {
+            x: tip.x - (v.x / speed) * speed * VELOCITY_ARROW_SCALE,
+            y: tip.y - (v.y / speed) * speed * VELOCITY_ARROW_SCALE,
+          };
+          drawArrow(
+            context,
+            scale,
+            start,
+            { x: tip.x - start.x, y: tip.y - start.y },
+            {
+              color: HANDLE_COLOR,
+              width: 2,
+            },
+          );
+        }
+        context.beginPath();
+        context.arc(tip.x, tip.y, 9 / scale, 0, Math.PI * 2);
+        context.fillStyle = 'rgba(255, 255, 255, 0.25)';
+        context.fill();
+        context.lineWidth = 1.5 / scale;
+        context.strokeStyle = HANDLE_COLOR;
+        context.stroke();
+      }
+      // Names on the particles (a handful: more would cover the tray).
+      if (current.particles.size <= 12) {
+        context.save();
+        context.fillStyle = '#000000';
+        context.textAlign = 'center';
+        context.textBaseline = 'middle';
+        context.font = `700 ${13 / scale}px Roboto, system-ui, sans-serif`;
+        for (const [body, info] of current.particles) {
+          context.fillText(info.label, body.position.x, body.position.y);
+        }
+        context.restore();
+      }
       const host = hostRef.current;
       const count = String(visible.length * 2);
       if (host !== null && host.dataset['arrows'] !== count) host.dataset['arrows'] = count;
@@ -260,7 +779,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   const onTap = (point: { x: number; y: number }, body: Body | null): void => {
     if (scene === null) return;
     if (body !== null && scene.particles.has(body)) {
-      select(body);
+      choose(body);
       return;
     }
     add(point);
@@ -272,11 +791,22 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     add(freeSpot(scene));
   };
 
+  const changeSettings = (change: Partial<Settings>): void => {
+    const next = { ...settingsRef.current, ...change };
+    settingsRef.current = next;
+    setSettings(next);
+    const current = sceneRef.current;
+    if (current === null) return;
+    if (change.elasticity !== undefined) setElasticity(current, next.elasticity);
+    if (change.wallsOn !== undefined) setWallsOn(current, next.wallsOn);
+    if (change.tiltOn !== undefined) setTiltOn(current, next.tiltOn);
+    canvasRef.current?.invalidate();
+  };
+
   const info = selected === null ? undefined : scene?.particles.get(selected);
-  const push = pushFor(tilt);
+  const push = settings.tiltOn ? trayAcceleration(tilt) : { x: 0, y: 0 };
   const pushSize = Math.hypot(push.x, push.y);
-  const momentum = scene === null ? { x: 0, y: 0 } : totalMomentum(scene);
-  const momentumSize = Math.hypot(momentum.x, momentum.y);
+  const record = recorder.record;
   const viewBox =
     scene === null
       ? null
@@ -286,6 +816,19 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           width: scene.width + 2 * MARGIN,
           height: scene.height + 2 * MARGIN,
         };
+  const labRows: LabRow[] =
+    scene === null
+      ? []
+      : chosen.map((body) => ({
+          label: labelOf(body),
+          mass: body.mass,
+          vx: body.linearVelocity.x,
+          vy: body.linearVelocity.y,
+          selected: body === selected,
+        }));
+  const historyIndex = rewound ?? history.length - 1;
+  const recordTotal = (moment: 'before' | 'after'): string =>
+    record === null ? '–' : number(totalMomentumOf(record[moment]).x, 2, 2);
 
   return (
     <ScreenLayout
@@ -315,158 +858,357 @@ export function ReactionsScreen({ active }: { active: boolean }) {
         <>
           {region}
           <Box
-            sx={{ minHeight: 44, px: 0.5, display: 'flex', alignItems: 'center' }}
-            data-readout="particle-info"
+            id="reactions-description"
+            aria-live="polite"
+            data-description="reactions"
+            sx={{
+              position: 'absolute',
+              width: '1px',
+              height: '1px',
+              overflow: 'hidden',
+              clip: 'rect(0 0 0 0)',
+              whiteSpace: 'nowrap',
+            }}
           >
-            {selected !== null && info !== undefined ? (
-              <Box
-                sx={{ display: 'grid', gridTemplateColumns: 'repeat(4, auto)', gap: 1.5, flex: 1 }}
-              >
-                <Readout
-                  name="particle-mass"
-                  label={t('reactions.mass')}
-                  value={unit(selected.mass, 'kg', 3)}
-                />
-                <Readout
-                  name="particle-speed"
-                  label={t('reactions.speed')}
-                  value={unit(
-                    Math.hypot(selected.linearVelocity.x, selected.linearVelocity.y),
-                    'm/s',
-                    2,
-                    2,
+            {description}
+          </Box>
+          <Tabs
+            value={tab}
+            onChange={(_event, value: PanelTab) => setTab(value)}
+            variant="fullWidth"
+            aria-label={t('reactions.panel')}
+            sx={{
+              minHeight: 48,
+              // Five tabs side by side on a 320 px phone, in German too.
+              '& .MuiTab-root': {
+                minHeight: 48,
+                minWidth: 0,
+                px: 0.25,
+                fontSize: '0.8125rem',
+                letterSpacing: 0,
+              },
+            }}
+          >
+            {PANEL_TABS.map((id) => (
+              <Tab
+                key={id}
+                value={id}
+                label={t(TAB_LABELS[id])}
+                id={`reactions-tab-${id}`}
+                aria-controls={`reactions-tabpanel-${id}`}
+                data-tab={id}
+              />
+            ))}
+          </Tabs>
+          <Box
+            role="tabpanel"
+            id={`reactions-tabpanel-${tab}`}
+            aria-labelledby={`reactions-tab-${tab}`}
+            sx={{
+              display: 'flex',
+              flexDirection: 'column',
+              gap: 0.5,
+              minHeight: 0,
+              // A phone held upright: the panel keeps its height whatever the tab, so the tray
+              // does not jump; what does not fit scrolls inside it. Short phones give it less:
+              // the bars, the law, the tabs and the tray's least height take about 480 px.
+              height: 'clamp(88px, calc(100dvh - 480px), 196px)',
+              overflowY: 'auto',
+              [`@media ${SIDE_BY_SIDE}`]: { height: 'auto', overflowY: 'visible' },
+            }}
+          >
+            {tab === 'tray' && (
+              <>
+                <Box
+                  sx={{ minHeight: 40, px: 0.5, display: 'flex', alignItems: 'center' }}
+                  data-readout="particle-info"
+                >
+                  {selected !== null && info !== undefined ? (
+                    <Box
+                      sx={{
+                        display: 'grid',
+                        gridTemplateColumns: 'repeat(4, auto)',
+                        gap: 1,
+                        flex: 1,
+                      }}
+                    >
+                      <Readout
+                        name="particle-mass"
+                        label={`${t('reactions.mass')} ${info.label}`}
+                        value={unit(selected.mass, 'kg', 3)}
+                      />
+                      <Readout
+                        name="particle-speed"
+                        label={t('reactions.speed')}
+                        value={unit(
+                          Math.hypot(selected.linearVelocity.x, selected.linearVelocity.y),
+                          'm/s',
+                          2,
+                          2,
+                        )}
+                      />
+                      <Readout
+                        name="particle-impulse"
+                        label={t('reactions.impulse')}
+                        value={
+                          info.lastImpulse === null
+                            ? t('reactions.none')
+                            : unit(info.lastImpulse, 'N·s', 3)
+                        }
+                      />
+                      <Readout
+                        name="particle-position"
+                        label={t('reactions.position')}
+                        value={`${number(selected.position.x, 2, 2)}, ${number(selected.position.y, 2, 2)} m`}
+                      />
+                    </Box>
+                  ) : (
+                    <Typography variant="body2" sx={{ color: 'text.secondary' }}>
+                      {t('reactions.tapToInspect')}
+                    </Typography>
                   )}
+                </Box>
+                <Box sx={{ display: 'flex', alignItems: 'center', gap: 1 }}>
+                  <Box sx={{ display: 'flex', flexDirection: 'column', gap: 0.5 }}>
+                    <Tooltip title={t('reactions.add')}>
+                      <IconButton
+                        aria-label={t('reactions.add')}
+                        onClick={addAnywhere}
+                        data-action="add"
+                        color="primary"
+                        sx={{ width: 48, height: 48 }}
+                      >
+                        <AddIcon />
+                      </IconButton>
+                    </Tooltip>
+                    <Tooltip title={t('reactions.clear')}>
+                      <IconButton
+                        aria-label={t('reactions.clear')}
+                        onClick={() => {
+                          if (scene === null) return;
+                          setSelected(null);
+                          clearParticles(scene);
+                          choosePair([], scene);
+                          arrows.clear();
+                          rerender();
+                        }}
+                        data-action="clear"
+                        sx={{ width: 48, height: 48 }}
+                      >
+                        <DeleteIcon />
+                      </IconButton>
+                    </Tooltip>
+                  </Box>
+                  <TiltPad
+                    onNudge={(dx, dy) =>
+                      changeTilt({ x: clampTilt(tilt.x + dx), y: clampTilt(tilt.y + dy) })
+                    }
+                    onLevel={() => changeTilt({ x: 0, y: 0 })}
+                  />
+                  <Box
+                    sx={{ display: 'flex', flexDirection: 'column', gap: 1, flex: 1, minWidth: 0 }}
+                  >
+                    <Readout
+                      name="push"
+                      label={t('reactions.trayAcceleration')}
+                      value={
+                        pushSize < 1e-6
+                          ? unit(0, 'm/s²')
+                          : `${unit(pushSize, 'm/s²', 2)}, ${number(screenAngle(push), 0)}°`
+                      }
+                    />
+                    <Readout
+                      name="count"
+                      label={t('reactions.count')}
+                      value={
+                        scene !== null && isFull(scene)
+                          ? t('reactions.countFull', { count: scene.particles.size })
+                          : String(scene?.particles.size ?? 0)
+                      }
+                    />
+                    <Readout
+                      name="momentum"
+                      label={t('reactions.momentumCollision')}
+                      value={
+                        record === null ? '–' : `${recordTotal('before')} → ${recordTotal('after')}`
+                      }
+                    />
+                  </Box>
+                </Box>
+              </>
+            )}
+            {tab === 'setup' && (
+              <>
+                <Box sx={{ display: 'flex', gap: 1 }}>
+                  <Button
+                    variant="contained"
+                    sx={{ minHeight: 48, flex: 1 }}
+                    data-action="lab-setup"
+                    onClick={() => {
+                      const next = {
+                        ...settingsRef.current,
+                        lab: settingsRef.current.lab ?? DEFAULT_LAB,
+                      };
+                      setSettings(next);
+                      build(next);
+                    }}
+                  >
+                    {t('lab.twoParticles')}
+                  </Button>
+                  <Button
+                    variant="outlined"
+                    sx={{ minHeight: 48, flex: 1 }}
+                    data-action="choose"
+                    onClick={chooseNext}
+                    disabled={scene === null || scene.particles.size === 0}
+                  >
+                    {t('lab.chooseNext')}
+                  </Button>
+                </Box>
+                <LabSetup rows={labRows} version={version} onChange={changeLab} />
+              </>
+            )}
+            {tab === 'results' && <LabResults record={record} />}
+            {tab === 'options' && (
+              <>
+                <Box sx={{ display: 'flex', flexWrap: 'wrap', columnGap: 1, px: 0.5 }}>
+                  <FormControlLabel
+                    control={
+                      <Switch
+                        checked={settings.wallsOn}
+                        onChange={(event) => changeSettings({ wallsOn: event.target.checked })}
+                        slotProps={{ input: { 'data-control': 'walls' } as object }}
+                      />
+                    }
+                    label={t('reactions.walls')}
+                    sx={{ minHeight: 48, mr: 0 }}
+                  />
+                  <FormControlLabel
+                    control={
+                      <Switch
+                        checked={settings.tiltOn}
+                        onChange={(event) => changeSettings({ tiltOn: event.target.checked })}
+                        slotProps={{ input: { 'data-control': 'tilt' } as object }}
+                      />
+                    }
+                    label={t('reactions.tiltSwitch')}
+                    sx={{ minHeight: 48, mr: 0 }}
+                  />
+                  {needsPermission && !sensorOn && (
+                    <Button
+                      variant="outlined"
+                      sx={{ minHeight: 48 }}
+                      startIcon={<PhoneTiltIcon />}
+                      onClick={() => void requestTiltPermission()}
+                    >
+                      {t('reactions.enableTilt')}
+                    </Button>
+                  )}
+                </Box>
+                <Box sx={{ px: 0.5 }}>
+                  <ElasticitySlider
+                    id="reactions-elasticity-label"
+                    label={t('reactions.elasticity')}
+                    value={settings.elasticity}
+                    onChange={(next) => changeSettings({ elasticity: next })}
+                  />
+                </Box>
+                <Box sx={{ display: 'flex', gap: 1, alignItems: 'center', flexWrap: 'wrap' }}>
+                  <ToggleButtonGroup
+                    exclusive
+                    size="small"
+                    value={settings.measure}
+                    aria-label={t('reactions.arrowsShow')}
+                    onChange={(_event, value: ArrowMeasure | null) =>
+                      value !== null && changeSettings({ measure: value })
+                    }
+                  >
+                    <ToggleButton
+                      value="impulse"
+                      sx={{ minHeight: 48 }}
+                      data-control="measure-impulse"
+                    >
+                      {t('reactions.showImpulse')}
+                    </ToggleButton>
+                    <ToggleButton value="force" sx={{ minHeight: 48 }} data-control="measure-force">
+                      {t('reactions.showForce')}
+                    </ToggleButton>
+                  </ToggleButtonGroup>
+                  {settings.measure === 'force' && (
+                    <TextField
+                      select
+                      size="small"
+                      label={t('reactions.contactTime')}
+                      value={settings.contactTime}
+                      onChange={(event) =>
+                        changeSettings({ contactTime: Number(event.target.value) })
+                      }
+                      sx={{ minWidth: 110 }}
+                      slotProps={{
+                        select: {
+                          SelectDisplayProps: { 'data-control': 'contact-time' } as object,
+                        },
+                      }}
+                    >
+                      {CONTACT_TIMES.map((time) => (
+                        <MenuItem key={time} value={time} sx={{ minHeight: 48 }}>
+                          {unit(time, 's', 3)}
+                        </MenuItem>
+                      ))}
+                    </TextField>
+                  )}
+                </Box>
+                <Typography
+                  variant="caption"
+                  component="p"
+                  sx={{ px: 0.5, m: 0 }}
+                  data-legend="arrows"
+                >
+                  <Box component="span" sx={{ color: ARROW_COLORS.force, fontWeight: 700 }}>
+                    →
+                  </Box>
+                  <Box component="span" sx={{ color: ARROW_COLORS.impulse, fontWeight: 700 }}>
+                    ←
+                  </Box>{' '}
+                  {settings.measure === 'impulse'
+                    ? t('reactions.legendImpulse')
+                    : t('reactions.legendForce', { time: unit(settings.contactTime, 's', 3) })}{' '}
+                  <Box component="span" sx={{ color: ARROW_COLORS.velocity, fontWeight: 700 }}>
+                    →
+                  </Box>{' '}
+                  {t('reactions.legendMomentum')}{' '}
+                  <Box component="span" sx={{ color: HANDLE_COLOR, fontWeight: 700 }}>
+                    →●
+                  </Box>{' '}
+                  {t('reactions.legendVelocity')}
+                </Typography>
+              </>
+            )}
+            {tab === 'data' && (
+              <>
+                <RewindBar
+                  length={history.length}
+                  index={historyIndex}
+                  timeAt={(index) => history.entry(index)?.time ?? 0}
+                  onSeek={seek}
                 />
-                <Readout
-                  name="particle-impulse"
-                  label={t('reactions.impulse')}
-                  value={
-                    info.lastImpulse === null
-                      ? t('reactions.none')
-                      : unit(info.lastImpulse, 'N·s', 3)
-                  }
+                <CsvExport
+                  csv={() => log.toCsv()}
+                  fileName="newton-reactions.csv"
+                  onDone={(outcome) => {
+                    const text = t(CSV_MESSAGES[outcome], { rows: log.length });
+                    setExportStatus(text);
+                    announce(text, true);
+                  }}
                 />
-                <Readout
-                  name="particle-position"
-                  label={t('reactions.position')}
-                  value={`${number(selected.position.x, 2, 2)}, ${number(selected.position.y, 2, 2)} m`}
-                />
-              </Box>
-            ) : (
-              <Typography variant="body2" sx={{ color: 'text.secondary' }}>
-                {t('reactions.tapToInspect')}
-              </Typography>
+                {exportStatus !== '' && (
+                  <Typography variant="caption" data-readout="csv-status">
+                    {exportStatus}
+                  </Typography>
+                )}
+              </>
             )}
           </Box>
-          <Box sx={{ display: 'flex', flexWrap: 'wrap', alignItems: 'center', gap: 1.5 }}>
-            <Tooltip title={t('reactions.add')}>
-              <IconButton
-                aria-label={t('reactions.add')}
-                onClick={addAnywhere}
-                data-action="add"
-                color="primary"
-                sx={{ width: 48, height: 48 }}
-              >
-                <AddIcon />
-              </IconButton>
-            </Tooltip>
-            <TiltPad
-              onNudge={(dx, dy) =>
-                changeTilt({ x: clampTilt(tilt.x + dx), y: clampTilt(tilt.y + dy) })
-              }
-              onLevel={() => changeTilt({ x: 0, y: 0 })}
-            />
-            <Box
-              sx={{
-                display: 'flex',
-                flexDirection: 'column',
-                gap: 1,
-                flex: '1 1 150px',
-                minWidth: 0,
-              }}
-            >
-              <Readout
-                name="push"
-                label={t('reactions.pushForce')}
-                value={
-                  pushSize < 1e-6
-                    ? unit(0, 'N')
-                    : `${unit(pushSize, 'N', 2)}, ${number(screenAngle(push), 0)}°`
-                }
-              />
-              <Readout
-                name="count"
-                label={t('reactions.count')}
-                value={
-                  scene !== null && isFull(scene)
-                    ? t('reactions.countFull', { count: scene.particles.size })
-                    : String(scene?.particles.size ?? 0)
-                }
-              />
-              <Readout
-                name="momentum"
-                label={t('reactions.momentum')}
-                value={
-                  momentumSize < 0.005
-                    ? unit(0, 'kg·m/s', 2)
-                    : `${unit(momentumSize, 'kg·m/s', 2)}, ${number(screenAngle(momentum), 0)}°`
-                }
-              />
-            </Box>
-            <Box
-              sx={{ display: 'flex', flexDirection: 'column', alignItems: 'flex-end', gap: 0.5 }}
-            >
-              {needsPermission && !sensorOn && (
-                <Button
-                  variant="outlined"
-                  sx={{ minHeight: 48 }}
-                  startIcon={<PhoneTiltIcon />}
-                  onClick={() => void requestTiltPermission()}
-                >
-                  {t('reactions.enableTilt')}
-                </Button>
-              )}
-              <Tooltip title={t('reactions.clear')}>
-                <IconButton
-                  aria-label={t('reactions.clear')}
-                  onClick={() => {
-                    if (scene === null) return;
-                    select(null);
-                    clearParticles(scene);
-                    arrows.clear();
-                  }}
-                  data-action="clear"
-                  sx={{ width: 48, height: 48 }}
-                >
-                  <DeleteIcon />
-                </IconButton>
-              </Tooltip>
-            </Box>
-          </Box>
-          <Box sx={{ display: 'flex', gap: 1.5, alignItems: 'center', px: 0.5 }}>
-            <ElasticitySlider
-              id="reactions-elasticity-label"
-              label={t('reactions.elasticity')}
-              value={elasticity}
-              onChange={(next) => {
-                setElasticityState(next);
-                if (scene !== null) setElasticity(scene, next);
-              }}
-            />
-          </Box>
-          <Typography variant="caption" component="p" sx={{ px: 0.5, m: 0 }} data-legend="arrows">
-            <Box component="span" sx={{ color: ARROW_COLORS.force, fontWeight: 700 }}>
-              →
-            </Box>
-            <Box component="span" sx={{ color: ARROW_COLORS.impulse, fontWeight: 700 }}>
-              ←
-            </Box>{' '}
-            {t('reactions.legend')}{' '}
-            <Box component="span" sx={{ color: ARROW_COLORS.velocity, fontWeight: 700 }}>
-              →
-            </Box>{' '}
-            {t('reactions.legendMomentum')}
-          </Typography>
         </>
       }
       controls={{
@@ -477,7 +1219,15 @@ export function ReactionsScreen({ active }: { active: boolean }) {
         onToggleSlow: sim.toggleSlow,
         onStep: () =>
           scene !== null && sim.step([{ world: scene.world, canvas: canvasRef.current }]),
-        onReset: build,
+        onReset: () => build(),
+        onResetAll: () => {
+          setSettings(DEFAULT_SETTINGS);
+          settingsRef.current = DEFAULT_SETTINGS;
+          setTab('tray');
+          setExportStatus('');
+          sim.setPaused(false);
+          build(DEFAULT_SETTINGS);
+        },
       }}
     />
   );

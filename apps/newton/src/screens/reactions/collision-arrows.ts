@@ -8,10 +8,29 @@ export interface ReactionArrow {
   /** Unit normal from A to B. */
   nx: number;
   ny: number;
-  /** Average contact force over the step (N). */
-  force: number;
-  /** Simulated time (s) it was recorded at. */
+  /**
+   * Impulse (N s) of the collision: the normal impulses of the steps the pair kept pushing on
+   * each other, summed (an inelastic pair pushes over several steps).
+   */
+  impulse: number;
+  /** Simulated time (s) it was last recorded at. */
   time: number;
+}
+
+/** What the collision arrows and messages show. */
+export type ArrowMeasure = 'impulse' | 'force';
+
+/**
+ * Contact times (s) a learner can assume for the average force F = J / Δt. The simulation
+ * resolves a collision within one step, so no duration comes out of it: the time is stated, not
+ * measured (a tennis ball touches a racket for about 5 ms, a billiard ball another for 0.2 ms).
+ */
+export const CONTACT_TIMES = [0.001, 0.01, 0.1] as const;
+export const DEFAULT_CONTACT_TIME = 0.01;
+
+/** The average force (N) of an impulse (N s) spread over `contactTime` (s): F = J / Δt. */
+export function averageForce(impulse: number, contactTime: number): number {
+  return impulse / contactTime;
 }
 
 /** Seconds of simulated time an arrow pair stays fully visible, then fades over the same again. */
@@ -49,12 +68,15 @@ export class CollisionArrows {
       y += event.points[i]!.y;
     }
     const key = `${this.idOf(event.bodyA)}:${this.idOf(event.bodyB)}`;
+    const old = this.pairs.get(key);
+    // Pushing on in the very next step: the same collision, its impulse adds up.
+    const going = old !== undefined && time - old.time <= 1.5 * dt;
     this.pairs.set(key, {
       x: x / event.pointCount,
       y: y / event.pointCount,
       nx: event.normalX,
       ny: event.normalY,
-      force: event.normalImpulse / dt,
+      impulse: (going ? old.impulse : 0) + event.normalImpulse,
       time,
     });
   }
@@ -79,7 +101,11 @@ export class CollisionArrows {
   }
 }
 
-/** Arrow length (m) for a contact force (N): grows with the force, capped to stay readable. */
-export function reactionArrowLength(force: number): number {
-  return Math.min(1.2, 0.15 + 0.04 * force);
+/**
+ * Arrow length (m) for an impulse (N s), or an average force (N) in `force` mode: grows with
+ * the value, capped to stay readable.
+ */
+export function reactionArrowLength(value: number, measure: ArrowMeasure = 'impulse'): number {
+  const perUnit = measure === 'impulse' ? 0.8 : 0.01;
+  return Math.min(1.2, 0.15 + perUnit * value);
 }

@@ -1,8 +1,11 @@
-import { type Body, type Force, World, particle, wall } from '@physical/engine';
+import { type Body, World, particle, wall } from '@physical/engine';
 import type { Tilt } from '../../sensors/device-tilt.ts';
 
-/** Force (N) on every particle when the device is tilted fully (|tilt| = 1). */
-export const PUSH_FORCE = 1;
+/**
+ * Gravity (m/s^2). Tilting the tray by θ gives every particle the force m g sin θ along it: the
+ * same acceleration g sin θ for every mass, as balls on a tilted tray have.
+ */
+export const GRAVITY = 9.81;
 export const MIN_RADIUS = 0.15;
 export const MAX_RADIUS = 0.45;
 /** kg/m^2: one density for all, so a particle's size shows its mass. */
@@ -12,7 +15,8 @@ export const DEFAULT_ELASTICITY = 0.8;
 
 /** What the app keeps about a particle besides the body. */
 export interface ParticleInfo {
-  readonly push: Force;
+  /** Its name in tables and the CSV: A, B, C, ... in the order they were added. */
+  readonly label: string;
   /** Normal impulse (N s) of the particle's last collision, or null before the first. */
   lastImpulse: number | null;
 }
@@ -24,8 +28,14 @@ export interface ReactionsScene {
   readonly height: number;
   readonly particles: Map<Body, ParticleInfo>;
   tilt: Tilt;
+  /** False: the tilt pushes nothing (the tray lies flat whatever the phone does). */
+  tiltOn: boolean;
+  /** False: the walls and shelves let the particles through (no impulse from them). */
+  wallsOn: boolean;
   /** Restitution of particle collisions, 0 (they stick) to 1 (perfectly elastic). */
   elasticity: number;
+  /** Particles added so far (names the next one). */
+  added: number;
 }
 
 /** Builds the walls of a `width` x `height` metre box (y-down), with two slanted walls inside. */
@@ -61,17 +71,35 @@ export function createReactionsScene(
     }),
   );
   for (const body of world.bodies) for (const shape of body.shapes) shape.restitution = elasticity;
-  return { world, width, height, particles: new Map(), tilt: { x: 0, y: 0 }, elasticity };
+  return {
+    world,
+    width,
+    height,
+    particles: new Map(),
+    tilt: { x: 0, y: 0 },
+    tiltOn: true,
+    wallsOn: true,
+    elasticity,
+    added: 0,
+  };
 }
 
 /**
- * The push (N) on each particle for a tilt: the same force for every mass, at most
- * {@link PUSH_FORCE} in any direction (a diagonal full tilt is 1 N, not 1.41 N).
+ * The acceleration (m/s^2) along the tray for a tilt (each component the sine of the lean):
+ * g sin θ, the same for every mass, at most g in any direction (a diagonal full tilt is g, not
+ * 1.41 g).
  */
-export function pushFor(tilt: Tilt): { x: number; y: number } {
+export function trayAcceleration(tilt: Tilt): { x: number; y: number } {
   const size = Math.hypot(tilt.x, tilt.y);
-  const scale = size > 1 ? PUSH_FORCE / size : PUSH_FORCE;
+  const scale = size > 1 ? GRAVITY / size : GRAVITY;
   return { x: scale * tilt.x, y: scale * tilt.y };
+}
+
+/** The name of the `index`th particle (from 0): A to Z, then A2, B2, ... */
+export function particleLabel(index: number): string {
+  const letter = String.fromCharCode(65 + (index % 26));
+  const round = Math.floor(index / 26);
+  return round === 0 ? letter : `${letter}${round + 1}`;
 }
 
 /** Sets the bounciness (0..1) of every particle and wall. */
@@ -114,8 +142,7 @@ export function spawnParticle(
       friction: 0.3,
     }),
   );
-  const push = body.applyForce(pushFor(scene.tilt), { duration: 'constant' });
-  scene.particles.set(body, { push, lastImpulse: null });
+  scene.particles.set(body, { label: particleLabel(scene.added++), lastImpulse: null });
   return body;
 }
 
@@ -165,15 +192,121 @@ export function freeSpot(
   return spot;
 }
 
-/** Sets the tilt: every particle's push changes to the same new force. */
+/**
+ * Sets the tilt: the world's gravity becomes the tray's g sin θ (zero while the tilt is
+ * switched off), so each particle feels m g sin θ.
+ */
 export function setTilt(scene: ReactionsScene, tilt: Tilt): void {
   scene.tilt = tilt;
-  const push = pushFor(tilt);
-  for (const info of scene.particles.values()) info.push.setVector(push);
+  scene.world.gravity = scene.tiltOn ? trayAcceleration(tilt) : { x: 0, y: 0 };
 }
 
-/** Removes every particle. */
+/** Switches the tilt's push on or off (off: no force along the tray, whatever the tilt). */
+export function setTiltOn(scene: ReactionsScene, on: boolean): void {
+  scene.tiltOn = on;
+  setTilt(scene, scene.tilt);
+}
+
+/**
+ * Switches the walls and shelves on or off. Off, they collide with nothing: particles pass
+ * through and leave the box, and no wall adds or takes momentum.
+ */
+export function setWallsOn(scene: ReactionsScene, on: boolean): void {
+  scene.wallsOn = on;
+  for (const body of scene.world.bodies) {
+    if (body.type !== 'static') continue;
+    for (const shape of body.shapes) shape.filter = { mask: on ? 0xffffffff : 0 };
+  }
+}
+
+/** Removes every particle (the names start again at A). */
 export function clearParticles(scene: ReactionsScene): void {
   for (const body of scene.particles.keys()) scene.world.remove(body);
   scene.particles.clear();
+  scene.added = 0;
+}
+
+/** Lightest and heaviest particle the lab takes (kg). */
+export const MIN_MASS = 0.05;
+export const MAX_MASS = 10;
+/** Fastest velocity component the lab takes (m/s). */
+export const MAX_SPEED = 10;
+
+/**
+ * The radius (m) that shows a mass (kg): grows with the mass (as the square root, like a disc of
+ * one density) within what fits in the box.
+ */
+export function radiusForMass(mass: number): number {
+  return Math.min(0.6, Math.max(MIN_RADIUS, 0.3 * Math.sqrt(mass)));
+}
+
+/**
+ * Gives a particle an exact mass (kg): its disc is resized to show it ({@link radiusForMass}) and
+ * its density set so the mass is exact.
+ */
+export function setParticleMass(body: Body, mass: number): void {
+  const shape = body.shapes[0]!;
+  const radius = radiusForMass(mass);
+  const { restitution, friction } = shape;
+  // The new disc first: a body is never left without a shape.
+  body.addShape({
+    type: 'circle',
+    radius,
+    density: mass / (Math.PI * radius * radius),
+    restitution,
+    friction,
+  });
+  body.removeShape(shape);
+  body.mass = mass;
+}
+
+/** The setup of one particle of the collision lab. */
+export interface LabParticle {
+  /** kg */
+  readonly mass: number;
+  /** Velocity (m/s), x right and y down the screen. */
+  readonly vx: number;
+  readonly vy?: number;
+}
+
+/**
+ * The collision lab: removes every particle and puts the given ones (two, usually) on the box's
+ * middle line, spread evenly from left to right, with their masses and velocities. The
+ * returned bodies are named A, B, ...
+ */
+export function setUpLab(scene: ReactionsScene, setups: readonly LabParticle[]): Body[] {
+  clearParticles(scene);
+  const bodies: Body[] = [];
+  setups.forEach((setup, index) => {
+    const x = (scene.width * (index + 1)) / (setups.length + 1);
+    const body = spawnParticle(scene, { x, y: scene.height / 2 }, () => 0.5);
+    setParticleMass(body, setup.mass);
+    body.linearVelocity = { x: setup.vx, y: setup.vy ?? 0 };
+    bodies.push(body);
+  });
+  return bodies;
+}
+
+/**
+ * The scene around a world restored from a snapshot of this scene's world (`restoreSnapshot`):
+ * the bodies keep their index, so `labels[i]` (the label of the particle that was at index i,
+ * or null for a wall) names them again.
+ */
+export function adoptWorld(
+  scene: ReactionsScene,
+  world: World,
+  labels: readonly (string | null)[],
+  added: number,
+): ReactionsScene {
+  const particles = new Map<Body, ParticleInfo>();
+  world.bodies.forEach((body, index) => {
+    const label = labels[index];
+    if (label !== null && label !== undefined) particles.set(body, { label, lastImpulse: null });
+  });
+  return { ...scene, world, particles, added };
+}
+
+/** The label of each body of the scene's world by index (null for walls). */
+export function labelsByIndex(scene: ReactionsScene): (string | null)[] {
+  return scene.world.bodies.map((body) => scene.particles.get(body)?.label ?? null);
 }

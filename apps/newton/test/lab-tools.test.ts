@@ -1,0 +1,119 @@
+import { describe, expect, it } from 'vitest';
+import { World, particle, takeSnapshot } from '@physical/engine';
+import { MeasurementLog, csvCell, formatNumber } from '../src/lab/measurement-log.ts';
+import { SnapshotHistory } from '../src/lab/snapshot-history.ts';
+import { observeSteps } from '../src/lab/step-hook.ts';
+
+function fallingWorld(): World {
+  const world = new World();
+  const ball = world.add(particle({ position: { x: 0, y: 0 }, radius: 0.2 }));
+  ball.linearVelocity = { x: 1, y: 0 };
+  return world;
+}
+
+describe('observeSteps', () => {
+  it('calls before and after around every step, whoever steps, until removed', () => {
+    const world = fallingWorld();
+    const seen: string[] = [];
+    const stop = observeSteps(world, {
+      before: () => seen.push(`before ${world.steps}`),
+      after: () => seen.push(`after ${world.steps}`),
+    });
+    world.step(1 / 60);
+    world.step(1 / 60);
+    expect(seen).toEqual(['before 0', 'after 1', 'before 1', 'after 2']);
+    stop();
+    world.step(1 / 60);
+    expect(seen).toHaveLength(4);
+    expect(Object.hasOwn(world, 'step')).toBe(false);
+  });
+});
+
+describe('SnapshotHistory', () => {
+  it('restores a world that steps on bit for bit as the original did', () => {
+    const world = fallingWorld();
+    const history = new SnapshotHistory<string>({ capacity: 10 });
+    for (let i = 0; i < 5; i++) {
+      world.step(1 / 60);
+      history.record(world, world.steps / 60, `step ${world.steps}`);
+    }
+    const { world: back, entry } = history.restore(1);
+    expect(entry.data).toBe('step 2');
+    expect(back.steps).toBe(2);
+    for (let i = 0; i < 3; i++) back.step(1 / 60);
+    expect(takeSnapshot(back)).toEqual(takeSnapshot(world));
+  });
+
+  it('keeps the newest `capacity` entries and forgets the future after a rewind', () => {
+    const world = fallingWorld();
+    const history = new SnapshotHistory<number>({ capacity: 3 });
+    for (let i = 0; i < 5; i++) {
+      world.step(1 / 60);
+      history.record(world, i, i);
+    }
+    expect(history.length).toBe(3);
+    expect(history.entry(0)!.data).toBe(2);
+    history.truncateAfter(0);
+    expect(history.length).toBe(1);
+    expect(history.last!.data).toBe(2);
+    expect(() => history.restore(5)).toThrow(/no entry 5/);
+    expect(() => new SnapshotHistory({ capacity: 1 })).toThrow(/capacity/);
+    expect(() => new SnapshotHistory({ capacity: 4, interval: 5 })).toThrow(/interval/);
+  });
+
+  it('with a snapshot every few steps, replays the steps between: the same world at every step', () => {
+    const world = fallingWorld();
+    const sparse = new SnapshotHistory<number>({ capacity: 20, interval: 4 });
+    const every = new SnapshotHistory<number>({ capacity: 20 });
+    for (let i = 0; i < 12; i++) {
+      world.step(1 / 60);
+      sparse.record(world, world.steps / 60, world.steps);
+      every.record(world, world.steps / 60, world.steps);
+    }
+    expect([...Array(12).keys()].filter((i) => sparse.entry(i)!.snapshot !== null)).toEqual([
+      0, 4, 8,
+    ]);
+    for (const index of [0, 3, 5, 11]) {
+      const { world: replayed, entry } = sparse.restore(index);
+      expect(entry.data).toBe(index + 1);
+      expect(takeSnapshot(replayed)).toEqual(takeSnapshot(every.restore(index).world));
+    }
+    // Full: the oldest kept entry still has a snapshot to replay from.
+    const small = new SnapshotHistory<number>({ capacity: 5, interval: 4 });
+    for (let i = 0; i < 9; i++) {
+      world.step(1 / 60);
+      small.record(world, i, i);
+    }
+    expect(small.entry(0)!.snapshot).not.toBeNull();
+    expect(small.length).toBeLessThanOrEqual(5 + 3);
+    expect(small.restore(small.length - 1).entry.data).toBe(8);
+  });
+});
+
+describe('MeasurementLog', () => {
+  it('writes CSV with a header of names and units, empty cells where nothing was measured', () => {
+    const log = new MeasurementLog();
+    log.add(0, [{ name: 'A x', unit: 'm', value: 1 }]);
+    log.add(1 / 60, [
+      { name: 'A x', unit: 'm', value: 1.25 },
+      { name: 'B v', unit: 'm/s', value: -0.5 },
+    ]);
+    expect(log.toCsv()).toBe('t (s),A x (m),B v (m/s)\r\n0,1,\r\n0.0166666667,1.25,-0.5\r\n');
+  });
+
+  it('drops the rows after a rewind and keeps at most maxRows', () => {
+    const log = new MeasurementLog(3);
+    for (let i = 0; i < 5; i++) log.add(i, [{ name: 'x', unit: 'm', value: i * 2 }]);
+    expect(log.length).toBe(3);
+    log.truncateAfter(3);
+    expect(log.toCsv()).toBe('t (s),x (m)\r\n2,4\r\n3,6\r\n');
+  });
+
+  it('formats numbers for any spreadsheet and quotes cells that need it', () => {
+    expect(formatNumber(-0)).toBe('0');
+    expect(formatNumber(1 / 3)).toBe('0.333333333');
+    expect(formatNumber(Number.NaN)).toBe('');
+    expect(csvCell('a, "b"')).toBe('"a, ""b"""');
+    expect(csvCell('plain')).toBe('plain');
+  });
+});
