@@ -348,7 +348,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     if (active && scene === null) build();
   }, [active, scene, build]);
   const rebuild = useCallback(() => build(), [build]);
-  useOrientationRebuild(hostRef, active ? scene : null, rebuild);
+  useOrientationRebuild(hostRef, active ? scene : null, rebuild, sceneSizeFor);
 
   // A preset link followed while the screen is up sets it up again.
   useEffect(() => {
