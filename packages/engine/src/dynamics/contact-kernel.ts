@@ -104,8 +104,20 @@ export interface ContactKernel {
     inverseH: number,
     maxPushSpeed: number,
     restitutionThreshold: number,
+    impactSpeed: number,
+    marks: number,
     useBias: number,
-  ): void;
+  ): number;
+  impacts(
+    constraints: number,
+    bodies: number,
+    order: number,
+    states: number,
+    count: number,
+    impactSpeed: number,
+    marks: number,
+    mode: number,
+  ): number;
 }
 
 const wasm = (globalThis as { WebAssembly?: WasmApi }).WebAssembly;

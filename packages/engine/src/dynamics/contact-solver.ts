@@ -112,7 +112,9 @@ const TOTAL_NORMAL_IMPULSE = 11;
 const TOTAL_TANGENT_IMPULSE = 12;
 // Impact state of a point: 0 none; 1 an impact found in this sub-step's solve pass, to bounce in
 // its relax pass; 2 bounced in this sub-step (the bounce is not warm-started); 3 bounced in an
-// earlier sub-step of this step; 4 no bounce in this step (pressed, see prepareContacts).
+// earlier sub-step of this step; 4 no bounce in this step (pressed, see prepareContacts); 5 an
+// impact of the impact round under way, 6 an impact of an earlier round of this sub-step (see
+// solveImpacts: not warm-started either, and not a bounce that makes a contact pressed).
 // A point may bounce in states 0, 1 and 3.
 const IMPACT = 15;
 // The lever arms' cross products with the normal when they were set (rA x n, rB x n): a pass
@@ -509,8 +511,12 @@ export function warmStartContacts(
     for (let j = 0; j < pointCount; j++) {
       const p = base + POINTS + j * POINT_STRIDE;
       // A bounce is a one-off impulse, not a contact force to carry into the next sub-step.
-      if (c[p + IMPACT]! === 2) {
+      const impact = c[p + IMPACT]!;
+      if (impact === 2) {
         c[p + IMPACT] = 3;
+        c[p + NORMAL_IMPULSE] = 0;
+      } else if (impact === 6) {
+        c[p + IMPACT] = 0;
         c[p + NORMAL_IMPULSE] = 0;
       }
       const pn = c[p + NORMAL_IMPULSE]!;
@@ -553,11 +559,18 @@ export function solveContacts(
   inverseH: number,
   maxPushSpeed: number,
   restitutionThreshold: number,
+  impactSpeed: number,
+  marks: number,
   useBias: boolean,
-): void {
+): number {
   const c = constraints.data;
   const indices = constraints.bodies;
   const order = constraints.order;
+  // Bounces in this pass (returned: the impact rounds run when there are any). A bounce marks its
+  // bodies (`marks`, see body-state.ts); a bouncy resting point on a marked body that approaches
+  // faster than `impactSpeed` is left for the impact rounds (see solveImpacts), not stopped here
+  // as a resting contact would be (that would absorb the impact).
+  let bounces = 0;
   for (let n = from; n < to; n++) {
     const i = order[n]!;
     const base = i * STRIDE;
@@ -571,6 +584,11 @@ export function solveContacts(
     const ny = c[base + NORMAL_Y]!;
     const restitution = c[base + RESTITUTION]!;
     const biasRate = c[base + BIAS_RATE]!;
+    // Received: an impact of this sub-step may push this bouncy contact (see above).
+    const receives =
+      !useBias &&
+      restitution > 0 &&
+      s[marks + a / STATE_STRIDE]! + s[marks + b / STATE_STRIDE]! > 0;
     let vAx = s[a + V_X]!;
     let vAy = s[a + V_Y]!;
     let wA = s[a + W]!;
@@ -664,16 +682,25 @@ export function solveContacts(
         const impact2 = c[p2 + IMPACT]!;
         isImpact1 =
           accumulated1 === 0 &&
-          (impact1 < 2 || impact1 === 3) &&
+          (impact1 < 2 || impact1 === 3 || (impact1 === 4 && vn1 < -maxPushSpeed)) &&
           vn1 < -restitutionThreshold &&
           (impact1 === 1 || vn1 + bias1 < 0);
         isImpact2 =
           accumulated2 === 0 &&
-          (impact2 < 2 || impact2 === 3) &&
+          (impact2 < 2 || impact2 === 3 || (impact2 === 4 && vn2 < -maxPushSpeed)) &&
           vn2 < -restitutionThreshold &&
           (impact2 === 1 || vn2 + bias2 < 0);
       }
-      if (!isImpact1 && !isImpact2) {
+      if (
+        receives &&
+        !isImpact1 &&
+        !isImpact2 &&
+        (vn1 < -impactSpeed || vn2 < -impactSpeed) &&
+        c[p1 + IMPACT]! !== 4 &&
+        c[p2 + IMPACT]! !== 4
+      ) {
+        firstSequential = 2;
+      } else if (!isImpact1 && !isImpact2) {
         // Both points push: the mixed LCP  w = A x + q >= 0, x >= 0, x . w = 0  for the new
         // accumulated impulses x (Box2D v2's block solver, Catto's b2ContactSolver, enumerates
         // its four cases the same way). With the soft step, the sequential update of one point
@@ -855,7 +882,8 @@ export function solveContacts(
       const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * leverB - wA * leverA;
       const accumulated = c[p + NORMAL_IMPULSE]!;
       // Restitution (Newton's law) at the moment of impact. An impact is an approach faster than
-      // the threshold on a point not already pushing (a resting contact is always warm-started,
+      // the threshold on a point not already pushing, and not pressed (unless it approaches faster
+      // than a load presses: an impact that travelled to it, see solveImpacts) (a resting contact is always warm-started,
       // so it never counts, and never jitters). The solve pass lets it go; the relax pass, once
       // the shapes touch, applies the whole collision impulse -(1 + e) m vn along the normal of
       // that instant, and moves both bodies on by their velocity change for the part of the
@@ -867,7 +895,9 @@ export function solveContacts(
         const impactState = c[p + IMPACT]!;
         if (
           accumulated === 0 &&
-          (impactState < 2 || impactState === 3) &&
+          (impactState < 2 ||
+            impactState === 3 ||
+            (impactState === 4 && vn < -maxPushSpeed)) &&
           vn < -restitutionThreshold &&
           (impactState === 1 || vn + bias < 0)
         ) {
@@ -948,6 +978,7 @@ export function solveContacts(
           continue;
         }
         if (impactState === 1) c[p + IMPACT] = 0;
+        if (receives && vn < -impactSpeed && impactState !== 4) continue;
       }
       const newImpulse = Math.max(
         accumulated - c[p + NORMAL_MASS]! * massScale * (vn + bias) - impulseScale * accumulated,
@@ -967,6 +998,9 @@ export function solveContacts(
     }
 
     if (bounced) {
+      bounces++;
+      if (a !== 0) s[marks + a / STATE_STRIDE] = 1;
+      if (b !== 0) s[marks + b / STATE_STRIDE] = 1;
       // The bounce moved the bodies on: friction acts at the common point where it is now.
       const eAx = s[a + DP_X]! - c[base + REF_DP_AX]!;
       const eAy = s[a + DP_Y]! - c[base + REF_DP_AY]!;
@@ -1015,6 +1049,254 @@ export function solveContacts(
       s[b + W] = wB;
     }
   }
+  return bounces;
+}
+
+// Impact rounds: restitution over the whole impact, not contact by contact.
+//
+// An impact that meets a body already pressed (a ball resting on the floor, a light body under a
+// heavy one) or held (a pinned rod) has to travel: the resting contact it presses through must
+// bounce too, and a joint must take part in the impulse. The model is sequential impacts through
+// the impact graph, as in Newton's cradle (Smith, Kaufman, Vouga, Tamstorf and Grinspun,
+// "Reflections on Simultaneous Impact", SIGGRAPH 2012, name this family and the properties it
+// keeps): after the relax pass of a sub-step in which something bounced, round after round, every
+// touching contact that approaches faster than the impact speed is an impact of its own and
+// leaves at e times the approach it received, with the masses of its two bodies (a two-point
+// manifold as one block). Each such impact keeps momentum and angular momentum, keeps the
+// energy at e = 1, and at e = 0 stops the approach as an inelastic collision does; a chain of
+// them is the sequential-impact solution (a ball dropped on an equal ball resting on the floor
+// rebounds to its drop height, the bottom one stays). Kept of the paper's properties: momentum,
+// energy (e = 1: never gained; e < 1: lost), and breaking of contact along the chain; given up:
+// symmetry of truly simultaneous impacts (the round visits contacts in the solver's order).
+// Joints: the impacts of a round and the joints are solved together, a few Gauss-Seidel
+// iterations, each impact towards its own target (-e times its approach), so that a disc hitting
+// a pinned rod sees the rod's pinned effective mass. Resting contacts that no impact reaches are
+// never visited by an impact (they approach slower than the impact speed), so stacks stay at rest
+// and sleep; steps without a bounce run no round at all.
+
+/** solveImpacts' modes. */
+export const IMPACT_ROUND = 0;
+export const IMPACT_CONTINUE = 1;
+export const IMPACT_OPEN = 2;
+export const IMPACT_CLOSE = 3;
+
+/**
+ * One pass of the impact rounds over the constraints at positions `from` to `to` of the visiting
+ * order (see the note above); returns the number of impacts it started. `IMPACT_ROUND` closes the
+ * last round's impacts and starts a new one: each touching point approaching faster than
+ * `impactSpeed` gets -(1 + e) times its approach, with its bodies' masses. `IMPACT_CONTINUE`
+ * moves the open impacts on towards their targets (between joint passes); `IMPACT_OPEN` opens the
+ * bounces of the relax pass for that; `IMPACT_CLOSE` closes all.
+ */
+export function solveImpacts(
+  constraints: ContactConstraints,
+  s: Float64Array,
+  from: number,
+  to: number,
+  impactSpeed: number,
+  marks: number,
+  mode: number,
+): number {
+  const c = constraints.data;
+  const indices = constraints.bodies;
+  const order = constraints.order;
+  let impacts = 0;
+  for (let n = from; n < to; n++) {
+    const i = order[n]!;
+    const base = i * STRIDE;
+    const pointCount = c[base + POINT_COUNT]!;
+    if (mode === IMPACT_OPEN || mode === IMPACT_CLOSE || mode === IMPACT_ROUND) {
+      // States only: open (bounced in this sub-step -> in the round) or close (the reverse).
+      const from2 = mode === IMPACT_OPEN ? 2 : 5;
+      const to2 = mode === IMPACT_OPEN ? 5 : 6;
+      for (let j = 0; j < pointCount; j++) {
+        const p = base + POINTS + j * POINT_STRIDE;
+        if (c[p + IMPACT]! === from2) c[p + IMPACT] = to2;
+      }
+      if (mode === IMPACT_OPEN) continue;
+    }
+    const a = indices[2 * i]!;
+    const b = indices[2 * i + 1]!;
+    const markA = marks + a / STATE_STRIDE;
+    const markB = marks + b / STATE_STRIDE;
+    if (mode === IMPACT_CLOSE) {
+      s[markA] = 0;
+      s[markB] = 0;
+      continue;
+    }
+    // Only contacts an impact has reached (a marked body): the rest of the world is not touched.
+    if (mode === IMPACT_ROUND && s[markA]! + s[markB]! === 0) continue;
+    const mA = c[base + INV_MASS_A]!;
+    const iA = c[base + INV_I_A]!;
+    const mB = c[base + INV_MASS_B]!;
+    const iB = c[base + INV_I_B]!;
+    const nx = c[base + NORMAL_X]!;
+    const ny = c[base + NORMAL_Y]!;
+    const restitution = c[base + RESTITUTION]!;
+    let vAx = s[a + V_X]!;
+    let vAy = s[a + V_Y]!;
+    let wA = s[a + W]!;
+    let vBx = s[b + V_X]!;
+    let vBy = s[b + V_Y]!;
+    let wB = s[b + W]!;
+    const dpAx = s[a + DP_X]!;
+    const dpAy = s[a + DP_Y]!;
+    const dpBx = s[b + DP_X]!;
+    const dpBy = s[b + DP_Y]!;
+    // Lever arms and separations as in solveContacts.
+    const shiftA = c[base + SHIFT_WEIGHT_A]!;
+    const shiftB = c[base + SHIFT_WEIGHT_B]!;
+    const eAx = dpAx - c[base + REF_DP_AX]!;
+    const eAy = dpAy - c[base + REF_DP_AY]!;
+    const eBx = dpBx - c[base + REF_DP_BX]!;
+    const eBy = dpBy - c[base + REF_DP_BY]!;
+    const shiftX = shiftA * eAx + shiftB * eBx;
+    const shiftY = shiftA * eAy + shiftB * eBy;
+    const dnA = (shiftX - eAx) * ny - (shiftY - eAy) * nx;
+    const dnB = (shiftX - eBx) * ny - (shiftY - eBy) * nx;
+    const qAc = s[a + Q_C]!;
+    const qAs = s[a + Q_S]!;
+    const qBc = s[b + Q_C]!;
+    const qBs = s[b + Q_S]!;
+    const nAx = qAc * nx + qAs * ny;
+    const nAy = qAc * ny - qAs * nx;
+    const nBx = qBc * nx + qBs * ny;
+    const nBy = qBc * ny - qBs * nx;
+    const dpn = (dpBx - dpAx) * nx + (dpBy - dpAy) * ny;
+    let firstSequential = 0;
+    if (mode === IMPACT_ROUND && c[base + BLOCK]! === 1) {
+      // Both points of a face on a face approaching: one impact, solved as a block (the LCP
+      // w = K x + (1 + e) vn >= 0, x >= 0, x . w = 0; cases as in solveContacts), so a flat
+      // impact stays flat.
+      const p1 = base + POINTS;
+      const p2 = p1 + POINT_STRIDE;
+      const separation1 =
+        dpn +
+        (c[p1 + R_BX]! * nBx + c[p1 + R_BY]! * nBy) -
+        (c[p1 + R_AX]! * nAx + c[p1 + R_AY]! * nAy) +
+        c[p1 + BASE_SEPARATION]!;
+      const separation2 =
+        dpn +
+        (c[p2 + R_BX]! * nBx + c[p2 + R_BY]! * nBy) -
+        (c[p2 + R_AX]! * nAx + c[p2 + R_AY]! * nAy) +
+        c[p2 + BASE_SEPARATION]!;
+      const n1A = c[p1 + RN_A]! + dnA;
+      const n1B = c[p1 + RN_B]! + dnB;
+      const n2A = c[p2 + RN_A]! + dnA;
+      const n2B = c[p2 + RN_B]! + dnB;
+      const dvn = (vBx - vAx) * nx + (vBy - vAy) * ny;
+      const vn1 = dvn + wB * n1B - wA * n1A;
+      const vn2 = dvn + wB * n2B - wA * n2A;
+      if (
+        separation1 < LINEAR_SLOP &&
+        separation2 < LINEAR_SLOP &&
+        vn1 < -impactSpeed &&
+        vn2 < -impactSpeed &&
+        c[p1 + IMPACT]! !== 4 &&
+        c[p2 + IMPACT]! !== 4
+      ) {
+        // K from the levers as they are now, as the impulses are applied: then an e = 1 impact
+        // keeps the energy exactly.
+        const mAB = mA + mB;
+        const k11 = mAB + iA * n1A * n1A + iB * n1B * n1B;
+        const k12 = mAB + iA * n1A * n2A + iB * n1B * n2B;
+        const k22 = mAB + iA * n2A * n2A + iB * n2B * n2B;
+        const q1 = (1 + restitution) * vn1;
+        const q2 = (1 + restitution) * vn2;
+        let x1 = -1;
+        let x2 = -1;
+        const det = k11 * k22 - k12 * k12;
+        const y1 = (k12 * q2 - k22 * q1) / det;
+        const y2 = (k12 * q1 - k11 * q2) / det;
+        if (y1 >= 0 && y2 >= 0) {
+          x1 = y1;
+          x2 = y2;
+        } else if (-q1 / k11 >= 0 && (-k12 * q1) / k11 + q2 >= 0) {
+          x1 = -q1 / k11;
+          x2 = 0;
+        } else if (-q2 / k22 >= 0 && (-k12 * q2) / k22 + q1 >= 0) {
+          x1 = 0;
+          x2 = -q2 / k22;
+        }
+        if (x1 >= 0 && x2 >= 0) {
+          firstSequential = 2;
+          impacts++;
+          c[p1 + NORMAL_IMPULSE] += x1;
+          c[p2 + NORMAL_IMPULSE] += x2;
+          c[p1 + TOTAL_NORMAL_IMPULSE] += x1;
+          c[p2 + TOTAL_NORMAL_IMPULSE] += x2;
+          if (x1 > c[p1 + MAX_NORMAL_IMPULSE]!) c[p1 + MAX_NORMAL_IMPULSE] = x1;
+          if (x2 > c[p2 + MAX_NORMAL_IMPULSE]!) c[p2 + MAX_NORMAL_IMPULSE] = x2;
+          c[p1 + RELATIVE_VELOCITY] = vn1;
+          c[p2 + RELATIVE_VELOCITY] = vn2;
+          c[p1 + IMPACT] = 5;
+          c[p2 + IMPACT] = 5;
+          const sum = x1 + x2;
+          vAx -= mA * sum * nx;
+          vAy -= mA * sum * ny;
+          wA -= iA * (n1A * x1 + n2A * x2);
+          vBx += mB * sum * nx;
+          vBy += mB * sum * ny;
+          wB += iB * (n1B * x1 + n2B * x2);
+        }
+      }
+    }
+    let changed = firstSequential === 2;
+    for (let j = firstSequential; j < pointCount; j++) {
+      const p = base + POINTS + j * POINT_STRIDE;
+      const impact = c[p + IMPACT]!;
+      if (mode === IMPACT_CONTINUE ? impact !== 5 : impact === 4 || impact === 5) continue;
+      const leverA = c[p + RN_A]! + dnA;
+      const leverB = c[p + RN_B]! + dnB;
+      const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * leverB - wA * leverA;
+      const accumulated = c[p + NORMAL_IMPULSE]!;
+      // The effective mass with the levers as they are now (see the block above).
+      const k = mA + mB + iA * leverA * leverA + iB * leverB * leverB;
+      if (!(k > 0)) continue;
+      let impulse = 0;
+      if (mode === IMPACT_CONTINUE) {
+        // Towards the target -e * approach, the impulse of this impact never below zero.
+        const target = -restitution * c[p + RELATIVE_VELOCITY]!;
+        impulse = Math.max((target - vn) / k, -accumulated);
+      } else {
+        if (vn >= -impactSpeed) continue;
+        const separation =
+          dpn +
+          (c[p + R_BX]! * nBx + c[p + R_BY]! * nBy) -
+          (c[p + R_AX]! * nAx + c[p + R_AY]! * nAy) +
+          c[p + BASE_SEPARATION]!;
+        if (separation >= LINEAR_SLOP) continue;
+        impulse = (-(1 + restitution) * vn) / k;
+        impacts++;
+        c[p + RELATIVE_VELOCITY] = vn;
+        c[p + IMPACT] = 5;
+        if (impulse > c[p + MAX_NORMAL_IMPULSE]!) c[p + MAX_NORMAL_IMPULSE] = impulse;
+      }
+      c[p + NORMAL_IMPULSE] = accumulated + impulse;
+      c[p + TOTAL_NORMAL_IMPULSE] += impulse;
+      vAx -= mA * impulse * nx;
+      vAy -= mA * impulse * ny;
+      wA -= iA * leverA * impulse;
+      vBx += mB * impulse * nx;
+      vBy += mB * impulse * ny;
+      wB += iB * leverB * impulse;
+      changed = true;
+    }
+    if (!changed) continue;
+    if (a !== 0) {
+      s[a + V_X] = vAx;
+      s[a + V_Y] = vAy;
+      s[a + W] = wA;
+      s[markA] = 1;
+    }
+    if (b !== 0) {
+      s[b + V_X] = vBx;
+      s[b + V_Y] = vBy;
+      s[b + W] = wB;
+      s[markB] = 1;
+    }
+  }
+  return impacts;
 }
 
 /**
@@ -1041,7 +1323,7 @@ export function storeImpulses(
       const mp = m + C_POINTS + j * C_POINT_STRIDE;
       const impact = c[p + IMPACT]!;
       if (impact === 2 || impact === 3) bounced = 1;
-      contactData[mp + C_NORMAL_IMPULSE] = c[p + IMPACT]! === 2 ? 0 : c[p + NORMAL_IMPULSE]!;
+      contactData[mp + C_NORMAL_IMPULSE] = impact === 2 || impact === 6 ? 0 : c[p + NORMAL_IMPULSE]!;
       contactData[mp + C_TANGENT_IMPULSE] = c[p + TANGENT_IMPULSE]!;
       contactData[mp + C_MAX_NORMAL_IMPULSE] = c[p + MAX_NORMAL_IMPULSE]!;
       contactData[mp + C_RELATIVE_VELOCITY] = c[p + RELATIVE_VELOCITY]!;

@@ -8,6 +8,7 @@ import {
   Q_C,
   Q_S,
   STATE_STRIDE,
+  stateDoubles,
   TABLE_CENTER_X,
   TABLE_CENTER_Y,
   TABLE_INV_I,
@@ -23,9 +24,14 @@ import {
   CONSTRAINT_STRIDE,
   ContactConstraints,
   prepareContacts,
+  IMPACT_CLOSE,
+  IMPACT_CONTINUE,
+  IMPACT_OPEN,
+  IMPACT_ROUND,
   refreshCirclePairs,
   ShockPropagation,
   solveContacts,
+  solveImpacts,
   storeImpulses,
   warmStartContacts,
 } from './contact-solver.ts';
@@ -115,7 +121,7 @@ export class Solver {
    * memory, before the narrow phase reads the contact slots.
    */
   reserve(bodies: number, contacts: number): void {
-    this.memory.reserveStep((bodies + 1) * STATE_STRIDE, bodies, contacts);
+    this.memory.reserveStep(stateDoubles(bodies), bodies, contacts);
   }
 
   /**
@@ -367,6 +373,10 @@ export class Solver {
     const threshold = settings.restitutionThreshold;
     const maxPushSpeed = settings.maxContactPushSpeed;
     const count = to - from;
+    const impactSpeed = Math.max(threshold, MIN_IMPACT_SPEED);
+    // The bodies' impact marks (body-state.ts), as an index into `s` and as a kernel pointer.
+    const marks = this.states.marks;
+    const marksPointer = memory.offsets[STATES]! + 8 * marks;
     for (let step = 0; step < settings.subSteps; step++) {
       integrateVelocities(this.params, bodyList, bodyFrom, bodyTo, s, settings, h);
       refreshCirclePairs(constraints, s);
@@ -393,9 +403,24 @@ export class Solver {
           inverseH,
           maxPushSpeed,
           threshold,
+          impactSpeed,
+          marksPointer,
           1,
         );
-      } else solveContacts(constraints, s, from, to, inverseH, maxPushSpeed, threshold, true);
+      } else {
+        solveContacts(
+          constraints,
+          s,
+          from,
+          to,
+          inverseH,
+          maxPushSpeed,
+          threshold,
+          impactSpeed,
+          marks,
+          true,
+        );
+      }
       if (shock.count > 0) {
         shock.solve(constraints, s, inverseH, shockBiasRate, maxPushSpeed, threshold, true);
       }
@@ -404,8 +429,9 @@ export class Solver {
       joints.solveChains(s, false, true);
       refreshCirclePairs(constraints, s);
       joints.solve(s, false);
+      let bounces: number;
       if (kernel !== null) {
-        kernel.solve(
+        bounces = kernel.solve(
           memory.offsets[CONSTRAINT_DATA]!,
           memory.offsets[CONSTRAINT_BODIES]!,
           order,
@@ -414,12 +440,30 @@ export class Solver {
           inverseH,
           maxPushSpeed,
           threshold,
+          impactSpeed,
+          marksPointer,
           0,
         );
-      } else solveContacts(constraints, s, from, to, inverseH, maxPushSpeed, threshold, false);
+      } else {
+        bounces = solveContacts(
+          constraints,
+          s,
+          from,
+          to,
+          inverseH,
+          maxPushSpeed,
+          threshold,
+          impactSpeed,
+          marks,
+          false,
+        );
+      }
       if (shock.count > 0) {
         shock.solve(constraints, s, inverseH, shockBiasRate, maxPushSpeed, threshold, false);
       }
+      // Something bounced: the impact travels through the contacts and joints it presses
+      // (contact-solver.ts, solveImpacts).
+      if (bounces > 0) this.impactRounds(from, to, impactSpeed);
       joints.solveChains(s, false);
     }
     // Each constraint's impulses go to its own contact slot: a batch stores its own while they
@@ -433,6 +477,62 @@ export class Solver {
         count,
       );
     } else storeImpulses(constraints, memory.contactData, from, to);
+  }
+
+  /**
+   * The impact rounds after a relax pass that bounced (see solveImpacts), for the constraints at
+   * positions `from` to `to` of the visiting order: round after round until no touching contact
+   * approaches faster than `impactSpeed` (at most MAX_IMPACT_ROUNDS), each round's impacts solved
+   * together with the joints when there are any.
+   */
+  private impactRounds(from: number, to: number, impactSpeed: number): void {
+    const joints = this.joints.activeCount > 0 ? this.joints : null;
+    if (joints !== null) {
+      // The relax pass's bounces were computed with free bodies: now with the joints.
+      this.impacts(from, to, impactSpeed, IMPACT_OPEN);
+      this.impactsWithJoints(joints, from, to, impactSpeed);
+    }
+    let rounds = 0;
+    while (this.impacts(from, to, impactSpeed, IMPACT_ROUND) > 0) {
+      if (joints !== null) this.impactsWithJoints(joints, from, to, impactSpeed);
+      if (++rounds === MAX_IMPACT_ROUNDS) break;
+    }
+    // Closes the last round and clears the marks: the next sub-step starts without impacts.
+    this.impacts(from, to, impactSpeed, IMPACT_CLOSE);
+  }
+
+  /** Gauss-Seidel iterations of the open impacts and the joints (relax: no position bias). */
+  private impactsWithJoints(
+    joints: JointSolver,
+    from: number,
+    to: number,
+    impactSpeed: number,
+  ): void {
+    const s = this.states.data;
+    for (let k = 0; k < JOINT_IMPACT_ITERATIONS; k++) {
+      joints.solve(s, false);
+      this.impacts(from, to, impactSpeed, IMPACT_CONTINUE);
+    }
+  }
+
+  /** One pass of solveImpacts, in the kernel or in JavaScript. */
+  private impacts(from: number, to: number, impactSpeed: number, mode: number): number {
+    const memory = this.memory;
+    const kernel = memory.kernel;
+    const marks = this.states.marks;
+    if (kernel === null) {
+      return solveImpacts(this.constraints, this.states.data, from, to, impactSpeed, marks, mode);
+    }
+    return kernel.impacts(
+      memory.offsets[CONSTRAINT_DATA]!,
+      memory.offsets[CONSTRAINT_BODIES]!,
+      memory.offsets[CONSTRAINT_ORDER]! + 4 * from,
+      memory.offsets[STATES]!,
+      to - from,
+      impactSpeed,
+      memory.offsets[STATES]! + 8 * marks,
+      mode,
+    );
   }
 
   /**
@@ -519,6 +619,17 @@ const TORQUE = 6;
 const LINEAR_DAMPING = 7;
 const ANGULAR_DAMPING = 8;
 const PARAM_STRIDE = 9;
+
+/**
+ * Slowest approach (m/s) an impact round counts as an impact, with a restitution threshold below
+ * it: slower approaches are left to the next sub-step's contact solve, so the rounds end.
+ */
+const MIN_IMPACT_SPEED = 0.01;
+/** Most impact rounds after one relax pass (a light body between a floor and a 60 times heavier
+ * one bounces about pi sqrt(60), 25 times). */
+const MAX_IMPACT_ROUNDS = 64;
+/** Gauss-Seidel iterations of a round's impacts with the joints. */
+const JOINT_IMPACT_ITERATIONS = 8;
 
 /** Contacts kept together when the sweep order is scrambled (see scrambleOrder). */
 const SCRAMBLE_RUN = 32;
