@@ -172,6 +172,7 @@ export function solve(
   maxPushSpeed: f64,
   restitutionThreshold: f64,
   impactSpeed: f64,
+  loadSpeed: f64,
   marksPtr: usize,
   useBias: bool,
 ): i32 {
@@ -293,7 +294,7 @@ export function solve(
         receives &&
         !isImpact1 &&
         !isImpact2 &&
-        (vn1 < -impactSpeed || vn2 < -impactSpeed) &&
+        (vn1 < -loadSpeed || vn2 < -loadSpeed) &&
         ld(p1, IMPACT) != 4 &&
         ld(p2, IMPACT) != 4
       ) {
@@ -461,9 +462,7 @@ export function solve(
         const impactState = ld(p, IMPACT);
         if (
           accumulated == 0 &&
-          (impactState < 2 ||
-            impactState == 3 ||
-            (impactState == 4 && vn < -maxPushSpeed)) &&
+          (impactState < 2 || impactState == 3 || (impactState == 4 && vn < -maxPushSpeed)) &&
           vn < -restitutionThreshold &&
           (impactState == 1 || vn + bias < 0)
         ) {
@@ -539,7 +538,9 @@ export function solve(
           continue;
         }
         if (impactState == 1) st(p, IMPACT, 0);
-        if (receives && vn < -impactSpeed && impactState != 4) continue;
+        if (receives && impactState != 4 && vn < -(accumulated > 0 ? loadSpeed : impactSpeed)) {
+          continue;
+        }
       }
       const newImpulse = max<f64>(
         accumulated - ld(p, NORMAL_MASS) * massScale * (vn + bias) - impulseScale * accumulated,
@@ -622,6 +623,7 @@ export function impacts(
   sPtr: usize,
   count: i32,
   impactSpeed: f64,
+  loadSpeed: f64,
   marksPtr: usize,
   mode: i32,
 ): i32 {
@@ -708,11 +710,15 @@ export function impacts(
       const dvn = (vBx - vAx) * nx + (vBy - vAy) * ny;
       const vn1 = dvn + wB * n1B - wA * n1A;
       const vn2 = dvn + wB * n2B - wA * n2A;
+      const speed1: f64 =
+        ld(p1, NORMAL_IMPULSE) > 0 && ld(p1, IMPACT) != 2 ? loadSpeed : impactSpeed;
+      const speed2: f64 =
+        ld(p2, NORMAL_IMPULSE) > 0 && ld(p2, IMPACT) != 2 ? loadSpeed : impactSpeed;
       if (
         separation1 < LINEAR_SLOP &&
         separation2 < LINEAR_SLOP &&
-        vn1 < -impactSpeed &&
-        vn2 < -impactSpeed &&
+        vn1 < -speed1 &&
+        vn2 < -speed2 &&
         ld(p1, IMPACT) != 4 &&
         ld(p2, IMPACT) != 4
       ) {
@@ -776,7 +782,7 @@ export function impacts(
         const target = -restitution * ld(p, RELATIVE_VELOCITY);
         impulse = max<f64>((target - vn) / k, -accumulated);
       } else {
-        if (vn >= -impactSpeed) continue;
+        if (vn >= -(accumulated > 0 && impact != 2 ? loadSpeed : impactSpeed)) continue;
         const separation =
           dpn +
           (ld(p, R_BX) * nBx + ld(p, R_BY) * nBy) -

@@ -105,6 +105,7 @@ export interface ContactKernel {
     maxPushSpeed: number,
     restitutionThreshold: number,
     impactSpeed: number,
+    loadSpeed: number,
     marks: number,
     useBias: number,
   ): number;
@@ -115,6 +116,7 @@ export interface ContactKernel {
     states: number,
     count: number,
     impactSpeed: number,
+    loadSpeed: number,
     marks: number,
     mode: number,
   ): number;

@@ -560,6 +560,7 @@ export function solveContacts(
   maxPushSpeed: number,
   restitutionThreshold: number,
   impactSpeed: number,
+  loadSpeed: number,
   marks: number,
   useBias: boolean,
 ): number {
@@ -569,7 +570,8 @@ export function solveContacts(
   // Bounces in this pass (returned: the impact rounds run when there are any). A bounce marks its
   // bodies (`marks`, see body-state.ts); a bouncy resting point on a marked body that approaches
   // faster than `impactSpeed` is left for the impact rounds (see solveImpacts), not stopped here
-  // as a resting contact would be (that would absorb the impact).
+  // as a resting contact would be (that would absorb the impact); a loaded one only when faster
+  // than `loadSpeed` (see solver.ts, MIN_LOADED_IMPACT_SPEED).
   let bounces = 0;
   for (let n = from; n < to; n++) {
     const i = order[n]!;
@@ -695,7 +697,7 @@ export function solveContacts(
         receives &&
         !isImpact1 &&
         !isImpact2 &&
-        (vn1 < -impactSpeed || vn2 < -impactSpeed) &&
+        (vn1 < -loadSpeed || vn2 < -loadSpeed) &&
         c[p1 + IMPACT]! !== 4 &&
         c[p2 + IMPACT]! !== 4
       ) {
@@ -895,9 +897,7 @@ export function solveContacts(
         const impactState = c[p + IMPACT]!;
         if (
           accumulated === 0 &&
-          (impactState < 2 ||
-            impactState === 3 ||
-            (impactState === 4 && vn < -maxPushSpeed)) &&
+          (impactState < 2 || impactState === 3 || (impactState === 4 && vn < -maxPushSpeed)) &&
           vn < -restitutionThreshold &&
           (impactState === 1 || vn + bias < 0)
         ) {
@@ -978,7 +978,9 @@ export function solveContacts(
           continue;
         }
         if (impactState === 1) c[p + IMPACT] = 0;
-        if (receives && vn < -impactSpeed && impactState !== 4) continue;
+        if (receives && impactState !== 4 && vn < -(accumulated > 0 ? loadSpeed : impactSpeed)) {
+          continue;
+        }
       }
       const newImpulse = Math.max(
         accumulated - c[p + NORMAL_MASS]! * massScale * (vn + bias) - impulseScale * accumulated,
@@ -1083,8 +1085,9 @@ export const IMPACT_CLOSE = 3;
 /**
  * One pass of the impact rounds over the constraints at positions `from` to `to` of the visiting
  * order (see the note above); returns the number of impacts it started. `IMPACT_ROUND` closes the
- * last round's impacts and starts a new one: each touching point approaching faster than
- * `impactSpeed` gets -(1 + e) times its approach, with its bodies' masses. `IMPACT_CONTINUE`
+ * last round's impacts and starts a new one: each touching point of a body an impact reached
+ * (`marks`) approaching faster than `impactSpeed` (a loaded point: `loadSpeed`) gets -(1 + e)
+ * times its approach, with its bodies' masses. `IMPACT_CONTINUE`
  * moves the open impacts on towards their targets (between joint passes); `IMPACT_OPEN` opens the
  * bounces of the relax pass for that; `IMPACT_CLOSE` closes all.
  */
@@ -1094,6 +1097,7 @@ export function solveImpacts(
   from: number,
   to: number,
   impactSpeed: number,
+  loadSpeed: number,
   marks: number,
   mode: number,
 ): number {
@@ -1108,7 +1112,7 @@ export function solveImpacts(
     if (mode === IMPACT_OPEN || mode === IMPACT_CLOSE || mode === IMPACT_ROUND) {
       // States only: open (bounced in this sub-step -> in the round) or close (the reverse).
       const from2 = mode === IMPACT_OPEN ? 2 : 5;
-      const to2 = mode === IMPACT_OPEN ? 5 : 6;
+      const to2 = mode === IMPACT_OPEN ? 5 : 2;
       for (let j = 0; j < pointCount; j++) {
         const p = base + POINTS + j * POINT_STRIDE;
         if (c[p + IMPACT]! === from2) c[p + IMPACT] = to2;
@@ -1187,11 +1191,13 @@ export function solveImpacts(
       const dvn = (vBx - vAx) * nx + (vBy - vAy) * ny;
       const vn1 = dvn + wB * n1B - wA * n1A;
       const vn2 = dvn + wB * n2B - wA * n2A;
+      const speed1 = c[p1 + NORMAL_IMPULSE]! > 0 && c[p1 + IMPACT]! !== 2 ? loadSpeed : impactSpeed;
+      const speed2 = c[p2 + NORMAL_IMPULSE]! > 0 && c[p2 + IMPACT]! !== 2 ? loadSpeed : impactSpeed;
       if (
         separation1 < LINEAR_SLOP &&
         separation2 < LINEAR_SLOP &&
-        vn1 < -impactSpeed &&
-        vn2 < -impactSpeed &&
+        vn1 < -speed1 &&
+        vn2 < -speed2 &&
         c[p1 + IMPACT]! !== 4 &&
         c[p2 + IMPACT]! !== 4
       ) {
@@ -1259,7 +1265,9 @@ export function solveImpacts(
         const target = -restitution * c[p + RELATIVE_VELOCITY]!;
         impulse = Math.max((target - vn) / k, -accumulated);
       } else {
-        if (vn >= -impactSpeed) continue;
+        // A loaded point (pushing, not a bounce of this sub-step) only when it approaches faster
+        // than a load presses (see solveContacts).
+        if (vn >= -(accumulated > 0 && impact !== 2 ? loadSpeed : impactSpeed)) continue;
         const separation =
           dpn +
           (c[p + R_BX]! * nBx + c[p + R_BY]! * nBy) -
@@ -1323,7 +1331,8 @@ export function storeImpulses(
       const mp = m + C_POINTS + j * C_POINT_STRIDE;
       const impact = c[p + IMPACT]!;
       if (impact === 2 || impact === 3) bounced = 1;
-      contactData[mp + C_NORMAL_IMPULSE] = impact === 2 || impact === 6 ? 0 : c[p + NORMAL_IMPULSE]!;
+      contactData[mp + C_NORMAL_IMPULSE] =
+        impact === 2 || impact === 6 ? 0 : c[p + NORMAL_IMPULSE]!;
       contactData[mp + C_TANGENT_IMPULSE] = c[p + TANGENT_IMPULSE]!;
       contactData[mp + C_MAX_NORMAL_IMPULSE] = c[p + MAX_NORMAL_IMPULSE]!;
       contactData[mp + C_RELATIVE_VELOCITY] = c[p + RELATIVE_VELOCITY]!;

@@ -185,11 +185,14 @@ describe('impacts that travel', () => {
   }, 120_000);
 
   it('a light ball wedged between the floor and a heavy one (e = 1) never gains more than 0.1 % of the energy in a step', () => {
-    // Two wedges: a light ball sliding along the floor into a heavy resting one (it is pressed into
-    // the floor by the heavy ball's slope), and a heavy ball dropped on a light one on the floor.
+    // Two wedges: a light ball sliding along the floor into a heavy one that touches the floor (the
+    // heavy ball's slope presses it into the floor), and a heavy ball coming down on a light one
+    // lying on the floor. Without gravity, so that the energy is all kinetic: under gravity the
+    // semi-implicit Euler flight and a bounce's catch-up change the energy between step ends by up
+    // to 2 % for a single ball bouncing on the floor, which would hide what the wedge does.
     let worst = 0;
-    for (const scene of ['sliding', 'dropped'] as const) {
-      const world = new World();
+    for (const scene of ['sliding', 'coming down'] as const) {
+      const world = new World({ gravity: { x: 0, y: 0 } });
       const material = { restitution: 1, friction: 0 };
       world.add(
         box({ type: 'static', position: { x: 0, y: 0.5 }, width: 40, height: 1, ...material }),
@@ -208,26 +211,32 @@ describe('impacts that travel', () => {
           position: scene === 'sliding' ? { x: 0, y: -0.5 } : { x: 0.05, y: -2 },
           radius: 0.5,
           density: 5.9 / (Math.PI * 0.25),
+          linearVelocity: scene === 'sliding' ? { x: 0, y: 0 } : { x: 0, y: 4 },
           ...material,
         }),
       );
       const bodies = [light, heavy];
-      const g = world.gravity.y;
-      let before = energy(bodies, g);
+      let before = energy(bodies, 0);
       for (let i = 0; i < 180; i++) {
         world.step(DT);
-        const after = energy(bodies, g);
-        worst = Math.max(worst, (after - before) / Math.abs(before));
+        const after = energy(bodies, 0);
+        worst = Math.max(worst, (after - before) / before);
         before = after;
       }
     }
-    reportMeasured('light ball wedged under a heavy one, e = 1: largest energy gain in a step', worst, 0.001);
+    reportMeasured(
+      'light ball wedged under a heavy one, e = 1: largest energy gain in a step',
+      worst,
+      0.001,
+    );
     expect(worst).toBeLessThan(0.001);
   });
 
   it('an elastic ballistic pendulum (a disc hits a rod pinned at one end) leaves at the closed-form speeds', () => {
     const world = new World({ gravity: { x: 0, y: 0 } });
-    const ground = world.add(box({ type: 'static', position: { x: 0, y: -1 }, width: 1, height: 0.2 }));
+    const ground = world.add(
+      box({ type: 'static', position: { x: 0, y: -1 }, width: 1, height: 0.2 }),
+    );
     const L = 2;
     const M = 2;
     const width = 0.1;
@@ -262,13 +271,18 @@ describe('impacts that travel', () => {
     const inertia = (M * (L * L + width * width)) / 3;
     const mr = inertia / (d * d);
     const discAfter = ((m - mr) / (m + mr)) * u;
-    const omegaAfter = ((2 * m) / (m + mr)) * u / d;
+    const omegaAfter = (((2 * m) / (m + mr)) * u) / d;
     for (let i = 0; i < 40; i++) world.step(DT);
     // y-down: a rod swinging to +x turns clockwise on screen, a negative angle in y-up terms;
     // compare speeds.
-    const omegaError = Math.abs(Math.abs(rod.angularVelocity) - Math.abs(omegaAfter)) / Math.abs(omegaAfter);
+    const omegaError =
+      Math.abs(Math.abs(rod.angularVelocity) - Math.abs(omegaAfter)) / Math.abs(omegaAfter);
     const discError = Math.abs(disc.linearVelocity.x - discAfter) / Math.abs(discAfter);
-    reportMeasured('elastic ballistic pendulum: rod angular speed, relative error', omegaError, 0.01);
+    reportMeasured(
+      'elastic ballistic pendulum: rod angular speed, relative error',
+      omegaError,
+      0.01,
+    );
     reportMeasured('elastic ballistic pendulum: disc speed, relative error', discError, 0.01);
     expect(omegaError).toBeLessThan(0.01);
     expect(discError).toBeLessThan(0.01);
@@ -279,7 +293,9 @@ describe('impacts that travel', () => {
     world.add(
       box({ type: 'static', position: { x: 0, y: 0.5 }, width: 20, height: 1, restitution: 1 }),
     );
-    const ball = world.add(particle({ position: { x: 0, y: -0.25 }, radius: 0.25, restitution: 1 }));
+    const ball = world.add(
+      particle({ position: { x: 0, y: -0.25 }, radius: 0.25, restitution: 1 }),
+    );
     let move = 0;
     let asleepAt = Infinity;
     for (let i = 1; i <= 12 / DT; i++) {
