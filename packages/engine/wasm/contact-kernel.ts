@@ -637,7 +637,10 @@ export function impacts(
       const to2: f64 = mode == IMPACT_OPEN ? 5 : 6;
       for (let j = 0; j < pointCount; j++) {
         const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
-        if (ld(p, IMPACT) == from2) st(p, IMPACT, to2);
+        if (ld(p, IMPACT) == from2) {
+          st(p, IMPACT, to2);
+          if (mode == IMPACT_OPEN) started++;
+        }
       }
       if (mode == IMPACT_OPEN) continue;
     }

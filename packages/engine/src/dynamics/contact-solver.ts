@@ -1070,9 +1070,10 @@ export function solveContacts(
 // rebounds to its drop height, the bottom one stays). Kept of the paper's properties: momentum,
 // energy (e = 1: never gained; e < 1: lost), and breaking of contact along the chain; given up:
 // symmetry of truly simultaneous impacts (the round visits contacts in the solver's order).
-// Joints: the impacts of a round and the joints are solved together, a few Gauss-Seidel
-// iterations, each impact towards its own target (-e times its approach), so that a disc hitting
-// a pinned rod sees the rod's pinned effective mass. Resting contacts that no impact reaches are
+// Joints: a lone bounce of the relax pass and the joints are solved together, a few Gauss-Seidel
+// iterations, the impact towards its target (-e times its approach), so that a disc hitting a
+// pinned rod sees the rod's pinned effective mass. Not the rounds' impacts, nor several bounces at
+// once: impacts of one chain solved together towards fixed targets make energy. Resting contacts that no impact reaches are
 // never visited by an impact (they approach slower than the impact speed), so stacks stay at rest
 // and sleep; steps without a bounce run no round at all.
 
@@ -1115,7 +1116,10 @@ export function solveImpacts(
       const to2 = mode === IMPACT_OPEN ? 5 : 2;
       for (let j = 0; j < pointCount; j++) {
         const p = base + POINTS + j * POINT_STRIDE;
-        if (c[p + IMPACT]! === from2) c[p + IMPACT] = to2;
+        if (c[p + IMPACT]! === from2) {
+          c[p + IMPACT] = to2;
+          if (mode === IMPACT_OPEN) impacts++;
+        }
       }
       if (mode === IMPACT_OPEN) continue;
     }

@@ -489,19 +489,18 @@ export class Solver {
   /**
    * The impact rounds after a relax pass that bounced (see solveImpacts), for the constraints at
    * positions `from` to `to` of the visiting order: round after round until no touching contact
-   * approaches faster than `impactSpeed` (at most MAX_IMPACT_ROUNDS), each round's impacts solved
-   * together with the joints when there are any.
+   * approaches faster than `impactSpeed` (at most MAX_IMPACT_ROUNDS); a lone bounce of the relax
+   * pass first solved again together with the joints, when there are any.
    */
   private impactRounds(from: number, to: number, impactSpeed: number): void {
-    const joints = this.joints.activeCount > 0 ? this.joints : null;
-    if (joints !== null) {
-      // The relax pass's bounces were computed with free bodies: now with the joints.
-      this.impacts(from, to, impactSpeed, IMPACT_OPEN);
-      this.impactsWithJoints(joints, from, to, impactSpeed);
+    // The relax pass's bounce was computed with free bodies: with joints, it is solved again
+    // together with them. Only a lone bounce: two impacts of one chain solved together towards
+    // fixed targets would make energy (a cradle's balls would all fly apart).
+    if (this.joints.activeCount > 0 && this.impacts(from, to, impactSpeed, IMPACT_OPEN) === 1) {
+      this.impactsWithJoints(this.joints, from, to, impactSpeed);
     }
     let rounds = 0;
     while (this.impacts(from, to, impactSpeed, IMPACT_ROUND) > 0) {
-      if (joints !== null) this.impactsWithJoints(joints, from, to, impactSpeed);
       if (++rounds === MAX_IMPACT_ROUNDS) break;
     }
     // Closes the last round and clears the marks: the next sub-step starts without impacts.
