@@ -780,7 +780,7 @@ export function impacts(
       const accumulated = ld(p, NORMAL_IMPULSE);
       const k = mA + mB + iA * leverA * leverA + iB * leverB * leverB;
       if (!(k > 0)) continue;
-      let impulse: f64 = 0;
+      let impulse: f64;
       if (mode == IMPACT_CONTINUE) {
         const target = -restitution * ld(p, RELATIVE_VELOCITY);
         impulse = max<f64>((target - vn) / k, -accumulated);

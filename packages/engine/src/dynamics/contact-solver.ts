@@ -1263,7 +1263,7 @@ export function solveImpacts(
       // The effective mass with the levers as they are now (see the block above).
       const k = mA + mB + iA * leverA * leverA + iB * leverB * leverB;
       if (!(k > 0)) continue;
-      let impulse = 0;
+      let impulse: number;
       if (mode === IMPACT_CONTINUE) {
         // Towards the target -e * approach, the impulse of this impact never below zero.
         const target = -restitution * c[p + RELATIVE_VELOCITY]!;
