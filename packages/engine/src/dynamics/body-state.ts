@@ -7,6 +7,8 @@
 //   3 deltaAngle            rotation this step, exact sum of h w (rad)
 //   4 dpx, 5 dpy            translation of the centre of mass this step (m)
 //   6 qc, 7 qs              rotation this step as cosine/sine (for the contact anchors)
+// After the states, one number per state (BodyStates.marks): 1 while an impact of this sub-step
+// has reached the body (the contact kernel's impacts, wasm/contact-kernel.ts), else 0.
 
 import type { SolverMemory } from './solver-memory.ts';
 
@@ -42,11 +44,24 @@ export class BodyStates {
     return this.memory.states;
   }
 
-  /** Makes room for `count` states plus the identity slot, and resets the identity slot. */
+  /** Where the impact marks start in `data` (see the layout above). */
+  marks = 0;
+
+  /**
+   * Makes room for `count` states plus the identity slot and their impact marks, resets the
+   * identity slot and clears the marks.
+   */
   reserve(count: number): Float64Array {
-    const d = this.memory.reserveStates((count + 1) * STATE_STRIDE);
+    const d = this.memory.reserveStates(stateDoubles(count));
     d.fill(0, 0, STATE_STRIDE);
     d[Q_C] = 1;
+    this.marks = (count + 1) * STATE_STRIDE;
+    d.fill(0, this.marks, this.marks + count + 1);
     return d;
   }
+}
+
+/** The state numbers of `count` bodies: the identity slot, the states, and a mark per state. */
+export function stateDoubles(count: number): number {
+  return (count + 1) * (STATE_STRIDE + 1);
 }
