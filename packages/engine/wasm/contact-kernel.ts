@@ -576,10 +576,10 @@ export function solve(
       // Restitution (Newton's law) at the moment of impact. An impact is an approach faster than
       // the threshold on a point not already pushing, and not pressed unless it approaches faster
       // than a load presses (an impact that travelled to it, see impacts) (a resting contact is
-      // always warm-started, so it never counts, and never jitters). The solve pass lets it go; the relax pass, once
-      // the shapes touch, applies the whole collision impulse -(1 + e) m vn along the normal of
-      // that instant, and moves both bodies on by their velocity change for the part of the
-      // sub-step left after the moment of contact: the exact trajectory of two colliding
+      // always warm-started, so it never counts, and never jitters). The solve pass lets it go; the
+      // relax pass, once the shapes touch, applies the whole collision impulse -(1 + e) m vn along
+      // the normal of that instant, and moves both bodies on by their velocity change for the part
+      // of the sub-step left after the moment of contact: the exact trajectory of two colliding
       // bodies, so momentum, angular momentum and (for e = 1) energy are kept. A bounce after all
       // the sub-steps (Box2D v3) comes after the normal of sliding particles has turned and after
       // gravity has changed the approach, and cannot bounce a particle twice in one step.
@@ -750,18 +750,18 @@ export function solve(
 // the impact graph, as in Newton's cradle (Smith, Kaufman, Vouga, Tamstorf and Grinspun,
 // "Reflections on Simultaneous Impact", SIGGRAPH 2012, name this family and the properties it
 // keeps): after the relax pass of a sub-step in which something bounced, round after round, every
-// touching contact that approaches faster than the impact speed is an impact of its own and
-// leaves at e times the approach it received, with the masses of its two bodies (a two-point
-// manifold as one block). Each such impact keeps momentum and angular momentum, keeps the
-// energy at e = 1, and at e = 0 stops the approach as an inelastic collision does; a chain of
-// them is the sequential-impact solution (a ball dropped on an equal ball resting on the floor
-// rebounds to its drop height, the bottom one stays). Kept of the paper's properties: momentum,
-// energy (e = 1: never gained; e < 1: lost), and breaking of contact along the chain; given up:
-// symmetry of truly simultaneous impacts (the round visits contacts in the solver's order).
-// Joints: a lone bounce of the relax pass and the joints are solved together, a few Gauss-Seidel
-// iterations, the impact towards its target (-e times its approach), so that a disc hitting a
-// pinned rod sees the rod's pinned effective mass. Not the rounds' impacts, nor several bounces at
-// once: impacts of one chain solved together towards fixed targets make energy. Resting contacts that no impact reaches are
+// touching contact that approaches faster than the impact speed is an impact of its own and leaves
+// at e times the approach it received, with the masses of its two bodies (a two-point manifold as
+// one block). Each such impact keeps momentum and angular momentum, keeps the energy at e = 1, and
+// at e = 0 stops the approach as an inelastic collision does; a chain of them is the
+// sequential-impact solution (a ball dropped on an equal ball resting on the floor rebounds to its
+// drop height, the bottom one stays). Kept of the paper's properties: momentum, energy (e = 1:
+// never gained; e < 1: lost), and breaking of contact along the chain; given up: symmetry of truly
+// simultaneous impacts (the round visits contacts in the solver's order). Joints: a lone bounce of
+// the relax pass and the joints are solved together, a few Gauss-Seidel iterations, the impact
+// towards its target (-e times its approach), so that a disc hitting a pinned rod sees the rod's
+// pinned effective mass. Not the rounds' impacts, nor several bounces at once: impacts of one chain
+// solved together towards fixed targets make energy. Resting contacts that no impact reaches are
 // never visited by an impact (they approach slower than the impact speed), so stacks stay at rest
 // and sleep; steps without a bounce run no round at all.
 

@@ -459,8 +459,8 @@ export class Solver {
   }
 
   /**
-   * The impact rounds after a relax pass that bounced (the kernel's impacts), for the constraints at
-   * positions `from` to `to` of the visiting order: round after round until no touching contact
+   * The impact rounds after a relax pass that bounced (the kernel's impacts), for the constraints
+   * at positions `from` to `to` of the visiting order: round after round until no touching contact
    * approaches faster than `impactSpeed` (at most MAX_IMPACT_ROUNDS); a lone bounce of the relax
    * pass first solved again together with the joints, when there are any.
    */
