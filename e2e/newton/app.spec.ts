@@ -124,13 +124,22 @@ test('newton: keyboard only, and a navigation rail on a wide screen', async ({ b
       0,
       'rail, not bottom bar',
     );
-    // Arrow keys tilt (the desktop's stand-in for the phone).
+    // Arrow keys tilt (the desktop's stand-in for the phone): two presses of sin θ = 0.25 lean
+    // the tray to sin θ = 0.5, which gives every particle the acceleration g sin θ along it.
     await page.locator('body').press('ArrowRight');
     await page.keyboard.press('ArrowRight');
-    assert.equal(
-      (await page.locator('[data-readout="push"]').textContent())!.replace(/\u00a0/g, ' '),
-      '0.5 N, 0°',
+    const push = (await page.locator('[data-readout="push"]').textContent())!.replace(
+      /\u00a0/g,
+      ' ',
     );
+    const pushMatch = /^([\d.]+) m\/s², (-?\d+)°$/.exec(push);
+    assert.ok(pushMatch !== null, `tray acceleration readout: ${push}`);
+    const G = 9.81;
+    assert.ok(
+      Math.abs(Number(pushMatch[1]) - G * 0.5) < 0.01,
+      `tray acceleration ${push}, not g sin θ = ${(G * 0.5).toFixed(2)} m/s²`,
+    );
+    assert.equal(Number(pushMatch[2]), 0, `tray acceleration ${push} points right`);
     // Spawn particles with the mouse, pause with the keyboard.
     const box = (await page.locator('#reactions physical-canvas').boundingBox())!;
     for (const [fx, fy] of [

@@ -1,7 +1,7 @@
 import assert from 'node:assert/strict';
 import { test } from '../harness.ts';
 import { phoneOptions } from './fit.ts';
-import { assertQuiet, closeApp, openApp, paintedPixels, readout } from './phone.ts';
+import { assertQuiet, changedPixels, closeApp, openApp, paintedPixels, readout } from './phone.ts';
 
 const CANVAS = '#inertia physical-canvas';
 
@@ -11,19 +11,25 @@ test('newton: inertia lab (375x667), a student hides and shows arrows and values
   const app = await openApp(browser, '#inertia', phoneOptions(375, 667, false));
   const { page } = app;
   try {
-    // A force on, paused: the arrows and their values are drawn; hidden, far fewer pixels.
+    // A force on, paused: the arrows and their values are drawn; hidden, they are gone (the
+    // canvas changes, and nothing new is painted: an arrow may lie over its body).
     await page.locator('#inertia [data-action="toggle-force"]').tap();
     await page.waitForTimeout(300);
     await page.locator('#inertia [data-action="play"]').tap();
     await page.waitForTimeout(200);
     const all = await paintedPixels(page, CANVAS);
+    await changedPixels(page, CANVAS);
     await page.locator('[data-control="show-vectors"]').uncheck();
     await page.waitForTimeout(200);
     const noArrows = await paintedPixels(page, CANVAS);
+    const arrowPixels = await changedPixels(page, CANVAS);
     await page.locator('[data-control="show-values"]').uncheck();
     await page.waitForTimeout(200);
     const bare = await paintedPixels(page, CANVAS);
-    assert.ok(noArrows < all, `hiding the arrows draws less (${noArrows} < ${all})`);
+    const valuePixels = await changedPixels(page, CANVAS);
+    assert.ok(arrowPixels > 20, `hiding the arrows changes the drawing (${arrowPixels} pixels)`);
+    assert.ok(noArrows <= all, `hiding the arrows paints nothing new (${noArrows} <= ${all})`);
+    assert.ok(valuePixels > 20, `hiding the values changes the drawing (${valuePixels} pixels)`);
     assert.ok(bare < noArrows, `hiding the values draws less (${bare} < ${noArrows})`);
 
     // Reset all: both shown again, the force off, the clock back to zero.

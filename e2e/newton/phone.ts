@@ -133,6 +133,40 @@ export async function paintedPixels(page: Page, selector: string): Promise<numbe
   }, selector);
 }
 
+/**
+ * How many of the canvas' pixels changed since the last call for the same selector (the first
+ * call records the canvas and returns 0). Unlike a count of painted pixels this sees a drawing laid
+ * over another one, such as an arrow over its body.
+ */
+export async function changedPixels(page: Page, selector: string): Promise<number> {
+  return page.evaluate((css) => {
+    const host = document.querySelector(css)!;
+    const source = host.shadowRoot!.querySelector('canvas')!;
+    const copy = document.createElement('canvas');
+    copy.width = source.width;
+    copy.height = source.height;
+    const context = copy.getContext('2d', { willReadFrequently: true })!;
+    context.drawImage(source, 0, 0);
+    const { data } = context.getImageData(0, 0, copy.width, copy.height);
+    const store = window as unknown as { __lastPixels?: Record<string, Uint8ClampedArray> };
+    const last = (store.__lastPixels ??= {})[css];
+    store.__lastPixels[css] = data;
+    if (last === undefined || last.length !== data.length) return 0;
+    let count = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      if (
+        Math.abs(data[i]! - last[i]!) +
+          Math.abs(data[i + 1]! - last[i + 1]!) +
+          Math.abs(data[i + 2]! - last[i + 2]!) >
+        30
+      ) {
+        count++;
+      }
+    }
+    return count;
+  }, selector);
+}
+
 /** Runs axe-core on the page; returns the serious and critical violations. */
 export async function axeViolations(page: Page): Promise<string[]> {
   const path = createRequire(import.meta.url).resolve('axe-core/axe.min.js');

@@ -31,7 +31,7 @@ describe('preset links', () => {
       'mB=99: outside 0.5 to 5',
       'speed: not a setting of forces',
       'F=1e3: not a number',
-      'FA=-1: outside 0 to 25',
+      'FA=-1: outside 0 to 10',
     ]);
     expect(parsePreset('#reactions?walls=yes').problems).toEqual(['walls=yes: one of 0, 1']);
     // Object's own names are not settings.

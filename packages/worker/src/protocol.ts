@@ -33,25 +33,42 @@ export type BodyOperation =
   | { readonly op: 'wake' }
   | { readonly op: 'sleep' };
 
-/** @internal The body properties a page may set, checked at run time by `WorkerWorld.set`. */
-export const BODY_PROPERTIES = [
-  'position',
-  'angle',
-  'linearVelocity',
-  'angularVelocity',
-  'gravityScale',
-  'linearDamping',
-  'angularDamping',
-  'drag',
-  'fixedRotation',
-  'bullet',
-  'allowSleep',
-  'mass',
-  'inertia',
-] as const;
-
 /** Body properties a page may set. */
-export type BodyProperty = (typeof BODY_PROPERTIES)[number];
+export type BodyProperty =
+  | 'position'
+  | 'angle'
+  | 'linearVelocity'
+  | 'angularVelocity'
+  | 'gravityScale'
+  | 'linearDamping'
+  | 'angularDamping'
+  | 'drag'
+  | 'fixedRotation'
+  | 'bullet'
+  | 'allowSleep'
+  | 'mass'
+  | 'inertia';
+
+// The run-time list `WorkerWorld.set` checks. Typed as a record over BodyProperty, so the compiler
+// refuses a property missing from it or one it does not name: the union stays the one source.
+const SETTABLE: { readonly [P in BodyProperty]: true } = {
+  position: true,
+  angle: true,
+  linearVelocity: true,
+  angularVelocity: true,
+  gravityScale: true,
+  linearDamping: true,
+  angularDamping: true,
+  drag: true,
+  fixedRotation: true,
+  bullet: true,
+  allowSleep: true,
+  mass: true,
+  inertia: true,
+};
+
+/** @internal The body properties a page may set, checked at run time by `WorkerWorld.set`. */
+export const BODY_PROPERTIES = Object.keys(SETTABLE) as readonly BodyProperty[];
 
 /** World settings a page may change while it runs. */
 export type WorldSetting = 'gravity' | 'subSteps' | 'restitutionThreshold' | 'enableSleep';

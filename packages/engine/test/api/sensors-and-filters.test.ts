@@ -88,9 +88,7 @@ describe('sensors', () => {
   });
 
   it('rejects a sensor flag that is not a boolean', () => {
-    expect(() => particle({ radius: 1, sensor: 'yes' as unknown as boolean })).toThrow(
-      /shapes\[0\]\.sensor/,
-    );
+    expect(() => particle({ radius: 1, sensor: 'yes' as unknown as boolean })).toThrow(/^sensor: /);
   });
 });
 
@@ -146,14 +144,12 @@ describe('collision filters', () => {
 
   it('rejects bad bits and groups, naming the field', () => {
     expect(() => box({ width: 1, height: 1, filter: { category: -1 } })).toThrow(
-      /shapes\[0\]\.filter\.category/,
+      /^filter\.category: /,
     );
     expect(() => box({ width: 1, height: 1, filter: { mask: 2 ** 32 } })).toThrow(
-      /shapes\[0\]\.filter\.mask/,
+      /^filter\.mask: /,
     );
-    expect(() => box({ width: 1, height: 1, filter: { group: 1.5 } })).toThrow(
-      /shapes\[0\]\.filter\.group/,
-    );
+    expect(() => box({ width: 1, height: 1, filter: { group: 1.5 } })).toThrow(/^filter\.group: /);
     const body = box({ width: 1, height: 1 });
     expect(() => (body.shapes[0]!.filter = { mask: Number.NaN })).toThrow(PhysicalError);
     expect(() => (body.shapes[0]!.filter = null as unknown as object)).toThrow(/filter/);

@@ -248,14 +248,21 @@ export function InertiaScreen({ active }: { active: boolean }) {
           color: 'rgba(255, 255, 255, 0.85)',
         });
       }
+      // Inside the walls (and the canvas), whatever room the canvas leaves around the box.
+      const inTop = canvas.worldToScreen({ x: 0, y: 0 });
+      const inBottom = canvas.worldToScreen({ x: current.width, y: current.height });
+      const minX = Math.max(4, inTop.x + 4);
+      const maxX = Math.min(cssWidth, inBottom.x) - 4;
+      const minY = Math.max(10, inTop.y + 10);
+      const maxY = Math.min(cssHeight, inBottom.y) - 10;
       for (const { at, text, color } of texts) {
         const point = canvas.worldToScreen(at);
         const width = context.measureText(text).width;
         context.fillStyle = color;
         context.fillText(
           text,
-          Math.max(4, Math.min(cssWidth - width - 4, point.x + 6)),
-          Math.max(10, Math.min(cssHeight - 10, point.y - 10)),
+          Math.max(minX, Math.min(maxX - width, point.x + 6)),
+          Math.max(minY, Math.min(maxY, point.y - 10)),
         );
       }
       // The grid's scale, in the top-left corner inside the walls.

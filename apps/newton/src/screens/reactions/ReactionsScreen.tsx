@@ -348,7 +348,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     if (active && scene === null) build();
   }, [active, scene, build]);
   const rebuild = useCallback(() => build(), [build]);
-  useOrientationRebuild(hostRef, active ? scene : null, rebuild);
+  useOrientationRebuild(hostRef, active ? scene : null, rebuild, sceneSizeFor);
 
   // A preset link followed while the screen is up sets it up again.
   useEffect(() => {
@@ -968,7 +968,8 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                     </Typography>
                   )}
                 </Box>
-                <Box sx={{ display: 'flex', alignItems: 'center', gap: 1 }}>
+                {/* The readouts keep their text's width and go below the pad when it lacks room. */}
+                <Box sx={{ display: 'flex', flexWrap: 'wrap', alignItems: 'center', gap: 1 }}>
                   <Box sx={{ display: 'flex', flexDirection: 'column', gap: 0.5 }}>
                     <Tooltip title={t('reactions.add')}>
                       <IconButton
@@ -1006,7 +1007,13 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                     onLevel={() => changeTilt({ x: 0, y: 0 })}
                   />
                   <Box
-                    sx={{ display: 'flex', flexDirection: 'column', gap: 1, flex: 1, minWidth: 0 }}
+                    sx={{
+                      display: 'flex',
+                      flexDirection: 'column',
+                      gap: 1,
+                      flex: 1,
+                      minWidth: 'auto',
+                    }}
                   >
                     <Readout
                       name="push"

@@ -1,4 +1,0 @@
-import { createRoot } from 'react-dom/client';
-import * as guide from './01-getting-started-55.tsx';
-const [Component] = Object.values(guide) as (() => React.JSX.Element)[];
-createRoot(document.getElementById('root')!).render(<Component />);

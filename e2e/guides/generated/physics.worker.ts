@@ -1,4 +1,0 @@
-// physics.worker.ts
-import { serveWorld } from '@physical/worker';
-
-serveWorld();
