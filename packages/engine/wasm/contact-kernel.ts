@@ -68,7 +68,12 @@ import {
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
+  KICK_VX,
+  KICK_VY,
+  KICK_W,
   LINEAR_SLOP,
+  MARK,
+  MARK_STRIDE,
   MASS_SCALE,
   MAX_CONDITION_NUMBER,
   MAX_NORMAL_IMPULSE,
@@ -121,6 +126,33 @@ function ld(p: usize, k: i32): f64 {
 
 function st(p: usize, k: i32, v: f64): void {
   store<f64>(p + ((<usize>k) << 3), v);
+}
+
+/** The impact mark and sub-step velocity change of the body at state offset `a` (body-state.ts). */
+function markOf(marksPtr: usize, a: i32): usize {
+  return marksPtr + ((<usize>((a / STATE_STRIDE) * MARK_STRIDE)) << 3);
+}
+
+/**
+ * How much this sub-step's integration (gravity, forces) changed the approach along (nx, ny) at
+ * the lever arms (bAx, bAy), (bBx, bBy) of the bodies whose marks are `kA`, `kB` (see markOf).
+ */
+function kickApproach(
+  kA: usize,
+  kB: usize,
+  bAx: f64,
+  bAy: f64,
+  bBx: f64,
+  bBy: f64,
+  nx: f64,
+  ny: f64,
+): f64 {
+  const wA = ld(kA, KICK_W);
+  const wB = ld(kB, KICK_W);
+  return (
+    (ld(kB, KICK_VX) - wB * bBy - (ld(kA, KICK_VX) - wA * bAy)) * nx +
+    (ld(kB, KICK_VY) + wB * bBx - (ld(kA, KICK_VY) + wA * bAx)) * ny
+  );
 }
 
 function advancePose(k: usize, dx: f64, dy: f64, angle: f64): void {
@@ -276,8 +308,7 @@ export function solve(
     const receives =
       !useBias &&
       restitution > 0 &&
-      load<f64>(marksPtr + ((<usize>(a / STATE_STRIDE)) << 3)) +
-        load<f64>(marksPtr + ((<usize>(b / STATE_STRIDE)) << 3)) >
+      ld(markOf(marksPtr, a), MARK) + ld(markOf(marksPtr, b), MARK) >
         0;
     let vAx = ld(sa, V_X);
     let vAy = ld(sa, V_Y);
@@ -482,10 +513,18 @@ export function solve(
         const b2Ay = ld(p2, R_AY) + sy - eAy;
         const b2Bx = ld(p2, R_BX) + sx - eBx;
         const b2By = ld(p2, R_BY) + sy - eBy;
+        // The approaches at that moment (see the single-point case below).
+        const kA = markOf(marksPtr, a);
+        const kB = markOf(marksPtr, b);
+        const since = 0.5 - back * inverseH;
         const approach1 =
-          (vBx - wB * b1By - (vAx - wA * b1Ay)) * nx + (vBy + wB * b1Bx - (vAy + wA * b1Ax)) * ny;
+          (vBx - wB * b1By - (vAx - wA * b1Ay)) * nx +
+          (vBy + wB * b1Bx - (vAy + wA * b1Ax)) * ny +
+          kickApproach(kA, kB, b1Ax, b1Ay, b1Bx, b1By, nx, ny) * since;
         const approach2 =
-          (vBx - wB * b2By - (vAx - wA * b2Ay)) * nx + (vBy + wB * b2Bx - (vAy + wA * b2Ax)) * ny;
+          (vBx - wB * b2By - (vAx - wA * b2Ay)) * nx +
+          (vBy + wB * b2Bx - (vAy + wA * b2Ax)) * ny +
+          kickApproach(kA, kB, b2Ax, b2Ay, b2Bx, b2By, nx, ny) * since;
         const rn1A = b1Ax * ny - b1Ay * nx;
         const rn1B = b1Bx * ny - b1By * nx;
         const rn2A = b2Ax * ny - b2Ay * nx;
@@ -635,8 +674,28 @@ export function solve(
             bBx = ld(p, R_BX) + sx - eBx;
             bBy = ld(p, R_BY) + sy - eBy;
           }
+          // The approach at that moment. The sub-step's velocity is its average (semi-implicit
+          // Euler: positions move by h v); gravity and forces changed it by the integration's
+          // kick k over the sub-step, so at the moment of contact, `back` before its end, the
+          // approach was v + k (1/2 - back / h). Reversing that one (and moving on by the change
+          // for `back`) is the exact bounce of the discrete parabola: a ball bouncing on the
+          // ground keeps the integrator's energy (1/2 m (v + k/2)^2 - m g y at the sub-step's
+          // end) at every bounce, where reversing the average gained or lost up to 2 g h / v of
+          // it, depending on when in the sub-step the ball touched.
           const approach =
-            (vBx - wB * bBy - (vAx - wA * bAy)) * bnx + (vBy + wB * bBx - (vAy + wA * bAx)) * bny;
+            (vBx - wB * bBy - (vAx - wA * bAy)) * bnx +
+            (vBy + wB * bBx - (vAy + wA * bAx)) * bny +
+            kickApproach(
+              markOf(marksPtr, a),
+              markOf(marksPtr, b),
+              bAx,
+              bAy,
+              bBx,
+              bBy,
+              bnx,
+              bny,
+            ) *
+              (0.5 - back * inverseH);
           const rnA = bAx * bny - bAy * bnx;
           const rnB = bBx * bny - bBy * bnx;
           const k = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
@@ -689,8 +748,8 @@ export function solve(
 
     if (bounced) {
       bounces++;
-      if (a != 0) store<f64>(marksPtr + ((<usize>(a / STATE_STRIDE)) << 3), 1);
-      if (b != 0) store<f64>(marksPtr + ((<usize>(b / STATE_STRIDE)) << 3), 1);
+      if (a != 0) st(markOf(marksPtr, a), MARK, 1);
+      if (b != 0) st(markOf(marksPtr, b), MARK, 1);
       // The bounce moved the bodies on: friction acts at the common point where it is now.
       const eAx = ld(sa, DP_X) - ld(cb, REF_DP_AX);
       const eAy = ld(sa, DP_Y) - ld(cb, REF_DP_AY);
@@ -804,8 +863,8 @@ export function impacts(
     }
     const a = load<i32>(bodiesPtr + ((<usize>i) << 3));
     const b = load<i32>(bodiesPtr + ((<usize>i) << 3), 4);
-    const markA = marksPtr + ((<usize>(a / STATE_STRIDE)) << 3);
-    const markB = marksPtr + ((<usize>(b / STATE_STRIDE)) << 3);
+    const markA = markOf(marksPtr, a);
+    const markB = markOf(marksPtr, b);
     if (mode == IMPACT_CLOSE) {
       store<f64>(markA, 0);
       store<f64>(markB, 0);

@@ -8,6 +8,10 @@ import {
   DP_Y,
   Q_C,
   Q_S,
+  KICK_VX,
+  KICK_VY,
+  KICK_W,
+  MARK_STRIDE,
   STATE_STRIDE,
   stateDoubles,
   TABLE_CENTER_X,
@@ -390,7 +394,16 @@ export class Solver {
     // The bodies' impact marks (body-state.ts), as a kernel pointer.
     const marksPointer = memory.offsets[STATES]! + 8 * this.states.marks;
     for (let step = 0; step < settings.subSteps; step++) {
-      integrateVelocities(this.params, bodyList, bodyFrom, bodyTo, s, settings, h);
+      integrateVelocities(
+        this.params,
+        bodyList,
+        bodyFrom,
+        bodyTo,
+        s,
+        this.states.marks,
+        settings,
+        h,
+      );
       refreshCirclePairs(constraints, s);
       joints.warmStart(s);
       // Offsets in bytes: the order holds 4-byte indices.
@@ -690,7 +703,8 @@ function gatherForces(body: Body, dt: number): void {
 /**
  * Semi-implicit Euler, velocity half: v += h (F / m + g), with damping and the thesis's drag
  * applied implicitly (v / (1 + h c)) so that no damping value can reverse a velocity; for the
- * awake bodies list[from .. to), or from .. to themselves when `list` is null.
+ * awake bodies list[from .. to), or from .. to themselves when `list` is null. Each body's
+ * velocity change goes after its impact mark (from `marks` in `s`, body-state.ts).
  */
 function integrateVelocities(
   params: Float64Array,
@@ -698,6 +712,7 @@ function integrateVelocities(
   from: number,
   to: number,
   s: Float64Array,
+  marks: number,
   settings: SolverSettings,
   h: number,
 ): void {
@@ -741,6 +756,11 @@ function integrateVelocities(
       vx *= ratio;
       vy *= ratio;
     }
+    // The velocity change of this integration, for a bounce later in the sub-step (body-state.ts).
+    const m = marks + (i + 1) * MARK_STRIDE;
+    s[m + KICK_VX] = vx - s[k + V_X]!;
+    s[m + KICK_VY] = vy - s[k + V_Y]!;
+    s[m + KICK_W] = w - s[k + W]!;
     s[k + V_X] = vx;
     s[k + V_Y] = vy;
     s[k + W] = w;
