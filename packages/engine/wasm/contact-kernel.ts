@@ -155,6 +155,16 @@ function kickApproach(
   );
 }
 
+/** kickApproach with the lever arms as cross products with the normal (rA x n, rB x n). */
+function kickNormal(kA: usize, kB: usize, nx: f64, ny: f64, leverA: f64, leverB: f64): f64 {
+  return (
+    (ld(kB, KICK_VX) - ld(kA, KICK_VX)) * nx +
+    (ld(kB, KICK_VY) - ld(kA, KICK_VY)) * ny +
+    ld(kB, KICK_W) * leverB -
+    ld(kA, KICK_W) * leverA
+  );
+}
+
 function advancePose(k: usize, dx: f64, dy: f64, angle: f64): void {
   st(k, DP_X, ld(k, DP_X) + dx);
   st(k, DP_Y, ld(k, DP_Y) + dy);
@@ -946,8 +956,12 @@ export function impacts(
         const k11 = mAB + iA * n1A * n1A + iB * n1B * n1B;
         const k12 = mAB + iA * n1A * n2A + iB * n1B * n2B;
         const k22 = mAB + iA * n2A * n2A + iB * n2B * n2B;
-        const q1 = (1 + restitution) * vn1;
-        const q2 = (1 + restitution) * vn2;
+        // The approaches at the sub-step's end, where the round's impacts happen: the sub-step's
+        // average plus half its kick (see the relax pass's bounce in solve).
+        const u1 = vn1 + 0.5 * kickNormal(markA, markB, nx, ny, n1A, n1B);
+        const u2 = vn2 + 0.5 * kickNormal(markA, markB, nx, ny, n2A, n2B);
+        const q1 = (1 + restitution) * u1;
+        const q2 = (1 + restitution) * u2;
         let x1: f64 = -1;
         let x2: f64 = -1;
         const det = k11 * k22 - k12 * k12;
@@ -972,8 +986,8 @@ export function impacts(
           st(p2, TOTAL_NORMAL_IMPULSE, ld(p2, TOTAL_NORMAL_IMPULSE) + x2);
           if (x1 > ld(p1, MAX_NORMAL_IMPULSE)) st(p1, MAX_NORMAL_IMPULSE, x1);
           if (x2 > ld(p2, MAX_NORMAL_IMPULSE)) st(p2, MAX_NORMAL_IMPULSE, x2);
-          st(p1, RELATIVE_VELOCITY, vn1);
-          st(p2, RELATIVE_VELOCITY, vn2);
+          st(p1, RELATIVE_VELOCITY, u1);
+          st(p2, RELATIVE_VELOCITY, u2);
           st(p1, IMPACT, 5);
           st(p2, IMPACT, 5);
           const sum = x1 + x2;
@@ -994,13 +1008,15 @@ export function impacts(
       const leverA = ld(p, RN_A) + dnA;
       const leverB = ld(p, RN_B) + dnB;
       const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * leverB - wA * leverA;
+      // The approach at the sub-step's end (see above).
+      const u = vn + 0.5 * kickNormal(markA, markB, nx, ny, leverA, leverB);
       const accumulated = ld(p, NORMAL_IMPULSE);
       const k = mA + mB + iA * leverA * leverA + iB * leverB * leverB;
       if (!(k > 0)) continue;
       let impulse: f64;
       if (mode == IMPACT_CONTINUE) {
         const target = -restitution * ld(p, RELATIVE_VELOCITY);
-        impulse = max<f64>((target - vn) / k, -accumulated);
+        impulse = max<f64>((target - u) / k, -accumulated);
       } else {
         if (vn >= -(accumulated > 0 && impact != 2 ? loadSpeed : impactSpeed)) continue;
         const separation =
@@ -1009,9 +1025,9 @@ export function impacts(
           (ld(p, R_AX) * nAx + ld(p, R_AY) * nAy) +
           ld(p, BASE_SEPARATION);
         if (separation >= LINEAR_SLOP) continue;
-        impulse = (-(1 + restitution) * vn) / k;
+        impulse = (-(1 + restitution) * u) / k;
         started++;
-        st(p, RELATIVE_VELOCITY, vn);
+        st(p, RELATIVE_VELOCITY, u);
         st(p, IMPACT, 5);
         if (impulse > ld(p, MAX_NORMAL_IMPULSE)) st(p, MAX_NORMAL_IMPULSE, impulse);
       }
