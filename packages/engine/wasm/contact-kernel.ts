@@ -318,8 +318,7 @@ export function solve(
     const receives =
       !useBias &&
       restitution > 0 &&
-      ld(markOf(marksPtr, a), MARK) + ld(markOf(marksPtr, b), MARK) >
-        0;
+      ld(markOf(marksPtr, a), MARK) + ld(markOf(marksPtr, b), MARK) > 0;
     let vAx = ld(sa, V_X);
     let vAy = ld(sa, V_Y);
     let wA = ld(sa, W);
@@ -695,16 +694,7 @@ export function solve(
           const approach =
             (vBx - wB * bBy - (vAx - wA * bAy)) * bnx +
             (vBy + wB * bBx - (vAy + wA * bAx)) * bny +
-            kickApproach(
-              markOf(marksPtr, a),
-              markOf(marksPtr, b),
-              bAx,
-              bAy,
-              bBx,
-              bBy,
-              bnx,
-              bny,
-            ) *
+            kickApproach(markOf(marksPtr, a), markOf(marksPtr, b), bAx, bAy, bBx, bBy, bnx, bny) *
               (0.5 - back * inverseH);
           const rnA = bAx * bny - bAy * bnx;
           const rnB = bBx * bny - bBy * bnx;
