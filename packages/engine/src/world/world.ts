@@ -1,17 +1,6 @@
 import { PhysicalError } from '../core/errors.ts';
 import { callAll, Listeners } from '../core/listeners.ts';
-import {
-  describeValue,
-  MAX_ACCELERATION,
-  MAX_TIME_STEP,
-  MIN_TIME_STEP,
-  requireBoolean,
-  requireCoordinate,
-  requireFunction,
-  requireObject,
-  requireRange,
-  requireVector,
-} from '../core/validate.ts';
+import { describeValue, requireFunction, requireVector } from '../core/validate.ts';
 import { BroadPhase, type ProxyType } from '../collision/broad-phase.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
@@ -35,14 +24,13 @@ import { WorldQueries, type RayCastHit } from './queries.ts';
 import type { WorldInternals } from './snapshot.ts';
 import { ShapeQueries, type QueryPose, type ShapeCastHit } from './shape-queries.ts';
 import {
-  requireRestitutionThreshold,
   resolveKernel,
   resolveWorldOptions,
-  validateSubSteps,
   type ResolvedWorldOptions,
   type WorldOptions,
 } from './world-options.ts';
 import { SizeWarning } from './size-warning.ts';
+import { checkQueryBox, checkRay, checkTimeStep, checkWorldSetting } from './world-checks.ts';
 
 /** Events of a world: a body's events for every body, plus bodies added, removed and woken. */
 export type WorldEvents = BodyEvents & WorldOnlyEvents;
@@ -125,7 +113,7 @@ export class World {
   }
 
   set gravity(value: Vec2Like) {
-    requireVector('gravity', value, MAX_ACCELERATION);
+    checkWorldSetting('gravity', value);
     if (value.x === this.settings.gravityX && value.y === this.settings.gravityY) return;
     this.settings.gravityX = value.x;
     this.settings.gravityY = value.y;
@@ -138,7 +126,7 @@ export class World {
   }
 
   set subSteps(value: number) {
-    this.settings.subSteps = validateSubSteps(value);
+    this.settings.subSteps = checkWorldSetting('subSteps', value) as number;
   }
 
   /** Approach speed (m/s) below which collisions do not bounce; 0 for exact restitution. */
@@ -147,7 +135,7 @@ export class World {
   }
 
   set restitutionThreshold(value: number) {
-    this.settings.restitutionThreshold = requireRestitutionThreshold(value);
+    this.settings.restitutionThreshold = checkWorldSetting('restitutionThreshold', value) as number;
   }
 
   /** Whether resting bodies fall asleep. Turning it off wakes every body. */
@@ -156,7 +144,7 @@ export class World {
   }
 
   set enableSleep(value: boolean) {
-    this.settings.enableSleep = requireBoolean('enableSleep', value);
+    this.settings.enableSleep = checkWorldSetting('enableSleep', value) as boolean;
     if (!value) for (const body of this.bodyList) this.islands.wake(body);
   }
 
@@ -367,14 +355,8 @@ export class World {
         'cannot be called while the world is stepping (from a listener).',
       );
     }
-    requireRange('dt', dt, 0, MAX_TIME_STEP, 's');
+    checkTimeStep(dt);
     if (dt === 0) return;
-    if (dt < MIN_TIME_STEP) {
-      throw new PhysicalError(
-        'dt',
-        `must be 0 or from ${MIN_TIME_STEP} to ${MAX_TIME_STEP} s, got ${dt}.`,
-      );
-    }
     this.locked = true;
     this.holdsReferences = true;
     let thrown: Thrown | null = null;
@@ -429,18 +411,13 @@ export class World {
     readonly maxX: number;
     readonly maxY: number;
   }): Body[] {
-    requireObject('box', box, 'a box { minX, minY, maxX, maxY } in metres');
-    requireCoordinate('box.minX', box.minX);
-    requireCoordinate('box.minY', box.minY);
-    requireCoordinate('box.maxX', box.maxX);
-    requireCoordinate('box.maxY', box.maxY);
+    checkQueryBox(box);
     return this.queries.bodiesInAABB(box.minX, box.minY, box.maxX, box.maxY);
   }
 
   /** The first shape hit by the ray from `from` to `to` (m), or null. */
   rayCast(from: Vec2Like, to: Vec2Like): RayCastHit | null {
-    requireVector('from', from);
-    requireVector('to', to);
+    checkRay(from, to);
     return this.queries.rayCast(from.x, from.y, to.x, to.y);
   }
 
@@ -449,8 +426,7 @@ export class World {
    * world order), one hit per shape. Sensors are not hit. A new array each call.
    */
   rayCastAll(from: Vec2Like, to: Vec2Like): RayCastHit[] {
-    requireVector('from', from);
-    requireVector('to', to);
+    checkRay(from, to);
     return this.queries.rayCastAll(from.x, from.y, to.x, to.y);
   }
 
