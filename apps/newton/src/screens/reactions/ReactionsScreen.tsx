@@ -809,7 +809,6 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   const info = selected === null ? undefined : scene?.particles.get(selected);
   const push = settings.tiltOn ? trayAcceleration(tilt) : { x: 0, y: 0 };
   const pushSize = Math.hypot(push.x, push.y);
-  const record = recorder.record;
   const viewBox =
     scene === null
       ? null
@@ -1089,7 +1088,11 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                 <LabSetup rows={labRows} version={version} onChange={changeLab} />
               </>
             )}
-            {tab === 'results' && <LabResults record={record} />}
+            {tab === 'results' && (
+              <Live active={live} watch={liveKey}>
+                {() => <LabResults record={recorder.record} />}
+              </Live>
+            )}
             {tab === 'options' && (
               <>
                 <Box sx={{ display: 'flex', flexWrap: 'wrap', columnGap: 1, px: 0.5 }}>
