@@ -2,24 +2,25 @@ import { MAX_FORCE, POLYGON_RADIUS } from './inertia-scene.ts';
 
 /**
  * A push by hand (PhET's "Forces and Motion" lets a learner push the object): the learner
- * presses on the body and pulls; the force points from the body's centre to the finger and
- * grows with the distance, like a spring held in the hand, up to the dialog's largest force.
+ * presses on the body and pulls out an arrow; the push points the way the finger moved from
+ * where it pressed and grows with that distance, up to the dialog's largest force. A finger that
+ * stays put keeps the push constant while the body moves away under it: F = m a, plainly.
  */
 
-/** Newtons of push per metre between the body's centre and the finger. */
+/** Newtons of push per metre the finger moved from where it pressed. */
 export const PUSH_PER_METRE = 2;
 /** A press this close to the body's centre (m) starts a push: the body and a finger's width. */
 export const PUSH_REACH = POLYGON_RADIUS + 0.3;
 /** The push of a held arrow key (N): the keyboard's equal of a drag. */
 export const KEY_PUSH = 2;
 
-/** The push (N, y-down) for a finger at `finger` and the body's centre at `centre` (m). */
+/** The push (N, y-down) for a finger pressed at `start` and now at `finger` (m). */
 export function pushFromDrag(
-  centre: { x: number; y: number },
+  start: { x: number; y: number },
   finger: { x: number; y: number },
 ): { x: number; y: number } {
-  const dx = finger.x - centre.x;
-  const dy = finger.y - centre.y;
+  const dx = finger.x - start.x;
+  const dy = finger.y - start.y;
   const size = Math.hypot(dx, dy) * PUSH_PER_METRE;
   if (size === 0) return { x: 0, y: 0 };
   const scale = Math.min(size, MAX_FORCE) / size;
