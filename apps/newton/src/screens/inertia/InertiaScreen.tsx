@@ -30,6 +30,7 @@ import { clipToWalls } from '../../app/clip-to-walls.ts';
 import { ElasticitySlider } from '../../app/ElasticitySlider.tsx';
 import { Stopwatch } from '../../app/Stopwatch.tsx';
 import { useI18n } from '../../i18n/i18n.tsx';
+import { Ruler } from '../../lab/Ruler.tsx';
 import { PUSH_KEYS, pushFromDrag, pushFromKeys, startsPush } from './body-push.ts';
 import { directionName } from './direction-name.ts';
 import { ForceDialog } from './ForceDialog.tsx';
@@ -89,7 +90,8 @@ export function InertiaScreen({ active }: { active: boolean }) {
   const settingsRef = useRef({ elasticity, surface });
   settingsRef.current = { elasticity, surface };
   // What the canvas shows besides the body: the arrows, and the values written beside them.
-  const [show, setShow] = useState({ vectors: true, values: true });
+  const [show, setShow] = useState({ vectors: true, values: true, ruler: false });
+  const rulerCanvas = useCallback(() => canvasRef.current, []);
   const showRef = useRef(show);
   showRef.current = show;
   useEffect(() => {
@@ -141,7 +143,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
     setElasticityState(1);
     setSurfaceState('ice');
     settingsRef.current = { elasticity: 1, surface: 'ice' };
-    setShow({ vectors: true, values: true });
+    setShow({ vectors: true, values: true, ruler: false });
     build();
   }, [build]);
 
@@ -350,12 +352,13 @@ export function InertiaScreen({ active }: { active: boolean }) {
     [announce, t, unit, number],
   );
 
-  // A press on the body pushes it: towards the finger, harder the farther it is pulled, until
+  // A press on the body and a pull push it: the way the finger moved, harder the farther, until
   // the finger lets go. Presses elsewhere go on to the canvas.
   useEffect(() => {
     const host = hostRef.current;
     if (host === null || scene === null) return;
     let pointer: number | null = null;
+    let start = { x: 0, y: 0 };
     const toWorld = (event: PointerEvent) =>
       canvasRef.current?.clientToWorld(event.clientX, event.clientY);
     const onDown = (event: PointerEvent): void => {
@@ -363,16 +366,16 @@ export function InertiaScreen({ active }: { active: boolean }) {
       if (pointer !== null || point === undefined || !startsPush(scene.body.position, point))
         return;
       pointer = event.pointerId;
+      start = point;
       host.setPointerCapture(event.pointerId);
       event.preventDefault();
       event.stopPropagation();
-      setPush(pushFromDrag(scene.body.position, point));
     };
     const onMove = (event: PointerEvent): void => {
       if (event.pointerId !== pointer) return;
       const point = toWorld(event);
       event.stopPropagation();
-      if (point !== undefined) setPush(pushFromDrag(scene.body.position, point));
+      if (point !== undefined) setPush(pushFromDrag(start, point));
     };
     const onUp = (event: PointerEvent): void => {
       if (event.pointerId !== pointer) return;
@@ -470,20 +473,25 @@ export function InertiaScreen({ active }: { active: boolean }) {
                 angle: number(screenAngle(velocity), 0),
               })
             : t('inertia.describeRest'),
-          force: applied
-            ? t('inertia.describeForce', {
-                force: unit(magnitude, 'N', 1),
-                angle: number(angle, 0),
-              })
-            : t('inertia.describeNoForce'),
+          force: [
+            applied
+              ? t('inertia.describeForce', {
+                  force: unit(magnitude, 'N', 1),
+                  angle: number(angle, 0),
+                })
+              : push === null
+                ? t('inertia.describeNoForce')
+                : '',
+            push === null
+              ? ''
+              : t('inertia.describePush', {
+                  force: unit(Math.hypot(push.x, push.y), 'N', 1),
+                  angle: number(screenAngle(push), 0),
+                }),
+          ]
+            .filter((part) => part !== '')
+            .join(' '),
         }) +
-        (push === null
-          ? ''
-          : ' ' +
-            t('inertia.describePush', {
-              force: unit(Math.hypot(push.x, push.y), 'N', 1),
-              angle: number(screenAngle(push), 0),
-            })) +
         ' ' +
         netDescription;
   const viewBox =
@@ -502,26 +510,29 @@ export function InertiaScreen({ active }: { active: boolean }) {
       active={active}
       law={t('inertia.law')}
       stage={
-        <Box
-          ref={hostRef}
-          // The finger pushes the body: the browser must not take the drag for a pan.
-          sx={{ flex: 1, minWidth: 0, display: 'flex', touchAction: 'none' }}
-        >
-          <PhysicalCanvas
-            drag={false}
-            maxPixelRatio={CANVAS_PIXEL_RATIO}
-            ref={canvasRef}
-            paused={sim.paused}
-            world={scene?.world ?? null}
-            fit="contain"
-            viewBox={viewBox}
-            timeScale={sim.timeScale}
-            drawOverlay={drawOverlay}
-            onPauseChange={({ paused }) => sim.setPaused(paused)}
-            aria-label={description}
-            style={{ flex: 1, height: 'auto', minHeight: 0 }}
-          />
-        </Box>
+        <>
+          <Box
+            ref={hostRef}
+            // The finger pushes the body: the browser must not take the drag for a pan.
+            sx={{ flex: 1, minWidth: 0, display: 'flex', touchAction: 'none' }}
+          >
+            <PhysicalCanvas
+              drag={false}
+              maxPixelRatio={CANVAS_PIXEL_RATIO}
+              ref={canvasRef}
+              paused={sim.paused}
+              world={scene?.world ?? null}
+              fit="contain"
+              viewBox={viewBox}
+              timeScale={sim.timeScale}
+              drawOverlay={drawOverlay}
+              onPauseChange={({ paused }) => sim.setPaused(paused)}
+              aria-label={description}
+              style={{ flex: 1, height: 'auto', minHeight: 0 }}
+            />
+          </Box>
+          {show.ruler && <Ruler canvas={rulerCanvas} version={scene} />}
+        </>
       }
       panel={
         <>
@@ -611,7 +622,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
             </ToggleButtonGroup>
           </Box>
           <Box sx={{ display: 'flex', flexWrap: 'wrap', columnGap: 1, px: 0.5 }}>
-            {(['vectors', 'values'] as const).map((name) => (
+            {(['vectors', 'values', 'ruler'] as const).map((name) => (
               <FormControlLabel
                 key={name}
                 sx={{ minHeight: 48, mr: 0 }}
