@@ -64,6 +64,9 @@ export class ContactManager {
   readonly endedA: Shape[] = [];
   readonly endedB: Shape[] = [];
   endedCount = 0;
+  /** Contacts made and destroyed since the world was created (the bench's churn counters). */
+  made = 0;
+  destroyed = 0;
   private readonly pairs = new PairSet();
   private readonly pool: Contact[] = [];
   /** Pairs accepted by addPair, not yet contacts (the first `pendingCount`, already ordered). */
@@ -147,6 +150,7 @@ export class ContactManager {
       contact.indexInB = contact.bodyB.contacts.length;
       contact.bodyB.contacts.push(contact);
     }
+    this.made += count;
     this.pendingCount = 0;
   }
 
@@ -393,6 +397,7 @@ export class ContactManager {
     }
     contact.index = -1;
     contact.touching = false;
+    this.destroyed++;
     contact.release();
     this.pool.push(contact);
   }
