@@ -58,10 +58,10 @@ for (const name of values.scenes.split(',')) {
   }
   const n = scene.steps - 1;
   const timed = ms.slice(1);
-  console.log(
+  process.stdout.write(
     `${name}: ${n} steps; per step ${(made / n).toFixed(0)} contacts made, ` +
       `${(ended / n).toFixed(0)} ended, ${(contacts / n).toFixed(0)} alive; ` +
       `median ${median(timed).toFixed(2)} ms/step; first step ${ms[0]!.toFixed(1)} ms ` +
-      `(${(ms[0]! / median(timed)).toFixed(1)}x the median)`,
+      `(${(ms[0]! / median(timed)).toFixed(1)}x the median)\n`,
   );
 }
