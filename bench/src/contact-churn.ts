@@ -28,7 +28,10 @@ function median(list: number[]): number {
 }
 
 for (const name of values.scenes.split(',')) {
-  const scene = buildScene(name, values.steps === undefined ? {} : { steps: Number(values.steps) });
+  const scene = buildScene(name, {
+    small: false,
+    ...(values.steps === undefined ? {} : { steps: Number(values.steps) }),
+  });
   const bench = physical.create(scene);
   const world = physicalWorldOf(bench)!;
   const manager = (world as unknown as { internals(): { contactManager: Churn } }).internals()
