@@ -361,6 +361,7 @@ export class World {
     this.holdsReferences = true;
     let thrown: Thrown | null = null;
     try {
+      this.contactManager.reservePairs(this.shapesById.length);
       this.broadPhase.updatePairs(this.onPair);
       // Room for the whole step in one move of the solver memory, then the new contacts.
       this.solver.reserve(this.bodyList.length, this.contactManager.countWithPending);
