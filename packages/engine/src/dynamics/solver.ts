@@ -242,7 +242,7 @@ export class Solver {
     // Joints first (they do not depend on the contacts): whether the step may run in batches of
     // islands decides how the contacts are prepared.
     const joints = this.joints;
-    joints.prepare(dt, subSteps, contactHertz, this.awakeCount);
+    joints.prepare(dt, subSteps, contactHertz, this.awakeCount, settings.maxLinearSpeed);
     const batches = this.batches;
     const batchable = joints.activeCount === 0 && batches.wants(contactCount);
     // With batches in view, contacts are only classified here and each batch fills its
@@ -434,7 +434,7 @@ export class Solver {
         shock.solve(constraints, s, inverseH, shockBiasRate, maxPushSpeed, threshold, true);
       }
       joints.solveChains(s, true);
-      integratePositions(bodyList, bodyFrom, bodyTo, s, h);
+      integratePositions(this.params, bodyList, bodyFrom, bodyTo, s, settings, h);
       joints.solveChains(s, false, true);
       refreshCirclePairs(constraints, s);
       joints.solve(s, false);
@@ -718,11 +718,7 @@ function integrateVelocities(
 ): void {
   const gx = settings.gravityX;
   const gy = settings.gravityY;
-  const maxSpeedSquared = settings.maxLinearSpeed * settings.maxLinearSpeed;
-  // At most a quarter turn per sub-step (Box2D v3's B2_MAX_ROTATION): faster, the first-order
-  // rotation of the contact and joint anchors is meaningless, and a joint pulling a tiny body
-  // by a long lever could spin it up without bound until it became NaN.
-  const maxAngularSpeed = (0.25 * Math.PI) / h;
+  setSpeedLimits(settings, h);
   for (let n = from; n < to; n++) {
     const i = list === null ? n : list[n]!;
     const q = i * PARAM_STRIDE;
@@ -748,42 +744,103 @@ function integrateVelocities(
     }
     const angularDamping = params[q + ANGULAR_DAMPING]!;
     if (angularDamping > 0) w /= 1 + h * angularDamping;
-    if (w > maxAngularSpeed) w = maxAngularSpeed;
-    else if (w < -maxAngularSpeed) w = -maxAngularSpeed;
-    const speedSquared = vx * vx + vy * vy;
-    if (speedSquared > maxSpeedSquared) {
-      const ratio = settings.maxLinearSpeed / Math.sqrt(speedSquared);
-      vx *= ratio;
-      vy *= ratio;
-    }
-    // The velocity change of this integration, for a bounce later in the sub-step (body-state.ts).
-    const m = marks + (i + 1) * MARK_STRIDE;
-    s[m + KICK_VX] = vx - s[k + V_X]!;
-    s[m + KICK_VY] = vy - s[k + V_Y]!;
-    s[m + KICK_W] = w - s[k + W]!;
+    const vx0 = s[k + V_X]!;
+    const vy0 = s[k + V_Y]!;
+    const w0 = s[k + W]!;
     s[k + V_X] = vx;
     s[k + V_Y] = vy;
     s[k + W] = w;
+    limitSpeed(s, k);
+    // The velocity change of this integration, for a bounce later in the sub-step (body-state.ts).
+    const m = marks + (i + 1) * MARK_STRIDE;
+    s[m + KICK_VX] = s[k + V_X]! - vx0;
+    s[m + KICK_VY] = s[k + V_Y]! - vy0;
+    s[m + KICK_W] = s[k + W]! - w0;
+  }
+}
+
+/** maxLinearSpeed and the quarter turn per sub-step (rad/s), for limitSpeed (see below). */
+const SPEED_LIMITS = new Float64Array(2);
+
+/**
+ * At most a quarter turn per sub-step (Box2D v3's B2_MAX_ROTATION): faster, the first-order
+ * rotation of the contact and joint anchors is meaningless, and a joint pulling a tiny body by a
+ * long lever could spin it up without bound until it became NaN.
+ */
+function setSpeedLimits(settings: SolverSettings, h: number): void {
+  SPEED_LIMITS[0] = settings.maxLinearSpeed;
+  SPEED_LIMITS[1] = (0.25 * Math.PI) / h;
+}
+
+/**
+ * Holds the velocity of the body at state offset k to the limits setSpeedLimits wrote (read from
+ * a typed array: a fractional argument would be boxed). A velocity with a component that
+ * overflowed to infinity or became NaN has no direction left to keep: it is dropped (set to zero),
+ * so a solve that failed for one sub-step stops the body instead of making its pose NaN.
+ */
+function limitSpeed(s: Float64Array, k: number): void {
+  const maxAngularSpeed = SPEED_LIMITS[1]!;
+  const w = s[k + W]!;
+  if (w > maxAngularSpeed) s[k + W] = maxAngularSpeed;
+  else if (w < -maxAngularSpeed) s[k + W] = -maxAngularSpeed;
+  else if (w !== w) s[k + W] = 0;
+  const maxSpeed = SPEED_LIMITS[0]!;
+  const vx = s[k + V_X]!;
+  const vy = s[k + V_Y]!;
+  const speedSquared = vx * vx + vy * vy;
+  if (speedSquared <= maxSpeed * maxSpeed) return;
+  if (speedSquared < Infinity) {
+    const ratio = maxSpeed / Math.sqrt(speedSquared);
+    s[k + V_X] = vx * ratio;
+    s[k + V_Y] = vy * ratio;
+    return;
+  }
+  // The square overflowed (or is NaN): scale by the larger component first.
+  const big = Math.max(Math.abs(vx), Math.abs(vy));
+  if (big < Infinity) {
+    const ux = vx / big;
+    const uy = vy / big;
+    const ratio = maxSpeed / Math.sqrt(ux * ux + uy * uy);
+    s[k + V_X] = ux * ratio;
+    s[k + V_Y] = uy * ratio;
+  } else {
+    s[k + V_X] = 0;
+    s[k + V_Y] = 0;
   }
 }
 
 /**
  * Semi-implicit Euler, position half: x += h v with the velocity just solved; for the awake
  * bodies list[from .. to), or from .. to themselves when `list` is null.
+ *
+ * A dynamic body's solved velocity is held to the same limits as in integrateVelocities
+ * (maxLinearSpeed, a quarter turn per sub-step). The solve can exceed them: a joint that cannot
+ * hold a tiny body against a large torque (a constant 2 N m on a 0.01 kg box on a prismatic
+ * joint) let each sub-step's impulses grow the last's, until the velocities overflowed and the
+ * whole world went NaN. Bounded, every pose moves at most maxLinearSpeed h and a quarter turn per
+ * sub-step, so no error a constraint sees can grow without bound (see limitSpeed for a velocity
+ * that is no longer finite).
  */
 function integratePositions(
+  params: Float64Array,
   list: Int32Array | null,
   from: number,
   to: number,
   s: Float64Array,
+  settings: SolverSettings,
   h: number,
 ): void {
+  setSpeedLimits(settings, h);
   for (let n = from; n < to; n++) {
     const i = list === null ? n : list[n]!;
     const k = (i + 1) * STATE_STRIDE;
+    // Kinematic bodies keep the velocity they were given.
+    if (params[i * PARAM_STRIDE + INV_MASS]! !== 0) limitSpeed(s, k);
     const w = s[k + W]!;
-    s[k + DP_X] += h * s[k + V_X]!;
-    s[k + DP_Y] += h * s[k + V_Y]!;
+    const vx = s[k + V_X]!;
+    const vy = s[k + V_Y]!;
+    s[k + DP_X] += h * vx;
+    s[k + DP_Y] += h * vy;
     if (w !== 0) {
       s[k + DELTA_ANGLE] += h * w;
       // First-order rotation update, renormalised: enough for the contact anchors within a step.
