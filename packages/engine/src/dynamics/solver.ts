@@ -123,16 +123,17 @@ export class Solver {
   }
 
   /**
-   * Frees the room sized for many more bodies and contacts than the world now has (`contacts`
-   * live contact slots, kept); the next steps grow it again as needed.
+   * Frees the room sized for many more bodies and contacts than the world now has (`bodies`
+   * bodies' numbers and `contacts` live contact slots, kept); the next steps grow it again as
+   * needed.
    */
-  shrink(contacts: number): void {
+  shrink(bodies: number, contacts: number): void {
     this.releaseReferences();
     this.awake.length = 0;
     this.fastBodies.length = 0;
     this.fastBullets.length = 0;
     if (this.params.length > PARAM_STRIDE * 64) this.params = new Float64Array(PARAM_STRIDE * 64);
-    this.memory.shrink(contacts);
+    this.memory.shrink(bodies, contacts);
   }
 
   /**
