@@ -942,7 +942,6 @@ export class Body<UserData = unknown> {
     this.moveTo(createLocalBodyStore(), 0);
   }
 
-
   /** @internal Recomputes the centre of mass in world coordinates from the transform. */
   syncCenter(): void {
     const { c, s, x, y } = this.transform;
