@@ -24,9 +24,9 @@ import { computeCapsuleMass } from '../geometry/capsule.ts';
 import { computeCircleMass } from '../geometry/circle.ts';
 import { MassData } from '../geometry/mass-data.ts';
 import { computePolygonMass } from '../geometry/polygon.ts';
+import type { BodyStore } from './body-memory.ts';
 import {
   BODY_STRIDE,
-  BodyStore,
   createLocalBodyStore,
   B_ANGLE,
   B_ANGLE0,
