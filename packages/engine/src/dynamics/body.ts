@@ -212,6 +212,7 @@ export class Body<UserData = unknown> {
   get angleValue(): number {
     return this.store.data[this.base + B_ANGLE]!;
   }
+  /** @internal */
   set angleValue(value: number) {
     this.store.data[this.base + B_ANGLE] = value;
   }
@@ -219,6 +220,7 @@ export class Body<UserData = unknown> {
   get centerX(): number {
     return this.store.data[this.base + B_CENTER_X]!;
   }
+  /** @internal */
   set centerX(value: number) {
     this.store.data[this.base + B_CENTER_X] = value;
   }
@@ -226,6 +228,7 @@ export class Body<UserData = unknown> {
   get centerY(): number {
     return this.store.data[this.base + B_CENTER_Y]!;
   }
+  /** @internal */
   set centerY(value: number) {
     this.store.data[this.base + B_CENTER_Y] = value;
   }
@@ -233,6 +236,7 @@ export class Body<UserData = unknown> {
   get localCenterX(): number {
     return this.store.data[this.base + B_LOCAL_CENTER_X]!;
   }
+  /** @internal */
   set localCenterX(value: number) {
     this.store.data[this.base + B_LOCAL_CENTER_X] = value;
   }
@@ -240,6 +244,7 @@ export class Body<UserData = unknown> {
   get localCenterY(): number {
     return this.store.data[this.base + B_LOCAL_CENTER_Y]!;
   }
+  /** @internal */
   set localCenterY(value: number) {
     this.store.data[this.base + B_LOCAL_CENTER_Y] = value;
   }
@@ -247,6 +252,7 @@ export class Body<UserData = unknown> {
   get center0X(): number {
     return this.store.data[this.base + B_CENTER0_X]!;
   }
+  /** @internal */
   set center0X(value: number) {
     this.store.data[this.base + B_CENTER0_X] = value;
   }
@@ -254,6 +260,7 @@ export class Body<UserData = unknown> {
   get center0Y(): number {
     return this.store.data[this.base + B_CENTER0_Y]!;
   }
+  /** @internal */
   set center0Y(value: number) {
     this.store.data[this.base + B_CENTER0_Y] = value;
   }
@@ -261,6 +268,7 @@ export class Body<UserData = unknown> {
   get angle0(): number {
     return this.store.data[this.base + B_ANGLE0]!;
   }
+  /** @internal */
   set angle0(value: number) {
     this.store.data[this.base + B_ANGLE0] = value;
   }
@@ -268,6 +276,7 @@ export class Body<UserData = unknown> {
   get velocityX(): number {
     return this.store.data[this.base + B_VX]!;
   }
+  /** @internal */
   set velocityX(value: number) {
     this.store.data[this.base + B_VX] = value;
   }
@@ -275,6 +284,7 @@ export class Body<UserData = unknown> {
   get velocityY(): number {
     return this.store.data[this.base + B_VY]!;
   }
+  /** @internal */
   set velocityY(value: number) {
     this.store.data[this.base + B_VY] = value;
   }
@@ -282,6 +292,7 @@ export class Body<UserData = unknown> {
   get angularVelocityValue(): number {
     return this.store.data[this.base + B_W]!;
   }
+  /** @internal */
   set angularVelocityValue(value: number) {
     this.store.data[this.base + B_W] = value;
   }
@@ -289,6 +300,7 @@ export class Body<UserData = unknown> {
   get massValue(): number {
     return this.store.data[this.base + B_MASS]!;
   }
+  /** @internal */
   set massValue(value: number) {
     this.store.data[this.base + B_MASS] = value;
   }
@@ -296,6 +308,7 @@ export class Body<UserData = unknown> {
   get invMass(): number {
     return this.store.data[this.base + B_INV_MASS]!;
   }
+  /** @internal */
   set invMass(value: number) {
     this.store.data[this.base + B_INV_MASS] = value;
   }
@@ -303,6 +316,7 @@ export class Body<UserData = unknown> {
   get inertiaValue(): number {
     return this.store.data[this.base + B_INERTIA]!;
   }
+  /** @internal */
   set inertiaValue(value: number) {
     this.store.data[this.base + B_INERTIA] = value;
   }
@@ -310,6 +324,7 @@ export class Body<UserData = unknown> {
   get invInertia(): number {
     return this.store.data[this.base + B_INV_INERTIA]!;
   }
+  /** @internal */
   set invInertia(value: number) {
     this.store.data[this.base + B_INV_INERTIA] = value;
   }
@@ -317,6 +332,7 @@ export class Body<UserData = unknown> {
   get massOverride(): number {
     return this.store.data[this.base + B_MASS_OVERRIDE]!;
   }
+  /** @internal */
   set massOverride(value: number) {
     this.store.data[this.base + B_MASS_OVERRIDE] = value;
   }
@@ -324,6 +340,7 @@ export class Body<UserData = unknown> {
   get inertiaOverride(): number {
     return this.store.data[this.base + B_INERTIA_OVERRIDE]!;
   }
+  /** @internal */
   set inertiaOverride(value: number) {
     this.store.data[this.base + B_INERTIA_OVERRIDE] = value;
   }
@@ -331,6 +348,7 @@ export class Body<UserData = unknown> {
   get forceX(): number {
     return this.store.data[this.base + B_FORCE_X]!;
   }
+  /** @internal */
   set forceX(value: number) {
     this.store.data[this.base + B_FORCE_X] = value;
   }
@@ -338,6 +356,7 @@ export class Body<UserData = unknown> {
   get forceY(): number {
     return this.store.data[this.base + B_FORCE_Y]!;
   }
+  /** @internal */
   set forceY(value: number) {
     this.store.data[this.base + B_FORCE_Y] = value;
   }
@@ -345,6 +364,7 @@ export class Body<UserData = unknown> {
   get torqueValue(): number {
     return this.store.data[this.base + B_TORQUE]!;
   }
+  /** @internal */
   set torqueValue(value: number) {
     this.store.data[this.base + B_TORQUE] = value;
   }
@@ -352,6 +372,7 @@ export class Body<UserData = unknown> {
   get gravityScaleValue(): number {
     return this.store.data[this.base + B_GRAVITY_SCALE]!;
   }
+  /** @internal */
   set gravityScaleValue(value: number) {
     this.store.data[this.base + B_GRAVITY_SCALE] = value;
   }
@@ -359,6 +380,7 @@ export class Body<UserData = unknown> {
   get linearDampingValue(): number {
     return this.store.data[this.base + B_LINEAR_DAMPING]!;
   }
+  /** @internal */
   set linearDampingValue(value: number) {
     this.store.data[this.base + B_LINEAR_DAMPING] = value;
   }
@@ -366,6 +388,7 @@ export class Body<UserData = unknown> {
   get angularDampingValue(): number {
     return this.store.data[this.base + B_ANGULAR_DAMPING]!;
   }
+  /** @internal */
   set angularDampingValue(value: number) {
     this.store.data[this.base + B_ANGULAR_DAMPING] = value;
   }
@@ -373,6 +396,7 @@ export class Body<UserData = unknown> {
   get dragValue(): number {
     return this.store.data[this.base + B_DRAG]!;
   }
+  /** @internal */
   set dragValue(value: number) {
     this.store.data[this.base + B_DRAG] = value;
   }
@@ -380,6 +404,7 @@ export class Body<UserData = unknown> {
   get sleepTime(): number {
     return this.store.data[this.base + B_SLEEP_TIME]!;
   }
+  /** @internal */
   set sleepTime(value: number) {
     this.store.data[this.base + B_SLEEP_TIME] = value;
   }
@@ -387,6 +412,7 @@ export class Body<UserData = unknown> {
   get maxExtent(): number {
     return this.store.data[this.base + B_MAX_EXTENT]!;
   }
+  /** @internal */
   set maxExtent(value: number) {
     this.store.data[this.base + B_MAX_EXTENT] = value;
   }
@@ -394,6 +420,7 @@ export class Body<UserData = unknown> {
   get minExtent(): number {
     return this.store.data[this.base + B_MIN_EXTENT]!;
   }
+  /** @internal */
   set minExtent(value: number) {
     this.store.data[this.base + B_MIN_EXTENT] = value;
   }
@@ -401,6 +428,7 @@ export class Body<UserData = unknown> {
   get originReach(): number {
     return this.store.data[this.base + B_ORIGIN_REACH]!;
   }
+  /** @internal */
   set originReach(value: number) {
     this.store.data[this.base + B_ORIGIN_REACH] = value;
   }
@@ -408,6 +436,7 @@ export class Body<UserData = unknown> {
   get fixedRotationValue(): boolean {
     return (this.store.data[this.base + B_FLAGS]! & FLAG_FIXED_ROTATION) !== 0;
   }
+  /** @internal */
   set fixedRotationValue(value: boolean) {
     const d = this.store.data;
     const i = this.base + B_FLAGS;
@@ -417,6 +446,7 @@ export class Body<UserData = unknown> {
   get allowSleepValue(): boolean {
     return (this.store.data[this.base + B_FLAGS]! & FLAG_ALLOW_SLEEP) !== 0;
   }
+  /** @internal */
   set allowSleepValue(value: boolean) {
     const d = this.store.data;
     const i = this.base + B_FLAGS;
@@ -426,6 +456,7 @@ export class Body<UserData = unknown> {
   get bulletValue(): boolean {
     return (this.store.data[this.base + B_FLAGS]! & FLAG_BULLET) !== 0;
   }
+  /** @internal */
   set bulletValue(value: boolean) {
     const d = this.store.data;
     const i = this.base + B_FLAGS;
@@ -435,6 +466,7 @@ export class Body<UserData = unknown> {
   get awake(): boolean {
     return this.store.data[this.base + B_AWAKE] !== 0;
   }
+  /** @internal */
   set awake(value: boolean) {
     this.store.data[this.base + B_AWAKE] = value ? 1 : 0;
   }
