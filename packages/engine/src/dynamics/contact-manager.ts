@@ -2,7 +2,7 @@ import { releaseFrom } from '../core/release.ts';
 import { PairSet } from '../collision/pair-set.ts';
 import { AABB_MARGIN, LINEAR_SLOP, SPECULATIVE_DISTANCE } from '../core/constants.ts';
 import type { Body } from './body.ts';
-import { BodyPoses } from './body-poses.ts';
+import type { BodyStore } from './body-memory.ts';
 import {
   canCollide,
   Contact,
@@ -92,8 +92,8 @@ export class ContactManager {
   get countWithPending(): number {
     return this.contacts.length + this.pendingCount;
   }
-  /** The bodies' poses and speeds for the narrow phase's gates, loaded at its start. */
-  private readonly poses = new BodyPoses();
+  /** The bodies' numbers (body-memory.ts), which the narrow phase's gates read in place. */
+  private readonly bodyStore: BodyStore;
 
   constructor(
     private readonly islands: Islands,
@@ -101,6 +101,7 @@ export class ContactManager {
     private readonly table: ShapeTable,
   ) {
     this.slots = new ContactData(memory);
+    this.bodyStore = memory.bodyStore;
   }
 
   /**
@@ -179,21 +180,19 @@ export class ContactManager {
   /**
    * Narrow phase over every contact with an awake body: drop the ones whose fat boxes parted,
    * update the manifolds of the rest, record which started or stopped touching, and wake a
-   * sleeping body that something started touching. `bodies` is the world's body list.
+   * sleeping body that something started touching.
    *
-   * Gates first, from flat copies of the bodies' poses (body-poses.ts) and the shapes' boxes
-   * (shape-table.ts), so most contacts are settled without loading their Contact, Body, Shape or
+   * Gates first, from the bodies' own numbers (body-memory.ts) and the flat copy of the shapes'
+   * boxes (shape-table.ts), so most contacts are settled without loading their Contact, Body, Shape or
    * Transform objects: in a tumbling pile three contacts in four are pairs of fat boxes whose
    * shapes are nowhere near touching, and in a resting stack nearly all reuse their manifold.
    * Box2D v3 streams its contact sims in arrays for the same reason ("b2CollideTask").
    */
-  collide(dt: number, bodies: readonly Body[]): void {
+  collide(dt: number): void {
     this.beganCount = 0;
     this.endedCount = 0;
-    const poses = this.poses;
-    poses.load(bodies);
-    const pose = poses.data;
-    const awake = poses.awake;
+    // The world's body memory does not move during the narrow phase (bodies join between steps).
+    const pose = this.bodyStore.data;
     const boxes = this.table.data;
     const contacts = this.contacts;
     const data = this.slots.data;
@@ -204,10 +203,11 @@ export class ContactManager {
     const gate = narrowPhaseGate;
     let i = 0;
     while (i < contacts.length) {
-      // Offsets: body-poses.ts (stride 8) and shape-table.ts (stride 8; fat box from 4).
-      const pa = slotBodies[2 * i]! * 8;
-      const pb = slotBodies[2 * i + 1]! * 8;
-      if (awake[pa >> 3] === 0 && awake[pb >> 3] === 0) {
+      // Offsets: body-memory.ts (stride 40: pose 0-3, velocity 4-6, origin reach 7, max extent 8,
+      // awake 9) and shape-table.ts (stride 8; fat box from 4). Literals: the loop is hot.
+      const pa = slotBodies[2 * i]! * 40;
+      const pb = slotBodies[2 * i + 1]! * 40;
+      if (pose[pa + 9] === 0 && pose[pb + 9] === 0) {
         i++;
         continue;
       }
@@ -240,7 +240,10 @@ export class ContactManager {
       // Bound on how much the gap can close this step: relative speed plus rotation at the rim.
       const dvx = pose[pb + 4]! - pose[pa + 4]!;
       const dvy = pose[pb + 5]! - pose[pa + 5]!;
-      const reach = dt * (Math.sqrt(dvx * dvx + dvy * dvy) + pose[pa + 6]! + pose[pb + 6]!);
+      // Rotation at the rim: |angular velocity| times the farthest point from the centre of mass.
+      const spinA = Math.abs(pose[pa + 6]!) * pose[pa + 8]!;
+      const spinB = Math.abs(pose[pb + 6]!) * pose[pb + 8]!;
+      const reach = dt * (Math.sqrt(dvx * dvx + dvy * dvy) + spinA + spinB);
       const margin = SPECULATIVE_DISTANCE + reach;
       // Most pairs whose fat boxes overlap are nowhere near touching: their tight boxes settle it.
       if (
@@ -356,11 +359,10 @@ export class ContactManager {
     }
   }
 
-  /** Wakes a sleeping body's island during the narrow phase, keeping the awake copy current. */
+  /** Wakes a sleeping body's island during the narrow phase (the gates read the flag in place). */
   private wake(body: Body): void {
     if (body.awake) return;
     this.islands.wake(body);
-    this.poses.markAwake(this.islands.lastWoken, this.islands.wokenCount);
   }
 
   /** Destroys every contact of a body (it is being removed), waking what touched it. */
@@ -459,7 +461,6 @@ export class ContactManager {
     this.endedB.length = this.endedCount;
     this.pendingA.length = this.pendingCount;
     this.pendingB.length = this.pendingCount;
-    this.poses.shrink();
   }
 
   private setPair(contact: Contact): void {

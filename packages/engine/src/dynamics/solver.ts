@@ -2,6 +2,34 @@ import { releaseFrom } from '../core/release.ts';
 import type { Body } from './body.ts';
 import type { BodyBounds } from './body-bounds.ts';
 import {
+  BODY_STRIDE,
+  B_ANGLE,
+  B_ANGLE0,
+  B_ANGULAR_DAMPING,
+  B_AWAKE,
+  B_CENTER0_X,
+  B_CENTER0_Y,
+  B_CENTER_X,
+  B_CENTER_Y,
+  B_DRAG,
+  B_FORCE_X,
+  B_FORCE_Y,
+  B_GRAVITY_SCALE,
+  B_INV_INERTIA,
+  B_INV_MASS,
+  B_LINEAR_DAMPING,
+  B_LOCAL_CENTER_X,
+  B_LOCAL_CENTER_Y,
+  B_FLAGS,
+  B_MAX_EXTENT,
+  B_SLEEP_TIME,
+  FLAG_ALLOW_SLEEP,
+  B_TORQUE,
+  B_VX,
+  B_VY,
+  B_W,
+} from './body-memory.ts';
+import {
   BodyStates,
   DELTA_ANGLE,
   DP_X,
@@ -136,16 +164,17 @@ export class Solver {
   }
 
   /**
-   * Frees the room sized for many more bodies and contacts than the world now has (`contacts`
-   * live contact slots, kept); the next steps grow it again as needed.
+   * Frees the room sized for many more bodies and contacts than the world now has (`bodies`
+   * bodies' numbers and `contacts` live contact slots, kept); the next steps grow it again as
+   * needed.
    */
-  shrink(contacts: number): void {
+  shrink(bodies: number, contacts: number): void {
     this.releaseReferences();
     this.awake.length = 0;
     this.fastBodies.length = 0;
     this.fastBullets.length = 0;
     if (this.params.length > PARAM_STRIDE * 64) this.params = new Float64Array(PARAM_STRIDE * 64);
-    this.memory.shrink(contacts);
+    this.memory.shrink(bodies, contacts);
   }
 
   /**
@@ -175,49 +204,62 @@ export class Solver {
       this.params = new Float64Array(size);
     }
     const params = this.params;
+    // The bodies' own numbers, by world index (body-memory.ts): read in place, in order. Taken
+    // after the reserves above, which may move the memory.
+    const d = this.memory.bodyStore.data;
     let count = 0;
     for (let n = 0; n < bodies.length; n++) {
       const body = bodies[n]!;
       body.solverIndex = 0;
+      const b = n * BODY_STRIDE;
       const t = n * TABLE_STRIDE;
-      table[t + TABLE_CENTER_X] = body.centerX;
-      table[t + TABLE_CENTER_Y] = body.centerY;
-      if (!body.awake || body.type === 'static') {
+      const centerX = d[b + B_CENTER_X]!;
+      const centerY = d[b + B_CENTER_Y]!;
+      table[t + TABLE_CENTER_X] = centerX;
+      table[t + TABLE_CENTER_Y] = centerY;
+      if (d[b + B_AWAKE] === 0 || body.typeValue === 'static') {
         table[t + TABLE_SLOT] = 0;
         table[t + TABLE_INV_MASS] = 0;
         table[t + TABLE_INV_I] = 0;
         continue;
       }
       const i = count++;
+      const invMass = d[b + B_INV_MASS]!;
+      const invInertia = d[b + B_INV_INERTIA]!;
       table[t + TABLE_SLOT] = count;
-      table[t + TABLE_INV_MASS] = body.invMass;
-      table[t + TABLE_INV_I] = body.invInertia;
+      table[t + TABLE_INV_MASS] = invMass;
+      table[t + TABLE_INV_I] = invInertia;
       if (i < awake.length) awake[i] = body;
       else awake.push(body);
       body.solverIndex = count;
       const k = (i + 1) * STATE_STRIDE;
-      s[k + V_X] = body.velocityX;
-      s[k + V_Y] = body.velocityY;
-      s[k + W] = body.angularVelocityValue;
+      s[k + V_X] = d[b + B_VX]!;
+      s[k + V_Y] = d[b + B_VY]!;
+      s[k + W] = d[b + B_W]!;
       s[k + DELTA_ANGLE] = 0;
       s[k + DP_X] = 0;
       s[k + DP_Y] = 0;
       s[k + Q_C] = 1;
       s[k + Q_S] = 0;
-      body.center0X = body.centerX;
-      body.center0Y = body.centerY;
-      body.angle0 = body.angleValue;
-      gatherForces(body, dt);
+      d[b + B_CENTER0_X] = centerX;
+      d[b + B_CENTER0_Y] = centerY;
+      d[b + B_ANGLE0] = d[b + B_ANGLE]!;
+      if (body.forceList.length > 0) gatherForces(body, dt);
+      else {
+        d[b + B_FORCE_X] = 0;
+        d[b + B_FORCE_Y] = 0;
+        d[b + B_TORQUE] = 0;
+      }
       const q = i * PARAM_STRIDE;
-      params[q + INV_MASS] = body.invMass;
-      params[q + INV_INERTIA] = body.invInertia;
-      params[q + GRAVITY_SCALE] = body.gravityScaleValue;
-      params[q + DRAG] = body.dragValue;
-      params[q + FORCE_X] = body.forceX;
-      params[q + FORCE_Y] = body.forceY;
-      params[q + TORQUE] = body.torqueValue;
-      params[q + LINEAR_DAMPING] = body.linearDampingValue;
-      params[q + ANGULAR_DAMPING] = body.angularDampingValue;
+      params[q + INV_MASS] = invMass;
+      params[q + INV_INERTIA] = invInertia;
+      params[q + GRAVITY_SCALE] = d[b + B_GRAVITY_SCALE]!;
+      params[q + DRAG] = d[b + B_DRAG]!;
+      params[q + FORCE_X] = d[b + B_FORCE_X]!;
+      params[q + FORCE_Y] = d[b + B_FORCE_Y]!;
+      params[q + TORQUE] = d[b + B_TORQUE]!;
+      params[q + LINEAR_DAMPING] = d[b + B_LINEAR_DAMPING]!;
+      params[q + ANGULAR_DAMPING] = d[b + B_ANGULAR_DAMPING]!;
     }
     this.awakeCount = count;
   }
@@ -537,29 +579,34 @@ export class Solver {
     const fastBodies = this.fastBodies;
     const fastBullets = this.fastBullets;
     bounds.dt = boundsDt;
+    // The bodies' own numbers (body-memory.ts), written in place at each body's world index.
+    const d = this.memory.bodyStore.data;
     for (let i = 0; i < this.awakeCount; i++) {
       const body = awake[i]!;
+      const b = body.base;
       const k = (i + 1) * STATE_STRIDE;
       const vx = s[k + V_X]!;
       const vy = s[k + V_Y]!;
       const w = s[k + W]!;
       const dpx = s[k + DP_X]!;
       const dpy = s[k + DP_Y]!;
-      body.velocityX = vx;
-      body.velocityY = vy;
-      body.angularVelocityValue = w;
-      body.centerX += dpx;
-      body.centerY += dpy;
-      const angle = body.angleValue + s[k + DELTA_ANGLE]!;
-      body.angleValue = angle;
+      d[b + B_VX] = vx;
+      d[b + B_VY] = vy;
+      d[b + B_W] = w;
+      const centerX = d[b + B_CENTER_X]! + dpx;
+      const centerY = d[b + B_CENTER_Y]! + dpy;
+      d[b + B_CENTER_X] = centerX;
+      d[b + B_CENTER_Y] = centerY;
+      const angle = d[b + B_ANGLE]! + s[k + DELTA_ANGLE]!;
+      d[b + B_ANGLE] = angle;
       // The angle is the exact sum of h w; the transform follows it, so rotation never drifts
       // from the integrated angle.
       body.transform.setFromCenter(
-        body.centerX,
-        body.centerY,
+        centerX,
+        centerY,
         angle,
-        body.localCenterX,
-        body.localCenterY,
+        d[b + B_LOCAL_CENTER_X]!,
+        d[b + B_LOCAL_CENTER_Y]!,
       );
       if (continuous && body.type === 'dynamic' && ContinuousSolver.isFast(body)) {
         if (body.bulletValue) {
@@ -579,16 +626,16 @@ export class Solver {
       // (Box2D v3's rule, with its 0.5 weight on correction).
       // A body with a force still to act (a 'constant' or timed one) must not sleep: a small
       // force on a heavy body is slow at first, and sleeping would zero its velocity and stop it.
-      if (!body.allowSleepValue || body.forceList.length > 0) {
-        body.sleepTime = 0;
+      if ((d[b + B_FLAGS]! & FLAG_ALLOW_SLEEP) === 0 || body.forceList.length > 0) {
+        d[b + B_SLEEP_TIME] = 0;
         continue;
       }
-      const extent = body.maxExtent;
+      const extent = d[b + B_MAX_EXTENT]!;
       const speed = Math.sqrt(vx * vx + vy * vy) + extent * Math.abs(w);
       const moved = Math.sqrt(dpx * dpx + dpy * dpy) + extent * Math.abs(s[k + DELTA_ANGLE]!);
       const sleepSpeed = Math.max(speed, (0.5 * moved) / dt);
-      if (sleepSpeed > SLEEP_SPEED) body.sleepTime = 0;
-      else body.sleepTime += dt;
+      if (sleepSpeed > SLEEP_SPEED) d[b + B_SLEEP_TIME] = 0;
+      else d[b + B_SLEEP_TIME] += dt;
     }
     this.fastCount = fastCount;
     this.fastBulletCount = fastBulletCount;

@@ -4,6 +4,7 @@ import { describeValue, requireFunction, requireVector } from '../core/validate.
 import { BroadPhase, type ProxyType } from '../collision/broad-phase.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
+import type { BodyHost } from '../dynamics/body-host.ts';
 import { BodyBounds } from '../dynamics/body-bounds.ts';
 import { ContactManager } from '../dynamics/contact-manager.ts';
 import { ContinuousSolver } from '../dynamics/continuous.ts';
@@ -47,7 +48,7 @@ const PROXY_TYPE: Record<Body['type'], ProxyType> = { static: 0, kinematic: 1, d
  * const ball = world.add(particle({ position: { x: 5, y: 0 }, radius: 0.25 }));
  * for (let i = 0; i < 60; i++) world.step(1 / 60);
  */
-export class World {
+export class World implements BodyHost {
   private readonly settings: ResolvedWorldOptions;
   private readonly bodyList: Body[] = [];
   private readonly broadPhase = new BroadPhase();
@@ -366,7 +367,7 @@ export class World {
       // Room for the whole step in one move of the solver memory, then the new contacts.
       this.solver.reserve(this.bodyList.length, this.contactManager.countWithPending);
       this.contactManager.createPending();
-      this.contactManager.collide(dt, this.bodyList);
+      this.contactManager.collide(dt);
       this.solver.gatherBodies(this.bodyList, dt);
       this.solver.solve(this.contactManager.contacts.length, this.settings, dt);
       // The step moves its bodies' proxies together: their trees only grow until the rebuild
@@ -495,7 +496,7 @@ export class World {
     this.listeners.off(type, listener);
   }
 
-  // ---------------------------------------------------------------- hooks used by Body
+  // ---------------------------------------------------------------- hooks used by Body (BodyHost)
 
   /** @internal A body was moved by hand (teleport): refresh its boxes and wake it. */
   bodyMoved(body: Body): void {
@@ -566,6 +567,10 @@ export class World {
   private insertBody(body: Body): void {
     body.id = this.nextBodyId++;
     body.worldIndex = this.bodyList.length;
+    // The body's numbers join the world's body memory (body-memory.ts): their one copy from now on.
+    const memory = this.solver.memory;
+    memory.reserveBodies(body.worldIndex + 1);
+    body.moveTo(memory.bodyStore, body.worldIndex);
     body.removalPending = false;
     body.center0X = body.centerX;
     body.center0Y = body.centerY;
@@ -625,8 +630,15 @@ export class World {
     while (body.jointList.length > 0) this.extractJoint(body.jointList[body.jointList.length - 1]!);
     this.contactManager.destroyContactsOf(body);
     for (const shape of body.shapeList) this.destroyProxy(shape);
+    // The body's numbers leave with it; the bodies after it move down one place, numbers and all.
+    body.detachMemory();
     this.bodyList.splice(body.worldIndex, 1);
-    for (let i = body.worldIndex; i < this.bodyList.length; i++) this.bodyList[i]!.worldIndex = i;
+    const store = this.solver.memory.bodyStore;
+    for (let i = body.worldIndex; i < this.bodyList.length; i++) {
+      const moved = this.bodyList[i]!;
+      moved.worldIndex = i;
+      moved.moveTo(store, i);
+    }
     this.contactManager.bodyRemoved(body.worldIndex);
     body.worldRef = null;
     body.worldIndex = -1;
@@ -662,7 +674,7 @@ export class World {
     const count = this.bodyList.length;
     if (this.mostBodies < 1024 || 4 * count > this.mostBodies) return;
     this.mostBodies = count;
-    this.solver.shrink(this.contactManager.contacts.length);
+    this.solver.shrink(count, this.contactManager.contacts.length);
     this.contactManager.shrink();
   }
 
@@ -789,6 +801,11 @@ export class World {
       shapesById: this.shapesById,
       shapeTable: this.shapeTable,
       freeShapeIds: this.freeShapeIds,
+      placeBody(body: Body, index: number): void {
+        const memory = world.solver.memory;
+        memory.reserveBodies(index + 1);
+        body.moveTo(memory.bodyStore, index);
+      },
       get nextBodyId(): number {
         return world.nextBodyId;
       },
