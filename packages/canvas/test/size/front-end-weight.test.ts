@@ -12,9 +12,10 @@ import {
 // either from growing. The worker page fell from 81.2 to 41.2 KB when it stopped keeping a whole
 // World as its copy (it checks input with the engine's `check*` functions instead); what is left
 // over the budget is the engine's Body and joint classes its copies are built from (their solver
-// methods included). Lower a ceiling whenever a change makes room.
+// methods included); the Body handle over the body memory (issue #30) made it 42.3 KB. Lower a
+// ceiling whenever a change makes room.
 const CANVAS_CEILING_BYTES = 13.9 * 1024;
-const WORKER_PAGE_CEILING_BYTES = 41.7 * 1024;
+const WORKER_PAGE_CEILING_BYTES = 42.8 * 1024;
 
 /** Modules of the step a worker world's page must not ship: the worker runs them. */
 const SOLVER_MODULES = [
