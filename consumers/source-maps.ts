@@ -30,7 +30,10 @@ function mapOf(code: string, url: string): Promise<SourceMap> | SourceMap {
 /** The @physical modules a served module imports (bare imports rewritten by Vite, or relative). */
 function physicalImports(code: string, url: string): string[] {
   const specifiers = [...code.matchAll(/(?:from|import)\s*["']([^"']+)["']/g)].map((m) => m[1]!);
+  // Vite rewrites every real bare import to a path; a bare specifier left in the text is in a
+  // comment or a string (a doc example such as `import '@physical/canvas/define'`), not an import.
   return specifiers
+    .filter((specifier) => /^(?:\.{1,2}\/|\/|https?:)/.test(specifier))
     .map((specifier) => new URL(specifier, url).href)
     .filter((href) => href.includes('/@physical/') || href.includes('/.vite/deps/@physical_'));
 }
@@ -79,6 +82,12 @@ export async function checkDevSourceMaps(
           throw new Error(`${path} is pre-bundled: its map leads to dist, not src`);
         }
         const code = await (await fetch(url)).text();
+        // A module of types only compiles to `export {};`: no code to map, and tsc writes no map.
+        const statements = code
+          .replace(/\/\*[\s\S]*?\*\//g, '')
+          .replace(/\/\/.*$/gm, '')
+          .trim();
+        if (/^(?:export\s*\{\s*\};?)?$/.test(statements)) continue;
         const map = await mapOf(code, url);
         if (map.sources.length === 0) throw new Error(`${path}'s map has no sources`);
         for (const source of map.sources) {

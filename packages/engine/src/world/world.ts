@@ -4,7 +4,6 @@ import { describeValue, requireFunction, requireVector } from '../core/validate.
 import { BroadPhase, type ProxyType } from '../collision/broad-phase.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
-import type { BodyHost } from '../dynamics/body-host.ts';
 import { BodyBounds } from '../dynamics/body-bounds.ts';
 import { ContactManager } from '../dynamics/contact-manager.ts';
 import { ContinuousSolver } from '../dynamics/continuous.ts';
@@ -22,7 +21,7 @@ import { ShapeTable } from '../dynamics/shape-table.ts';
 import { Solver } from '../dynamics/solver.ts';
 import { EventDispatch, forgetBodies } from './event-dispatch.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
-import type { WorldInternals } from './snapshot.ts';
+import type { WorldInternals } from './snapshot-format.ts';
 import { ShapeQueries, type QueryPose, type ShapeCastHit } from './shape-queries.ts';
 import {
   resolveKernel,
@@ -48,7 +47,10 @@ const PROXY_TYPE: Record<Body['type'], ProxyType> = { static: 0, kinematic: 1, d
  * const ball = world.add(particle({ position: { x: 5, y: 0 }, radius: 0.25 }));
  * for (let i = 0; i < 60; i++) world.step(1 / 60);
  */
-export class World implements BodyHost {
+// World is the BodyHost of its bodies (`Body.host` returns it as one, which the compiler checks);
+// not declared with `implements`, because the host's methods are internal and leave the
+// published types.
+export class World {
   private readonly settings: ResolvedWorldOptions;
   private readonly bodyList: Body[] = [];
   private readonly broadPhase = new BroadPhase();
