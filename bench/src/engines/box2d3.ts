@@ -5,7 +5,6 @@ import {
   localPoint,
   materialOf,
   type BodyDesc,
-  type BodyGroupDesc,
   type Engine,
   type JointDesc,
   type Pose,
@@ -13,6 +12,7 @@ import {
   type ShapeDesc,
   type World,
 } from '../types.ts';
+import { bodyGroups } from './body-groups.ts';
 
 type B2 = Awaited<ReturnType<typeof Box2DFactory>>;
 type BodyId = ReturnType<B2['b2CreateBody']>;
@@ -204,33 +204,23 @@ function createWorld(b2: B2, scene: SceneDesc): World {
     bodies.push(id);
   }
   for (const joint of scene.joints ?? []) makeJoint(joint, bodies, scene.bodies);
-  const groups = new Map<number, BodyId[]>();
-  let nextGroup = 0;
   const target = new b2.b2Transform();
   const targetP = vec(b2, 0, 0);
   return {
     notes: [],
-    createGroup(group: BodyGroupDesc) {
-      const ids = group.bodies.map(makeBody);
-      for (const joint of group.joints) makeJoint(joint, ids, group.bodies);
-      groups.set(nextGroup, ids);
-      return nextGroup++;
-    },
-    destroyGroup(handle) {
+    ...bodyGroups<BodyId>({
+      create(group) {
+        const ids = group.bodies.map(makeBody);
+        for (const joint of group.joints) makeJoint(joint, ids, group.bodies);
+        return ids;
+      },
       // b2DestroyBody destroys the body's joints too.
-      for (const id of groups.get(handle) ?? []) b2.b2DestroyBody(id);
-      groups.delete(handle);
-    },
-    groupPoses() {
-      const poses: Pose[] = [];
-      for (const ids of groups.values()) {
-        for (const id of ids) {
-          const p = b2.b2Body_GetPosition(id);
-          poses.push({ x: p.x, y: p.y, angle: b2.b2Rot_GetAngle(b2.b2Body_GetRotation(id)) });
-        }
-      }
-      return poses;
-    },
+      destroy: (id) => b2.b2DestroyBody(id),
+      pose(id) {
+        const p = b2.b2Body_GetPosition(id);
+        return { x: p.x, y: p.y, angle: b2.b2Rot_GetAngle(b2.b2Body_GetRotation(id)) };
+      },
+    }),
     step() {
       b2.b2World_Step(worldId, DT, SUB_STEPS);
     },

@@ -10,7 +10,6 @@ import {
   SUB_STEPS,
   materialOf,
   type BodyDesc,
-  type BodyGroupDesc,
   type Engine,
   type JointDesc,
   type Pose,
@@ -18,6 +17,7 @@ import {
   type ShapeDesc,
   type World,
 } from '../types.ts';
+import { bodyGroups } from './body-groups.ts';
 
 // Physical is y-down: every y, angle and angular velocity is mirrored on the way in and out.
 
@@ -206,33 +206,21 @@ function createAdapter(
     }
   }
   for (const joint of scene.joints ?? []) makeJoint(joint, bodies, scene.bodies);
-  const groups = new Map<number, Body[]>();
-  let nextGroup = 0;
   if (scene.bodies.some((b) => b.hitEvents)) notes.add('no hit-event listener registered');
   const bench = {
     get notes() {
       return [...notes];
     },
-    createGroup(group: BodyGroupDesc) {
-      const list = group.bodies.map((desc) => world.add(makeBody(desc)));
-      for (const joint of group.joints) makeJoint(joint, list, group.bodies);
-      groups.set(nextGroup, list);
-      return nextGroup++;
-    },
-    destroyGroup(handle) {
+    ...bodyGroups<Body>({
+      create(group) {
+        const list = group.bodies.map((desc) => world.add(makeBody(desc)));
+        for (const joint of group.joints) makeJoint(joint, list, group.bodies);
+        return list;
+      },
       // Removing a body removes its joints.
-      for (const body of groups.get(handle) ?? []) world.remove(body);
-      groups.delete(handle);
-    },
-    groupPoses() {
-      const poses: Pose[] = [];
-      for (const list of groups.values()) {
-        for (const body of list) {
-          poses.push({ x: body.position.x, y: -body.position.y, angle: -body.angle });
-        }
-      }
-      return poses;
-    },
+      destroy: (body) => world.remove(body),
+      pose: (body) => ({ x: body.position.x, y: -body.position.y, angle: -body.angle }),
+    }),
     step() {
       world.step(DT);
     },

@@ -13,13 +13,13 @@ import {
   materialOf,
   withoutRounding,
   type BodyDesc,
-  type BodyGroupDesc,
   type Engine,
   type JointDesc,
   type Pose,
   type ShapeDesc,
   type World,
 } from '../types.ts';
+import { bodyGroups } from './body-groups.ts';
 
 /** planck.js: Box2D v2.3's design in JavaScript. world.step(dt) uses its defaults (8 / 3). */
 export const planckEngine: Engine = {
@@ -124,34 +124,24 @@ export const planckEngine: Engine = {
       bodies.push(body);
     }
     for (const joint of scene.joints ?? []) makeJoint(joint, bodies);
-    const groups = new Map<number, Body[]>();
-    let nextGroup = 0;
     const velocity = { x: 0, y: 0 };
     return {
       get notes() {
         return [...notes];
       },
-      createGroup(group: BodyGroupDesc) {
-        const list = group.bodies.map(makeBody);
-        for (const joint of group.joints) makeJoint(joint, list);
-        groups.set(nextGroup, list);
-        return nextGroup++;
-      },
-      destroyGroup(handle) {
+      ...bodyGroups<Body>({
+        create(group) {
+          const list = group.bodies.map(makeBody);
+          for (const joint of group.joints) makeJoint(joint, list);
+          return list;
+        },
         // destroyBody destroys the body's joints too.
-        for (const body of groups.get(handle) ?? []) world.destroyBody(body);
-        groups.delete(handle);
-      },
-      groupPoses() {
-        const poses: Pose[] = [];
-        for (const list of groups.values()) {
-          for (const body of list) {
-            const p = body.getPosition();
-            poses.push({ x: p.x, y: p.y, angle: body.getAngle() });
-          }
-        }
-        return poses;
-      },
+        destroy: (body) => world.destroyBody(body),
+        pose(body) {
+          const p = body.getPosition();
+          return { x: p.x, y: p.y, angle: body.getAngle() };
+        },
+      }),
       step() {
         world.step(DT);
       },

@@ -6,7 +6,6 @@ import {
   materialOf,
   filtersCollide,
   type BodyDesc,
-  type BodyGroupDesc,
   type Engine,
   type FilterDesc,
   type JointDesc,
@@ -15,6 +14,7 @@ import {
   type ShapeDesc,
   type World,
 } from '../types.ts';
+import { bodyGroups } from './body-groups.ts';
 
 type Rapier = typeof RAPIER;
 
@@ -179,34 +179,24 @@ function createWorld(R: Rapier, scene: SceneDesc): World {
     bodies.push(body);
   }
   for (const joint of scene.joints ?? []) makeJoint(joint, bodies, scene.bodies);
-  const groups = new Map<number, InstanceType<typeof R.RigidBody>[]>();
-  let nextGroup = 0;
   const velocity = { x: 0, y: 0 };
   return {
     get notes() {
       return [...notes];
     },
-    createGroup(group: BodyGroupDesc) {
-      const list = group.bodies.map(makeBody);
-      for (const joint of group.joints) makeJoint(joint, list, group.bodies);
-      groups.set(nextGroup, list);
-      return nextGroup++;
-    },
-    destroyGroup(handle) {
+    ...bodyGroups<InstanceType<typeof R.RigidBody>>({
+      create(group) {
+        const list = group.bodies.map(makeBody);
+        for (const joint of group.joints) makeJoint(joint, list, group.bodies);
+        return list;
+      },
       // removeRigidBody removes the body's colliders and joints too.
-      for (const body of groups.get(handle) ?? []) world.removeRigidBody(body);
-      groups.delete(handle);
-    },
-    groupPoses() {
-      const poses: Pose[] = [];
-      for (const list of groups.values()) {
-        for (const body of list) {
-          const p = body.translation();
-          poses.push({ x: p.x, y: p.y, angle: body.rotation() });
-        }
-      }
-      return poses;
-    },
+      destroy: (body) => world.removeRigidBody(body),
+      pose(body) {
+        const p = body.translation();
+        return { x: p.x, y: p.y, angle: body.rotation() };
+      },
+    }),
     step() {
       world.step();
     },
