@@ -26,6 +26,7 @@ import { chromium, type Page } from 'playwright-core';
 import { publint } from 'publint';
 import { formatMessage } from 'publint/utils';
 import { checkDevSourceMaps } from './source-maps.ts';
+import { CHROMIUM_LAUNCH } from '../e2e/chromium.ts';
 
 const root = resolve(fileURLToPath(new URL('..', import.meta.url)));
 const libraries = ['engine', 'canvas', 'dom', 'react', 'worker'] as const;
@@ -309,17 +310,7 @@ const server: Server = createServer((request, response) => {
 await new Promise<void>((done) => server.listen(0, '127.0.0.1', done));
 const address = server.address();
 const origin = `http://127.0.0.1:${typeof address === 'object' && address !== null ? address.port : 0}`;
-const browser = await chromium.launch({
-  executablePath: process.env['CHROMIUM_PATH'] ?? '/usr/bin/chromium',
-  args: [
-    '--no-sandbox',
-    '--disable-gpu',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--disable-sync',
-    '--no-first-run',
-  ],
-});
+const browser = await chromium.launch(CHROMIUM_LAUNCH);
 
 async function probe<T>(page: Page, read: string): Promise<T> {
   return (await page.evaluate(`window.probe.${read}`)) as T;

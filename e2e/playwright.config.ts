@@ -2,6 +2,7 @@
 // Specs keep the harness API (harness.ts). `npm run test:e2e` runs them all;
 // `npm run test:e2e -- -g <part of a name>` some; `-- --trace on` records every test's trace.
 import { defineConfig } from '@playwright/test';
+import { CHROMIUM_LAUNCH } from './chromium.ts';
 
 export default defineConfig({
   testDir: '.',
@@ -23,17 +24,7 @@ export default defineConfig({
   reporter: [['list']],
   use: {
     browserName: 'chromium',
-    launchOptions: {
-      executablePath: process.env['CHROMIUM_PATH'] ?? '/usr/bin/chromium',
-      args: [
-        '--no-sandbox',
-        '--disable-gpu',
-        '--disable-background-networking',
-        '--disable-component-update',
-        '--disable-sync',
-        '--no-first-run',
-      ],
-    },
+    launchOptions: CHROMIUM_LAUNCH,
     // Every failure leaves a screenshot of each page it had open, its retry also a trace
     // (npx playwright show-trace test-results/playwright/<test>-retry1/trace.zip): actions,
     // console, network and a screencast. DOM snapshots are left out: they made a retry take

@@ -6,6 +6,7 @@ import { createServer } from 'node:http';
 import type { AddressInfo } from 'node:net';
 import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
+import { CHROMIUM_LAUNCH } from '../../e2e/chromium.ts';
 
 export interface BrowserResult {
   steps: number;
@@ -15,8 +16,6 @@ export interface BrowserResult {
   nan: number;
   userAgent: string;
 }
-
-const CHROMIUM = '/usr/bin/chromium';
 
 export async function runBrowser(): Promise<BrowserResult> {
   const page = fileURLToPath(new URL('../browser/page.ts', import.meta.url));
@@ -46,17 +45,7 @@ export async function runBrowser(): Promise<BrowserResult> {
   });
   await new Promise<void>((resolve) => server.listen(0, '127.0.0.1', resolve));
   const { port } = server.address() as AddressInfo;
-  const browser = await chromium.launch({
-    executablePath: CHROMIUM,
-    args: [
-      '--no-sandbox',
-      '--disable-gpu',
-      '--disable-background-networking',
-      '--disable-component-update',
-      '--disable-sync',
-      '--no-first-run',
-    ],
-  });
+  const browser = await chromium.launch(CHROMIUM_LAUNCH);
   try {
     const tab = await browser.newPage();
     await tab.goto(`http://127.0.0.1:${port}/`);

@@ -7,20 +7,11 @@
 import { chromium } from 'playwright-core';
 import { startServer } from '../server.ts';
 import { COUNT_LAYOUT_READS } from '../dom/layout-reads.ts';
+import { CHROMIUM_LAUNCH } from '../chromium.ts';
 
 const count = Number(process.argv[2] ?? 200);
 const server = await startServer();
-const browser = await chromium.launch({
-  executablePath: process.env['CHROMIUM_PATH'] ?? '/usr/bin/chromium',
-  args: [
-    '--no-sandbox',
-    '--disable-gpu',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--disable-sync',
-    '--no-first-run',
-  ],
-});
+const browser = await chromium.launch(CHROMIUM_LAUNCH);
 try {
   const context = await browser.newContext({ viewport: { width: 800, height: 600 } });
   await context.addInitScript('globalThis.__name = (target) => target;');

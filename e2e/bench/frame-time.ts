@@ -3,6 +3,7 @@
 // Usage: tsx e2e/bench/frame-time.ts
 import { chromium } from 'playwright-core';
 import { startServer } from '../server.ts';
+import { CHROMIUM_LAUNCH } from '../chromium.ts';
 
 interface Bench {
   frameTimes(overlays: boolean, frames?: number): Promise<{ median: number; p95: number }>;
@@ -10,17 +11,7 @@ interface Bench {
 }
 
 const server = await startServer();
-const browser = await chromium.launch({
-  executablePath: process.env['CHROMIUM_PATH'] ?? '/usr/bin/chromium',
-  args: [
-    '--no-sandbox',
-    '--disable-gpu',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--disable-sync',
-    '--no-first-run',
-  ],
-});
+const browser = await chromium.launch(CHROMIUM_LAUNCH);
 try {
   const context = await browser.newContext({ viewport: { width: 800, height: 600 } });
   await context.addInitScript(`

@@ -6,6 +6,7 @@
 // Usage: tsx e2e/bench/worker-frame-time.ts [seconds per run, default 5]
 import { chromium } from 'playwright-core';
 import { startServer } from '../server.ts';
+import { CHROMIUM_LAUNCH } from '../chromium.ts';
 
 interface Bench {
   start(where: 'page' | 'worker' | 'offscreen'): { shared: boolean };
@@ -16,17 +17,7 @@ interface Bench {
 
 const seconds = Number(process.argv[2] ?? 5);
 const server = await startServer();
-const browser = await chromium.launch({
-  executablePath: process.env['CHROMIUM_PATH'] ?? '/usr/bin/chromium',
-  args: [
-    '--no-sandbox',
-    '--disable-gpu',
-    '--disable-background-networking',
-    '--disable-component-update',
-    '--disable-sync',
-    '--no-first-run',
-  ],
-});
+const browser = await chromium.launch(CHROMIUM_LAUNCH);
 
 const median = (values: number[]): number => {
   const sorted = [...values].sort((a, b) => a - b);
