@@ -2,7 +2,7 @@ import assert from 'node:assert/strict';
 import type { Page } from 'playwright-core';
 import { test } from '../harness.ts';
 import { phoneOptions } from './fit.ts';
-import { assertQuiet, closeApp, numberIn, openApp, readout } from './phone.ts';
+import { assertQuiet, closeApp, numberIn, openApp, readout, screenshot } from './phone.ts';
 import {
   assertOneHistory,
   downloadCsv,
@@ -127,6 +127,8 @@ test('newton: inertia rewind (375x667), a student applies 1 N, steps back, scrub
       assert.ok(Math.abs(csv.at(item, 'KE (J)') - (vx * vx) / 2) < 1e-6);
     }
     await assertCopied(page, 'inertia', csv);
+    await page.locator('#inertia [data-lab="data"]').scrollIntoViewIfNeeded();
+    await screenshot(page, 'inertia-data-375x667');
     assertQuiet(app);
   } finally {
     await closeApp(app);
@@ -207,6 +209,8 @@ test('newton: forces rewind (375x667), a student starts, steps back, scrubs to m
       { timeout: 30_000 },
     );
     assert.deepEqual(await readouts(page, 'forces', FORCES.slice(1)), finish);
+    await page.locator('#forces [data-lab="data"]').scrollIntoViewIfNeeded();
+    await screenshot(page, 'forces-data-375x667');
     assertQuiet(app);
   } finally {
     await closeApp(app);
