@@ -42,6 +42,31 @@ async function bodyOnPage(page: Page, dx: number) {
   }, dx);
 }
 
+/**
+ * Waits until the force readout shows `expected`: a drag's or key's end state, not whatever the
+ * readout showed part way (a drag read before its last move showed "push 1.7 N").
+ */
+async function forceShows(page: Page, expected: RegExp): Promise<string> {
+  try {
+    await page.waitForFunction(
+      (source) =>
+        new RegExp(source).test(
+          (document.querySelector('#inertia [data-readout="force"]')?.textContent ?? '').replace(
+            /\u00a0/g,
+            ' ',
+          ),
+        ),
+      expected.source,
+      { timeout: 5000 },
+    );
+  } catch {
+    assert.fail(
+      `the force readout shows ${expected} (it shows "${await readout(page, 'force', '#inertia')}")`,
+    );
+  }
+  return readout(page, 'force', '#inertia');
+}
+
 /** Acceleration between two readings at least `ms` apart (m/s^2). */
 async function measuredAcceleration(page: Page, ms: number): Promise<number> {
   const first = await timeAndSpeed(page);
@@ -79,12 +104,9 @@ test('newton: inertia push at 375x667, a student presses on the body and pulls 1
         centre.y + ((pulled.y - centre.y) * i) / 8,
       );
     }
-    // The push is the applied force: 1 m of pull, 2 N, to the right (0°).
-    await page.waitForFunction(() =>
-      /^push/.test(document.querySelector('#inertia [data-readout="force"]')?.textContent ?? ''),
-    );
-    const force = await readout(page, 'force', '#inertia');
-    assert.match(force, /^push 2(\.0)? N, 0°$/, `the force readout shows the push (${force})`);
+    // The push is the applied force: 1 m of pull, 2 N, to the right (0°), once the last move
+    // of the drag has arrived.
+    await forceShows(page, /^push 2(\.0)? N, 0°$/);
     assert.match(
       (await page.locator('#inertia physical-canvas').getAttribute('aria-label')) ?? '',
       /A push by hand of 2(\.0)?\sN at 0° acts on it\./,
@@ -103,9 +125,7 @@ test('newton: inertia push at 375x667, a student presses on the body and pulls 1
 
     // Let go: no force, the body glides on at the speed it had (first law, on ice).
     await touch('touchEnd');
-    await page.waitForFunction(
-      () => document.querySelector('#inertia [data-readout="force"]')?.textContent === 'off',
-    );
+    await forceShows(page, /^off$/);
     for (let i = 0; i < STEPS; i++) await step.click();
     const coasting = await timeAndSpeed(page);
     assert.ok(coasting.t > pushed.t + 0.15, `time went on (${coasting.t} s)`);
@@ -127,15 +147,12 @@ test('newton: inertia push by keyboard at 375x667, an arrow key held on the canv
   try {
     await page.locator('#inertia physical-canvas').focus();
     await page.keyboard.down('ArrowUp');
-    await sleep(300);
-    const force = await readout(page, 'force', '#inertia');
-    assert.match(force, /^push 2(\.0)? N, 90°$/, `the force readout shows the push (${force})`);
+    await forceShows(page, /^push 2(\.0)? N, 90°$/);
     const a = await measuredAcceleration(page, 500);
     assert.ok(Math.abs(a - 2 / MASS) <= 0.1, `a = F/m while the key is held: ${a} m/s^2`);
     assert.equal(await readout(page, 'direction', '#inertia'), '90°');
     await page.keyboard.up('ArrowUp');
-    await sleep(300);
-    assert.equal(await readout(page, 'force', '#inertia'), 'off');
+    await forceShows(page, /^off$/);
     const coasting = await measuredAcceleration(page, 400);
     assert.ok(Math.abs(coasting) <= 0.01, `constant speed once let go: ${coasting} m/s^2`);
     assertQuiet(app);

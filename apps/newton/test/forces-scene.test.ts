@@ -1,6 +1,8 @@
 import { describe, expect, it } from 'vitest';
+import { restoreSnapshot, takeSnapshot } from '@physical/engine';
 import {
   accelerationFor,
+  adoptTrack,
   arrowLength,
   createForcesTrack,
   displacement,
@@ -11,6 +13,7 @@ import {
   MYSTERY_MIN,
   opacityFor,
   startTrack,
+  trackState,
 } from '../src/screens/forces/forces-scene.ts';
 
 describe('Forces scene', () => {
@@ -93,5 +96,41 @@ describe('mystery mass', () => {
     expect(isMysteryFound(1.91, 2.0)).toBe(true);
     expect(isMysteryFound(2.11, 2.0)).toBe(false);
     expect(isMysteryFound(5, 4)).toBe(false);
+  });
+
+  it('a track stepped back to mid-run goes on as the run did: the same a, the same stop at the same time', () => {
+    const original = createForcesTrack({ mass: 2, force: 3 });
+    let finishes = 0;
+    startTrack(original, () => finishes++);
+    for (let i = 0; i < 30; i++) original.world.step(1 / 60);
+    const saved = { snapshot: takeSnapshot(original.world), state: trackState(original) };
+    while (original.finishedAt === null) original.world.step(1 / 60);
+    expect(finishes).toBe(1);
+
+    let again = 0;
+    const back = adoptTrack(original, restoreSnapshot(saved.snapshot), saved.state, () => again++);
+    expect(back.world.steps).toBe(30);
+    expect(back.square.forces).toHaveLength(1);
+    expect(back.finishedAt).toBeNull();
+    while (back.finishedAt === null && back.world.steps < 600) {
+      back.world.step(1 / 60);
+      if (back.finishedAt === null) expect(measuredAcceleration(back)).toBeCloseTo(1.5, 9);
+    }
+    expect(again).toBe(1);
+    expect(back.finishedAt).toBe(original.finishedAt);
+    expect(displacement(back)).toBe(displacement(original));
+    expect(back.square.forces).toHaveLength(0);
+  });
+
+  it('a track stepped back to after its stop stays over: no force, its finish time kept', () => {
+    const track = createForcesTrack({ mass: 1, force: 10 });
+    startTrack(track);
+    while (track.finishedAt === null) track.world.step(1 / 60);
+    track.world.step(1 / 60);
+    const back = adoptTrack(track, restoreSnapshot(takeSnapshot(track.world)), trackState(track));
+    expect(back.finishedAt).toBe(track.finishedAt);
+    expect(back.square.forces).toHaveLength(0);
+    back.world.step(1 / 60);
+    expect(back.square.linearVelocity.x).toBe(0);
   });
 });

@@ -1,9 +1,12 @@
 import { describe, expect, it } from 'vitest';
+import { restoreSnapshot, takeSnapshot } from '@physical/engine';
 import {
   POLYGON_MASS,
+  adoptWorld,
   applyConstantForce,
   createInertiaScene,
   forceVector,
+  labMotion,
   sceneSizeFor,
   updateFloorFriction,
   screenAngle,
@@ -84,5 +87,33 @@ describe('Inertia scene', () => {
     expect(sceneSizeFor(400, 800)).toEqual({ width: 6, height: 12 });
     expect(sceneSizeFor(800, 400)).toEqual({ width: 12, height: 6 });
     expect(sceneSizeFor(0, 0)).toEqual({ width: 6, height: 7.5 });
+  });
+
+  it('a scene stepped back to goes on as the original did: the floor slows it the same (its friction is the restored first force)', () => {
+    const scene = createInertiaScene(6, 8, { surface: 'wood', elasticity: 0.5 }, sequence(0.2));
+    const push = applyConstantForce(scene, 30, 2);
+    for (let i = 0; i < 20; i++) scene.world.step(1 / 60);
+    push.remove();
+    const saved = takeSnapshot(scene.world);
+    const back = adoptWorld(scene, restoreSnapshot(saved));
+    expect(back.body).toBe(back.world.bodies[4]);
+    expect(back.walls).toEqual(back.world.bodies.slice(0, 4));
+    expect(back.friction).toBe(back.body.forces[0]);
+    expect([back.width, back.height, back.sides, back.surface]).toEqual([6, 8, 5, 'wood']);
+    for (let i = 0; i < 40; i++) {
+      scene.world.step(1 / 60);
+      back.world.step(1 / 60);
+    }
+    expect(labMotion(back)).toEqual(labMotion(scene));
+    expect(back.friction.x).toBe(scene.friction.x);
+    expect(back.friction.x).not.toBe(0);
+  });
+
+  it("reports position and velocity from the floor's left end, y up as the screen's angles count", () => {
+    const scene = createInertiaScene(6, 8, {}, sequence(0.7));
+    scene.body.position = { x: 1, y: 2 };
+    scene.body.linearVelocity = { x: 0.5, y: -1.5 };
+    expect(labMotion(scene)).toEqual({ x: 1, y: 6, vx: 0.5, vy: 1.5 });
+    expect(screenAngle({ x: 0, y: -1 })).toBe(90);
   });
 });

@@ -3,6 +3,7 @@ import { World, particle, takeSnapshot } from '@physical/engine';
 import { MeasurementLog, csvCell, formatNumber } from '../src/lab/measurement-log.ts';
 import { SnapshotHistory } from '../src/lab/snapshot-history.ts';
 import { observeSteps } from '../src/lab/step-hook.ts';
+import { TimeSeries } from '../src/graphs/time-series.ts';
 
 function fallingWorld(): World {
   const world = new World();
@@ -90,7 +91,74 @@ describe('SnapshotHistory', () => {
   });
 });
 
+describe('SnapshotHistory, changes between steps and worlds side by side', () => {
+  it('gives a changed world a snapshot of its own, so a restore after a change made between steps has it', () => {
+    const run = (mark: boolean) => {
+      const world = fallingWorld();
+      const ball = world.bodies[0]!;
+      const history = new SnapshotHistory<number>({ capacity: 20, interval: 10 });
+      history.record(world, 0, 0);
+      // A push switched on between two steps, as a learner does.
+      ball.applyForce({ x: 3, y: 0 }, { duration: 'constant' });
+      if (mark) history.markChanged();
+      for (let i = 1; i <= 5; i++) {
+        world.step(1 / 60);
+        history.record(world, i / 60, i);
+      }
+      return { world, restored: history.restore(5).world };
+    };
+    const marked = run(true);
+    expect(takeSnapshot(marked.restored)).toEqual(takeSnapshot(marked.world));
+    // Without the mark the steps are replayed from the snapshot before the push: it is missing.
+    const unmarked = run(false);
+    expect(unmarked.restored.bodies[0]!.position.x).toBeLessThan(
+      unmarked.world.bodies[0]!.position.x,
+    );
+  });
+
+  it('finds the newest entry at or before a time (a world a step behind another)', () => {
+    const world = fallingWorld();
+    const history = new SnapshotHistory<number>({ capacity: 10 });
+    for (let i = 0; i < 4; i++) {
+      history.record(world, i / 60, i);
+      world.step(1 / 60);
+    }
+    expect(history.indexAt(2 / 60)).toBe(2);
+    expect(history.indexAt(2.5 / 60)).toBe(2);
+    expect(history.indexAt(10)).toBe(3);
+    expect(history.indexAt(-1)).toBe(-1);
+  });
+});
+
+describe('TimeSeries', () => {
+  it('forgets the samples after a time stepped back to, and takes new ones from there', () => {
+    const series = new TimeSeries(10);
+    for (let i = 0; i < 5; i++) series.push(i / 60, i);
+    const version = series.version;
+    series.truncateAfter(2 / 60);
+    expect(series.times).toEqual([0, 1 / 60, 2 / 60]);
+    expect(series.values).toEqual([0, 1, 2]);
+    expect(series.version).toBeGreaterThan(version);
+    series.push(3 / 60, 30);
+    expect(series.values).toEqual([0, 1, 2, 30]);
+  });
+});
+
 describe('MeasurementLog', () => {
+  it('puts values measured at the same time into one row, and rows in time order', () => {
+    const log = new MeasurementLog();
+    log.add(0, [{ name: 'A x', unit: 'm', value: 0 }]);
+    log.add(0, [{ name: 'B x', unit: 'm', value: 0 }]);
+    log.add(2 / 60, [{ name: 'A x', unit: 'm', value: 2 }]);
+    // B a step behind A: its values join the rows of their own times.
+    log.add(1 / 60, [{ name: 'B x', unit: 'm', value: 1 }]);
+    log.add(2 / 60, [{ name: 'B x', unit: 'm', value: 2 }]);
+    expect(log.length).toBe(3);
+    expect(log.toCsv()).toBe(
+      't (s),A x (m),B x (m)\r\n0,0,0\r\n0.0166666667,,1\r\n0.0333333333,2,2\r\n',
+    );
+  });
+
   it('writes CSV with a header of names and units, empty cells where nothing was measured', () => {
     const log = new MeasurementLog();
     log.add(0, [{ name: 'A x', unit: 'm', value: 1 }]);

@@ -40,6 +40,16 @@ export class TimeSeries {
     this.changed();
   }
 
+  /** Forgets the samples after `time` (s): the simulation was stepped back to it. */
+  truncateAfter(time: number): void {
+    let end = this.times.length;
+    while (end > 0 && this.times[end - 1]! > time + 1e-9) end--;
+    if (end === this.times.length) return;
+    this.times.splice(end);
+    this.values.splice(end);
+    this.changed();
+  }
+
   clear(): void {
     this.times.length = 0;
     this.values.length = 0;

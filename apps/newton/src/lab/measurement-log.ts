@@ -8,7 +8,7 @@ export interface Quantity {
 
 interface Row {
   readonly time: number;
-  readonly values: ReadonlyMap<string, number>;
+  readonly values: Map<string, number>;
 }
 
 /**
@@ -26,15 +26,23 @@ export class MeasurementLog {
     return this.rows.length;
   }
 
-  /** Adds a row at `time` (s) with the given values. */
+  /**
+   * Adds the given values at `time` (s): to the row of that time if there is one (worlds stepped
+   * side by side, as Forces' two tracks, each add their own columns to the same moment), else as
+   * a new row in time order.
+   */
   add(time: number, values: readonly (Quantity & { value: number })[]): void {
-    const map = new Map<string, number>();
+    let at = this.rows.length;
+    while (at > 0 && this.rows[at - 1]!.time > time + 1e-9) at--;
+    const same = at > 0 && Math.abs(this.rows[at - 1]!.time - time) <= 1e-9;
+    const map = same ? this.rows[at - 1]!.values : new Map<string, number>();
     for (const item of values) {
       if (!this.quantities.has(item.name))
         this.quantities.set(item.name, { name: item.name, unit: item.unit });
       map.set(item.name, item.value);
     }
-    this.rows.push({ time, values: map });
+    if (same) return;
+    this.rows.splice(at, 0, { time, values: map });
     if (this.rows.length > this.maxRows) this.rows.splice(0, this.rows.length - this.maxRows);
   }
 

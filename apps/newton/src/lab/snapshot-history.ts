@@ -38,6 +38,8 @@ export class SnapshotHistory<Data> {
   private entries: HistoryEntry<Data>[] = [];
   /** Steps since the last snapshot. */
   private sinceSnapshot = 0;
+  /** The world was changed between two steps: the next entry needs a snapshot of its own. */
+  private changed = false;
 
   constructor(options: SnapshotHistoryOptions) {
     const { capacity, interval = 1, step = 1 / 60 } = options;
@@ -63,6 +65,16 @@ export class SnapshotHistory<Data> {
     return this.entries[index];
   }
 
+  /**
+   * The newest entry at or before `time` (s), or -1 when every entry is later: where a world
+   * stepped beside another (Forces' two tracks) stood when the other was at `time`.
+   */
+  indexAt(time: number): number {
+    let index = this.entries.length - 1;
+    while (index >= 0 && this.entries[index]!.time > time + 1e-9) index--;
+    return index;
+  }
+
   /** The newest entry. */
   get last(): HistoryEntry<Data> | undefined {
     return this.entries[this.entries.length - 1];
@@ -74,7 +86,9 @@ export class SnapshotHistory<Data> {
    * full, so that the oldest kept has a snapshot.
    */
   record(world: World, time: number, data: Data): void {
-    const snap = this.entries.length === 0 || this.sinceSnapshot + 1 >= this.interval;
+    const snap =
+      this.entries.length === 0 || this.changed || this.sinceSnapshot + 1 >= this.interval;
+    this.changed = false;
     this.entries.push({ time, data, snapshot: snap ? takeSnapshot(world) : null });
     this.sinceSnapshot = snap ? 0 : this.sinceSnapshot + 1;
     if (this.entries.length > this.capacity) {
@@ -83,6 +97,15 @@ export class SnapshotHistory<Data> {
       // Nothing to drop but entries that the next snapshot needs: wait for it.
       if (start > 0) this.entries.splice(0, start);
     }
+  }
+
+  /**
+   * Says that the app changed the world between two steps (a force switched on, a body moved):
+   * replaying the steps from an earlier snapshot would miss the change, so the next entry gets a
+   * snapshot of its own.
+   */
+  markChanged(): void {
+    this.changed = true;
   }
 
   /**
@@ -114,5 +137,6 @@ export class SnapshotHistory<Data> {
   clear(): void {
     this.entries = [];
     this.sinceSnapshot = 0;
+    this.changed = false;
   }
 }

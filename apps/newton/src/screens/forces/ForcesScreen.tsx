@@ -1,7 +1,7 @@
 import { Box, Button, FormControlLabel, Switch, Typography } from '@mui/material';
 import type { PhysicalCanvasElement } from '@physical/canvas';
-import type { Force } from '@physical/engine';
-import { useCallback, useMemo, useRef, useState } from 'react';
+import type { Force, World } from '@physical/engine';
+import { useCallback, useMemo, useReducer, useRef, useState } from 'react';
 import { useAnnouncer } from '../../app/Announcer.tsx';
 import { forcesPreset, presetFor } from '../../app/presets.ts';
 import { ScreenLayout } from '../../app/ScreenLayout.tsx';
@@ -11,14 +11,21 @@ import { useTicker } from '../../app/use-ticker.ts';
 import { TimeSeries } from '../../graphs/time-series.ts';
 import { TimeSeriesGraph } from '../../graphs/TimeSeriesGraph.tsx';
 import { useI18n } from '../../i18n/i18n.tsx';
+import { DataTools } from '../../lab/DataTools.tsx';
 import { Ruler } from '../../lab/Ruler.tsx';
+import { useRewind, type Measured } from '../../lab/use-rewind.ts';
 import {
+  adoptTrack,
   createForcesTrack,
+  displacement,
   drawMysteryMass,
   isMysteryFound,
+  measuredAcceleration,
   startTrack,
+  trackState,
   type ForcesTrack,
   type SquareSettings,
+  type TrackState,
 } from './forces-scene.ts';
 import { MysteryMass } from './MysteryMass.tsx';
 import { SquareDialog } from './SquareDialog.tsx';
@@ -53,6 +60,33 @@ function effectiveSettings(
   return [settings[0]!, { mass: mysteryMass ?? settings[1]!.mass, force: settings[0]!.force }];
 }
 
+/**
+ * What track `index` measured at its world's time, for the CSV: displacement, velocity, the
+ * acceleration Δv / Δt and the force, and the square's momentum and kinetic energy (left out
+ * while its mass is the learner's mystery to find: p / v would give it away).
+ */
+function measureTrack(track: ForcesTrack, index: number, hiddenMass: boolean): Measured[] {
+  const name = NAMES[index]!;
+  const v = track.square.linearVelocity.x;
+  const m = track.square.mass;
+  // At rest at the stop the square does not accelerate (the readout keeps the last run value).
+  const a = track.finishedAt !== null ? 0 : (measuredAcceleration(track) ?? Number.NaN);
+  const values: Measured[] = [
+    { name: `${name} x`, unit: 'm', value: displacement(track) },
+    { name: `${name} v`, unit: 'm/s', value: v },
+    { name: `${name} a`, unit: 'm/s^2', value: a },
+    // The square's only force is the learner's F, while the run lasts.
+    { name: `${name} F`, unit: 'N', value: track.square.forces.length > 0 ? track.force : 0 },
+  ];
+  if (!(hiddenMass && index === 1)) {
+    values.push(
+      { name: `${name} p`, unit: 'kg m/s', value: m * v },
+      { name: `${name} KE`, unit: 'J', value: 0.5 * m * v * v },
+    );
+  }
+  return values;
+}
+
 /** The second law: two squares, each pushed by the learner's force F, their accelerations measured. */
 export function ForcesScreen({ active }: { active: boolean }) {
   const { t, unit } = useI18n();
@@ -68,7 +102,8 @@ export function ForcesScreen({ active }: { active: boolean }) {
     initial.map((value) => createForcesTrack(value)),
   );
   const [started, setStarted] = useState(false);
-  const [finished, setFinished] = useState(0);
+  // Re-renders when a square reaches the stop (whether all have is read from the tracks).
+  const [, squareFinished] = useReducer((count: number) => count + 1, 0);
   const [editing, setEditing] = useState<number | null>(null);
   const forces = useRef<Force[]>([]);
   const canvases = useRef<(PhysicalCanvasElement | null)[]>([null, null]);
@@ -87,7 +122,47 @@ export function ForcesScreen({ active }: { active: boolean }) {
   const { announce, region } = useAnnouncer('forces');
   const tracksRef = useRef(tracks);
   tracksRef.current = tracks;
-  useTicker(active && !sim.paused && started, 100, () =>
+  const hiddenRef = useRef(false);
+  hiddenRef.current = mysteryMass !== null && !mysteryFound;
+
+  /** What a square's arrival at the stop tells: the screen re-renders, the time is announced. */
+  const finishOf = (index: number) => (): void => {
+    squareFinished();
+    announce(
+      t('forces.reachedEnd', {
+        name: NAMES[index]!,
+        time: unit(tracksRef.current[index]?.finishedAt ?? 0, 's', 2, 2),
+      }),
+    );
+  };
+  const finishRef = useRef(finishOf);
+  finishRef.current = finishOf;
+
+  // Step back, scrub and CSV: both tracks' worlds saved each step, restored side by side.
+  const worlds = useMemo(() => tracks.map((track) => track.world), [tracks]);
+  const rewind = useRewind<TrackState>({
+    worlds,
+    data: (index) => trackState(tracksRef.current[index]!),
+    measure: (index) => measureTrack(tracksRef.current[index]!, index, hiddenRef.current),
+    adopt: (restored: readonly World[], states: readonly TrackState[]) => {
+      const next = restored.map((world, index) =>
+        adoptTrack(tracksRef.current[index]!, world, states[index]!, () =>
+          finishRef.current(index)(),
+        ),
+      );
+      forces.current = next.flatMap((track) => track.square.forces.slice(0, 1));
+      next.forEach((track, index) => {
+        const time = simulatedTime(track.world);
+        for (const item of Object.values(series[index]!)) item.truncateAfter(time);
+      });
+      tracksRef.current = next;
+      setTracks(next);
+    },
+    pause: () => sim.setPaused(true),
+  });
+  const clearRewind = rewind.clear;
+  // Paused too: a step the canvases took as the pause came in shows (a step back starts there).
+  useTicker(active && started, 100, () =>
     tracksRef.current.map((track) => `${track.world.steps}:${track.finishedAt}`).join(','),
   );
 
@@ -102,25 +177,17 @@ export function ForcesScreen({ active }: { active: boolean }) {
         item.force.clear();
       }
       setStarted(false);
-      setFinished(0);
+      clearRewind();
       setTracks(effectiveSettings(next, same, mystery).map((value) => createForcesTrack(value)));
     },
-    [series],
+    [series, clearRewind],
   );
 
   const start = (): void => {
     if (started) return;
-    forces.current = tracks.map((track, index) =>
-      startTrack(track, () => {
-        setFinished((count) => count + 1);
-        announce(
-          t('forces.reachedEnd', {
-            name: NAMES[index]!,
-            time: unit(track.finishedAt ?? 0, 's', 2, 2),
-          }),
-        );
-      }),
-    );
+    forces.current = tracks.map((track, index) => startTrack(track, finishOf(index)));
+    // The saved first moment has the forces on: stepping back to it goes on with them.
+    rewind.restart();
     setStarted(true);
     announce(
       t('forces.started', {
@@ -139,7 +206,7 @@ export function ForcesScreen({ active }: { active: boolean }) {
     rebuild(next, sameForce, mysteryMass);
   };
 
-  const allFinished = finished >= tracks.length;
+  const allFinished = tracks.every((track) => track.finishedAt !== null);
   // The run's clock: the track still running (a finished square rests, and its world stops).
   const time = Math.max(...tracks.map((track) => simulatedTime(track.world)));
   const graph = (
@@ -243,6 +310,12 @@ export function ForcesScreen({ active }: { active: boolean }) {
               label={<Typography variant="body2">{t('lab.showRuler')}</Typography>}
             />
           </Box>
+          <DataTools
+            rewind={rewind}
+            fileName="newton-forces.csv"
+            live={active && started && !sim.paused}
+            announce={announce}
+          />
           <MysteryMass
             mass={mysteryMass}
             found={mysteryFound}

@@ -98,15 +98,25 @@ export function createForcesTrack(settings: SquareSettings): ForcesTrack {
     }),
   );
   square.mass = settings.mass;
-  const track: ForcesTrack = {
-    world,
-    square,
-    settings,
-    force: settings.force,
-    finishedAt: null,
-    acceleration: null,
-    lastVelocity: 0,
-  };
+  return trackOf(world, settings, { finishedAt: null, acceleration: null, lastVelocity: 0 });
+}
+
+/** What a track keeps beside its world: saved with each moment to step back to. */
+export type TrackState = Pick<ForcesTrack, 'finishedAt' | 'acceleration' | 'lastVelocity'>;
+
+/** The state of a track to save beside a snapshot of its world. */
+export function trackState(track: ForcesTrack): TrackState {
+  const { finishedAt, acceleration, lastVelocity } = track;
+  return { finishedAt, acceleration, lastVelocity };
+}
+
+/**
+ * The track around a world built by {@link createForcesTrack}, or restored from a snapshot of
+ * one (new objects, in the same order: the stop first, then the square).
+ */
+function trackOf(world: World, settings: SquareSettings, state: TrackState): ForcesTrack {
+  const square = world.bodies[1]!;
+  const track: ForcesTrack = { world, square, settings, force: settings.force, ...state };
   // The acceleration as the velocity's change over each step. Not 2 x / t^2 from the ruler: the
   // integrator (semi-implicit Euler in 4 sub-steps of h = 1/240 s) moves the square
   // x = a t^2 / 2 + a h t / 2, so 2 x / t^2 = a (1 + h / t) read 2.13 m/s^2 for 2 at t = 4/60 s;
@@ -123,12 +133,35 @@ export function createForcesTrack(settings: SquareSettings): ForcesTrack {
 }
 
 /**
+ * The track again around `world`, a restored snapshot of `track`'s world with the state saved
+ * beside it (stepping back). A run still going on goes on: its force (the square's only one)
+ * ends at the stop as {@link startTrack}'s does, and `onFinish` hears of it.
+ */
+export function adoptTrack(
+  track: ForcesTrack,
+  world: World,
+  state: TrackState,
+  onFinish: () => void = () => undefined,
+): ForcesTrack {
+  const next = trackOf(world, track.settings, state);
+  const force = next.square.forces[0];
+  if (force !== undefined && next.finishedAt === null) endAtStop(next, force, onFinish);
+  return next;
+}
+
+/**
  * Applies the learner's constant force F to the square, to the right, until the square reaches the
  * stop at the end: there the run ends (the force is removed and the square rests against the
  * stop), so no force acts that the screen does not show. `onFinish` hears of it.
  */
 export function startTrack(track: ForcesTrack, onFinish: () => void = () => undefined): Force {
   const force = track.square.applyForce({ x: track.force, y: 0 }, { duration: 'constant' });
+  endAtStop(track, force, onFinish);
+  return force;
+}
+
+/** Ends the run when the square meets the stop: the force removed, the square at rest. */
+function endAtStop(track: ForcesTrack, force: Force, onFinish: () => void): void {
   const stop = track.world.on('contactBegin', (event) => {
     if (event.bodyA !== track.square && event.bodyB !== track.square) return;
     stop();
@@ -138,7 +171,6 @@ export function startTrack(track: ForcesTrack, onFinish: () => void = () => unde
     track.square.sleep();
     onFinish();
   });
-  return force;
 }
 
 /** The acceleration measured from the motion (m/s^2), Δv / Δt over the last step; null at rest. */

@@ -14,7 +14,7 @@ import {
   type OverlayDrawer,
   type PhysicalCanvasElement,
 } from '@physical/canvas';
-import type { Force } from '@physical/engine';
+import type { Force, World } from '@physical/engine';
 import { PhysicalCanvas } from '@physical/react';
 import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
 import { useAnnouncer } from '../../app/Announcer.tsx';
@@ -30,17 +30,21 @@ import { clipToWalls } from '../../app/clip-to-walls.ts';
 import { ElasticitySlider } from '../../app/ElasticitySlider.tsx';
 import { Stopwatch } from '../../app/Stopwatch.tsx';
 import { useI18n } from '../../i18n/i18n.tsx';
+import { DataTools } from '../../lab/DataTools.tsx';
 import { Ruler } from '../../lab/Ruler.tsx';
+import { useRewind, type Measured } from '../../lab/use-rewind.ts';
 import { PUSH_KEYS, pushFromDrag, pushFromKeys, startsPush } from './body-push.ts';
 import { directionName } from './direction-name.ts';
 import { ForceDialog } from './ForceDialog.tsx';
 import {
   REST_SPEED,
   WALL_NAMES,
+  adoptWorld,
   applyConstantForce,
   createInertiaScene,
   forceVector,
   forcesOn,
+  labMotion,
   returnBody,
   sceneSizeFor,
   screenAngle,
@@ -63,6 +67,42 @@ const WALL_COLOR = '#90caf9';
 const NET_COLOR = '#fff59d';
 /** Newtons below this read as none: a sum of forces this small is zero on screen. */
 const NO_FORCE = 0.005;
+
+/**
+ * What a saved moment keeps beside the world: the learner's constant force (its place among the
+ * body's forces, and its setting) and the place of a push by hand, -1 for none.
+ */
+interface MomentData {
+  readonly constantAt: number;
+  readonly pushAt: number;
+  readonly angle: number;
+  readonly magnitude: number;
+}
+
+/**
+ * What the polygon measured at its world's time, for the CSV: position and velocity (x to the
+ * right, y up, from the floor's left end), the acceleration Δv / Δt over the step just taken
+ * (none for the first moment), its momentum and kinetic energy.
+ */
+function measureBody(
+  scene: InertiaScene,
+  before: { vx: number; vy: number } | null,
+  dt: number,
+): Measured[] {
+  const { x, y, vx, vy } = labMotion(scene);
+  const m = scene.body.mass;
+  return [
+    { name: 'x', unit: 'm', value: x },
+    { name: 'y', unit: 'm', value: y },
+    { name: 'vx', unit: 'm/s', value: vx },
+    { name: 'vy', unit: 'm/s', value: vy },
+    { name: 'ax', unit: 'm/s^2', value: before === null ? Number.NaN : (vx - before.vx) / dt },
+    { name: 'ay', unit: 'm/s^2', value: before === null ? Number.NaN : (vy - before.vy) / dt },
+    { name: 'px', unit: 'kg m/s', value: m * vx },
+    { name: 'py', unit: 'kg m/s', value: m * vy },
+    { name: 'KE', unit: 'J', value: 0.5 * m * (vx * vx + vy * vy) },
+  ];
+}
 
 /** The first law: a polygon at rest until a force acts, then gliding at constant velocity. */
 export function InertiaScreen({ active }: { active: boolean }) {
@@ -99,6 +139,57 @@ export function InertiaScreen({ active }: { active: boolean }) {
   }, [show]);
   const speed = useMemo(() => new TimeSeries(10), []);
   const { announce, region } = useAnnouncer('inertia');
+  const forceSettingRef = useRef({ angle, magnitude });
+  forceSettingRef.current = { angle, magnitude };
+  /** The velocity just before the step being taken, for the CSV's Δv / Δt. */
+  const velocityBefore = useRef<{ vx: number; vy: number } | null>(null);
+
+  // Step back, scrub and CSV: the world saved each step, restored with the forces it had.
+  const worlds = useMemo(() => (scene === null ? null : [scene.world]), [scene]);
+  const rewind = useRewind<MomentData>({
+    worlds,
+    data: () => {
+      const forces = sceneRef.current!.body.forces;
+      return {
+        constantAt: forceRef.current === null ? -1 : forces.indexOf(forceRef.current),
+        pushAt: pushRef.current === null ? -1 : forces.indexOf(pushRef.current),
+        ...forceSettingRef.current,
+      };
+    },
+    before: () => {
+      velocityBefore.current = sceneRef.current === null ? null : labMotion(sceneRef.current);
+    },
+    measure: () => {
+      const before = velocityBefore.current;
+      velocityBefore.current = null;
+      return measureBody(sceneRef.current!, before, sceneRef.current!.world.lastStepDuration);
+    },
+    adopt: ([world]: readonly World[], [data]: readonly MomentData[], time: number) => {
+      const current = sceneRef.current;
+      if (current === null || world === undefined || data === undefined) return;
+      const next = adoptWorld(current, world);
+      const forces = next.body.forces;
+      const constant = data.constantAt < 0 ? null : forces[data.constantAt]!;
+      // A push lasts while a finger holds the body: none holds it at a moment stepped back to.
+      if (data.pushAt >= 0) forces[data.pushAt]!.remove();
+      forceRef.current = constant;
+      pushRef.current = null;
+      setPushState(null);
+      setApplied(constant !== null);
+      if (constant !== null) {
+        setAngle(data.angle);
+        setMagnitude(data.magnitude);
+      }
+      speed.truncateAfter(time);
+      // The push taken away: the moment shown is no longer its saved snapshot.
+      if (data.pushAt >= 0) worldChanged();
+      sceneRef.current = next;
+      setScene(next);
+    },
+    pause: () => sim.setPaused(true),
+  });
+  const clearRewind = rewind.clear;
+  const worldChanged = rewind.changed;
   // The overlay draws labels in the current language without re-creating itself.
   const labelsRef = useRef({
     applied: (value: number) => `F ${value}`,
@@ -116,14 +207,16 @@ export function InertiaScreen({ active }: { active: boolean }) {
     balanced: t('forces.balanced'),
     grid: t('inertia.grid'),
   };
-  // Re-render only when what the readouts show changed: nothing renders at rest.
-  useTicker(active && !sim.paused, 100, () => {
+  // Re-render only when what the readouts show changed: nothing renders at rest. Paused too: a
+  // step the canvas took as the pause came in shows, so a step back starts from the time shown.
+  useTicker(active, 100, () => {
     const current = sceneRef.current;
     if (current === null) return '';
     const v = current.body.linearVelocity;
+    const p = current.body.position;
     // The walls' push too: after an impact it settles to what holds a pinned body.
     const wall = forcesOn(current, null).wall;
-    return `${v.x.toFixed(3)},${v.y.toFixed(3)},${wall.x.toFixed(2)},${wall.y.toFixed(2)}`;
+    return `${current.world.steps}:${v.x},${v.y},${wall.x.toFixed(2)},${wall.y.toFixed(2)},${p.x},${p.y}`;
   });
 
   const build = useCallback(() => {
@@ -134,8 +227,9 @@ export function InertiaScreen({ active }: { active: boolean }) {
     setApplied(false);
     setPushState(null);
     speed.clear();
+    clearRewind();
     setScene(createInertiaScene(size.width, size.height, settingsRef.current));
-  }, [speed]);
+  }, [speed, clearRewind]);
 
   const resetAll = useCallback(() => {
     setAngle(0);
@@ -300,8 +394,10 @@ export function InertiaScreen({ active }: { active: boolean }) {
       forceRef.current = null;
       setApplied(false);
       announce(t('inertia.forceStopped'));
+      worldChanged();
     } else {
       forceRef.current = applyConstantForce(scene, angle, magnitude);
+      worldChanged();
       setApplied(true);
       announce(
         t('inertia.forceStarted', {
@@ -317,6 +413,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
   const returnObject = (): void => {
     if (scene === null) return;
     returnBody(scene);
+    worldChanged();
     speed.clear();
     announce(t('inertia.returned'));
     canvasRef.current?.invalidate();
@@ -327,6 +424,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
     (vector: { x: number; y: number } | null): void => {
       const current = sceneRef.current;
       if (current === null) return;
+      worldChanged();
       const old = pushRef.current;
       if (vector === null || (vector.x === 0 && vector.y === 0)) {
         if (old === null) return;
@@ -349,7 +447,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
       }
       canvasRef.current?.invalidate();
     },
-    [announce, t, unit, number],
+    [announce, t, unit, number, worldChanged],
   );
 
   // A press on the body and a pull push it: the way the finger moved, harder the farther, until
@@ -430,6 +528,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
     setMagnitude(newMagnitude);
     setDialogOpen(false);
     forceRef.current?.setVector(forceVector(newAngle, newMagnitude));
+    worldChanged();
     canvasRef.current?.invalidate();
   };
 
@@ -575,6 +674,16 @@ export function InertiaScreen({ active }: { active: boolean }) {
               label={t('inertia.mass')}
               value={scene === null ? '–' : unit(scene.body.mass, 'kg', 2)}
             />
+            <Readout
+              name="x"
+              label={t('inertia.x')}
+              value={scene === null ? '–' : unit(labMotion(scene).x, 'm', 2, 2)}
+            />
+            <Readout
+              name="y"
+              label={t('inertia.y')}
+              value={scene === null ? '–' : unit(labMotion(scene).y, 'm', 2, 2)}
+            />
           </Box>
           <TimeSeriesGraph
             title={t('inertia.graph')}
@@ -597,6 +706,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
               onChange={(next) => {
                 setElasticityState(next);
                 if (scene !== null) setElasticity(scene, next);
+                worldChanged();
               }}
             />
             <ToggleButtonGroup
@@ -608,6 +718,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
                 setSurfaceState(value);
                 if (scene !== null) {
                   setSurface(scene, value);
+                  worldChanged();
                   canvasRef.current?.invalidate();
                 }
                 announce(t(value === 'ice' ? 'inertia.onIce' : 'inertia.onWood'));
@@ -639,6 +750,12 @@ export function InertiaScreen({ active }: { active: boolean }) {
               />
             ))}
           </Box>
+          <DataTools
+            rewind={rewind}
+            fileName="newton-inertia.csv"
+            live={active && !sim.paused}
+            announce={announce}
+          />
           <ForceDialog
             open={dialogOpen}
             angle={angle}

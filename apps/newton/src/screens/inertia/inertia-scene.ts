@@ -69,18 +69,15 @@ export function createInertiaScene(
     { x: width, y: height },
     { x: 0, y: height },
   ];
-  const walls: Body[] = [];
   for (let i = 0; i < 4; i++) {
     // Wall and body carry the same values, so any mixing rule gives them.
-    walls.push(
-      world.add(
-        wall({
-          from: corners[i]!,
-          to: corners[(i + 1) % 4]!,
-          friction: 0,
-          restitution: elasticity,
-        }),
-      ),
+    world.add(
+      wall({
+        from: corners[i]!,
+        to: corners[(i + 1) % 4]!,
+        friction: 0,
+        restitution: elasticity,
+      }),
     );
   }
   const sides = options.sides ?? (random() < 0.5 ? 5 : 6);
@@ -99,24 +96,59 @@ export function createInertiaScene(
       fixedRotation: true,
     }),
   );
-  const friction = body.applyForce({ x: 0, y: 0 }, { duration: 'constant' });
+  // The floor's friction: the polygon's first force, set anew after every step.
+  body.applyForce({ x: 0, y: 0 }, { duration: 'constant' });
   body.sleep();
+  return sceneOf(world, { width, height, sides, elasticity, surface: options.surface ?? 'ice' });
+}
+
+/**
+ * The scene around a world built by {@link createInertiaScene}, or restored from a snapshot of
+ * one (the same bodies and forces in the same order, new objects): the walls are its first four
+ * bodies, the polygon the fifth, the floor's friction the polygon's first force.
+ */
+function sceneOf(
+  world: World,
+  settings: Pick<InertiaScene, 'width' | 'height' | 'sides' | 'elasticity' | 'surface'>,
+): InertiaScene {
+  const body = world.bodies[4]!;
   const scene: InertiaScene = {
     world,
     body,
-    width,
-    height,
-    sides,
-    walls,
-    elasticity,
-    surface: options.surface ?? 'ice',
-    friction,
+    ...settings,
+    walls: world.bodies.slice(0, 4),
+    friction: body.forces[0]!,
   };
   // After each step the body moved in, the friction for the next step.
   world.on('move', (moved) => {
     if (moved === body) updateFloorFriction(scene);
   });
   return scene;
+}
+
+/**
+ * The scene again around `world`, a restored snapshot of `scene`'s world (stepping back): the
+ * walls' bounciness and the floor as the learner has them now, not as they were.
+ */
+export function adoptWorld(scene: InertiaScene, world: World): InertiaScene {
+  const { width, height, sides, elasticity, surface } = scene;
+  const next = sceneOf(world, { width, height, sides, elasticity, surface });
+  setElasticity(next, scene.elasticity);
+  return next;
+}
+
+/**
+ * Where the polygon is and how it moves as the lab reports it (m, m/s): from the floor's left
+ * end, x to the right and y up, the way the directions on screen count (90° is up).
+ */
+export function labMotion(scene: InertiaScene): { x: number; y: number; vx: number; vy: number } {
+  const { position, linearVelocity } = scene.body;
+  return {
+    x: position.x,
+    y: scene.height - position.y,
+    vx: linearVelocity.x,
+    vy: linearVelocity.y === 0 ? 0 : -linearVelocity.y,
+  };
 }
 
 /**
