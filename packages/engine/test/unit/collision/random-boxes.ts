@@ -1,4 +1,4 @@
-// Seeded random numbers and boxes shared by the tree tests.
+// Seeded random numbers and boxes shared by the collision tests.
 import { AABB } from '../../../src/geometry/aabb.ts';
 
 /** Mulberry32: a small seeded PRNG so every run sees the same sequence. */
