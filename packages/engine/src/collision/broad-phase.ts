@@ -2,7 +2,9 @@ import { AABB_MARGIN } from '../core/constants.ts';
 import { AABB } from '../geometry/aabb.ts';
 import type { RayInput } from '../geometry/ray.ts';
 import { DynamicTree } from './dynamic-tree.ts';
-import type { TreeQueryCallback, TreeRayCastCallback, TreeState } from './dynamic-tree.ts';
+import type { TreeQueryCallback } from './dynamic-tree.ts';
+import { rayCastTree, type TreeRayCastCallback } from './dynamic-tree-ray-cast.ts';
+import type { TreeState } from './dynamic-tree-state.ts';
 
 // The broad phase finds candidate shape pairs from fattened boxes, one DynamicTree per body
 // type as in Box2D v3: static shapes never need to find each other, so a moved dynamic proxy
@@ -281,7 +283,7 @@ export class BroadPhase {
     this.userRayCast = callback;
     for (let type = 0; type < 3; type++) {
       this.currentType = type;
-      this.trees[type]!.rayCast(input, this.forwardRayCastCallback);
+      rayCastTree(this.trees[type]!, input, this.forwardRayCastCallback);
       if (input.maxFraction === 0) {
         break;
       }

@@ -1,5 +1,4 @@
 import type { AABB } from '../geometry/aabb.ts';
-import type { RayInput } from '../geometry/ray.ts';
 
 // A dynamic bounding-volume hierarchy of axis-aligned boxes: the idea of Box2D's b2DynamicTree
 // (Erin Catto), written from the published algorithms rather than from its code.
@@ -23,7 +22,8 @@ import type { RayInput } from '../geometry/ray.ts';
 //   falling pile moves most of its proxies every step, and one rebuild over them costs less than
 //   as many removals and insertions with their rotations.
 
-const NULL_NODE = -1;
+/** The link of a node that has no parent, child or next free node. */
+export const NULL_NODE = -1;
 const INITIAL_CAPACITY = 16;
 const INITIAL_STACK = 64;
 
@@ -32,84 +32,6 @@ const INITIAL_STACK = 64;
  * was stored with it. Return false to stop the query.
  */
 export type TreeQueryCallback = (proxyId: number, userData: number) => boolean;
-
-/**
- * Called for each leaf whose box the ray may hit. `input.maxFraction` holds the current clip
- * (a fraction of `input.translation`, no unit). Return the fraction at which the proxy's shape
- * was hit to clip the ray there, 0 to stop the cast, -1 to ignore this proxy and continue, or
- * `input.maxFraction` to continue unclipped.
- */
-export type TreeRayCastCallback = (input: RayInput, proxyId: number, userData: number) => number;
-
-/** A tree's state as plain arrays: per node 4 box numbers (m) and 5 integers. */
-export interface TreeState {
-  readonly capacity: number;
-  readonly root: number;
-  readonly freeList: number;
-  readonly leafCount: number;
-  readonly boxes: readonly number[];
-  readonly child1: readonly number[];
-  readonly child2: readonly number[];
-  readonly parent: readonly number[];
-  readonly heights: readonly number[];
-  readonly userData: readonly number[];
-}
-
-/**
- * Checks that a tree state is well formed (lengths, links in range, parents matching children,
- * every live node reached once from the root, the free list covering the rest), so a corrupt
- * snapshot cannot make queries loop or read out of range. Returns what is wrong, or null.
- */
-export function checkTreeState(state: TreeState): string | null {
-  const n = state.capacity;
-  if (!Number.isInteger(n) || n < 2 || n > 1 << 26) return 'capacity must be a whole number >= 2';
-  if (state.boxes.length !== 4 * n) return `boxes must hold ${4 * n} numbers`;
-  for (const key of ['child1', 'child2', 'parent', 'heights', 'userData'] as const) {
-    const list = state[key];
-    if (list.length !== n) return `${key} must hold ${n} integers`;
-    for (const v of list)
-      if (!Number.isInteger(v) || v < -1 || v > 0x7fffffff) return `${key} holds ${v}`;
-  }
-  const inRange = (node: number): boolean => node >= 0 && node < n;
-  const seen = new Uint8Array(n);
-  let leaves = 0;
-  if (state.root !== NULL_NODE) {
-    if (!inRange(state.root) || state.parent[state.root] !== NULL_NODE)
-      return 'root is not a live node';
-    const stack = [state.root];
-    while (stack.length > 0) {
-      const node = stack.pop()!;
-      if (seen[node] === 1) return `node ${node} is reached twice`;
-      seen[node] = 1;
-      const a = state.child1[node]!;
-      const b = state.child2[node]!;
-      if (a === NULL_NODE) {
-        if (b !== NULL_NODE || state.heights[node] !== 0) return `leaf ${node} is malformed`;
-        leaves++;
-        continue;
-      }
-      if (!inRange(a) || !inRange(b) || state.parent[a] !== node || state.parent[b] !== node) {
-        return `node ${node} has bad children`;
-      }
-      stack.push(a, b);
-    }
-  } else if (state.leafCount !== 0) {
-    return 'an empty tree has no leaves';
-  }
-  if (leaves !== state.leafCount)
-    return `leafCount is ${state.leafCount} but ${leaves} leaves hang from the root`;
-  let free = state.freeList;
-  let freeCount = 0;
-  while (free !== NULL_NODE) {
-    if (!inRange(free) || seen[free] !== 0) return `free list reaches node ${free}`;
-    seen[free] = 2;
-    freeCount++;
-    free = state.parent[free]!;
-  }
-  const live = seen.reduce((sum, v) => sum + (v === 1 ? 1 : 0), 0);
-  if (live + freeCount !== n) return 'some nodes are neither in the tree nor free';
-  return null;
-}
 
 /**
  * Half the perimeter of the union of node box `o` (an offset into `boxes`) and a box (m). The tree
@@ -162,8 +84,9 @@ export class DynamicTree {
   root = NULL_NODE;
   /** @internal */
   leafCount = 0;
-  /** Traversal stack shared by query and rayCast; `stackTop` lets a callback query again. */
-  private stack: Int32Array;
+  /** Traversal stack shared by query and rayCastTree; `stackTop` lets a callback query again. */
+  /** @internal */
+  stack: Int32Array;
   /** @internal */
   stackTop = 0;
 
@@ -476,88 +399,6 @@ export class DynamicTree {
     }
   }
 
-  /**
-   * Casts the ray from `input.origin` along `input.translation` (m, world frame), clipped at
-   * `input.maxFraction`, and calls `callback` for each proxy whose box the clipped ray
-   * crosses. The callback's return value clips the ray (see TreeRayCastCallback), and
-   * `input.maxFraction` is updated to the clip so later callbacks and callers see it.
-   */
-  rayCast(input: RayInput, callback: TreeRayCastCallback): void {
-    if (this.root === NULL_NODE) {
-      return;
-    }
-    const px = input.originX;
-    const py = input.originY;
-    const dx = input.translationX;
-    const dy = input.translationY;
-    // A box is skipped if it is off the ray's line (separating axis along the ray's normal)
-    // or outside the box of the clipped segment (separating axes x and y): the segment-vs-box
-    // separating-axis test of Gino van den Bergen, "Collision Detection in Interactive 3D
-    // Environments" (2003), as Box2D uses it.
-    const length = Math.sqrt(dx * dx + dy * dy);
-    const nx = length > 0 ? -dy / length : 0;
-    const ny = length > 0 ? dx / length : 0;
-    const absNx = Math.abs(nx);
-    const absNy = Math.abs(ny);
-    let maxFraction = input.maxFraction;
-    let endX = px + maxFraction * dx;
-    let endY = py + maxFraction * dy;
-    let segMinX = px < endX ? px : endX;
-    let segMinY = py < endY ? py : endY;
-    let segMaxX = px > endX ? px : endX;
-    let segMaxY = py > endY ? py : endY;
-
-    const base = this.stackTop;
-    let top = base;
-    this.stack[top++] = this.root;
-    while (top > base) {
-      const node = this.stack[--top]!;
-      const boxes = this.boxes;
-      const o = 4 * node;
-      const bMinX = boxes[o]!;
-      const bMinY = boxes[o + 1]!;
-      const bMaxX = boxes[o + 2]!;
-      const bMaxY = boxes[o + 3]!;
-      if (bMinX > segMaxX || segMinX > bMaxX || bMinY > segMaxY || segMinY > bMaxY) {
-        continue;
-      }
-      const cx = 0.5 * (bMinX + bMaxX);
-      const cy = 0.5 * (bMinY + bMaxY);
-      const hx = 0.5 * (bMaxX - bMinX);
-      const hy = 0.5 * (bMaxY - bMinY);
-      if (Math.abs(nx * (px - cx) + ny * (py - cy)) > absNx * hx + absNy * hy) {
-        continue;
-      }
-      const first = this.child1[node]!;
-      if (first === NULL_NODE) {
-        input.maxFraction = maxFraction;
-        this.stackTop = top;
-        const value = callback(input, node, this.userData[node]!);
-        this.stackTop = base;
-        if (value === 0) {
-          input.maxFraction = 0;
-          return;
-        }
-        if (value > 0 && value <= maxFraction) {
-          maxFraction = value;
-          endX = px + maxFraction * dx;
-          endY = py + maxFraction * dy;
-          segMinX = px < endX ? px : endX;
-          segMinY = py < endY ? py : endY;
-          segMaxX = px > endX ? px : endX;
-          segMaxY = py > endY ? py : endY;
-        }
-        input.maxFraction = maxFraction;
-      } else {
-        if (top + 2 > this.stack.length) {
-          this.growStack();
-        }
-        this.stack[top++] = this.child2[node]!;
-        this.stack[top++] = first;
-      }
-    }
-  }
-
   /** Half the node box's perimeter (see unionPerimeter). */
   private perimeter(node: number): number {
     const o = 4 * node;
@@ -588,7 +429,8 @@ export class DynamicTree {
     this.capacity = newCapacity;
   }
 
-  private growStack(): void {
+  /** @internal */
+  growStack(): void {
     const stack = new Int32Array(2 * this.stack.length);
     stack.set(this.stack);
     this.stack = stack;

@@ -23,7 +23,7 @@ import {
 import { computeCapsuleMass } from '../geometry/capsule.ts';
 import { computeCircleMass } from '../geometry/circle.ts';
 import { MassData } from '../geometry/mass-data.ts';
-import { computePolygonMass } from '../geometry/polygon.ts';
+import { computePolygonMass } from '../geometry/polygon-mass.ts';
 import type { BodyStore } from './body-memory.ts';
 import {
   BODY_STRIDE,

@@ -15,7 +15,8 @@ import {
 import { AABB } from '../geometry/aabb.ts';
 import { computeCapsuleAABB, makeCapsule, type Capsule } from '../geometry/capsule.ts';
 import { computeCircleAABB, makeCircle, type Circle } from '../geometry/circle.ts';
-import { computePolygonAABB, makeBox, makeConvexPart, type Polygon } from '../geometry/polygon.ts';
+import { makeBox, makeConvexPart, type Polygon } from '../geometry/polygon.ts';
+import { computePolygonAABB } from '../geometry/polygon-queries.ts';
 import { makePolygonParts } from '../geometry/polygon-decomposition.ts';
 import { computeSegmentAABB, makeSegment, type Segment } from '../geometry/segment.ts';
 import type { Transform } from '../math/transform.ts';

@@ -2,13 +2,8 @@ import { MAX_POLYGON_VERTICES } from '../core/constants.ts';
 import { PhysicalError } from '../core/errors.ts';
 import { MAX_SIZE, requireNonNegative } from '../core/validate.ts';
 import type { Vec2Like } from '../math/vec2.ts';
-import {
-  findConcaveVertex,
-  makePolygonFromOutline,
-  prepareOutline,
-  type Outline,
-  type Polygon,
-} from './polygon.ts';
+import { makePolygonFromOutline, type Polygon } from './polygon.ts';
+import { findConcaveVertex, prepareOutline, type Outline } from './polygon-outline.ts';
 
 /**
  * Builds the convex parts of any simple polygon outline (body-local, m; either winding, up to

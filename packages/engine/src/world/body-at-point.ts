@@ -1,7 +1,7 @@
 import { requireVector } from '../core/validate.ts';
 import { capsuleContainsPoint } from '../geometry/capsule.ts';
 import { circleContainsPoint } from '../geometry/circle.ts';
-import { polygonContainsPoint } from '../geometry/polygon.ts';
+import { polygonContainsPoint } from '../geometry/polygon-queries.ts';
 import type { Vec2Like } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
 import type { Shape } from '../dynamics/shape.ts';

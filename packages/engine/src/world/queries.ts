@@ -2,7 +2,7 @@ import type { BroadPhase } from '../collision/broad-phase.ts';
 import { AABB, aabbOverlaps } from '../geometry/aabb.ts';
 import { rayCastCircle } from '../geometry/circle.ts';
 import { rayCastCapsule } from '../geometry/capsule.ts';
-import { rayCastPolygon } from '../geometry/polygon.ts';
+import { rayCastPolygon } from '../geometry/polygon-queries.ts';
 import { RayHit, RayInput } from '../geometry/ray.ts';
 import { rayCastSegment } from '../geometry/segment.ts';
 import type { Vec2 } from '../math/vec2.ts';

@@ -16,7 +16,7 @@ import { requireAngle, requireObject, requireVector } from '../core/validate.ts'
 import { AABB } from '../geometry/aabb.ts';
 import { computeCapsuleAABB } from '../geometry/capsule.ts';
 import { computeCircleAABB } from '../geometry/circle.ts';
-import { computePolygonAABB } from '../geometry/polygon.ts';
+import { computePolygonAABB } from '../geometry/polygon-queries.ts';
 import { computeSegmentAABB } from '../geometry/segment.ts';
 import { Transform } from '../math/transform.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';

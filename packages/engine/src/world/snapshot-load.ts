@@ -1,6 +1,6 @@
 import { importBroadPhaseState } from '../collision/broad-phase-state.ts';
 import type { BroadPhaseState } from '../collision/broad-phase.ts';
-import { checkTreeState, type TreeState } from '../collision/dynamic-tree.ts';
+import { checkTreeState, type TreeState } from '../collision/dynamic-tree-state.ts';
 import {
   BOUNCING_STEPS,
   CONTACT_STRIDE,

@@ -1,5 +1,5 @@
 import { exportBroadPhaseState } from '../collision/broad-phase-state.ts';
-import type { TreeState } from '../collision/dynamic-tree.ts';
+import type { TreeState } from '../collision/dynamic-tree-state.ts';
 import type { Body } from '../dynamics/body.ts';
 import { CONTACT_STRIDE } from '../dynamics/contact-data.ts';
 import type { Contact } from '../dynamics/contact.ts';

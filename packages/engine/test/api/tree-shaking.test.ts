@@ -13,7 +13,9 @@ const source = fileURLToPath(new URL('../../src/', import.meta.url));
 const SNAPSHOT_FILES = ['world/snapshot.ts', 'world/joint-snapshot.ts', 'world/snapshot-values.ts'];
 const JOINT_FILES = [
   'dynamics/joints/revolute-joint.ts',
+  'dynamics/joints/revolute-joint-solver.ts',
   'dynamics/joints/prismatic-joint.ts',
+  'dynamics/joints/prismatic-joint-solver.ts',
   'dynamics/joints/distance-joint.ts',
   'dynamics/joints/weld-joint.ts',
   'dynamics/joints/mouse-joint.ts',

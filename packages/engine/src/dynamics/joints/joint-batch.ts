@@ -30,8 +30,8 @@ export interface BatchedJoint extends Joint {
 /**
  * @internal The storage every kind's batch shares: `stride` doubles per joint in `data`, the two
  * bodies' state offsets per joint in `states` (A, B), growing by doubling (allocation only when a
- * step has more joints of the kind than any before). The kind's file adds the two pass loops,
- * over its own module-local layout offsets.
+ * step has more joints of the kind than any before). The kind's solver file (`*-joint-solver.ts`,
+ * or the kind's own file) adds the two pass loops, over its own module-local layout offsets.
  */
 export abstract class FlatJointBatch<J extends BatchedJoint> implements JointBatch {
   count = 0;

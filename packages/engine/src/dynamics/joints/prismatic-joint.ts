@@ -6,9 +6,42 @@ import {
   requireRange,
 } from '../../core/validate.ts';
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
-import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
-import { FlatJointBatch } from './joint-batch.ts';
+import {
+  R_AX,
+  R_AY,
+  R_BX,
+  R_BY,
+  AXIS_X,
+  AXIS_Y,
+  DELTA_CENTER_X,
+  DELTA_CENTER_Y,
+  JOINT_ANGLE_0,
+  INV_MASS_A,
+  INV_I_A,
+  INV_MASS_B,
+  INV_I_B,
+  SPRING_ON,
+  SPRING_BIAS_RATE,
+  SPRING_MASS_SCALE,
+  SPRING_IMPULSE_SCALE,
+  MOTOR_ON,
+  MOTOR_SPEED,
+  MAX_MOTOR_FORCE,
+  LIMIT_ON,
+  LOWER,
+  UPPER,
+  PERPENDICULAR_IMPULSE,
+  ANGULAR_IMPULSE,
+  SPRING_IMPULSE,
+  MOTOR_IMPULSE,
+  LOWER_IMPULSE,
+  UPPER_IMPULSE,
+  STEP_IMPULSE_X,
+  STEP_IMPULSE_Y,
+  STEP_ANGULAR_IMPULSE,
+  PrismaticBatch,
+} from './prismatic-joint-solver.ts';
 import {
   Joint,
   type JointOptions,
@@ -443,280 +476,5 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
     this.stepImpulseX = d[o + STEP_IMPULSE_X]!;
     this.stepImpulseY = d[o + STEP_IMPULSE_Y]!;
     this.stepAngularImpulse = d[o + STEP_ANGULAR_IMPULSE]!;
-  }
-}
-
-// The prismatic joints of a step in flat arrays (PrismaticBatch), doubles per joint:
-const R_AX = 0; // levers from the centres to the anchors at the step's start (m)
-const R_AY = 1;
-const R_BX = 2;
-const R_BY = 3;
-const AXIS_X = 4; // the axis in world orientation at the step's start
-const AXIS_Y = 5;
-const DELTA_CENTER_X = 6; // centre of B minus centre of A at the step's start (m)
-const DELTA_CENTER_Y = 7;
-const JOINT_ANGLE_0 = 8; // angle of B minus angle of A minus the reference, at the step's start
-const INV_MASS_A = 9;
-const INV_I_A = 10;
-const INV_MASS_B = 11;
-const INV_I_B = 12;
-const SPRING_ON = 13; // 1 or 0
-const SPRING_BIAS_RATE = 14;
-const SPRING_MASS_SCALE = 15;
-const SPRING_IMPULSE_SCALE = 16;
-const MOTOR_ON = 17;
-const MOTOR_SPEED = 18;
-const MAX_MOTOR_FORCE = 19;
-const LIMIT_ON = 20;
-const LOWER = 21;
-const UPPER = 22;
-const PERPENDICULAR_IMPULSE = 23; // accumulated impulses (warm-started)
-const ANGULAR_IMPULSE = 24;
-const SPRING_IMPULSE = 25;
-const MOTOR_IMPULSE = 26;
-const LOWER_IMPULSE = 27;
-const UPPER_IMPULSE = 28;
-const STEP_IMPULSE_X = 29; // summed over the step's relax passes, for the reaction
-const STEP_IMPULSE_Y = 30;
-const STEP_ANGULAR_IMPULSE = 31;
-const STRIDE = 32;
-
-/**
- * @internal The prismatic joints of a step: their numbers in one Float64Array and their bodies'
- * state offsets in an Int32Array, solved in one loop per pass (see JointBatch).
- */
-export class PrismaticBatch extends FlatJointBatch<PrismaticJoint> {
-  constructor() {
-    super(STRIDE);
-  }
-
-  warmStart(s: Float64Array): void {
-    const d = this.data;
-    const states = this.states;
-    for (let i = 0; i < this.count; i++) {
-      const o = i * STRIDE;
-      const a = states[2 * i]!;
-      const b = states[2 * i + 1]!;
-      const qAc = s[a + Q_C]!;
-      const qAs = s[a + Q_S]!;
-      const qBc = s[b + Q_C]!;
-      const qBs = s[b + Q_S]!;
-      const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
-      const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
-      const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
-      const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
-      const dx = s[b + DP_X]! - s[a + DP_X]! + d[o + DELTA_CENTER_X]! + rBx - rAx;
-      const dy = s[b + DP_Y]! - s[a + DP_Y]! + d[o + DELTA_CENTER_Y]! + rBy - rAy;
-      const ax = qAc * d[o + AXIS_X]! - qAs * d[o + AXIS_Y]!;
-      const ay = qAs * d[o + AXIS_X]! + qAc * d[o + AXIS_Y]!;
-      // Lever arms of the axial and perpendicular rows (A's arm reaches B's anchor: d + rA).
-      const a1 = (dx + rAx) * ay - (dy + rAy) * ax;
-      const a2 = rBx * ay - rBy * ax;
-      const px = -ay;
-      const py = ax;
-      const s1 = (dx + rAx) * py - (dy + rAy) * px;
-      const s2 = rBx * py - rBy * px;
-      const axial =
-        d[o + SPRING_IMPULSE]! +
-        d[o + MOTOR_IMPULSE]! +
-        d[o + LOWER_IMPULSE]! -
-        d[o + UPPER_IMPULSE]!;
-      const perpendicular = d[o + PERPENDICULAR_IMPULSE]!;
-      const angular = d[o + ANGULAR_IMPULSE]!;
-      const fx = axial * ax + perpendicular * px;
-      const fy = axial * ay + perpendicular * py;
-      const lA = axial * a1 + perpendicular * s1 + angular;
-      const lB = axial * a2 + perpendicular * s2 + angular;
-      s[a + V_X] -= d[o + INV_MASS_A]! * fx;
-      s[a + V_Y] -= d[o + INV_MASS_A]! * fy;
-      s[a + W] -= d[o + INV_I_A]! * lA;
-      s[b + V_X] += d[o + INV_MASS_B]! * fx;
-      s[b + V_Y] += d[o + INV_MASS_B]! * fy;
-      s[b + W] += d[o + INV_I_B]! * lB;
-    }
-  }
-
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
-    const d = this.data;
-    const states = this.states;
-    const soft = step.softness;
-    for (let i = 0; i < this.count; i++) {
-      const o = i * STRIDE;
-      const a = states[2 * i]!;
-      const b = states[2 * i + 1]!;
-      const mA = d[o + INV_MASS_A]!;
-      const iA = d[o + INV_I_A]!;
-      const mB = d[o + INV_MASS_B]!;
-      const iB = d[o + INV_I_B]!;
-      let vAx = s[a + V_X]!;
-      let vAy = s[a + V_Y]!;
-      let wA = s[a + W]!;
-      let vBx = s[b + V_X]!;
-      let vBy = s[b + V_Y]!;
-      let wB = s[b + W]!;
-      const qAc = s[a + Q_C]!;
-      const qAs = s[a + Q_S]!;
-      const qBc = s[b + Q_C]!;
-      const qBs = s[b + Q_S]!;
-      const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
-      const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
-      const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
-      const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
-      const dx = s[b + DP_X]! - s[a + DP_X]! + d[o + DELTA_CENTER_X]! + rBx - rAx;
-      const dy = s[b + DP_Y]! - s[a + DP_Y]! + d[o + DELTA_CENTER_Y]! + rBy - rAy;
-      const ax = qAc * d[o + AXIS_X]! - qAs * d[o + AXIS_Y]!;
-      const ay = qAs * d[o + AXIS_X]! + qAc * d[o + AXIS_Y]!;
-      const translation = ax * dx + ay * dy;
-      const a1 = (dx + rAx) * ay - (dy + rAy) * ax;
-      const a2 = rBx * ay - rBy * ax;
-      const kAxial = mA + mB + iA * a1 * a1 + iB * a2 * a2;
-      const axialMass = kAxial > 0 ? 1 / kAxial : 0;
-
-      if (d[o + SPRING_ON] === 1) {
-        const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
-        const impulse =
-          -d[o + SPRING_MASS_SCALE]! * axialMass * (cdot + d[o + SPRING_BIAS_RATE]! * translation) -
-          d[o + SPRING_IMPULSE_SCALE]! * d[o + SPRING_IMPULSE]!;
-        d[o + SPRING_IMPULSE] += impulse;
-        vAx -= mA * impulse * ax;
-        vAy -= mA * impulse * ay;
-        wA -= iA * impulse * a1;
-        vBx += mB * impulse * ax;
-        vBy += mB * impulse * ay;
-        wB += iB * impulse * a2;
-      }
-
-      if (d[o + MOTOR_ON] === 1) {
-        const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
-        const impulse = axialMass * (d[o + MOTOR_SPEED]! - cdot);
-        const old = d[o + MOTOR_IMPULSE]!;
-        const maxImpulse = step.h * d[o + MAX_MOTOR_FORCE]!;
-        const accumulated = Math.max(-maxImpulse, Math.min(old + impulse, maxImpulse));
-        d[o + MOTOR_IMPULSE] = accumulated;
-        const applied = accumulated - old;
-        vAx -= mA * applied * ax;
-        vAy -= mA * applied * ay;
-        wA -= iA * applied * a1;
-        vBx += mB * applied * ax;
-        vBy += mB * applied * ay;
-        wB += iB * applied * a2;
-      }
-
-      if (d[o + LIMIT_ON] === 1) {
-        // Lower: translation - lower >= 0.
-        {
-          const c = translation - d[o + LOWER]!;
-          let bias = 0;
-          let massScale = 1;
-          let impulseScale = 0;
-          if (c > 0) bias = c * step.inverseH;
-          else if (useBias) {
-            bias = soft.biasRate * c;
-            massScale = soft.massScale;
-            impulseScale = soft.impulseScale;
-          }
-          const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
-          const old = d[o + LOWER_IMPULSE]!;
-          const impulse = -axialMass * massScale * (cdot + bias) - impulseScale * old;
-          const accumulated = Math.max(old + impulse, 0);
-          const applied = accumulated - old;
-          d[o + LOWER_IMPULSE] = accumulated;
-          vAx -= mA * applied * ax;
-          vAy -= mA * applied * ay;
-          wA -= iA * applied * a1;
-          vBx += mB * applied * ax;
-          vBy += mB * applied * ay;
-          wB += iB * applied * a2;
-        }
-        // Upper: upper - translation >= 0, the same row with the sign turned.
-        {
-          const c = d[o + UPPER]! - translation;
-          let bias = 0;
-          let massScale = 1;
-          let impulseScale = 0;
-          if (c > 0) bias = c * step.inverseH;
-          else if (useBias) {
-            bias = soft.biasRate * c;
-            massScale = soft.massScale;
-            impulseScale = soft.impulseScale;
-          }
-          const cdot = ax * (vAx - vBx) + ay * (vAy - vBy) + a1 * wA - a2 * wB;
-          const old = d[o + UPPER_IMPULSE]!;
-          const impulse = -axialMass * massScale * (cdot + bias) - impulseScale * old;
-          const accumulated = Math.max(old + impulse, 0);
-          const applied = accumulated - old;
-          d[o + UPPER_IMPULSE] = accumulated;
-          vAx += mA * applied * ax;
-          vAy += mA * applied * ay;
-          wA += iA * applied * a1;
-          vBx -= mB * applied * ax;
-          vBy -= mB * applied * ay;
-          wB -= iB * applied * a2;
-        }
-      }
-
-      // Perpendicular offset and relative angle, solved together.
-      {
-        const px = -ay;
-        const py = ax;
-        const s1 = (dx + rAx) * py - (dy + rAy) * px;
-        const s2 = rBx * py - rBy * px;
-        const cdot1 = px * (vBx - vAx) + py * (vBy - vAy) + s2 * wB - s1 * wA;
-        const cdot2 = wB - wA;
-        let bias1 = 0;
-        let bias2 = 0;
-        let massScale = 1;
-        let impulseScale = 0;
-        if (useBias) {
-          bias1 = soft.biasRate * (px * dx + py * dy);
-          bias2 =
-            soft.biasRate * (d[o + JOINT_ANGLE_0]! + s[b + DELTA_ANGLE]! - s[a + DELTA_ANGLE]!);
-          massScale = soft.massScale;
-          impulseScale = soft.impulseScale;
-        }
-        const k11 = mA + mB + iA * s1 * s1 + iB * s2 * s2;
-        const k12 = iA * s1 + iB * s2;
-        let k22 = iA + iB;
-        if (k22 === 0) k22 = 1; // neither body turns: the angle row is idle
-        const bX = cdot1 + bias1;
-        const bY = cdot2 + bias2;
-        let det = k11 * k22 - k12 * k12;
-        if (det !== 0) det = 1 / det;
-        const solvedX = det * (k22 * bX - k12 * bY);
-        const solvedY = det * (k11 * bY - k12 * bX);
-        const impulse1 = -massScale * solvedX - impulseScale * d[o + PERPENDICULAR_IMPULSE]!;
-        const impulse2 = -massScale * solvedY - impulseScale * d[o + ANGULAR_IMPULSE]!;
-        d[o + PERPENDICULAR_IMPULSE] += impulse1;
-        d[o + ANGULAR_IMPULSE] += impulse2;
-        const fx = impulse1 * px;
-        const fy = impulse1 * py;
-        const lA = impulse1 * s1 + impulse2;
-        const lB = impulse1 * s2 + impulse2;
-        vAx -= mA * fx;
-        vAy -= mA * fy;
-        wA -= iA * lA;
-        vBx += mB * fx;
-        vBy += mB * fy;
-        wB += iB * lB;
-
-        if (!useBias) {
-          const axial =
-            d[o + SPRING_IMPULSE]! +
-            d[o + MOTOR_IMPULSE]! +
-            d[o + LOWER_IMPULSE]! -
-            d[o + UPPER_IMPULSE]!;
-          d[o + STEP_IMPULSE_X] += axial * ax + d[o + PERPENDICULAR_IMPULSE]! * px;
-          d[o + STEP_IMPULSE_Y] += axial * ay + d[o + PERPENDICULAR_IMPULSE]! * py;
-          d[o + STEP_ANGULAR_IMPULSE] += d[o + ANGULAR_IMPULSE]!;
-        }
-      }
-
-      s[a + V_X] = vAx;
-      s[a + V_Y] = vAy;
-      s[a + W] = wA;
-      s[b + V_X] = vBx;
-      s[b + V_Y] = vBy;
-      s[b + W] = wB;
-    }
   }
 }

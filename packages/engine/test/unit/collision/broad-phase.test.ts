@@ -4,18 +4,7 @@ import type { ProxyType } from '../../../src/collision/broad-phase.ts';
 import { AABB_MARGIN } from '../../../src/core/constants.ts';
 import { AABB, aabbOverlaps } from '../../../src/geometry/aabb.ts';
 import { RayInput } from '../../../src/geometry/ray.ts';
-
-/** Mulberry32: a small seeded PRNG so every run sees the same sequence. */
-function makeRandom(seed: number): () => number {
-  let state = seed >>> 0;
-  return () => {
-    state = (state + 0x6d2b79f5) >>> 0;
-    let t = state;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+import { makeRandom } from './random-boxes.ts';
 
 function randomBox(random: () => number, extent: number, maxSize: number): AABB {
   const x = (random() * 2 - 1) * extent;

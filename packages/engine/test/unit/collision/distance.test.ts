@@ -12,18 +12,7 @@ import { makeCapsule } from '../../../src/geometry/capsule.ts';
 import { createEmptyPolygon } from '../../../src/geometry/polygon.ts';
 import type { Polygon } from '../../../src/geometry/polygon.ts';
 import { Transform } from '../../../src/math/transform.ts';
-
-/** Mulberry32: a small seeded PRNG so every run sees the same sequence. */
-function makeRandom(seed: number): () => number {
-  let state = seed >>> 0;
-  return () => {
-    state = (state + 0x6d2b79f5) >>> 0;
-    let t = state;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+import { makeRandom } from './random-boxes.ts';
 
 /** A convex polygon from counter-clockwise points (normals are not used by distance queries). */
 function polygonFrom(points: readonly number[], radius = 0): Polygon {

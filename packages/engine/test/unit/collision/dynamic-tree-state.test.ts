@@ -1,6 +1,10 @@
 import { describe, expect, it } from 'vitest';
-import { exportTreeState, importTreeState } from '../../../src/collision/broad-phase-state.ts';
-import { DynamicTree, checkTreeState } from '../../../src/collision/dynamic-tree.ts';
+import { DynamicTree } from '../../../src/collision/dynamic-tree.ts';
+import {
+  checkTreeState,
+  exportTreeState,
+  importTreeState,
+} from '../../../src/collision/dynamic-tree-state.ts';
 import { AABB } from '../../../src/geometry/aabb.ts';
 
 function filled(): DynamicTree {

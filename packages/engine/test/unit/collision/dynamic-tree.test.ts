@@ -1,20 +1,8 @@
 import { describe, expect, it } from 'vitest';
-import { exportTreeState } from '../../../src/collision/broad-phase-state.ts';
-import { DynamicTree, checkTreeState } from '../../../src/collision/dynamic-tree.ts';
+import { DynamicTree } from '../../../src/collision/dynamic-tree.ts';
+import { checkTreeState, exportTreeState } from '../../../src/collision/dynamic-tree-state.ts';
 import { AABB, aabbOverlaps } from '../../../src/geometry/aabb.ts';
-import { RayInput } from '../../../src/geometry/ray.ts';
-
-/** Mulberry32: a small seeded PRNG so every run sees the same sequence. */
-function makeRandom(seed: number): () => number {
-  let state = seed >>> 0;
-  return () => {
-    state = (state + 0x6d2b79f5) >>> 0;
-    let t = state;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+import { makeRandom, randomBox } from './random-boxes.ts';
 
 /**
  * Every structural invariant of a tree: links, reachability and the free list (checkTreeState),
@@ -63,12 +51,6 @@ function areaRatio(tree: DynamicTree): number {
   return total / perimeter(state.root);
 }
 
-function randomBox(random: () => number, extent: number, maxSize: number): AABB {
-  const x = (random() * 2 - 1) * extent;
-  const y = (random() * 2 - 1) * extent;
-  return new AABB().set(x, y, x + 0.01 + random() * maxSize, y + 0.01 + random() * maxSize);
-}
-
 /** Ten random box queries, each answered with exactly the proxies brute force over `live` finds. */
 function expectQueriesMatchBruteForce(
   tree: DynamicTree,
@@ -87,37 +69,6 @@ function expectQueriesMatchBruteForce(
     // overlapsAny (continuous collision's early out) agrees with the full query.
     expect(tree.overlapsAny(query)).toBe(expected.length > 0);
   }
-}
-
-/** Entry fraction of the ray into the box by the slab method, or Infinity if it misses. */
-function rayBoxFraction(input: RayInput, box: AABB): number {
-  let tMin = 0;
-  let tMax = input.maxFraction;
-  const origin = [input.originX, input.originY];
-  const direction = [input.translationX, input.translationY];
-  const lower = [box.minX, box.minY];
-  const upper = [box.maxX, box.maxY];
-  for (let axis = 0; axis < 2; axis++) {
-    const p = origin[axis]!;
-    const d = direction[axis]!;
-    if (d === 0) {
-      if (p < lower[axis]! || p > upper[axis]!) {
-        return Infinity;
-      }
-      continue;
-    }
-    let t1 = (lower[axis]! - p) / d;
-    let t2 = (upper[axis]! - p) / d;
-    if (t1 > t2) {
-      [t1, t2] = [t2, t1];
-    }
-    tMin = Math.max(tMin, t1);
-    tMax = Math.min(tMax, t2);
-    if (tMin > tMax) {
-      return Infinity;
-    }
-  }
-  return tMin;
 }
 
 describe('DynamicTree', () => {
@@ -208,67 +159,6 @@ describe('DynamicTree', () => {
     });
     expect(outer).toBe(50);
     expect(inner).toBe(50 * 3);
-  });
-
-  it('finds the same first ray hit as brute force', () => {
-    const random = makeRandom(777);
-    const tree = new DynamicTree();
-    const boxes = new Map<number, AABB>();
-    for (let i = 0; i < 300; i++) {
-      const box = randomBox(random, 40, 3);
-      boxes.set(tree.createProxy(box, i), box);
-    }
-    const input = new RayInput();
-    let hits = 0;
-    for (let r = 0; r < 200; r++) {
-      const angle = random() * 2 * Math.PI;
-      input.originX = (random() * 2 - 1) * 60;
-      input.originY = (random() * 2 - 1) * 60;
-      input.translationX = 100 * Math.cos(angle);
-      input.translationY = 100 * Math.sin(angle);
-      input.maxFraction = 1;
-
-      let expectedFraction = Infinity;
-      for (const box of boxes.values()) {
-        expectedFraction = Math.min(expectedFraction, rayBoxFraction(input, box));
-      }
-
-      let bestFraction = Infinity;
-      tree.rayCast(input, (rayInput, proxyId) => {
-        const fraction = rayBoxFraction(rayInput, boxes.get(proxyId)!);
-        if (fraction === Infinity) {
-          return -1;
-        }
-        bestFraction = fraction;
-        return fraction;
-      });
-      if (expectedFraction === Infinity) {
-        expect(bestFraction).toBe(Infinity);
-        expect(input.maxFraction).toBe(1);
-      } else {
-        hits++;
-        expect(bestFraction).toBeCloseTo(expectedFraction, 12);
-        expect(input.maxFraction).toBeCloseTo(expectedFraction, 12);
-      }
-    }
-    expect(hits).toBeGreaterThan(50);
-  });
-
-  it('stops a ray cast when the callback returns 0', () => {
-    const tree = new DynamicTree();
-    for (let i = 0; i < 10; i++) {
-      tree.createProxy(new AABB().set(i * 2, -1, i * 2 + 1, 1), i);
-    }
-    const input = new RayInput();
-    input.originX = -5;
-    input.translationX = 40;
-    let calls = 0;
-    tree.rayCast(input, () => {
-      calls++;
-      return 0;
-    });
-    expect(calls).toBe(1);
-    expect(input.maxFraction).toBe(0);
   });
 
   it('stays O(log n) high for 1000 proxies inserted in sorted order', () => {

@@ -1,17 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { PairSet } from '../../../src/collision/pair-set.ts';
-
-/** Mulberry32: a small seeded PRNG so every run sees the same sequence. */
-function makeRandom(seed: number): () => number {
-  let state = seed >>> 0;
-  return () => {
-    state = (state + 0x6d2b79f5) >>> 0;
-    let t = state;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
+import { makeRandom } from './random-boxes.ts';
 
 function keyOf(a: number, b: number): string {
   return a < b ? `${a},${b}` : `${b},${a}`;

@@ -9,7 +9,8 @@ import {
   rayCastCapsule,
 } from '../../../src/geometry/capsule.ts';
 import { MassData } from '../../../src/geometry/mass-data.ts';
-import { computePolygonMass, makeBox } from '../../../src/geometry/polygon.ts';
+import { makeBox } from '../../../src/geometry/polygon.ts';
+import { computePolygonMass } from '../../../src/geometry/polygon-mass.ts';
 import { RayHit } from '../../../src/geometry/ray.ts';
 import { Transform } from '../../../src/math/transform.ts';
 

@@ -1,4 +1,5 @@
 // Helpers shared by the geometry tests.
+import { expect } from 'vitest';
 import { PhysicalError } from '../../../src/core/errors.ts';
 import { RayInput } from '../../../src/geometry/ray.ts';
 
@@ -22,4 +23,18 @@ export function ray(ox: number, oy: number, tx: number, ty: number, maxFraction 
   input.translationY = ty;
   input.maxFraction = maxFraction;
   return input;
+}
+
+/** Points from a flat list of coordinates: x0, y0, x1, y1, ... */
+export function points(...coordinates: number[]): { x: number; y: number }[] {
+  const list: { x: number; y: number }[] = [];
+  for (let i = 0; i < coordinates.length; i += 2) {
+    list.push({ x: coordinates[i]!, y: coordinates[i + 1]! });
+  }
+  return list;
+}
+
+/** `actual` within a relative `tolerance` of `expected`. */
+export function expectRelative(actual: number, expected: number, tolerance = 1e-12): void {
+  expect(Math.abs(actual - expected) / Math.abs(expected)).toBeLessThan(tolerance);
 }

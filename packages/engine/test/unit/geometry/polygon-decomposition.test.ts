@@ -2,7 +2,8 @@ import { describe, expect, it } from 'vitest';
 import { catchError } from './helpers.ts';
 import { MAX_POLYGON_VERTICES } from '../../../src/core/constants.ts';
 import { MassData } from '../../../src/geometry/mass-data.ts';
-import { computePolygonMass, type Polygon } from '../../../src/geometry/polygon.ts';
+import type { Polygon } from '../../../src/geometry/polygon.ts';
+import { computePolygonMass } from '../../../src/geometry/polygon-mass.ts';
 import { makePolygonParts } from '../../../src/geometry/polygon-decomposition.ts';
 
 function points(...coordinates: number[]): { x: number; y: number }[] {
