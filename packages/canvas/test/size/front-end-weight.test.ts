@@ -2,8 +2,11 @@ import { describe, expect, it } from 'vitest';
 import {
   CANVAS_BUDGET_BYTES,
   WORKER_PAGE_BUDGET_BYTES,
+  KERNEL_BUILDS,
   frontEndLines,
   measureFrontEnd,
+  measureKernelShares,
+  moduleLines,
 } from '../../../../bench/src/size.ts';
 
 // The weight of <physical-canvas> beyond the engine and of a worker world's page, as
@@ -33,6 +36,7 @@ describe('front-end weight', () => {
     const lines = frontEndLines(sizes);
     expect(lines.join('\n')).toContain('budget 10.0 KB');
     expect(lines.join('\n')).toContain('budget 30.0 KB');
+    expect(lines.join('\n')).toContain('target 40.0 KB');
     const added = sizes.engineWithCanvas.gzippedBytes - sizes.engine.gzippedBytes;
     expect(added).toBeGreaterThan(0);
     expect(added).toBeLessThanOrEqual(Math.max(CANVAS_BUDGET_BYTES, CANVAS_CEILING_BYTES));
@@ -46,5 +50,26 @@ describe('front-end weight', () => {
     // The engine's own app bundles every one of them: the list names real modules.
     for (const module of SOLVER_MODULES) expect(engine.modules).toContain(module);
     for (const module of SOLVER_MODULES) expect(workerPage.modules).not.toContain(module);
+  }, 60_000);
+
+  it('says what each file and each build of the contact kernel costs (--modules)', async () => {
+    const sizes = await measureFrontEnd();
+    const shares = await measureKernelShares();
+    // Each build left out makes the engine's bundle smaller, both together smaller still.
+    const full = sizes.engine.gzippedBytes;
+    expect(shares.withoutJavaScript).toBeLessThan(full);
+    expect(shares.withoutWebAssembly).toBeLessThan(full);
+    expect(shares.withoutBoth).toBeLessThan(
+      Math.min(shares.withoutJavaScript, shares.withoutWebAssembly),
+    );
+    const lines = moduleLines(sizes, shares).join('\n');
+    for (const build of Object.values(KERNEL_BUILDS)) expect(lines).toContain(build);
+    // The canvas's list holds only what it adds: no file of the engine app at its full size.
+    const canvasList = lines.slice(
+      lines.indexOf('what <physical-canvas> adds'),
+      lines.indexOf("worker world's page:"),
+    );
+    expect(canvasList).toContain('canvas/src/element/physical-canvas-element.ts');
+    expect(canvasList).not.toContain('engine/src/world/world.ts');
   }, 60_000);
 });
