@@ -1,5 +1,6 @@
 import { build, type Plugin } from 'esbuild';
 import { readFile } from 'node:fs/promises';
+import { relative } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { gzipSync } from 'node:zlib';
 
@@ -67,11 +68,18 @@ export interface ModuleCost {
   bytes: number;
 }
 
-/** An app's bundle: its sizes and the source files it bundles (paths under packages/). */
+/**
+ * An app's bundle as its page loads it up front (the entry chunk and its static imports): its
+ * sizes and the source files in it (paths under packages/). Code behind `import()` is apart.
+ */
 export interface AppSizeReport extends SizeReport {
   modules: string[];
   /** Every bundled file's minified bytes, largest first: what a module costs. */
   costs: ModuleCost[];
+  /** The chunks behind `import()`, loaded when the code that imports them runs (gzip -9 each). */
+  lazyGzippedBytes: number;
+  /** The source files only in those chunks. */
+  lazyModules: string[];
 }
 
 /** What the front-end packages add, each against its budget (gzipped bytes, gzip -9). */
@@ -104,9 +112,13 @@ export const KERNEL_BUILDS = {
  * files are replaced by an empty module exporting the same names (as `undefined`): the app's size
  * without them, to see what a file costs after gzip.
  */
-async function appSize(contents: string, stubbed: readonly string[] = []): Promise<AppSizeReport> {
+export async function appSize(
+  contents: string,
+  stubbed: readonly string[] = [],
+): Promise<AppSizeReport> {
   const result = await build({
-    stdin: { contents, resolveDir: packages, sourcefile: 'app.ts', loader: 'ts' },
+    // The entry is a virtual module, so that esbuild can split it (stdin cannot be split).
+    entryPoints: ['app-entry'],
     alias: {
       '@physical/engine': `${packages}engine/src/index.ts`,
       '@physical/canvas/define': `${packages}canvas/src/define.ts`,
@@ -119,28 +131,75 @@ async function appSize(contents: string, stubbed: readonly string[] = []): Promi
     format: 'esm',
     platform: 'browser',
     target: 'es2022',
+    // As an app's bundler does: each `import()` becomes a chunk loaded when it runs.
+    splitting: true,
+    outdir: 'out',
     write: false,
     logLevel: 'silent',
     metafile: true,
-    outfile: 'app.js',
     // An app's production build: development checks off, as the app's bundler would set.
     define: { 'process.env.NODE_ENV': '"production"' },
-    plugins: stubbed.length === 0 ? [] : [stubPlugin(stubbed)],
+    plugins: [entryPlugin(contents), ...(stubbed.length === 0 ? [] : [stubPlugin(stubbed)])],
   });
-  const code = result.outputFiles[0]!.contents;
-  const output = Object.values(result.metafile.outputs)[0]!;
-  const costs = Object.entries(output.inputs)
-    .filter(([, input]) => input.bytesInOutput > 0)
-    .map(([path, input]) => ({
-      path: path.replace(/^.*?packages\//, ''),
-      bytes: input.bytesInOutput,
-    }))
-    .sort((a, b) => b.bytes - a.bytes);
+  const outputs = result.metafile.outputs;
+  const entry = Object.keys(outputs).find((path) => outputs[path]!.entryPoint !== undefined)!;
+  // What the page loads up front: the entry and the chunks it imports statically.
+  const firstLoad = new Set<string>();
+  const visit = (path: string): void => {
+    if (firstLoad.has(path)) return;
+    firstLoad.add(path);
+    for (const imported of outputs[path]!.imports) {
+      if (imported.kind === 'import-statement' && !imported.external) visit(imported.path);
+    }
+  };
+  visit(entry);
+  const files = new Map(
+    result.outputFiles.map((file) => [relative(process.cwd(), file.path), file]),
+  );
+  const bytesOf = (paths: string[], zip: boolean): number =>
+    paths.reduce((sum, path) => {
+      const code = files.get(path)!.contents;
+      return sum + (zip ? gzipSync(code, { level: 9 }).byteLength : code.byteLength);
+    }, 0);
+  const chunks = Object.keys(outputs).filter((path) => path.endsWith('.js'));
+  const first = chunks.filter((path) => firstLoad.has(path));
+  const lazy = chunks.filter((path) => !firstLoad.has(path));
+  const costOf = (paths: string[]): ModuleCost[] => {
+    const bytes = new Map<string, number>();
+    for (const path of paths) {
+      for (const [input, { bytesInOutput }] of Object.entries(outputs[path]!.inputs)) {
+        if (bytesInOutput === 0) continue;
+        const name = input.replace(/^.*?packages\//, '');
+        bytes.set(name, (bytes.get(name) ?? 0) + bytesInOutput);
+      }
+    }
+    return [...bytes]
+      .map(([path, size]) => ({ path, bytes: size }))
+      .sort((x, y) => y.bytes - x.bytes);
+  };
+  const costs = costOf(first);
   return {
-    minifiedBytes: code.byteLength,
-    gzippedBytes: gzipSync(code, { level: 9 }).byteLength,
+    minifiedBytes: bytesOf(first, false),
+    gzippedBytes: bytesOf(first, true),
+    lazyGzippedBytes: bytesOf(lazy, true),
     modules: costs.map((cost) => cost.path),
     costs,
+    lazyModules: costOf(lazy).map((cost) => cost.path),
+  };
+}
+
+/** The app's entry, `contents`, as a module resolved in packages/. */
+function entryPlugin(contents: string): Plugin {
+  return {
+    name: 'app-entry',
+    setup(plugin) {
+      plugin.onResolve({ filter: /^app-entry$/ }, () => ({ path: 'app-entry', namespace: 'app' }));
+      plugin.onLoad({ filter: /.*/, namespace: 'app' }, () => ({
+        contents,
+        loader: 'ts',
+        resolveDir: packages,
+      }));
+    },
   };
 }
 
