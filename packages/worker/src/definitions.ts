@@ -63,7 +63,13 @@ export type JointDefinition =
   | ({ readonly kind: 'mouse' } & WithIds<MouseJointOptions, 'body'>);
 
 const BODY_KINDS = ['body', 'box', 'particle', 'capsule', 'regularPolygon', 'polygon', 'wall'];
-export const JOINT_KINDS = ['revolute', 'prismatic', 'distance', 'weld', 'mouse'];
+export const JOINT_KINDS: readonly string[] = [
+  'revolute',
+  'prismatic',
+  'distance',
+  'weld',
+  'mouse',
+];
 
 export function requireDefinition(
   definition: unknown,
