@@ -1,4 +1,6 @@
-import { build } from 'esbuild';
+import { build, type Plugin } from 'esbuild';
+import { readFile } from 'node:fs/promises';
+import { relative } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { gzipSync } from 'node:zlib';
 
@@ -58,9 +60,26 @@ export async function measureSize(): Promise<SizeReports> {
   };
 }
 
-/** An app's bundle: its sizes and the source files it bundles (paths under packages/). */
+/** One source file's share of an app's bundle (minified bytes, before gzip; esbuild's metafile). */
+export interface ModuleCost {
+  /** The file, as a path under packages/. */
+  path: string;
+  /** Its minified bytes in the bundle. */
+  bytes: number;
+}
+
+/**
+ * An app's bundle as its page loads it up front (the entry chunk and its static imports): its
+ * sizes and the source files in it (paths under packages/). Code behind `import()` is apart.
+ */
 export interface AppSizeReport extends SizeReport {
   modules: string[];
+  /** Every bundled file's minified bytes, largest first: what a module costs. */
+  costs: ModuleCost[];
+  /** The chunks behind `import()`, loaded when the code that imports them runs (gzip -9 each). */
+  lazyGzippedBytes: number;
+  /** The source files only in those chunks. */
+  lazyModules: string[];
 }
 
 /** What the front-end packages add, each against its budget (gzipped bytes, gzip -9). */
@@ -73,6 +92,8 @@ export interface FrontEndSizes {
   workerPage: AppSizeReport;
 }
 
+/** An app that uses `World` and `box` only ships at most this of engine (issue #30, target 5). */
+export const ENGINE_TARGET_BYTES = 40 * 1024;
 /** `<physical-canvas>` adds at most this to an app beyond the engine (gzipped, issue #33). */
 export const CANVAS_BUDGET_BYTES = 10 * 1024;
 /** The page side of a worker world, canvas included, ships no solver and stays within this. */
@@ -80,10 +101,24 @@ export const WORKER_PAGE_BUDGET_BYTES = 30 * 1024;
 
 const packages = fileURLToPath(new URL('../../packages/', import.meta.url));
 
-/** Bundles an app entry that imports the packages by name, resolved to their sources. */
-async function appSize(contents: string): Promise<AppSizeReport> {
+/** The contact kernel's two generated builds, which {@link measureKernelShares} leaves out. */
+export const KERNEL_BUILDS = {
+  javascript: 'engine/src/dynamics/contact-kernel-javascript.ts',
+  webAssembly: 'engine/src/dynamics/contact-kernel-binary.ts',
+} as const;
+
+/**
+ * Bundles an app entry that imports the packages by name, resolved to their sources. `stubbed`
+ * files are replaced by an empty module exporting the same names (as `undefined`): the app's size
+ * without them, to see what a file costs after gzip.
+ */
+export async function appSize(
+  contents: string,
+  stubbed: readonly string[] = [],
+): Promise<AppSizeReport> {
   const result = await build({
-    stdin: { contents, resolveDir: packages, sourcefile: 'app.ts', loader: 'ts' },
+    // The entry is a virtual module, so that esbuild can split it (stdin cannot be split).
+    entryPoints: ['app-entry'],
     alias: {
       '@physical/engine': `${packages}engine/src/index.ts`,
       '@physical/canvas/define': `${packages}canvas/src/define.ts`,
@@ -96,32 +131,105 @@ async function appSize(contents: string): Promise<AppSizeReport> {
     format: 'esm',
     platform: 'browser',
     target: 'es2022',
+    // As an app's bundler does: each `import()` becomes a chunk loaded when it runs.
+    splitting: true,
+    outdir: 'out',
     write: false,
     logLevel: 'silent',
     metafile: true,
-    outfile: 'app.js',
     // An app's production build: development checks off, as the app's bundler would set.
     define: { 'process.env.NODE_ENV': '"production"' },
+    plugins: [entryPlugin(contents), ...(stubbed.length === 0 ? [] : [stubPlugin(stubbed)])],
   });
-  const code = result.outputFiles[0]!.contents;
-  const output = Object.values(result.metafile.outputs)[0]!;
-  const modules = Object.entries(output.inputs)
-    .filter(([, input]) => input.bytesInOutput > 0)
-    .map(([path]) => path.replace(/^.*?packages\//, ''));
+  const outputs = result.metafile.outputs;
+  const entry = Object.keys(outputs).find((path) => outputs[path]!.entryPoint !== undefined)!;
+  // What the page loads up front: the entry and the chunks it imports statically.
+  const firstLoad = new Set<string>();
+  const visit = (path: string): void => {
+    if (firstLoad.has(path)) return;
+    firstLoad.add(path);
+    for (const imported of outputs[path]!.imports) {
+      if (imported.kind === 'import-statement' && !imported.external) visit(imported.path);
+    }
+  };
+  visit(entry);
+  const files = new Map(
+    result.outputFiles.map((file) => [relative(process.cwd(), file.path), file]),
+  );
+  const bytesOf = (paths: string[], zip: boolean): number =>
+    paths.reduce((sum, path) => {
+      const code = files.get(path)!.contents;
+      return sum + (zip ? gzipSync(code, { level: 9 }).byteLength : code.byteLength);
+    }, 0);
+  const chunks = Object.keys(outputs).filter((path) => path.endsWith('.js'));
+  const first = chunks.filter((path) => firstLoad.has(path));
+  const lazy = chunks.filter((path) => !firstLoad.has(path));
+  const costOf = (paths: string[]): ModuleCost[] => {
+    const bytes = new Map<string, number>();
+    for (const path of paths) {
+      for (const [input, { bytesInOutput }] of Object.entries(outputs[path]!.inputs)) {
+        if (bytesInOutput === 0) continue;
+        const name = input.replace(/^.*?packages\//, '');
+        bytes.set(name, (bytes.get(name) ?? 0) + bytesInOutput);
+      }
+    }
+    return [...bytes]
+      .map(([path, size]) => ({ path, bytes: size }))
+      .sort((x, y) => y.bytes - x.bytes);
+  };
+  const costs = costOf(first);
   return {
-    minifiedBytes: code.byteLength,
-    gzippedBytes: gzipSync(code, { level: 9 }).byteLength,
-    modules,
+    minifiedBytes: bytesOf(first, false),
+    gzippedBytes: bytesOf(first, true),
+    lazyGzippedBytes: bytesOf(lazy, true),
+    modules: costs.map((cost) => cost.path),
+    costs,
+    lazyModules: costOf(lazy).map((cost) => cost.path),
   };
 }
+
+/** The app's entry, `contents`, as a module resolved in packages/. */
+function entryPlugin(contents: string): Plugin {
+  return {
+    name: 'app-entry',
+    setup(plugin) {
+      plugin.onResolve({ filter: /^app-entry$/ }, () => ({ path: 'app-entry', namespace: 'app' }));
+      plugin.onLoad({ filter: /.*/, namespace: 'app' }, () => ({
+        contents,
+        loader: 'ts',
+        resolveDir: packages,
+      }));
+    },
+  };
+}
+
+/** Replaces each of `paths` (under packages/) by a module exporting its names as `undefined`. */
+function stubPlugin(paths: readonly string[]): Plugin {
+  return {
+    name: 'stub',
+    setup(plugin) {
+      plugin.onLoad({ filter: /\.ts$/ }, async (args) => {
+        const path = args.path.replace(/\\/g, '/');
+        if (!paths.some((stub) => path.endsWith(`packages/${stub}`))) return undefined;
+        const text = await readFile(args.path, 'utf8');
+        const names = [...text.matchAll(/^export (?:const|function|class|let) (\w+)/gm)];
+        return {
+          contents: names.map(([, name]) => `export const ${name} = undefined;`).join('\n'),
+          loader: 'ts',
+        };
+      });
+    },
+  };
+}
+
+const WORLD_AND_BOX = `import { World, box } from '@physical/engine';
+  const world = new World(); world.add(box({ width: 1, height: 1 })); world.step(); console.log(world);`;
 
 /** The engine's figure, the engine with the canvas, and a worker world's page. */
 export async function measureFrontEnd(): Promise<FrontEndSizes> {
   const world = `const world = new World(); world.add(box({ width: 1, height: 1 }));`;
   return {
-    engine: await appSize(
-      `import { World, box } from '@physical/engine'; ${world} world.step(); console.log(world);`,
-    ),
+    engine: await appSize(WORLD_AND_BOX),
     engineWithCanvas: await appSize(
       `import { World, box } from '@physical/engine'; import '@physical/canvas/define'; ${world}
        document.querySelector('physical-canvas')!.world = world;`,
@@ -135,22 +243,73 @@ export async function measureFrontEnd(): Promise<FrontEndSizes> {
   };
 }
 
+/** The `World` and `box` app's gzipped bytes without the kernel's builds (what each costs). */
+export interface KernelShares {
+  withoutJavaScript: number;
+  withoutWebAssembly: number;
+  withoutBoth: number;
+}
+
+/** What the contact kernel's JavaScript build and its WebAssembly bytes cost the engine's figure. */
+export async function measureKernelShares(): Promise<KernelShares> {
+  return {
+    withoutJavaScript: (await appSize(WORLD_AND_BOX, [KERNEL_BUILDS.javascript])).gzippedBytes,
+    withoutWebAssembly: (await appSize(WORLD_AND_BOX, [KERNEL_BUILDS.webAssembly])).gzippedBytes,
+    withoutBoth: (await appSize(WORLD_AND_BOX, Object.values(KERNEL_BUILDS))).gzippedBytes,
+  };
+}
+
+const kb = (bytes: number): string => `${(bytes / 1024).toFixed(1)} KB`;
+
 /** The report lines `npx tsx bench/src/size.ts` prints. */
 export function frontEndLines(sizes: FrontEndSizes): string[] {
-  const kb = (bytes: number): string => `${(bytes / 1024).toFixed(1)} KB`;
   const added = sizes.engineWithCanvas.gzippedBytes - sizes.engine.gzippedBytes;
-  const verdict = (bytes: number, budget: number): string =>
-    `budget ${kb(budget)}: ${bytes <= budget ? 'met' : 'NOT met'}`;
+  const verdict = (bytes: number, budget: number, what = 'budget'): string =>
+    `${what} ${kb(budget)}: ${bytes <= budget ? 'met' : 'NOT met'}`;
   return [
     'Front-end sizes (esbuild, minified, production define; gzip -9):',
-    `- engine, World and box alone: ${kb(sizes.engine.gzippedBytes)} gzipped`,
+    `- engine, World and box alone: ${kb(sizes.engine.gzippedBytes)} gzipped; ${verdict(sizes.engine.gzippedBytes, ENGINE_TARGET_BYTES, 'target')}`,
     `- <physical-canvas> adds: ${kb(added)} (${kb(sizes.engineWithCanvas.gzippedBytes)} with the engine); ${verdict(added, CANVAS_BUDGET_BYTES)}`,
     `- a worker world's page (WorkerWorld + canvas): ${kb(sizes.workerPage.gzippedBytes)}; ${verdict(sizes.workerPage.gzippedBytes, WORKER_PAGE_BUDGET_BYTES)}`,
   ];
 }
 
-// `npx tsx bench/src/size.ts` prints the front-end figures.
+/**
+ * The `--modules` lines: each bundle's files by minified bytes (the largest `top`; for the canvas,
+ * what each file adds to the engine app's), and what the kernel's builds cost gzipped.
+ */
+export function moduleLines(sizes: FrontEndSizes, shares: KernelShares, top = 25): string[] {
+  const list = (report: AppSizeReport, base: AppSizeReport | null): string[] => {
+    const before = new Map(base?.costs.map((cost) => [cost.path, cost.bytes]));
+    return report.costs
+      .map((cost) => ({ path: cost.path, bytes: cost.bytes - (before.get(cost.path) ?? 0) }))
+      .filter((cost) => cost.bytes > 0)
+      .sort((a, b) => b.bytes - a.bytes)
+      .slice(0, top)
+      .map((cost) => `  ${String(cost.bytes).padStart(7)}  ${cost.path}`);
+  };
+  const full = sizes.engine.gzippedBytes;
+  return [
+    `Files by minified bytes (esbuild metafile; the largest ${top}):`,
+    '- engine, World and box alone:',
+    ...list(sizes.engine, null),
+    "- what <physical-canvas> adds to it (bytes beyond the engine app's, file by file):",
+    ...list(sizes.engineWithCanvas, sizes.engine),
+    "- a worker world's page:",
+    ...list(sizes.workerPage, null),
+    'The contact kernel in the engine figure (gzipped; each build replaced by an empty module):',
+    `- without its JavaScript build: ${kb(shares.withoutJavaScript)} (it costs ${kb(full - shares.withoutJavaScript)})`,
+    `- without its WebAssembly bytes: ${kb(shares.withoutWebAssembly)} (they cost ${kb(full - shares.withoutWebAssembly)})`,
+    `- without both: ${kb(shares.withoutBoth)}`,
+  ];
+}
+
+// `npx tsx bench/src/size.ts` prints the front-end figures; `--modules` adds what each file costs.
 if (process.argv[1] !== undefined && fileURLToPath(import.meta.url) === process.argv[1]) {
+  const sizes = await measureFrontEnd();
+  const lines = frontEndLines(sizes);
+  if (process.argv.includes('--modules'))
+    lines.push(...moduleLines(sizes, await measureKernelShares()));
   // eslint-disable-next-line no-console -- a command-line report
-  for (const line of frontEndLines(await measureFrontEnd())) console.log(line);
+  for (const line of lines) console.log(line);
 }

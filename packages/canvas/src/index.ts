@@ -31,6 +31,11 @@ export type { ArrowKind, ArrowStyle } from './draw/draw-arrow.ts';
 export type { DebugOverlays } from './draw/debug-overlays.ts';
 export type { Pose } from './draw/pose.ts';
 export { MAX_REMOTE_STEPS_IN_FLIGHT } from './draw/drawing-source.ts';
-export type { CollisionLike, DrawingSource, RemoteDrawing } from './draw/drawing-source.ts';
+export type {
+  CollisionLike,
+  DrawingSource,
+  DrawnJoint,
+  RemoteDrawing,
+} from './draw/drawing-source.ts';
 export { computeViewport, screenToWorld, worldToScreen } from './draw/viewport.ts';
 export type { FitMode, ViewBox, Viewport, ViewportInput } from './draw/viewport.ts';

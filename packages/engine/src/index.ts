@@ -66,6 +66,8 @@ export type { Filter, FilterOptions } from './dynamics/filter.ts';
 
 export { Joint } from './dynamics/joints/joint.ts';
 export type { JointOptions, JointType } from './dynamics/joints/joint.ts';
+export { checkJointOptions } from './dynamics/joints/joint-checks.ts';
+export type { JointAnchors, JointOptionsByType } from './dynamics/joints/joint-checks.ts';
 export {
   distanceJoint,
   mouseJoint,

@@ -1,22 +1,17 @@
 import {
   Body,
   PhysicalError,
+  checkJointOptions,
   box,
   capsule,
-  distanceJoint,
-  mouseJoint,
   particle,
   polygon,
-  prismaticJoint,
   regularPolygon,
-  revoluteJoint,
   wall,
-  weldJoint,
   type BodyOptions,
   type BoxOptions,
   type CapsuleOptions,
   type DistanceJointOptions,
-  type Joint,
   type MouseJointOptions,
   type ParticleOptions,
   type PolygonOptions,
@@ -27,6 +22,7 @@ import {
   type WeldJointOptions,
 } from '@physical/engine';
 import type { BodyId } from './ids.ts';
+import { PageJoint } from './page-joint.ts';
 import { plainCopy } from './plain-copy.ts';
 
 // A body or joint crosses to the worker as its definition (the factory's name and options), and
@@ -67,9 +63,15 @@ export type JointDefinition =
   | ({ readonly kind: 'mouse' } & WithIds<MouseJointOptions, 'body'>);
 
 const BODY_KINDS = ['body', 'box', 'particle', 'capsule', 'regularPolygon', 'polygon', 'wall'];
-const JOINT_KINDS = ['revolute', 'prismatic', 'distance', 'weld', 'mouse'];
+export const JOINT_KINDS: readonly string[] = [
+  'revolute',
+  'prismatic',
+  'distance',
+  'weld',
+  'mouse',
+];
 
-function requireDefinition(
+export function requireDefinition(
   definition: unknown,
   kinds: readonly string[],
 ): asserts definition is { kind: string } {
@@ -118,43 +120,8 @@ export function buildBody(definition: BodyDefinition): Body {
   }
 }
 
-/**
- * Builds the engine joint a definition describes between the bodies `bodyOf` resolves (throws the
- * engine's PhysicalError on bad input, or for an unknown body id).
- */
-export function buildJoint(definition: JointDefinition, bodyOf: (id: BodyId) => Body): Joint {
-  requireDefinition(definition, JOINT_KINDS);
-  if (definition.kind === 'mouse') {
-    const { body, ...rest } = definition;
-    return mouseJoint({ ...withoutKind(rest), body: resolve('body', body, bodyOf) });
-  }
-  const { kind, bodyA, bodyB, ...rest } = definition;
-  const bodies = {
-    bodyA: resolve('bodyA', bodyA, bodyOf),
-    bodyB: resolve('bodyB', bodyB, bodyOf),
-  };
-  switch (kind) {
-    case 'revolute':
-      return revoluteJoint({
-        ...(rest as Omit<RevoluteJointOptions, 'bodyA' | 'bodyB'>),
-        ...bodies,
-      });
-    case 'prismatic':
-      return prismaticJoint({
-        ...(rest as Omit<PrismaticJointOptions, 'bodyA' | 'bodyB'>),
-        ...bodies,
-      });
-    case 'distance':
-      return distanceJoint({
-        ...(rest as Omit<DistanceJointOptions, 'bodyA' | 'bodyB'>),
-        ...bodies,
-      });
-    case 'weld':
-      return weldJoint({ ...(rest as Omit<WeldJointOptions, 'bodyA' | 'bodyB'>), ...bodies });
-  }
-}
-
-function resolve(field: string, id: BodyId, bodyOf: (id: BodyId) => Body): Body {
+/** The page copy or worker body of a joint option's id (a PhysicalError naming `field` if none). */
+export function resolve(field: string, id: BodyId, bodyOf: (id: BodyId) => Body): Body {
   return bodyOf(id) ?? missing(field, id);
 }
 
@@ -181,14 +148,45 @@ export function prepareBody(definition: BodyDefinition): { posted: BodyDefinitio
   return { posted, body };
 }
 
-/** As {@link prepareBody}, for a joint between the bodies `bodyOf` resolves. */
+/**
+ * As {@link prepareBody}, for a joint between the bodies `bodyOf` resolves: checked with the
+ * engine's own joint checks (the page builds no engine joint: their solver passes are the
+ * worker's), and copied as a {@link PageJoint} to draw.
+ */
 export function prepareJoint(
   definition: JointDefinition,
   bodyOf: (id: BodyId) => Body,
-): { posted: JointDefinition; joint: Joint } {
+): { posted: JointDefinition; joint: PageJoint } {
   requireDefinition(definition, JOINT_KINDS);
   const posted = plainCopy(withoutUserData(definition), '') as JointDefinition;
-  return { posted, joint: buildJoint(posted, bodyOf) };
+  if (posted.kind === 'mouse') {
+    const { kind, body, ...rest } = posted;
+    const resolved = resolve('body', body, bodyOf);
+    return {
+      posted,
+      joint: new PageJoint(
+        kind,
+        resolved,
+        resolved,
+        checkJointOptions(kind, { ...rest, body: resolved }),
+      ),
+    };
+  }
+  const { kind, bodyA, bodyB, ...rest } = posted;
+  const options = {
+    ...rest,
+    bodyA: resolve('bodyA', bodyA, bodyOf),
+    bodyB: resolve('bodyB', bodyB, bodyOf),
+  };
+  return {
+    posted,
+    joint: new PageJoint(
+      kind,
+      options.bodyA,
+      options.bodyB,
+      checkJointOptions(kind, options as never),
+    ),
+  };
 }
 
 function withoutUserData(definition: object): object {
@@ -197,7 +195,7 @@ function withoutUserData(definition: object): object {
   return rest;
 }
 
-function withoutKind<T extends object>(options: T): Omit<T, 'kind'> {
+export function withoutKind<T extends object>(options: T): Omit<T, 'kind'> {
   const rest = { ...options } as Record<string, unknown>;
   delete rest['kind'];
   return rest as Omit<T, 'kind'>;

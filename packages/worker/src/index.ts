@@ -9,7 +9,9 @@ export type {
 } from './worker-world.ts';
 export { serveWorld } from './serve-world.ts';
 export type { WorkerEndpoint } from './serve-world.ts';
-export { buildBody, buildJoint } from './definitions.ts';
+export { buildBody } from './definitions.ts';
+export { buildJoint } from './build-joint.ts';
+export type { PageJoint } from './page-joint.ts';
 export type { BodyDefinition, Crossing, JointDefinition, WithIds } from './definitions.ts';
 export type { BodyId, ForceId, JointId } from './ids.ts';
 export type {

@@ -10,7 +10,8 @@ import {
   type MouseJoint,
   type SensorEvent,
 } from '@physical/engine';
-import { buildBody, buildJoint } from './definitions.ts';
+import { buildJoint } from './build-joint.ts';
+import { buildBody } from './definitions.ts';
 import { OffscreenRenderer } from './offscreen-renderer.ts';
 import type { WorkerEvent } from './events.ts';
 import type { BodyId } from './ids.ts';

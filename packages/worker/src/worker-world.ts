@@ -9,7 +9,6 @@ import {
   type Body,
   type ContactView,
   type Duration,
-  type Joint,
   type Vec2,
   type Vec2Like,
   type WorldOptions,
@@ -27,6 +26,7 @@ import {
   type BodyDefinition,
   type JointDefinition,
 } from './definitions.ts';
+import type { PageJoint } from './page-joint.ts';
 import { plainCopy, plainVector } from './plain-copy.ts';
 import type { WorkerEvent, WorkerWorldEvents } from './events.ts';
 import type { OffscreenView } from './offscreen-renderer.ts';
@@ -126,11 +126,11 @@ export class WorkerWorld implements DrawingSource {
   // hit-testing, in the world's order, and the settings the page can read. Input the World would
   // refuse is refused here with the engine's own checks (`checkTimeStep`, `checkWorldSetting`...).
   private readonly bodyList: Body[] = [];
-  private readonly jointList: Joint[] = [];
+  private readonly jointList: PageJoint[] = [];
   private readonly settings: WorldSettingValues;
   private readonly bodyById = new Map<number, Body>();
   private readonly idByBody = new Map<Body, number>();
-  private readonly jointById = new Map<number, Joint>();
+  private readonly jointById = new Map<number, PageJoint>();
   private readonly listeners = new Map<keyof WorkerWorldEvents, Set<Listener>>();
   private readonly pending = new Map<
     number,
@@ -656,8 +656,11 @@ export class WorkerWorld implements DrawingSource {
     return this.bodyList;
   }
 
-  /** The page copies of the joints (for `<physical-canvas>`). */
-  get joints(): readonly Joint[] {
+  /**
+   * The page copies of the joints (for `<physical-canvas>`): type, bodies and anchors. The joints
+   * themselves live in the worker.
+   */
+  get joints(): readonly PageJoint[] {
     return this.jointList;
   }
 

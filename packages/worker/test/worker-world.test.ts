@@ -1,6 +1,14 @@
 import { MessageChannel, type MessagePort } from 'node:worker_threads';
 import { afterEach, describe, expect, it } from 'vitest';
-import { PhysicalError, World, box, revoluteJoint, wall } from '@physical/engine';
+import {
+  PhysicalError,
+  World,
+  box,
+  distanceJoint,
+  mouseJoint,
+  revoluteJoint,
+  wall,
+} from '@physical/engine';
 import type { DrawingSource } from '@physical/canvas';
 import { serveWorld, WorkerWorld, worldStateHash, type WorkerLike } from '@physical/worker';
 
@@ -143,6 +151,55 @@ describe('WorkerWorld', () => {
     expect(
       fieldOf(() => world.add({ kind: 'box', width: 1, height: 1, onMove: () => {} } as never)),
     ).toBe('onMove');
+  });
+
+  it("keeps page copies of its joints at the anchors the engine's joints report, and removes them with a body", () => {
+    const world = connect();
+    const place = [
+      { position: { x: -1, y: 0.5 }, angle: 0.3, width: 1, height: 1 },
+      { position: { x: 2, y: -1 }, angle: -0.7, width: 1, height: 0.5 },
+    ];
+    const a = world.add({ kind: 'box', ...place[0]! });
+    const b = world.add({ kind: 'box', ...place[1]! });
+    const hinge = world.addJoint({
+      kind: 'revolute',
+      bodyA: a,
+      bodyB: b,
+      anchor: { x: 0.5, y: 0.2 },
+    });
+    world.addJoint({
+      kind: 'distance',
+      bodyA: a,
+      bodyB: b,
+      anchorA: { x: -1, y: 0 },
+      anchorB: { x: 2, y: -1.1 },
+    });
+    world.addJoint({ kind: 'mouse', body: b, target: { x: 3, y: -2 } });
+    const engine = [
+      revoluteJoint({ bodyA: box(place[0]!), bodyB: box(place[1]!), anchor: { x: 0.5, y: 0.2 } }),
+      distanceJoint({
+        bodyA: box(place[0]!),
+        bodyB: box(place[1]!),
+        anchorA: { x: -1, y: 0 },
+        anchorB: { x: 2, y: -1.1 },
+      }),
+      mouseJoint({ body: box(place[1]!), target: { x: 3, y: -2 } }),
+    ];
+    expect(world.joints.map((joint) => joint.type)).toEqual(['revolute', 'distance', 'mouse']);
+    world.joints.forEach((copy, i) => {
+      for (const end of ['anchorA', 'anchorB'] as const) {
+        expect(copy[end].x).toBeCloseTo(engine[i]![end].x, 12);
+        expect(copy[end].y).toBeCloseTo(engine[i]![end].y, 12);
+      }
+    });
+    // Anchors ride the page copies: a teleported body carries its anchors (a mouse target stays).
+    world.setPosition(b, { x: 3, y: -1 });
+    expect(world.joints[0]!.anchorB.x).toBeCloseTo(engine[0]!.anchorB.x + 1, 12);
+    expect(world.joints[2]!.anchorA.x).toBeCloseTo(3, 12);
+    world.removeJoint(hinge);
+    expect(world.joints.map((joint) => joint.type)).toEqual(['distance', 'mouse']);
+    world.remove(b);
+    expect(world.joints).toEqual([]);
   });
 
   it('is a drawing source for <physical-canvas>, as World is', () => {

@@ -16,6 +16,12 @@ export interface CollisionLike {
 }
 
 /**
+ * What `<physical-canvas>` draws of a joint: an engine `Joint` is one, and so is a worker
+ * world's page copy of a joint.
+ */
+export type DrawnJoint = Pick<Joint, 'type' | 'bodyA' | 'bodyB' | 'anchorA' | 'anchorB'>;
+
+/**
  * What `<physical-canvas>` needs from a world to run and draw it. A `World` of
  * `@physical/engine` is one; so is a world that lives elsewhere (a worker) and keeps page copies
  * of its bodies: such a source adds {@link RemoteDrawing} as `remote`.
@@ -24,7 +30,7 @@ export interface DrawingSource {
   /** The bodies to draw, in drawing order (the engine's `world.bodies`). */
   readonly bodies: readonly Body[];
   /** The joints to draw. */
-  readonly joints: readonly Joint[];
+  readonly joints: readonly DrawnJoint[];
   /** Bodies awake: 0 lets the element stop asking for frames. */
   readonly awakeBodyCount: number;
   /** Advances time by `dt` seconds (the element calls it at its fixed step). */

@@ -11,6 +11,7 @@ import { Softness } from '../softness.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import {
   Joint,
+  checkCollideConnected,
   type JointOptions,
   type JointState,
   type JointStateLayout,
@@ -49,6 +50,37 @@ export interface DistanceJointOptions<UserData = unknown> extends JointOptions<U
   readonly hertz?: number;
   /** Spring damping ratio (>= 0; 1 is critical). Default 0. */
   readonly dampingRatio?: number;
+}
+
+/**
+ * @internal A distance joint's options checked (a PhysicalError naming the first bad one), in the
+ * order its constructor reads them, with defaults: the one check, also run where no joint is built
+ * (a worker world's page).
+ */
+export function checkDistanceJointOptions(options: DistanceJointOptions<unknown>) {
+  requireBodies(options);
+  const anchorA = requirePoint('anchorA', options.anchorA);
+  const anchorB = requirePoint('anchorB', options.anchorB);
+  checkCollideConnected(options);
+  const distance = hypot(anchorB.x - anchorA.x, anchorB.y - anchorA.y);
+  const length = optionalNonNegative('length', options.length, distance);
+  const minLength = optionalNonNegative('minLength', options.minLength, 0);
+  const maxLength =
+    options.maxLength === undefined
+      ? Infinity
+      : requireNonNegative('maxLength', options.maxLength, jointMax('maxLength'));
+  requireOrdered('minLength', minLength, 'maxLength', maxLength);
+  requireInRange(length, minLength, maxLength);
+  return {
+    anchorA,
+    anchorB,
+    length,
+    minLength,
+    maxLength,
+    enableSpring: optionalBoolean('enableSpring', options.enableSpring, false),
+    hertz: optionalNonNegative('hertz', options.hertz, 0),
+    dampingRatio: optionalNonNegative('dampingRatio', options.dampingRatio, 0),
+  };
 }
 
 /** @internal What a world snapshot saves of a distance joint (see Joint.exportState). */
@@ -122,9 +154,8 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   private upperImpulse = -0;
 
   constructor(options: DistanceJointOptions<UserData>) {
-    requireBodies(options);
-    const anchorA = requirePoint('anchorA', options.anchorA);
-    const anchorB = requirePoint('anchorB', options.anchorB);
+    const checked = checkDistanceJointOptions(options);
+    const { anchorA, anchorB } = checked;
     super(options, options.bodyA, options.bodyB);
     const localA = this.bodyA.getLocalPoint(anchorA);
     const localB = this.bodyB.getLocalPoint(anchorB);
@@ -132,18 +163,12 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
     this.localAnchorAY = localA.y;
     this.localAnchorBX = localB.x;
     this.localAnchorBY = localB.y;
-    const distance = hypot(anchorB.x - anchorA.x, anchorB.y - anchorA.y);
-    this.rest = optionalNonNegative('length', options.length, distance);
-    this.min = optionalNonNegative('minLength', options.minLength, 0);
-    this.max =
-      options.maxLength === undefined
-        ? Infinity
-        : requireNonNegative('maxLength', options.maxLength, jointMax('maxLength'));
-    requireOrdered('minLength', this.min, 'maxLength', this.max);
-    requireInRange(this.rest, this.min, this.max);
-    this.springEnabled = optionalBoolean('enableSpring', options.enableSpring, false);
-    this.springHertz = optionalNonNegative('hertz', options.hertz, 0);
-    this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0);
+    this.rest = checked.length;
+    this.min = checked.minLength;
+    this.max = checked.maxLength;
+    this.springEnabled = checked.enableSpring;
+    this.springHertz = checked.hertz;
+    this.springDampingRatio = checked.dampingRatio;
   }
 
   /** @internal */

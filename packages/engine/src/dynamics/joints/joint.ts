@@ -202,11 +202,7 @@ export abstract class Joint<UserData = unknown> {
   constructor(options: JointOptions<UserData>, bodyA: Body, bodyB: Body) {
     this.bodyAValue = bodyA;
     this.bodyBValue = bodyB;
-    this.collideConnectedValue = optionalBoolean(
-      'collideConnected',
-      options.collideConnected,
-      false,
-    );
+    this.collideConnectedValue = checkCollideConnected(options);
     this.userData = options.userData;
   }
 
@@ -380,6 +376,11 @@ export function requireBodies(options: JointOptions<unknown>): void {
   if (options.bodyA === options.bodyB) {
     throw new PhysicalError('bodyB', 'must be a different body from bodyA.');
   }
+}
+
+/** @internal The options every joint has, checked: whether the joined bodies collide. */
+export function checkCollideConnected(options: JointOptions<unknown>): boolean {
+  return optionalBoolean('collideConnected', options.collideConnected, false);
 }
 
 /** @internal */

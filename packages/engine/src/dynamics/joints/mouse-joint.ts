@@ -48,6 +48,31 @@ export interface MouseJointOptions<UserData = unknown> {
 const ANGULAR_HERTZ = 0.5;
 const ANGULAR_DAMPING_RATIO = 0.1;
 
+/**
+ * @internal A mouse joint's options checked (a PhysicalError naming the first bad one), in the
+ * order its constructor reads them, with defaults: the one check, also run where no joint is built
+ * (a worker world's page).
+ */
+export function checkMouseJointOptions(options: MouseJointOptions<unknown>) {
+  if (options === null || typeof options !== 'object') {
+    throw new PhysicalError(
+      'options',
+      `must be an object of joint options, got ${describeValue(options)}.`,
+    );
+  }
+  requireBody('body', options.body);
+  if (options.body.type !== 'dynamic') {
+    throw new PhysicalError('body', `must be a dynamic body, got a ${options.body.type} one.`);
+  }
+  return {
+    target: requirePoint('target', options.target),
+    maxForce: optionalNonNegative('maxForce', options.maxForce, 1000 * options.body.mass),
+    hertz:
+      options.hertz === undefined ? 5 : requirePositive('hertz', options.hertz, jointMax('hertz')),
+    dampingRatio: optionalNonNegative('dampingRatio', options.dampingRatio, 0.7),
+  };
+}
+
 /** @internal What a world snapshot saves of a mouse joint (see Joint.exportState). */
 export const MOUSE_STATE: JointStateLayout = {
   fields: {
@@ -96,17 +121,8 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
   private angularImpulse = -0;
 
   constructor(options: MouseJointOptions<UserData>) {
-    if (options === null || typeof options !== 'object') {
-      throw new PhysicalError(
-        'options',
-        `must be an object of joint options, got ${describeValue(options)}.`,
-      );
-    }
-    requireBody('body', options.body);
-    if (options.body.type !== 'dynamic') {
-      throw new PhysicalError('body', `must be a dynamic body, got a ${options.body.type} one.`);
-    }
-    const target = requirePoint('target', options.target);
+    const checked = checkMouseJointOptions(options);
+    const target = checked.target;
     super(
       { bodyA: options.body, bodyB: options.body, ...optionalUserData(options) },
       options.body,
@@ -117,10 +133,9 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
     const local = this.bodyB.getLocalPoint(target);
     this.localAnchorX = local.x;
     this.localAnchorY = local.y;
-    this.force = optionalNonNegative('maxForce', options.maxForce, 1000 * options.body.mass);
-    this.springHertz =
-      options.hertz === undefined ? 5 : requirePositive('hertz', options.hertz, jointMax('hertz'));
-    this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0.7);
+    this.force = checked.maxForce;
+    this.springHertz = checked.hertz;
+    this.springDampingRatio = checked.dampingRatio;
   }
 
   /** @internal The target. */

@@ -44,6 +44,7 @@ import {
 } from './prismatic-joint-solver.ts';
 import {
   Joint,
+  checkCollideConnected,
   type JointOptions,
   type JointState,
   type JointStateLayout,
@@ -86,6 +87,36 @@ export interface PrismaticJointOptions<UserData = unknown> extends JointOptions<
   readonly hertz?: number;
   /** Spring damping ratio (>= 0). Default 0. */
   readonly dampingRatio?: number;
+}
+
+/**
+ * @internal A prismatic joint's options checked (a PhysicalError naming the first bad one), in the
+ * order its constructor reads them, with defaults: the one check, also run where no joint is built
+ * (a worker world's page).
+ */
+export function checkPrismaticJointOptions(options: PrismaticJointOptions<unknown>) {
+  requireBodies(options);
+  const anchor = requirePoint('anchor', options.anchor);
+  const axis = requirePoint('axis', options.axis);
+  if (!(hypot(axis.x, axis.y) > 0)) throw new PhysicalError('axis', 'must not be the zero vector.');
+  checkCollideConnected(options);
+  const enableLimit = optionalBoolean('enableLimit', options.enableLimit, false);
+  const lower = optionalFinite('lower', options.lower, 0);
+  const upper = optionalFinite('upper', options.upper, 0);
+  requireOrdered('lower', lower, 'upper', upper);
+  return {
+    anchor,
+    axis,
+    enableLimit,
+    lower,
+    upper,
+    enableMotor: optionalBoolean('enableMotor', options.enableMotor, false),
+    motorSpeed: optionalFinite('motorSpeed', options.motorSpeed, 0),
+    maxMotorForce: optionalNonNegative('maxMotorForce', options.maxMotorForce, 0),
+    enableSpring: optionalBoolean('enableSpring', options.enableSpring, false),
+    hertz: optionalNonNegative('hertz', options.hertz, 0),
+    dampingRatio: optionalNonNegative('dampingRatio', options.dampingRatio, 0),
+  };
 }
 
 /** @internal What a world snapshot saves of a prismatic joint (see Joint.exportState). */
@@ -168,11 +199,9 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   private upperImpulse = -0;
 
   constructor(options: PrismaticJointOptions<UserData>) {
-    requireBodies(options);
-    const anchor = requirePoint('anchor', options.anchor);
-    const axis = requirePoint('axis', options.axis);
+    const checked = checkPrismaticJointOptions(options);
+    const { anchor, axis } = checked;
     const axisLength = hypot(axis.x, axis.y);
-    if (!(axisLength > 0)) throw new PhysicalError('axis', 'must not be the zero vector.');
     super(options, options.bodyA, options.bodyB);
     const localA = this.bodyA.getLocalPoint(anchor);
     const localB = this.bodyB.getLocalPoint(anchor);
@@ -186,16 +215,15 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
     this.localAxisX = c * ux + s * uy;
     this.localAxisY = -s * ux + c * uy;
     this.referenceAngle = this.bodyB.angle - this.bodyA.angle;
-    this.limitEnabled = optionalBoolean('enableLimit', options.enableLimit, false);
-    this.lowerLimit = optionalFinite('lower', options.lower, 0);
-    this.upperLimit = optionalFinite('upper', options.upper, 0);
-    requireOrdered('lower', this.lowerLimit, 'upper', this.upperLimit);
-    this.motorEnabled = optionalBoolean('enableMotor', options.enableMotor, false);
-    this.speed = optionalFinite('motorSpeed', options.motorSpeed, 0);
-    this.maxForce = optionalNonNegative('maxMotorForce', options.maxMotorForce, 0);
-    this.springEnabled = optionalBoolean('enableSpring', options.enableSpring, false);
-    this.springHertz = optionalNonNegative('hertz', options.hertz, 0);
-    this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0);
+    this.limitEnabled = checked.enableLimit;
+    this.lowerLimit = checked.lower;
+    this.upperLimit = checked.upper;
+    this.motorEnabled = checked.enableMotor;
+    this.speed = checked.motorSpeed;
+    this.maxForce = checked.maxMotorForce;
+    this.springEnabled = checked.enableSpring;
+    this.springHertz = checked.hertz;
+    this.springDampingRatio = checked.dampingRatio;
   }
 
   /** @internal */

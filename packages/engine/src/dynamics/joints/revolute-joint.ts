@@ -47,6 +47,7 @@ import {
 import type { BatchedJoint, FlatJointBatch } from './joint-batch.ts';
 import {
   Joint,
+  checkCollideConnected,
   type JointOptions,
   type JointState,
   type JointStateLayout,
@@ -86,6 +87,33 @@ export interface RevoluteJointOptions<UserData = unknown> extends JointOptions<U
   readonly hertz?: number;
   /** Spring damping ratio (>= 0; 1 is critical). Default 0. */
   readonly dampingRatio?: number;
+}
+
+/**
+ * @internal A revolute joint's options checked (a PhysicalError naming the first bad one), in the
+ * order its constructor reads them, with defaults: the one check, also run where no joint is built
+ * (a worker world's page).
+ */
+export function checkRevoluteJointOptions(options: RevoluteJointOptions<unknown>) {
+  requireBodies(options);
+  const anchor = requirePoint('anchor', options.anchor);
+  checkCollideConnected(options);
+  const enableLimit = optionalBoolean('enableLimit', options.enableLimit, false);
+  const lowerAngle = optionalFinite('lowerAngle', options.lowerAngle, 0);
+  const upperAngle = optionalFinite('upperAngle', options.upperAngle, 0);
+  requireOrdered('lowerAngle', lowerAngle, 'upperAngle', upperAngle);
+  return {
+    anchor,
+    enableLimit,
+    lowerAngle,
+    upperAngle,
+    enableMotor: optionalBoolean('enableMotor', options.enableMotor, false),
+    motorSpeed: optionalFinite('motorSpeed', options.motorSpeed, 0),
+    maxMotorTorque: optionalNonNegative('maxMotorTorque', options.maxMotorTorque, 0),
+    enableSpring: optionalBoolean('enableSpring', options.enableSpring, false),
+    hertz: optionalNonNegative('hertz', options.hertz, 0),
+    dampingRatio: optionalNonNegative('dampingRatio', options.dampingRatio, 0),
+  };
 }
 
 /** @internal What a world snapshot saves of a revolute joint (see Joint.exportState). */
@@ -169,8 +197,8 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   private slot = 0;
 
   constructor(options: RevoluteJointOptions<UserData>) {
-    requireBodies(options);
-    const anchor = requirePoint('anchor', options.anchor);
+    const checked = checkRevoluteJointOptions(options);
+    const anchor = checked.anchor;
     super(options, options.bodyA, options.bodyB);
     const localA = this.bodyA.getLocalPoint(anchor);
     const localB = this.bodyB.getLocalPoint(anchor);
@@ -179,16 +207,15 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
     this.localAnchorBX = localB.x;
     this.localAnchorBY = localB.y;
     this.referenceAngle = this.bodyB.angle - this.bodyA.angle;
-    this.limitEnabled = optionalBoolean('enableLimit', options.enableLimit, false);
-    this.lower = optionalFinite('lowerAngle', options.lowerAngle, 0);
-    this.upper = optionalFinite('upperAngle', options.upperAngle, 0);
-    requireOrdered('lowerAngle', this.lower, 'upperAngle', this.upper);
-    this.motorEnabled = optionalBoolean('enableMotor', options.enableMotor, false);
-    this.speed = optionalFinite('motorSpeed', options.motorSpeed, 0);
-    this.maxTorque = optionalNonNegative('maxMotorTorque', options.maxMotorTorque, 0);
-    this.springEnabled = optionalBoolean('enableSpring', options.enableSpring, false);
-    this.springHertz = optionalNonNegative('hertz', options.hertz, 0);
-    this.springDampingRatio = optionalNonNegative('dampingRatio', options.dampingRatio, 0);
+    this.limitEnabled = checked.enableLimit;
+    this.lower = checked.lowerAngle;
+    this.upper = checked.upperAngle;
+    this.motorEnabled = checked.enableMotor;
+    this.speed = checked.motorSpeed;
+    this.maxTorque = checked.maxMotorTorque;
+    this.springEnabled = checked.enableSpring;
+    this.springHertz = checked.hertz;
+    this.springDampingRatio = checked.dampingRatio;
   }
 
   /** @internal */

@@ -6,6 +6,7 @@ import { Softness } from '../softness.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import {
   Joint,
+  checkCollideConnected,
   type JointOptions,
   type JointState,
   type JointStateLayout,
@@ -30,6 +31,23 @@ export interface WeldJointOptions<UserData = unknown> extends JointOptions<UserD
   readonly angularHertz?: number;
   /** Damping ratio of the soft holds (>= 0). Default 1. */
   readonly dampingRatio?: number;
+}
+
+/**
+ * @internal A weld joint's options checked (a PhysicalError naming the first bad one), in the
+ * order its constructor reads them, with defaults: the one check, also run where no joint is built
+ * (a worker world's page).
+ */
+export function checkWeldJointOptions(options: WeldJointOptions<unknown>) {
+  requireBodies(options);
+  const anchor = requirePoint('anchor', options.anchor);
+  checkCollideConnected(options);
+  return {
+    anchor,
+    linearHertz: optionalNonNegative('linearHertz', options.linearHertz, 0),
+    angularHertz: optionalNonNegative('angularHertz', options.angularHertz, 0),
+    dampingRatio: optionalNonNegative('dampingRatio', options.dampingRatio, 1),
+  };
 }
 
 /** @internal What a world snapshot saves of a weld joint (see Joint.exportState). */
@@ -89,8 +107,8 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
   private angularImpulse = -0;
 
   constructor(options: WeldJointOptions<UserData>) {
-    requireBodies(options);
-    const anchor = requirePoint('anchor', options.anchor);
+    const checked = checkWeldJointOptions(options);
+    const anchor = checked.anchor;
     super(options, options.bodyA, options.bodyB);
     const localA = this.bodyA.getLocalPoint(anchor);
     const localB = this.bodyB.getLocalPoint(anchor);
@@ -99,9 +117,9 @@ export class WeldJoint<UserData = unknown> extends Joint<UserData> {
     this.localAnchorBX = localB.x;
     this.localAnchorBY = localB.y;
     this.referenceAngle = this.bodyB.angle - this.bodyA.angle;
-    this.linearFrequency = optionalNonNegative('linearHertz', options.linearHertz, 0);
-    this.angularFrequency = optionalNonNegative('angularHertz', options.angularHertz, 0);
-    this.ratio = optionalNonNegative('dampingRatio', options.dampingRatio, 1);
+    this.linearFrequency = checked.linearHertz;
+    this.angularFrequency = checked.angularHertz;
+    this.ratio = checked.dampingRatio;
   }
 
   /** @internal */
