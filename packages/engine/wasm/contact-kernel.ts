@@ -898,8 +898,10 @@ export function impacts(
     const eBy = dpBy - ld(cb, REF_DP_BY);
     const shiftX = shiftA * eAx + shiftB * eBx;
     const shiftY = shiftA * eAy + shiftB * eBy;
-    const dnA = (shiftX - eAx) * ny - (shiftY - eAy) * nx;
-    const dnB = (shiftX - eBx) * ny - (shiftY - eBy) * nx;
+    // A centred circle takes no torque from a normal impulse: its normal passes through its
+    // centre, wherever the bodies moved since the levers were set (a bounce moves them on).
+    const dnA: f64 = ld(cb, RADIUS_A) > 0 ? 0 : (shiftX - eAx) * ny - (shiftY - eAy) * nx;
+    const dnB: f64 = ld(cb, RADIUS_B) > 0 ? 0 : (shiftX - eBx) * ny - (shiftY - eBy) * nx;
     const qAc = ld(sa, Q_C);
     const qAs = ld(sa, Q_S);
     const qBc = ld(sb, Q_C);
