@@ -338,10 +338,12 @@ export class Solver {
     }
     shock.prepare(
       constraints,
+      this.states.data,
       this.awakeCount,
       this.staticSoftness.biasRate,
       settings.gravityX,
       settings.gravityY,
+      Math.max(settings.restitutionThreshold, MIN_IMPACT_SPEED, MIN_LOADED_IMPACT_SPEED),
     );
 
     // Many islands whose constraints outgrow the cache run batch by batch (solver-batches.ts);
@@ -473,7 +475,16 @@ export class Solver {
         1,
       );
       if (shock.count > 0) {
-        shock.solve(constraints, s, inverseH, shockBiasRate, maxPushSpeed, threshold, true);
+        shock.solve(
+          constraints,
+          s,
+          this.states.marks,
+          inverseH,
+          shockBiasRate,
+          maxPushSpeed,
+          threshold,
+          true,
+        );
       }
       joints.solveChains(s, true);
       integratePositions(this.params, bodyList, bodyFrom, bodyTo, s, settings, h);
@@ -495,7 +506,16 @@ export class Solver {
         0,
       );
       if (shock.count > 0) {
-        shock.solve(constraints, s, inverseH, shockBiasRate, maxPushSpeed, threshold, false);
+        shock.solve(
+          constraints,
+          s,
+          this.states.marks,
+          inverseH,
+          shockBiasRate,
+          maxPushSpeed,
+          threshold,
+          false,
+        );
       }
       // Something bounced: the impact travels through the contacts and joints it presses
       // (the kernel's impacts, wasm/contact-kernel.ts).
