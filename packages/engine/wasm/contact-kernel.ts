@@ -877,8 +877,6 @@ export function impacts(
     const iA = ld(cb, INV_I_A);
     const mB = ld(cb, INV_MASS_B);
     const iB = ld(cb, INV_I_B);
-    const nx = ld(cb, NORMAL_X);
-    const ny = ld(cb, NORMAL_Y);
     const restitution = ld(cb, RESTITUTION);
     let vAx = ld(sa, V_X);
     let vAy = ld(sa, V_Y);
@@ -890,6 +888,26 @@ export function impacts(
     const dpAy = ld(sa, DP_Y);
     const dpBx = ld(sb, DP_X);
     const dpBy = ld(sb, DP_Y);
+    // Two particles meet along the line through their centres where they are now (a bounce of
+    // this sub-step moved them on since the normal was set), with no lever: the impulses act on
+    // one line (momentum and angular momentum kept) through both centres (no spin), as the
+    // relax pass's bounce does at the moment of contact (see solve).
+    const radiusA = ld(cb, RADIUS_A);
+    const radiusB = ld(cb, RADIUS_B);
+    let nx = ld(cb, NORMAL_X);
+    let ny = ld(cb, NORMAL_Y);
+    let gap: f64 = 0;
+    const particles = radiusA > 0 && radiusB > 0;
+    if (particles) {
+      const cx = ld(cb, CENTER_DX) + dpBx - dpAx;
+      const cy = ld(cb, CENTER_DY) + dpBy - dpAy;
+      const length = Math.sqrt(cx * cx + cy * cy);
+      if (length > 1e-12) {
+        nx = cx / length;
+        ny = cy / length;
+      }
+      gap = length - radiusA - radiusB;
+    }
     const shiftA = ld(cb, SHIFT_WEIGHT_A);
     const shiftB = ld(cb, SHIFT_WEIGHT_B);
     const eAx = dpAx - ld(cb, REF_DP_AX);
@@ -898,10 +916,8 @@ export function impacts(
     const eBy = dpBy - ld(cb, REF_DP_BY);
     const shiftX = shiftA * eAx + shiftB * eBx;
     const shiftY = shiftA * eAy + shiftB * eBy;
-    // A centred circle takes no torque from a normal impulse: its normal passes through its
-    // centre, wherever the bodies moved since the levers were set (a bounce moves them on).
-    const dnA: f64 = ld(cb, RADIUS_A) > 0 ? 0 : (shiftX - eAx) * ny - (shiftY - eAy) * nx;
-    const dnB: f64 = ld(cb, RADIUS_B) > 0 ? 0 : (shiftX - eBx) * ny - (shiftY - eBy) * nx;
+    const dnA: f64 = particles ? 0 : (shiftX - eAx) * ny - (shiftY - eAy) * nx;
+    const dnB: f64 = particles ? 0 : (shiftX - eBx) * ny - (shiftY - eBy) * nx;
     const qAc = ld(sa, Q_C);
     const qAs = ld(sa, Q_S);
     const qBc = ld(sb, Q_C);
@@ -1011,11 +1027,12 @@ export function impacts(
         impulse = max<f64>((target - u) / k, -accumulated);
       } else {
         if (vn >= -(accumulated > 0 && impact != 2 ? loadSpeed : impactSpeed)) continue;
-        const separation =
-          dpn +
-          (ld(p, R_BX) * nBx + ld(p, R_BY) * nBy) -
-          (ld(p, R_AX) * nAx + ld(p, R_AY) * nAy) +
-          ld(p, BASE_SEPARATION);
+        const separation = particles
+          ? gap
+          : dpn +
+            (ld(p, R_BX) * nBx + ld(p, R_BY) * nBy) -
+            (ld(p, R_AX) * nAx + ld(p, R_AY) * nAy) +
+            ld(p, BASE_SEPARATION);
         if (separation >= LINEAR_SLOP) continue;
         impulse = (-(1 + restitution) * u) / k;
         started++;
