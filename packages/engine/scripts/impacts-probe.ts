@@ -27,7 +27,9 @@ const failures: string[] = [];
 function report(name: string, value: number, tolerance: number): void {
   const bad = !(value < tolerance);
   // eslint-disable-next-line no-console
-  console.log(`${bad ? 'FAIL' : 'ok  '} ${name}: ${value.toExponential(3)} (tolerance ${tolerance})`);
+  console.log(
+    `${bad ? 'FAIL' : 'ok  '} ${name}: ${value.toExponential(3)} (tolerance ${tolerance})`,
+  );
   if (bad) failures.push(`${name}: ${value.toExponential(3)}`);
 }
 
@@ -84,7 +86,7 @@ export function gas(c: GasCase, seconds: number): number {
 
 /** Sequential impacts of a chain of balls (top first, downward positive) falling at 1 on the rest. */
 function sequential(masses: readonly number[]): number {
-  const v = masses.map((_, i) => (i === 0 ? 1 : 0));
+  const v: number[] = masses.map((_, i) => (i === 0 ? 1 : 0));
   const n = masses.length;
   for (let k = 0; k < 100000; k++) {
     let acted = false;
@@ -151,7 +153,12 @@ function chain(masses: readonly number[]): number {
 }
 
 /** Largest energy gain in a step of a light ball wedged under a heavy one (no gravity). */
-function wedge(light: number, heavy: number, speed: number, scene: 'sliding' | 'coming down'): number {
+function wedge(
+  light: number,
+  heavy: number,
+  speed: number,
+  scene: 'sliding' | 'coming down',
+): number {
   const world = new World({ gravity: { x: 0, y: 0 } });
   const material = { restitution: 1, friction: 0 };
   world.add(box({ type: 'static', position: { x: 0, y: 0.5 }, width: 40, height: 1, ...material }));
@@ -188,7 +195,9 @@ function wedge(light: number, heavy: number, speed: number, scene: 'sliding' | '
 /** Elastic ballistic pendulum: relative errors of the rod's angular speed and the disc's speed. */
 function pendulum(L: number, d: number, M: number, m: number, u: number): [number, number] {
   const world = new World({ gravity: { x: 0, y: 0 } });
-  const ground = world.add(box({ type: 'static', position: { x: 0, y: -1 }, width: 1, height: 0.2 }));
+  const ground = world.add(
+    box({ type: 'static', position: { x: 0, y: -1 }, width: 1, height: 0.2 }),
+  );
   const width = 0.1;
   const rod = world.add(
     box({
@@ -250,7 +259,16 @@ if (section === 'gas' || section === 'all') {
   }
 }
 if (section === 'chain' || section === 'all') {
-  for (const masses of [[1, 1], [1, 2], [1, 3], [2, 1], [3, 1], [1, 1, 1], [1, 2, 3], [3, 2, 1]]) {
+  for (const masses of [
+    [1, 1],
+    [1, 2],
+    [1, 3],
+    [2, 1],
+    [3, 1],
+    [1, 1, 1],
+    [1, 2, 3],
+    [3, 2, 1],
+  ]) {
     const expected = sequential(masses) * chain([masses[0]!]);
     const got = chain(masses);
     report(
@@ -269,7 +287,11 @@ if (section === 'wedge' || section === 'all') {
     [1, 60, 8],
   ] as const) {
     for (const scene of ['sliding', 'coming down'] as const) {
-      report(`wedge ${scene} ${light}:${heavy} kg at ${speed} m/s`, wedge(light, heavy, speed, scene), 0.001);
+      report(
+        `wedge ${scene} ${light}:${heavy} kg at ${speed} m/s`,
+        wedge(light, heavy, speed, scene),
+        0.001,
+      );
     }
   }
 }

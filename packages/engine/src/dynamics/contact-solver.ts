@@ -323,8 +323,9 @@ export class ShockPropagation {
         const heavyOnLight =
           mLower > 2 * mUpper &&
           up >= 0.5 * gravity &&
-          Math.abs(s[vLower + V_X]! * c[base + NORMAL_X]! + s[vLower + V_Y]! * c[base + NORMAL_Y]!) <
-            restSpeed;
+          Math.abs(
+            s[vLower + V_X]! * c[base + NORMAL_X]! + s[vLower + V_Y]! * c[base + NORMAL_Y]!,
+          ) < restSpeed;
         if (heavyOnLight || (supports[upper] === 1 && level[upper] === k && this.resting(c, i))) {
           swept[i] = 1;
           supports[lower] = 1;

@@ -145,6 +145,8 @@ export class Solver {
   private readonly batches = new SolverBatches();
   /** The slowest approach of a loaded contact the impact rounds count as an impact (m/s). */
   private loadSpeed = -0;
+  /** The most a push-out moves a contact (m/s): a pressed point approaching faster is an impact. */
+  private pushSpeed = -0;
   private readonly contactSoftness = new Softness();
   private readonly staticSoftness = new Softness();
 
@@ -435,6 +437,7 @@ export class Solver {
     const count = to - from;
     const impactSpeed = Math.max(threshold, MIN_IMPACT_SPEED);
     this.loadSpeed = Math.max(impactSpeed, MIN_LOADED_IMPACT_SPEED);
+    this.pushSpeed = maxPushSpeed;
     // The bodies' impact marks (body-state.ts), as a kernel pointer.
     const marksPointer = memory.offsets[STATES]! + 8 * this.states.marks;
     for (let step = 0; step < settings.subSteps; step++) {
@@ -579,6 +582,7 @@ export class Solver {
       to - from,
       impactSpeed,
       this.loadSpeed,
+      this.pushSpeed,
       memory.offsets[STATES]! + 8 * this.states.marks,
       mode,
     );
