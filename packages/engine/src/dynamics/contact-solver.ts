@@ -212,6 +212,8 @@ export class ShockPropagation {
   private ends: Int32Array = new Int32Array(128);
   private rank: Int32Array = new Int32Array(64);
   private edges: Int32Array = new Int32Array(64);
+  /** The fastest approach a bounce reverses: two bodies each at maxLinearSpeed (set by prepare). */
+  private maxApproach = Infinity;
 
   /**
    * Finds the contacts to sweep for this step's constraints, with the states `s` at the step's
@@ -228,8 +230,10 @@ export class ShockPropagation {
     gravityX: number,
     gravityY: number,
     restSpeed: number,
+    maxLinearSpeed: number,
   ): void {
     this.count = 0;
+    this.maxApproach = 2 * maxLinearSpeed;
     const gravity = hypot(gravityX, gravityY);
     if (constraints.heavyOnLightCount === 0 || gravity === 0) return;
     const count = constraints.count;
@@ -443,7 +447,11 @@ export class ShockPropagation {
           // touches without overlap; the bounce reverses the approach it had, not that).
           if (due) {
             wait = true;
-            if (useBias) c[p + RELATIVE_VELOCITY] = approach + kickN + kickW * rn;
+            // Bounded: a large torque's kicks on a light lever would otherwise add up without
+            // limit while it waits (a torqued hinge chain on the floor overflowed to NaN).
+            if (useBias) {
+              c[p + RELATIVE_VELOCITY] = Math.max(approach + kickN + kickW * rn, -this.maxApproach);
+            }
           }
           bias = separation * inverseH;
         } else {
@@ -453,7 +461,7 @@ export class ShockPropagation {
           // the approach at the moment of touching: the end of the sub-step it touched in, half a
           // velocity change after its middle (see the kernel's bounce in wasm/contact-kernel.ts).
           if (due) {
-            bias = restitution * (approach + 0.5 * (kickN + kickW * rn));
+            bias = restitution * Math.max(approach + 0.5 * (kickN + kickW * rn), -this.maxApproach);
             // A bounce is a one-off impulse, not a force to warm-start (contact-solver.ts does
             // the same): the contact solver's share of this impact is dropped, or undoing it
             // next sub-step would throw the light body up.

@@ -346,6 +346,7 @@ export class Solver {
       settings.gravityX,
       settings.gravityY,
       Math.max(settings.restitutionThreshold, MIN_IMPACT_SPEED, MIN_LOADED_IMPACT_SPEED),
+      settings.maxLinearSpeed,
     );
 
     // Many islands whose constraints outgrow the cache run batch by batch (solver-batches.ts);
@@ -524,6 +525,10 @@ export class Solver {
       // (the kernel's impacts, wasm/contact-kernel.ts).
       if (bounces > 0) this.impactRounds(from, to, impactSpeed);
       joints.solveChains(s, false);
+      // The relax pass can ask more of a light body than the limits allow (a torqued hinge chain
+      // of 1,000:1 against the floor grew 1e2 -> 1e226 m/s in one pass): held to them here, as
+      // the position half does, so no step ends with a velocity no later step could move.
+      limitSpeeds(this.params, bodyList, bodyFrom, bodyTo, s, settings, h);
     }
     // Each constraint's impulses go to its own contact slot: a batch stores its own while they
     // are still in cache (the order of the stores changes nothing).
@@ -877,6 +882,23 @@ function limitSpeed(s: Float64Array, k: number): void {
   } else {
     s[k + V_X] = 0;
     s[k + V_Y] = 0;
+  }
+}
+
+/** Holds every awake dynamic body's velocity to the limits (see limitSpeed). */
+function limitSpeeds(
+  params: Float64Array,
+  list: Int32Array | null,
+  from: number,
+  to: number,
+  s: Float64Array,
+  settings: SolverSettings,
+  h: number,
+): void {
+  setSpeedLimits(settings, h);
+  for (let n = from; n < to; n++) {
+    const i = list === null ? n : list[n]!;
+    if (params[i * PARAM_STRIDE + INV_MASS]! !== 0) limitSpeed(s, (i + 1) * STATE_STRIDE);
   }
 }
 
