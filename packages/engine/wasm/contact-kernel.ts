@@ -426,8 +426,8 @@ export function solve(
         !isImpact1 &&
         !isImpact2 &&
         (vn1 < -loadSpeed || vn2 < -loadSpeed) &&
-        ld(p1, IMPACT) != 4 &&
-        ld(p2, IMPACT) != 4
+        (ld(p1, IMPACT) != 4 || vn1 < -maxPushSpeed) &&
+        (ld(p2, IMPACT) != 4 || vn2 < -maxPushSpeed)
       ) {
         firstSequential = 2;
       } else if (!isImpact1 && !isImpact2) {
@@ -725,7 +725,13 @@ export function solve(
           continue;
         }
         if (impactState == 1) st(p, IMPACT, 0);
-        if (receives && impactState != 4 && vn < -(accumulated > 0 ? loadSpeed : impactSpeed)) {
+        // A pressed point that overlaps (impact state 4) is pushed out, not bounced, unless it
+        // approaches faster than any push-out moves it: then an impact reached it.
+        if (
+          receives &&
+          (impactState != 4 || vn < -maxPushSpeed) &&
+          vn < -(accumulated > 0 ? loadSpeed : impactSpeed)
+        ) {
           continue;
         }
       }
@@ -828,7 +834,8 @@ export function solve(
  * One pass of the impact rounds over the constraints at positions `from` to `to` of the visiting
  * order (see the note above); returns the number of impacts it started. `IMPACT_ROUND` closes the
  * last round's impacts and starts a new one: each touching point of a body an impact reached
- * (`marks`) approaching faster than `impactSpeed` (a loaded point: `loadSpeed`) gets -(1 + e)
+ * (`marks`) approaching faster than `impactSpeed` (a loaded point: `loadSpeed`; a pressed,
+ * overlapping point: `pushSpeed`, the most a push-out moves it) gets -(1 + e)
  * times its approach, with its bodies' masses. `IMPACT_CONTINUE`
  * moves the open impacts on towards their targets (between joint passes); `IMPACT_OPEN` opens the
  * bounces of the relax pass for that; `IMPACT_CLOSE` closes all.
@@ -841,6 +848,7 @@ export function impacts(
   count: i32,
   impactSpeed: f64,
   loadSpeed: f64,
+  pushSpeed: f64,
   marksPtr: usize,
   mode: i32,
 ): i32 {
@@ -877,8 +885,6 @@ export function impacts(
     const iA = ld(cb, INV_I_A);
     const mB = ld(cb, INV_MASS_B);
     const iB = ld(cb, INV_I_B);
-    const nx = ld(cb, NORMAL_X);
-    const ny = ld(cb, NORMAL_Y);
     const restitution = ld(cb, RESTITUTION);
     let vAx = ld(sa, V_X);
     let vAy = ld(sa, V_Y);
@@ -890,6 +896,26 @@ export function impacts(
     const dpAy = ld(sa, DP_Y);
     const dpBx = ld(sb, DP_X);
     const dpBy = ld(sb, DP_Y);
+    // Two particles meet along the line through their centres where they are now (a bounce of
+    // this sub-step moved them on since the normal was set), with no lever: the impulses act on
+    // one line (momentum and angular momentum kept) through both centres (no spin), as the
+    // relax pass's bounce does at the moment of contact (see solve).
+    const radiusA = ld(cb, RADIUS_A);
+    const radiusB = ld(cb, RADIUS_B);
+    let nx = ld(cb, NORMAL_X);
+    let ny = ld(cb, NORMAL_Y);
+    let gap: f64 = 0;
+    const particles = radiusA > 0 && radiusB > 0;
+    if (particles) {
+      const cx = ld(cb, CENTER_DX) + dpBx - dpAx;
+      const cy = ld(cb, CENTER_DY) + dpBy - dpAy;
+      const length = Math.sqrt(cx * cx + cy * cy);
+      if (length > 1e-12) {
+        nx = cx / length;
+        ny = cy / length;
+      }
+      gap = length - radiusA - radiusB;
+    }
     const shiftA = ld(cb, SHIFT_WEIGHT_A);
     const shiftB = ld(cb, SHIFT_WEIGHT_B);
     const eAx = dpAx - ld(cb, REF_DP_AX);
@@ -898,8 +924,8 @@ export function impacts(
     const eBy = dpBy - ld(cb, REF_DP_BY);
     const shiftX = shiftA * eAx + shiftB * eBx;
     const shiftY = shiftA * eAy + shiftB * eBy;
-    const dnA = (shiftX - eAx) * ny - (shiftY - eAy) * nx;
-    const dnB = (shiftX - eBx) * ny - (shiftY - eBy) * nx;
+    const dnA: f64 = particles ? 0 : (shiftX - eAx) * ny - (shiftY - eAy) * nx;
+    const dnB: f64 = particles ? 0 : (shiftX - eBx) * ny - (shiftY - eBy) * nx;
     const qAc = ld(sa, Q_C);
     const qAs = ld(sa, Q_S);
     const qBc = ld(sb, Q_C);
@@ -939,8 +965,8 @@ export function impacts(
         separation2 < LINEAR_SLOP &&
         vn1 < -speed1 &&
         vn2 < -speed2 &&
-        ld(p1, IMPACT) != 4 &&
-        ld(p2, IMPACT) != 4
+        (ld(p1, IMPACT) != 4 || vn1 < -pushSpeed) &&
+        (ld(p2, IMPACT) != 4 || vn2 < -pushSpeed)
       ) {
         const mAB = mA + mB;
         const k11 = mAB + iA * n1A * n1A + iB * n1B * n1B;
@@ -994,10 +1020,12 @@ export function impacts(
     for (let j = firstSequential; j < pointCount; j++) {
       const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
       const impact = ld(p, IMPACT);
-      if (mode == IMPACT_CONTINUE ? impact != 5 : impact == 4 || impact == 5) continue;
+      if (mode == IMPACT_CONTINUE ? impact != 5 : impact == 5) continue;
       const leverA = ld(p, RN_A) + dnA;
       const leverB = ld(p, RN_B) + dnB;
       const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * leverB - wA * leverA;
+      // A pressed, overlapping point (4) only when faster than a push-out (see solve).
+      if (mode != IMPACT_CONTINUE && impact == 4 && vn >= -pushSpeed) continue;
       // The approach at the sub-step's end (see above).
       const u = vn + 0.5 * kickNormal(markA, markB, nx, ny, leverA, leverB);
       const accumulated = ld(p, NORMAL_IMPULSE);
@@ -1009,11 +1037,12 @@ export function impacts(
         impulse = max<f64>((target - u) / k, -accumulated);
       } else {
         if (vn >= -(accumulated > 0 && impact != 2 ? loadSpeed : impactSpeed)) continue;
-        const separation =
-          dpn +
-          (ld(p, R_BX) * nBx + ld(p, R_BY) * nBy) -
-          (ld(p, R_AX) * nAx + ld(p, R_AY) * nAy) +
-          ld(p, BASE_SEPARATION);
+        const separation = particles
+          ? gap
+          : dpn +
+            (ld(p, R_BX) * nBx + ld(p, R_BY) * nBy) -
+            (ld(p, R_AX) * nAx + ld(p, R_AY) * nAy) +
+            ld(p, BASE_SEPARATION);
         if (separation >= LINEAR_SLOP) continue;
         impulse = (-(1 + restitution) * u) / k;
         started++;

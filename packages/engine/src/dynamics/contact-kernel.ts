@@ -127,6 +127,7 @@ export interface ContactKernel {
     count: number,
     impactSpeed: number,
     loadSpeed: number,
+    pushSpeed: number,
     marks: number,
     mode: number,
   ): number;

@@ -1,4 +1,17 @@
-import { DP_X, DP_Y, Q_C, Q_S, STATE_STRIDE, V_X, V_Y, W } from './body-state.ts';
+import {
+  DP_X,
+  DP_Y,
+  KICK_VX,
+  KICK_VY,
+  KICK_W,
+  MARK_STRIDE,
+  Q_C,
+  Q_S,
+  STATE_STRIDE,
+  V_X,
+  V_Y,
+  W,
+} from './body-state.ts';
 import {
   BASE_SEPARATION,
   BIAS_RATE,
@@ -199,20 +212,28 @@ export class ShockPropagation {
   private ends: Int32Array = new Int32Array(128);
   private rank: Int32Array = new Int32Array(64);
   private edges: Int32Array = new Int32Array(64);
+  /** The fastest approach a bounce reverses: two bodies each at maxLinearSpeed (set by prepare). */
+  private maxApproach = Infinity;
 
   /**
-   * Finds the contacts to sweep for this step's constraints; `bodyCount` is the number of awake
-   * bodies (solver slots 1..bodyCount; slot 0 is every immovable body). The swept contacts push
-   * out overlap at `biasRate`, as contacts with the ground do.
+   * Finds the contacts to sweep for this step's constraints, with the states `s` at the step's
+   * start; `bodyCount` is the number of awake bodies (solver slots 1..bodyCount; slot 0 is every
+   * immovable body). The swept contacts push out overlap at `biasRate`, as contacts with the
+   * ground do. A light body moving along the contact's normal at `restSpeed` or faster is not
+   * resting under the heavy one (see below).
    */
   prepare(
     constraints: ContactConstraints,
+    s: Float64Array,
     bodyCount: number,
     biasRate: number,
     gravityX: number,
     gravityY: number,
+    restSpeed: number,
+    maxLinearSpeed: number,
   ): void {
     this.count = 0;
+    this.maxApproach = 2 * maxLinearSpeed;
     const gravity = hypot(gravityX, gravityY);
     if (constraints.heavyOnLightCount === 0 || gravity === 0) return;
     const count = constraints.count;
@@ -295,7 +316,20 @@ export class ShockPropagation {
         // up (a body beside another is not resting on it).
         const up =
           (aLower ? -1 : 1) * (c[base + NORMAL_X]! * gravityX + c[base + NORMAL_Y]! * gravityY);
-        const heavyOnLight = mLower > 2 * mUpper && up >= 0.5 * gravity;
+        // And the light body resting there: not moving along the normal (as fast as a load
+        // presses, see Solver's MIN_LOADED_IMPACT_SPEED). The sweep's bounce treats it as held
+        // still by what is under it; a light ball sliding fast along the floor into a heavy one
+        // is not held along a slanted normal, and treating it so reflected the heavy ball off a
+        // surface moving at the light ball's speed (a 16-ball gas gained 90 % of its energy in
+        // one step). Such a hit is an impact of two bodies, passed on to the floor by the impact
+        // rounds (wasm/contact-kernel.ts).
+        const vLower = mLower === 0 ? 0 : indices[2 * i + (aLower ? 0 : 1)]!;
+        const heavyOnLight =
+          mLower > 2 * mUpper &&
+          up >= 0.5 * gravity &&
+          Math.abs(
+            s[vLower + V_X]! * c[base + NORMAL_X]! + s[vLower + V_Y]! * c[base + NORMAL_Y]!,
+          ) < restSpeed;
         if (heavyOnLight || (supports[upper] === 1 && level[upper] === k && this.resting(c, i))) {
           swept[i] = 1;
           supports[lower] = 1;
@@ -330,11 +364,13 @@ export class ShockPropagation {
    * Sweeps the prepared contacts once: each upper body stops approaching the body below it, as if
    * that body could not move. With `useBias`, overlap is pushed out at `biasRate` (at most
    * `maxPushSpeed`), as against the ground; without, only the approach is removed (relax pass).
-   * A new contact faster than `restitutionThreshold` bounces at its first touch.
+   * A new contact faster than `restitutionThreshold` bounces at its first touch, reversing its
+   * approach at that moment (with the sub-step velocity changes after `marks` in `s`).
    */
   solve(
     constraints: ContactConstraints,
     s: Float64Array,
+    marks: number,
     inverseH: number,
     biasRate: number,
     maxPushSpeed: number,
@@ -372,6 +408,11 @@ export class ShockPropagation {
       const qBc = s[b + Q_C]!;
       const qBs = s[b + Q_S]!;
       const pointCount = c[base + POINT_COUNT]!;
+      // The upper body's velocity change by this sub-step's integration (gravity, forces): the
+      // lower body is held, so only the upper one's adds to the approach.
+      const kick = marks + (u / STATE_STRIDE) * MARK_STRIDE;
+      const kickN = sign * (s[kick + KICK_VX]! * nx + s[kick + KICK_VY]! * ny);
+      const kickW = sign * s[kick + KICK_W]!;
       // Per point: the target q = vn + bias (>= 0 wanted) and the upper body's lever rn = r x n.
       let q1 = 0;
       let q2 = 0;
@@ -396,18 +437,31 @@ export class ShockPropagation {
         const dy = dpy + (qBs * rBx + qBc * rBy) - (qAs * rAx + qAc * rAy);
         const separation = dx * nx + dy * ny + c[p + BASE_SEPARATION]!;
         let bias = 0;
+        const rn = aLower ? rBx * ny - rBy * nx : rAx * ny - rAy * nx;
         const approach = c[p + RELATIVE_VELOCITY]!;
         const due = bounce && approach < -restitutionThreshold;
         if (separation > 0) {
           // A bounce is due when it touches: not slowed before, as the contact solver waits too.
-          if (due) wait = true;
+          // Meanwhile the upper body falls on: its approach at the step's start plus each
+          // sub-step's velocity change until it touches (the ordinary passes slow it so that it
+          // touches without overlap; the bounce reverses the approach it had, not that).
+          if (due) {
+            wait = true;
+            // Bounded: a large torque's kicks on a light lever would otherwise add up without
+            // limit while it waits (a torqued hinge chain on the floor overflowed to NaN).
+            if (useBias) {
+              c[p + RELATIVE_VELOCITY] = Math.max(approach + kickN + kickW * rn, -this.maxApproach);
+            }
+          }
           bias = separation * inverseH;
         } else {
           if (useBias) bias = Math.max(biasRate * separation, -maxPushSpeed);
           // First touch of a new contact: leave at e times the approach, as off the ground
-          // (a light body squeezed between a heavy one and the ground passes the bounce on).
+          // (a light body squeezed between a heavy one and the ground passes the bounce on),
+          // the approach at the moment of touching: the end of the sub-step it touched in, half a
+          // velocity change after its middle (see the kernel's bounce in wasm/contact-kernel.ts).
           if (due) {
-            bias = restitution * approach;
+            bias = restitution * Math.max(approach + 0.5 * (kickN + kickW * rn), -this.maxApproach);
             // A bounce is a one-off impulse, not a force to warm-start (contact-solver.ts does
             // the same): the contact solver's share of this impact is dropped, or undoing it
             // next sub-step would throw the light body up.
@@ -417,7 +471,6 @@ export class ShockPropagation {
         }
         const vn =
           (vBx - wB * rBy - (vAx - wA * rAy)) * nx + (vBy + wB * rBx - (vAy + wA * rAx)) * ny;
-        const rn = aLower ? rBx * ny - rBy * nx : rAx * ny - rAy * nx;
         if (j === 0) {
           q1 = vn + bias;
           rn1 = rn;

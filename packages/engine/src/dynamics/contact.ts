@@ -203,7 +203,7 @@ export function updateManifold(
       collideSegmentAndCapsule(a as Segment, xfA, b as Capsule, xfB, m);
       break;
   }
-  if (reach > 0 && hasFarPoint(m)) {
+  if (reach > 0 && kind !== PAIR_CIRCLES && hasFarPoint(m)) {
     const contact = contacts[slot]!;
     dropPassingPoints(m, contact.bodyA, contact.bodyB, dt);
   }
