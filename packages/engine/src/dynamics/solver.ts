@@ -19,6 +19,7 @@ import {
   V_Y,
   W,
 } from './body-state.ts';
+import { ContactColouring } from './contact-colouring.ts';
 import { CONTACT_STRIDE } from './contact-data.ts';
 import {
   CONSTRAINT_STRIDE,
@@ -104,6 +105,7 @@ export class Solver {
   private readonly shock = new ShockPropagation();
   /** Batches of islands for a step whose constraints outgrow the cache (solver-batches.ts). */
   private readonly batches = new SolverBatches();
+  private readonly colouring = new ContactColouring();
   private readonly contactSoftness = new Softness();
   private readonly staticSoftness = new Softness();
 
@@ -275,6 +277,14 @@ export class Solver {
     constraints.circlePairCount = kernel.circlePairCount.value;
     constraints.heavyOnLightCount = kernel.heavyOnLightCount.value;
     scrambleOrder(constraints.order, constraints.count);
+    // Neighbours of one colour share no moving body: the WebAssembly kernel solves them in lanes.
+    this.colouring.colour(
+      constraints.order,
+      constraints.count,
+      constraints.bodies,
+      this.awakeCount,
+      SCRAMBLE_RUN,
+    );
     const shock = this.shock;
     // The heavy-on-light sweep reads the prepared constraints.
     if (!filled && constraints.heavyOnLightCount > 0) {
