@@ -278,7 +278,7 @@ export class Solver {
     constraints.heavyOnLightCount = kernel.heavyOnLightCount.value;
     scrambleOrder(constraints.order, constraints.count);
     // Neighbours of one colour share no moving body: the WebAssembly kernel solves them in lanes.
-    this.colouring.colour(
+    if (!process.env.NO_COLOUR) this.colouring.colour(
       constraints.order,
       constraints.count,
       constraints.bodies,
@@ -310,6 +310,7 @@ export class Solver {
     ) {
       const orderStart = batches.orderStart;
       const bodyStart = batches.bodyStart;
+      if (!filled && !process.env.NO_STORE) this.storeInOrder();
       for (let k = 0; k < batches.count; k++) {
         if (!filled) this.fill(orderStart[k]!, orderStart[k + 1]!, dt);
         this.subSteps(
@@ -323,10 +324,17 @@ export class Solver {
         );
       }
     } else {
+      if (!filled && !process.env.NO_STORE) this.storeInOrder();
       if (!filled) this.fill(0, constraints.count, dt);
       this.subSteps(settings, h, 0, constraints.count, null, 0, this.awakeCount);
     }
     joints.finish();
+  }
+
+  /** Renumbers the classified, unfilled constraints in their visiting order (contact-colouring.ts). */
+  private storeInOrder(): void {
+    const c = this.constraints;
+    this.colouring.storeInOrder(c.order, c.count, c.bodies, c.slots, c.circlePairs, c.circlePairCount);
   }
 
   /**
