@@ -19,7 +19,6 @@ import {
   V_Y,
   W,
 } from './body-state.ts';
-import { ContactColouring } from './contact-colouring.ts';
 import { CONTACT_STRIDE } from './contact-data.ts';
 import {
   CONSTRAINT_STRIDE,
@@ -105,7 +104,6 @@ export class Solver {
   private readonly shock = new ShockPropagation();
   /** Batches of islands for a step whose constraints outgrow the cache (solver-batches.ts). */
   private readonly batches = new SolverBatches();
-  private readonly colouring = new ContactColouring();
   private readonly contactSoftness = new Softness();
   private readonly staticSoftness = new Softness();
 
@@ -277,14 +275,6 @@ export class Solver {
     constraints.circlePairCount = kernel.circlePairCount.value;
     constraints.heavyOnLightCount = kernel.heavyOnLightCount.value;
     scrambleOrder(constraints.order, constraints.count);
-    // Neighbours of one colour share no moving body: the WebAssembly kernel solves them in lanes.
-    if (!process.env.NO_COLOUR) this.colouring.colour(
-      constraints.order,
-      constraints.count,
-      constraints.bodies,
-      this.awakeCount,
-      SCRAMBLE_RUN,
-    );
     const shock = this.shock;
     // The heavy-on-light sweep reads the prepared constraints.
     if (!filled && constraints.heavyOnLightCount > 0) {
@@ -310,7 +300,6 @@ export class Solver {
     ) {
       const orderStart = batches.orderStart;
       const bodyStart = batches.bodyStart;
-      if (!filled && !process.env.NO_STORE) this.storeInOrder();
       for (let k = 0; k < batches.count; k++) {
         if (!filled) this.fill(orderStart[k]!, orderStart[k + 1]!, dt);
         this.subSteps(
@@ -324,17 +313,10 @@ export class Solver {
         );
       }
     } else {
-      if (!filled && !process.env.NO_STORE) this.storeInOrder();
       if (!filled) this.fill(0, constraints.count, dt);
       this.subSteps(settings, h, 0, constraints.count, null, 0, this.awakeCount);
     }
     joints.finish();
-  }
-
-  /** Renumbers the classified, unfilled constraints in their visiting order (contact-colouring.ts). */
-  private storeInOrder(): void {
-    const c = this.constraints;
-    this.colouring.storeInOrder(c.order, c.count, c.bodies, c.slots, c.circlePairs, c.circlePairCount);
   }
 
   /**
