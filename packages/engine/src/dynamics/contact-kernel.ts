@@ -129,8 +129,9 @@ function compile(): object | null {
     // Synchronous: the module is a few kilobytes, within every browser's main-thread limit.
     return new wasm.Module(bytes);
   } catch {
-    // A Content-Security-Policy without 'wasm-unsafe-eval' refuses to compile: the JavaScript
-    // build runs instead.
+    // A Content-Security-Policy without 'wasm-unsafe-eval' refuses to compile, and so does a
+    // WebAssembly without SIMD (the module solves contacts in f64x2 lanes): the JavaScript build
+    // runs instead.
     return null;
   }
 }
