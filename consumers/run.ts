@@ -25,6 +25,7 @@ import { fileURLToPath } from 'node:url';
 import { chromium, type Page } from 'playwright-core';
 import { publint } from 'publint';
 import { formatMessage } from 'publint/utils';
+import { checkDevSourceMaps } from './source-maps.ts';
 
 const root = resolve(fileURLToPath(new URL('..', import.meta.url)));
 const libraries = ['engine', 'canvas', 'dom', 'react', 'worker'] as const;
@@ -270,6 +271,14 @@ for (const page of pages) {
     ),
   );
 }
+// Vite's dev server with the READMEs' config (vite-ts/vite.config.ts): every @physical module the
+// page loads, and the modules those import, map to the `src/*.ts` shipped in the tarballs.
+await check('vite dev server follows source maps to the shipped src (vite-ts)', async () => {
+  const lines = await checkDevSourceMaps(app, 'vite-ts', 'main.ts');
+  console.log(
+    `     ${lines.length} modules, for example ${lines.find((l) => l.includes('world'))}`,
+  );
+});
 await check('vite build react18', () =>
   run(
     process.execPath,

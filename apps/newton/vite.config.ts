@@ -3,6 +3,7 @@ import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import react from '@vitejs/plugin-react';
 import { defineConfig, type Plugin } from 'vite';
+import type { OutputBundle, OutputChunk } from 'rolldown';
 
 const source = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
 
@@ -51,10 +52,55 @@ function precacheManifest(): Plugin {
   };
 }
 
+/**
+ * Fetches the first screen's code while the shell's loads: a small inline script in the page
+ * adds `modulepreload` links for the chunks of the screen the address names (#forces...), or of
+ * Inertia. Without it the screen's chunk and the engine were requested only once React had
+ * evaluated and rendered the shell (a second round of downloads after a second of a slow
+ * phone's CPU). The screen ids come from the screens' folders (`src/screens/<id>/`).
+ */
+function firstScreenPreload(): Plugin {
+  return {
+    name: 'newton-first-screen-preload',
+    apply: 'build',
+    transformIndexHtml: {
+      order: 'post',
+      handler(_html, context) {
+        const bundle = context.bundle as OutputBundle | undefined;
+        if (bundle === undefined) return [];
+        const chunks = Object.values(bundle).filter(
+          (item): item is OutputChunk => item.type === 'chunk',
+        );
+        const byName = new Map(chunks.map((chunk) => [chunk.fileName, chunk]));
+        const files: Record<string, string[]> = {};
+        for (const chunk of chunks) {
+          const match = /\/src\/screens\/(\w+)\/\w+Screen\.tsx$/.exec(chunk.facadeModuleId ?? '');
+          if (match === null || !chunk.isDynamicEntry) continue;
+          // The chunk and every chunk it imports statically, depth first.
+          const list: string[] = [];
+          const visit = (name: string): void => {
+            if (list.includes(name)) return;
+            list.push(name);
+            for (const next of byName.get(name)?.imports ?? []) visit(next);
+          };
+          visit(chunk.fileName);
+          files[match[1]!] = list.map((name) => `./${name}`);
+        }
+        const script =
+          `(function(){var f=${JSON.stringify(files)};` +
+          `var id=location.hash.replace(/^#/,'').split('?')[0];` +
+          `(f[id]||f.inertia||[]).forEach(function(h){var l=document.createElement('link');` +
+          `l.rel='modulepreload';l.crossOrigin='';l.href=h;document.head.appendChild(l);});})();`;
+        return [{ tag: 'script', children: script, injectTo: 'head' }];
+      },
+    },
+  };
+}
+
 export default defineConfig({
   base: './',
   root: source('.'),
-  plugins: [react(), precacheManifest()],
+  plugins: [react(), precacheManifest(), firstScreenPreload()],
   resolve: {
     alias: {
       '@physical/engine': source('../../packages/engine/src/index.ts'),

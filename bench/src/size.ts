@@ -58,14 +58,19 @@ export async function measureSize(): Promise<SizeReports> {
   };
 }
 
+/** An app's bundle: its sizes and the source files it bundles (paths under packages/). */
+export interface AppSizeReport extends SizeReport {
+  modules: string[];
+}
+
 /** What the front-end packages add, each against its budget (gzipped bytes, gzip -9). */
 export interface FrontEndSizes {
   /** `World` and `box` alone: the engine's own figure, the base of the others. */
-  engine: SizeReport;
+  engine: AppSizeReport;
   /** The same app with `<physical-canvas>` drawing it (`@physical/canvas/define`). */
-  engineWithCanvas: SizeReport;
+  engineWithCanvas: AppSizeReport;
   /** The page side of a worker world: `WorkerWorld` and the canvas (the worker's file apart). */
-  workerPage: SizeReport;
+  workerPage: AppSizeReport;
 }
 
 /** `<physical-canvas>` adds at most this to an app beyond the engine (gzipped, issue #33). */
@@ -76,7 +81,7 @@ export const WORKER_PAGE_BUDGET_BYTES = 30 * 1024;
 const packages = fileURLToPath(new URL('../../packages/', import.meta.url));
 
 /** Bundles an app entry that imports the packages by name, resolved to their sources. */
-async function appSize(contents: string): Promise<SizeReport> {
+async function appSize(contents: string): Promise<AppSizeReport> {
   const result = await build({
     stdin: { contents, resolveDir: packages, sourcefile: 'app.ts', loader: 'ts' },
     alias: {
@@ -93,11 +98,21 @@ async function appSize(contents: string): Promise<SizeReport> {
     target: 'es2022',
     write: false,
     logLevel: 'silent',
+    metafile: true,
+    outfile: 'app.js',
     // An app's production build: development checks off, as the app's bundler would set.
     define: { 'process.env.NODE_ENV': '"production"' },
   });
   const code = result.outputFiles[0]!.contents;
-  return { minifiedBytes: code.byteLength, gzippedBytes: gzipSync(code, { level: 9 }).byteLength };
+  const output = Object.values(result.metafile.outputs)[0]!;
+  const modules = Object.entries(output.inputs)
+    .filter(([, input]) => input.bytesInOutput > 0)
+    .map(([path]) => path.replace(/^.*?packages\//, ''));
+  return {
+    minifiedBytes: code.byteLength,
+    gzippedBytes: gzipSync(code, { level: 9 }).byteLength,
+    modules,
+  };
 }
 
 /** The engine's figure, the engine with the canvas, and a worker world's page. */

@@ -109,28 +109,7 @@ export function numberIn(text: string): number {
  * gives 0.
  */
 export async function paintedPixels(page: Page, selector: string): Promise<number> {
-  return page.evaluate((css) => {
-    const host = document.querySelector(css)!;
-    const source = host.shadowRoot!.querySelector('canvas')!;
-    // A fresh copy read once: no repeated read-back from the app's canvas (a console warning).
-    const copy = document.createElement('canvas');
-    copy.width = source.width;
-    copy.height = source.height;
-    const context = copy.getContext('2d', { willReadFrequently: true })!;
-    context.drawImage(source, 0, 0);
-    const { data } = context.getImageData(0, 0, copy.width, copy.height);
-    const [r0, g0, b0] = [data[0]!, data[1]!, data[2]!];
-    let count = 0;
-    for (let i = 0; i < data.length; i += 4) {
-      if (
-        Math.abs(data[i]! - r0) + Math.abs(data[i + 1]! - g0) + Math.abs(data[i + 2]! - b0) >
-        30
-      ) {
-        count++;
-      }
-    }
-    return count;
-  }, selector);
+  return differingPixels(page, selector, 'background');
 }
 
 /**
@@ -139,32 +118,54 @@ export async function paintedPixels(page: Page, selector: string): Promise<numbe
  * over another one, such as an arrow over its body.
  */
 export async function changedPixels(page: Page, selector: string): Promise<number> {
-  return page.evaluate((css) => {
-    const host = document.querySelector(css)!;
-    const source = host.shadowRoot!.querySelector('canvas')!;
-    const copy = document.createElement('canvas');
-    copy.width = source.width;
-    copy.height = source.height;
-    const context = copy.getContext('2d', { willReadFrequently: true })!;
-    context.drawImage(source, 0, 0);
-    const { data } = context.getImageData(0, 0, copy.width, copy.height);
-    const store = window as unknown as { __lastPixels?: Record<string, Uint8ClampedArray> };
-    const last = (store.__lastPixels ??= {})[css];
-    store.__lastPixels[css] = data;
-    if (last === undefined || last.length !== data.length) return 0;
-    let count = 0;
-    for (let i = 0; i < data.length; i += 4) {
-      if (
-        Math.abs(data[i]! - last[i]!) +
-          Math.abs(data[i + 1]! - last[i + 1]!) +
-          Math.abs(data[i + 2]! - last[i + 2]!) >
-        30
-      ) {
-        count++;
+  return differingPixels(page, selector, 'last');
+}
+
+/** Pixels of the canvas that differ from its background colour, or from its last recorded copy. */
+async function differingPixels(
+  page: Page,
+  selector: string,
+  against: 'background' | 'last',
+): Promise<number> {
+  return page.evaluate(
+    ([css, reference]) => {
+      const host = document.querySelector(css)!;
+      const source = host.shadowRoot!.querySelector('canvas')!;
+      // A fresh copy read once: no repeated read-back from the app's canvas (a console warning).
+      const copy = document.createElement('canvas');
+      copy.width = source.width;
+      copy.height = source.height;
+      const context = copy.getContext('2d', { willReadFrequently: true })!;
+      context.drawImage(source, 0, 0);
+      const { data } = context.getImageData(0, 0, copy.width, copy.height);
+      let other: ArrayLike<number>;
+      if (reference === 'last') {
+        const store = window as unknown as { __lastPixels?: Record<string, Uint8ClampedArray> };
+        const last = (store.__lastPixels ??= {})[css];
+        store.__lastPixels[css] = data;
+        if (last === undefined || last.length !== data.length) return 0;
+        other = last;
+      } else {
+        // The background: the first pixel's colour, at every pixel.
+        other = { length: 4, 0: data[0]!, 1: data[1]!, 2: data[2]!, 3: data[3]! };
       }
-    }
-    return count;
-  }, selector);
+      const stride = other.length === data.length ? 1 : 0;
+      let count = 0;
+      for (let i = 0; i < data.length; i += 4) {
+        const j = i * stride;
+        if (
+          Math.abs(data[i]! - other[j]!) +
+            Math.abs(data[i + 1]! - other[j + 1]!) +
+            Math.abs(data[i + 2]! - other[j + 2]!) >
+          30
+        ) {
+          count++;
+        }
+      }
+      return count;
+    },
+    [selector, against] as const,
+  );
 }
 
 /** Runs axe-core on the page; returns the serious and critical violations. */

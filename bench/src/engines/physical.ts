@@ -126,7 +126,24 @@ export const physicalJavaScript: Engine = {
   create: (scene) => createWorld(scene, 'javascript'),
 };
 
+/** Physical's World behind each bench world it made (for counters outside the bench interface). */
+const physicalWorlds = new WeakMap<World, PhysicalWorld>();
+
+/** The Physical World behind a bench world made by `physical.create`, if it is one. */
+export function physicalWorldOf(world: World): PhysicalWorld | undefined {
+  return physicalWorlds.get(world);
+}
+
 function createWorld(scene: SceneDesc, kernel: 'auto' | 'javascript'): World {
+  const adapter = createAdapter(scene, kernel);
+  physicalWorlds.set(adapter.bench, adapter.world);
+  return adapter.bench;
+}
+
+function createAdapter(
+  scene: SceneDesc,
+  kernel: 'auto' | 'javascript',
+): { bench: World; world: PhysicalWorld } {
   const world = new PhysicalWorld({
     gravity: { x: scene.gravity.x, y: -scene.gravity.y },
     subSteps: SUB_STEPS,
@@ -192,7 +209,7 @@ function createWorld(scene: SceneDesc, kernel: 'auto' | 'javascript'): World {
   const groups = new Map<number, Body[]>();
   let nextGroup = 0;
   if (scene.bodies.some((b) => b.hitEvents)) notes.add('no hit-event listener registered');
-  return {
+  const bench = {
     get notes() {
       return [...notes];
     },
@@ -231,6 +248,7 @@ function createWorld(scene: SceneDesc, kernel: 'auto' | 'javascript'): World {
       body.angularVelocity = (-angle - body.angle) / DT;
     },
   } satisfies World;
+  return { bench, world };
 }
 
 /**

@@ -3,7 +3,7 @@
 import { worldToScreen, type PhysicalCanvasElement } from '@physical/canvas';
 import { World, box, wall } from '@physical/engine';
 import { PhysicalCanvas } from '@physical/react';
-import { StrictMode, useRef } from 'react';
+import { StrictMode, useEffect, useRef } from 'react';
 import { createRoot } from 'react-dom/client';
 import { expose } from '../shared/expose.ts';
 
@@ -14,12 +14,16 @@ const crate = world.add(box({ position: { x: 4, y: 1 }, width: 1, height: 1 }));
 let taps = 0;
 function App() {
   const ref = useRef<PhysicalCanvasElement>(null);
-  expose(world, crate, () => {
-    const canvas = ref.current!;
-    const rect = canvas.getBoundingClientRect();
-    const point = worldToScreen(canvas.viewport, crate.position);
-    return { x: rect.left + point.x, y: rect.top + point.y, taps };
-  });
+  // Exposed once mounted: React 18's StrictMode renders twice and commits one render's ref, so a
+  // closure made during render may hold the other one (still null).
+  useEffect(() => {
+    expose(world, crate, () => {
+      const canvas = ref.current!;
+      const rect = canvas.getBoundingClientRect();
+      const point = worldToScreen(canvas.viewport, crate.position);
+      return { x: rect.left + point.x, y: rect.top + point.y, taps };
+    });
+  }, []);
   return (
     <PhysicalCanvas
       ref={ref}

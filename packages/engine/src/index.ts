@@ -4,6 +4,15 @@ export { World } from './world/world.ts';
 export type { WorldEvents } from './world/world.ts';
 export type { WorldOptions } from './world/world-options.ts';
 export type { RayCastHit } from './world/queries.ts';
+export {
+  checkQueryBox,
+  checkRay,
+  checkTimeStep,
+  checkWorldOptions,
+  checkWorldSetting,
+} from './world/world-checks.ts';
+export type { WorldSettingName, WorldSettingValues } from './world/world-checks.ts';
+export { bodyAtPoint } from './world/body-at-point.ts';
 export { restoreSnapshot, takeSnapshot } from './world/snapshot.ts';
 export type { SnapshotNumber, SnapshotValue, WorldSnapshot } from './world/snapshot.ts';
 export type { QueryPose, ShapeCastHit } from './world/shape-queries.ts';

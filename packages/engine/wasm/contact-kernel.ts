@@ -59,12 +59,21 @@ import {
   DP_Y,
   FRICTION,
   IMPACT,
+  IMPACT_CLOSE,
+  IMPACT_CONTINUE,
+  IMPACT_OPEN,
+  IMPACT_ROUND,
   IMPULSE_SCALE,
   INV_I_A,
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
+  KICK_VX,
+  KICK_VY,
+  KICK_W,
   LINEAR_SLOP,
+  MARK,
+  MARK_STRIDE,
   MASS_SCALE,
   MAX_CONDITION_NUMBER,
   MAX_NORMAL_IMPULSE,
@@ -118,6 +127,43 @@ function ld(p: usize, k: i32): f64 {
 
 function st(p: usize, k: i32, v: f64): void {
   store<f64>(p + ((<usize>k) << 3), v);
+}
+
+/** The impact mark and sub-step velocity change of the body at state offset `a` (body-state.ts). */
+function markOf(marksPtr: usize, a: i32): usize {
+  return marksPtr + ((<usize>((a / STATE_STRIDE) * MARK_STRIDE)) << 3);
+}
+
+/**
+ * How much this sub-step's integration (gravity, forces) changed the approach along (nx, ny) at
+ * the lever arms (bAx, bAy), (bBx, bBy) of the bodies whose marks are `kA`, `kB` (see markOf).
+ */
+function kickApproach(
+  kA: usize,
+  kB: usize,
+  bAx: f64,
+  bAy: f64,
+  bBx: f64,
+  bBy: f64,
+  nx: f64,
+  ny: f64,
+): f64 {
+  const wA = ld(kA, KICK_W);
+  const wB = ld(kB, KICK_W);
+  return (
+    (ld(kB, KICK_VX) - wB * bBy - (ld(kA, KICK_VX) - wA * bAy)) * nx +
+    (ld(kB, KICK_VY) + wB * bBx - (ld(kA, KICK_VY) + wA * bAx)) * ny
+  );
+}
+
+/** kickApproach with the lever arms as cross products with the normal (rA x n, rB x n). */
+function kickNormal(kA: usize, kB: usize, nx: f64, ny: f64, leverA: f64, leverB: f64): f64 {
+  return (
+    (ld(kB, KICK_VX) - ld(kA, KICK_VX)) * nx +
+    (ld(kB, KICK_VY) - ld(kA, KICK_VY)) * ny +
+    ld(kB, KICK_W) * leverB -
+    ld(kA, KICK_W) * leverA
+  );
 }
 
 function advancePose(k: usize, dx: f64, dy: f64, angle: f64): void {
@@ -644,9 +690,14 @@ export function warmStart(
     const dtB = -(sBx * nx + sBy * ny);
     for (let j = 0; j < pointCount; j++) {
       const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
-      // A bounce is a one-off impulse, not a contact force to carry into the next sub-step.
-      if (ld(p, IMPACT) == 2) {
+      // A bounce is a one-off impulse, not a contact force to carry into the next sub-step;
+      // an impact of an earlier round neither (see impacts).
+      const impact = ld(p, IMPACT);
+      if (impact == 2) {
         st(p, IMPACT, 3);
+        st(p, NORMAL_IMPULSE, 0);
+      } else if (impact == 6) {
+        st(p, IMPACT, 0);
         st(p, NORMAL_IMPULSE, 0);
       }
       const pn = ld(p, NORMAL_IMPULSE);
@@ -679,6 +730,11 @@ export function warmStart(
  * One pass over the `count` constraints listed from `orderPtr`. With `useBias` the soft position
  * correction pushes overlapping shapes apart (at most `maxPushSpeed`); without it ("relax") the
  * pass removes the velocity that push added, so resting bodies do not gain energy from correction.
+ * Returns the number of bounces in the pass (the impact rounds run when there are any, see
+ * impacts). A bounce marks its bodies (`marksPtr`, see body-state.ts); a bouncy resting point on
+ * a marked body that approaches faster than `impactSpeed` is left for the impact rounds, not
+ * stopped here as a resting contact would be (that would absorb the impact); a loaded one only
+ * when faster than `loadSpeed` (see solver.ts, MIN_LOADED_IMPACT_SPEED).
  */
 export function solve(
   cPtr: usize,
@@ -689,8 +745,12 @@ export function solve(
   inverseH: f64,
   maxPushSpeed: f64,
   restitutionThreshold: f64,
+  impactSpeed: f64,
+  loadSpeed: f64,
+  marksPtr: usize,
   useBias: bool,
-): void {
+): i32 {
+  let bounces: i32 = 0;
   for (let n = 0; n < count; n++) {
     const i = load<i32>(orderPtr + ((<usize>n) << 2));
     if (LANES && n + 1 < count) {
@@ -716,6 +776,11 @@ export function solve(
     const ny = ld(cb, NORMAL_Y);
     const restitution = ld(cb, RESTITUTION);
     const biasRate = ld(cb, BIAS_RATE);
+    // Received: an impact of this sub-step may push this bouncy contact (see above).
+    const receives =
+      !useBias &&
+      restitution > 0 &&
+      ld(markOf(marksPtr, a), MARK) + ld(markOf(marksPtr, b), MARK) > 0;
     let vAx = ld(sa, V_X);
     let vAy = ld(sa, V_Y);
     let wA = ld(sa, W);
@@ -809,16 +874,25 @@ export function solve(
         const impact2 = ld(p2, IMPACT);
         isImpact1 =
           accumulated1 == 0 &&
-          (impact1 < 2 || impact1 == 3) &&
+          (impact1 < 2 || impact1 == 3 || (impact1 == 4 && vn1 < -maxPushSpeed)) &&
           vn1 < -restitutionThreshold &&
           (impact1 == 1 || vn1 + bias1 < 0);
         isImpact2 =
           accumulated2 == 0 &&
-          (impact2 < 2 || impact2 == 3) &&
+          (impact2 < 2 || impact2 == 3 || (impact2 == 4 && vn2 < -maxPushSpeed)) &&
           vn2 < -restitutionThreshold &&
           (impact2 == 1 || vn2 + bias2 < 0);
       }
-      if (!isImpact1 && !isImpact2) {
+      if (
+        receives &&
+        !isImpact1 &&
+        !isImpact2 &&
+        (vn1 < -loadSpeed || vn2 < -loadSpeed) &&
+        ld(p1, IMPACT) != 4 &&
+        ld(p2, IMPACT) != 4
+      ) {
+        firstSequential = 2;
+      } else if (!isImpact1 && !isImpact2) {
         // Both points push: the mixed LCP  w = A x + q >= 0, x >= 0, x . w = 0  for the new
         // accumulated impulses x (Box2D v2's block solver, Catto's b2ContactSolver, enumerates
         // its four cases the same way). With the soft step, the sequential update of one point
@@ -910,10 +984,18 @@ export function solve(
         const b2Ay = ld(p2, R_AY) + sy - eAy;
         const b2Bx = ld(p2, R_BX) + sx - eBx;
         const b2By = ld(p2, R_BY) + sy - eBy;
+        // The approaches at that moment (see the single-point case below).
+        const kA = markOf(marksPtr, a);
+        const kB = markOf(marksPtr, b);
+        const since = 0.5 - back * inverseH;
         const approach1 =
-          (vBx - wB * b1By - (vAx - wA * b1Ay)) * nx + (vBy + wB * b1Bx - (vAy + wA * b1Ax)) * ny;
+          (vBx - wB * b1By - (vAx - wA * b1Ay)) * nx +
+          (vBy + wB * b1Bx - (vAy + wA * b1Ax)) * ny +
+          kickApproach(kA, kB, b1Ax, b1Ay, b1Bx, b1By, nx, ny) * since;
         const approach2 =
-          (vBx - wB * b2By - (vAx - wA * b2Ay)) * nx + (vBy + wB * b2Bx - (vAy + wA * b2Ax)) * ny;
+          (vBx - wB * b2By - (vAx - wA * b2Ay)) * nx +
+          (vBy + wB * b2Bx - (vAy + wA * b2Ax)) * ny +
+          kickApproach(kA, kB, b2Ax, b2Ay, b2Bx, b2By, nx, ny) * since;
         const rn1A = b1Ax * ny - b1Ay * nx;
         const rn1B = b1Bx * ny - b1By * nx;
         const rn2A = b2Ax * ny - b2Ay * nx;
@@ -1002,11 +1084,12 @@ export function solve(
       const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * leverB - wA * leverA;
       const accumulated = ld(p, NORMAL_IMPULSE);
       // Restitution (Newton's law) at the moment of impact. An impact is an approach faster than
-      // the threshold on a point not already pushing (a resting contact is always warm-started,
-      // so it never counts, and never jitters). The solve pass lets it go; the relax pass, once
-      // the shapes touch, applies the whole collision impulse -(1 + e) m vn along the normal of
-      // that instant, and moves both bodies on by their velocity change for the part of the
-      // sub-step left after the moment of contact: the exact trajectory of two colliding
+      // the threshold on a point not already pushing, and not pressed unless it approaches faster
+      // than a load presses (an impact that travelled to it, see impacts) (a resting contact is
+      // always warm-started, so it never counts, and never jitters). The solve pass lets it go; the
+      // relax pass, once the shapes touch, applies the whole collision impulse -(1 + e) m vn along
+      // the normal of that instant, and moves both bodies on by their velocity change for the part
+      // of the sub-step left after the moment of contact: the exact trajectory of two colliding
       // bodies, so momentum, angular momentum and (for e = 1) energy are kept. A bounce after all
       // the sub-steps (Box2D v3) comes after the normal of sliding particles has turned and after
       // gravity has changed the approach, and cannot bounce a particle twice in one step.
@@ -1014,7 +1097,7 @@ export function solve(
         const impactState = ld(p, IMPACT);
         if (
           accumulated == 0 &&
-          (impactState < 2 || impactState == 3) &&
+          (impactState < 2 || impactState == 3 || (impactState == 4 && vn < -maxPushSpeed)) &&
           vn < -restitutionThreshold &&
           (impactState == 1 || vn + bias < 0)
         ) {
@@ -1062,8 +1145,19 @@ export function solve(
             bBx = ld(p, R_BX) + sx - eBx;
             bBy = ld(p, R_BY) + sy - eBy;
           }
+          // The approach at that moment. The sub-step's velocity is its average (semi-implicit
+          // Euler: positions move by h v); gravity and forces changed it by the integration's
+          // kick k over the sub-step, so at the moment of contact, `back` before its end, the
+          // approach was v + k (1/2 - back / h). Reversing that one (and moving on by the change
+          // for `back`) is the exact bounce of the discrete parabola: a ball bouncing on the
+          // ground keeps the integrator's energy (1/2 m (v + k/2)^2 - m g y at the sub-step's
+          // end) at every bounce, where reversing the average gained or lost up to 2 g h / v of
+          // it, depending on when in the sub-step the ball touched.
           const approach =
-            (vBx - wB * bBy - (vAx - wA * bAy)) * bnx + (vBy + wB * bBx - (vAy + wA * bAx)) * bny;
+            (vBx - wB * bBy - (vAx - wA * bAy)) * bnx +
+            (vBy + wB * bBx - (vAy + wA * bAx)) * bny +
+            kickApproach(markOf(marksPtr, a), markOf(marksPtr, b), bAx, bAy, bBx, bBy, bnx, bny) *
+              (0.5 - back * inverseH);
           const rnA = bAx * bny - bAy * bnx;
           const rnB = bBx * bny - bBy * bnx;
           const k = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
@@ -1093,6 +1187,9 @@ export function solve(
           continue;
         }
         if (impactState == 1) st(p, IMPACT, 0);
+        if (receives && impactState != 4 && vn < -(accumulated > 0 ? loadSpeed : impactSpeed)) {
+          continue;
+        }
       }
       const newImpulse = max<f64>(
         accumulated - ld(p, NORMAL_MASS) * massScale * (vn + bias) - impulseScale * accumulated,
@@ -1112,6 +1209,9 @@ export function solve(
     }
 
     if (bounced) {
+      bounces++;
+      if (a != 0) st(markOf(marksPtr, a), MARK, 1);
+      if (b != 0) st(markOf(marksPtr, b), MARK, 1);
       // The bounce moved the bodies on: friction acts at the common point where it is now.
       const eAx = ld(sa, DP_X) - ld(cb, REF_DP_AX);
       const eAy = ld(sa, DP_Y) - ld(cb, REF_DP_AY);
@@ -1160,6 +1260,254 @@ export function solve(
       st(sb, W, wB);
     }
   }
+  return bounces;
+}
+
+// Impact rounds: restitution over the whole impact, not contact by contact.
+//
+// An impact that meets a body already pressed (a ball resting on the floor, a light body under a
+// heavy one) or held (a pinned rod) has to travel: the resting contact it presses through must
+// bounce too, and a joint must take part in the impulse. The model is sequential impacts through
+// the impact graph, as in Newton's cradle (Smith, Kaufman, Vouga, Tamstorf and Grinspun,
+// "Reflections on Simultaneous Impact", SIGGRAPH 2012, name this family and the properties it
+// keeps): after the relax pass of a sub-step in which something bounced, round after round, every
+// touching contact that approaches faster than the impact speed is an impact of its own and leaves
+// at e times the approach it received, with the masses of its two bodies (a two-point manifold as
+// one block). Each such impact keeps momentum and angular momentum, keeps the energy at e = 1, and
+// at e = 0 stops the approach as an inelastic collision does; a chain of them is the
+// sequential-impact solution (a ball dropped on an equal ball resting on the floor rebounds to its
+// drop height, the bottom one stays). Kept of the paper's properties: momentum, energy (e = 1:
+// never gained; e < 1: lost), and breaking of contact along the chain; given up: symmetry of truly
+// simultaneous impacts (the round visits contacts in the solver's order). Joints: a lone bounce of
+// the relax pass and the joints are solved together, a few Gauss-Seidel iterations, the impact
+// towards its target (-e times its approach), so that a disc hitting a pinned rod sees the rod's
+// pinned effective mass. Not the rounds' impacts, nor several bounces at once: impacts of one chain
+// solved together towards fixed targets make energy. Resting contacts that no impact reaches are
+// never visited by an impact (they approach slower than the impact speed), so stacks stay at rest
+// and sleep; steps without a bounce run no round at all.
+
+/**
+ * One pass of the impact rounds over the constraints at positions `from` to `to` of the visiting
+ * order (see the note above); returns the number of impacts it started. `IMPACT_ROUND` closes the
+ * last round's impacts and starts a new one: each touching point of a body an impact reached
+ * (`marks`) approaching faster than `impactSpeed` (a loaded point: `loadSpeed`) gets -(1 + e)
+ * times its approach, with its bodies' masses. `IMPACT_CONTINUE`
+ * moves the open impacts on towards their targets (between joint passes); `IMPACT_OPEN` opens the
+ * bounces of the relax pass for that; `IMPACT_CLOSE` closes all.
+ */
+export function impacts(
+  cPtr: usize,
+  bodiesPtr: usize,
+  orderPtr: usize,
+  sPtr: usize,
+  count: i32,
+  impactSpeed: f64,
+  loadSpeed: f64,
+  marksPtr: usize,
+  mode: i32,
+): i32 {
+  let started: i32 = 0;
+  for (let n = 0; n < count; n++) {
+    const i = load<i32>(orderPtr + ((<usize>n) << 2));
+    const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
+    const pointCount = <i32>ld(cb, POINT_COUNT);
+    if (mode == IMPACT_OPEN || mode == IMPACT_CLOSE || mode == IMPACT_ROUND) {
+      const from2: f64 = mode == IMPACT_OPEN ? 2 : 5;
+      const to2: f64 = mode == IMPACT_OPEN ? 5 : 6;
+      for (let j = 0; j < pointCount; j++) {
+        const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+        if (ld(p, IMPACT) == from2) {
+          st(p, IMPACT, to2);
+          if (mode == IMPACT_OPEN) started++;
+        }
+      }
+      if (mode == IMPACT_OPEN) continue;
+    }
+    const a = load<i32>(bodiesPtr + ((<usize>i) << 3));
+    const b = load<i32>(bodiesPtr + ((<usize>i) << 3), 4);
+    const markA = markOf(marksPtr, a);
+    const markB = markOf(marksPtr, b);
+    if (mode == IMPACT_CLOSE) {
+      store<f64>(markA, 0);
+      store<f64>(markB, 0);
+      continue;
+    }
+    if (mode == IMPACT_ROUND && load<f64>(markA) + load<f64>(markB) == 0) continue;
+    const sa = sPtr + ((<usize>a) << 3);
+    const sb = sPtr + ((<usize>b) << 3);
+    const mA = ld(cb, INV_MASS_A);
+    const iA = ld(cb, INV_I_A);
+    const mB = ld(cb, INV_MASS_B);
+    const iB = ld(cb, INV_I_B);
+    const nx = ld(cb, NORMAL_X);
+    const ny = ld(cb, NORMAL_Y);
+    const restitution = ld(cb, RESTITUTION);
+    let vAx = ld(sa, V_X);
+    let vAy = ld(sa, V_Y);
+    let wA = ld(sa, W);
+    let vBx = ld(sb, V_X);
+    let vBy = ld(sb, V_Y);
+    let wB = ld(sb, W);
+    const dpAx = ld(sa, DP_X);
+    const dpAy = ld(sa, DP_Y);
+    const dpBx = ld(sb, DP_X);
+    const dpBy = ld(sb, DP_Y);
+    const shiftA = ld(cb, SHIFT_WEIGHT_A);
+    const shiftB = ld(cb, SHIFT_WEIGHT_B);
+    const eAx = dpAx - ld(cb, REF_DP_AX);
+    const eAy = dpAy - ld(cb, REF_DP_AY);
+    const eBx = dpBx - ld(cb, REF_DP_BX);
+    const eBy = dpBy - ld(cb, REF_DP_BY);
+    const shiftX = shiftA * eAx + shiftB * eBx;
+    const shiftY = shiftA * eAy + shiftB * eBy;
+    const dnA = (shiftX - eAx) * ny - (shiftY - eAy) * nx;
+    const dnB = (shiftX - eBx) * ny - (shiftY - eBy) * nx;
+    const qAc = ld(sa, Q_C);
+    const qAs = ld(sa, Q_S);
+    const qBc = ld(sb, Q_C);
+    const qBs = ld(sb, Q_S);
+    const nAx = qAc * nx + qAs * ny;
+    const nAy = qAc * ny - qAs * nx;
+    const nBx = qBc * nx + qBs * ny;
+    const nBy = qBc * ny - qBs * nx;
+    const dpn = (dpBx - dpAx) * nx + (dpBy - dpAy) * ny;
+    let firstSequential = 0;
+    if (mode == IMPACT_ROUND && ld(cb, BLOCK) == 1) {
+      const p1 = cb + ((<usize>POINTS) << 3);
+      const p2 = p1 + ((<usize>POINT_STRIDE) << 3);
+      const separation1 =
+        dpn +
+        (ld(p1, R_BX) * nBx + ld(p1, R_BY) * nBy) -
+        (ld(p1, R_AX) * nAx + ld(p1, R_AY) * nAy) +
+        ld(p1, BASE_SEPARATION);
+      const separation2 =
+        dpn +
+        (ld(p2, R_BX) * nBx + ld(p2, R_BY) * nBy) -
+        (ld(p2, R_AX) * nAx + ld(p2, R_AY) * nAy) +
+        ld(p2, BASE_SEPARATION);
+      const n1A = ld(p1, RN_A) + dnA;
+      const n1B = ld(p1, RN_B) + dnB;
+      const n2A = ld(p2, RN_A) + dnA;
+      const n2B = ld(p2, RN_B) + dnB;
+      const dvn = (vBx - vAx) * nx + (vBy - vAy) * ny;
+      const vn1 = dvn + wB * n1B - wA * n1A;
+      const vn2 = dvn + wB * n2B - wA * n2A;
+      const speed1: f64 =
+        ld(p1, NORMAL_IMPULSE) > 0 && ld(p1, IMPACT) != 2 ? loadSpeed : impactSpeed;
+      const speed2: f64 =
+        ld(p2, NORMAL_IMPULSE) > 0 && ld(p2, IMPACT) != 2 ? loadSpeed : impactSpeed;
+      if (
+        separation1 < LINEAR_SLOP &&
+        separation2 < LINEAR_SLOP &&
+        vn1 < -speed1 &&
+        vn2 < -speed2 &&
+        ld(p1, IMPACT) != 4 &&
+        ld(p2, IMPACT) != 4
+      ) {
+        const mAB = mA + mB;
+        const k11 = mAB + iA * n1A * n1A + iB * n1B * n1B;
+        const k12 = mAB + iA * n1A * n2A + iB * n1B * n2B;
+        const k22 = mAB + iA * n2A * n2A + iB * n2B * n2B;
+        // The approaches at the sub-step's end, where the round's impacts happen: the sub-step's
+        // average plus half its kick (see the relax pass's bounce in solve).
+        const u1 = vn1 + 0.5 * kickNormal(markA, markB, nx, ny, n1A, n1B);
+        const u2 = vn2 + 0.5 * kickNormal(markA, markB, nx, ny, n2A, n2B);
+        const q1 = (1 + restitution) * u1;
+        const q2 = (1 + restitution) * u2;
+        let x1: f64 = -1;
+        let x2: f64 = -1;
+        const det = k11 * k22 - k12 * k12;
+        const y1 = (k12 * q2 - k22 * q1) / det;
+        const y2 = (k12 * q1 - k11 * q2) / det;
+        if (y1 >= 0 && y2 >= 0) {
+          x1 = y1;
+          x2 = y2;
+        } else if (-q1 / k11 >= 0 && (-k12 * q1) / k11 + q2 >= 0) {
+          x1 = -q1 / k11;
+          x2 = 0;
+        } else if (-q2 / k22 >= 0 && (-k12 * q2) / k22 + q1 >= 0) {
+          x1 = 0;
+          x2 = -q2 / k22;
+        }
+        if (x1 >= 0 && x2 >= 0) {
+          firstSequential = 2;
+          started++;
+          st(p1, NORMAL_IMPULSE, ld(p1, NORMAL_IMPULSE) + x1);
+          st(p2, NORMAL_IMPULSE, ld(p2, NORMAL_IMPULSE) + x2);
+          st(p1, TOTAL_NORMAL_IMPULSE, ld(p1, TOTAL_NORMAL_IMPULSE) + x1);
+          st(p2, TOTAL_NORMAL_IMPULSE, ld(p2, TOTAL_NORMAL_IMPULSE) + x2);
+          if (x1 > ld(p1, MAX_NORMAL_IMPULSE)) st(p1, MAX_NORMAL_IMPULSE, x1);
+          if (x2 > ld(p2, MAX_NORMAL_IMPULSE)) st(p2, MAX_NORMAL_IMPULSE, x2);
+          st(p1, RELATIVE_VELOCITY, u1);
+          st(p2, RELATIVE_VELOCITY, u2);
+          st(p1, IMPACT, 5);
+          st(p2, IMPACT, 5);
+          const sum = x1 + x2;
+          vAx -= mA * sum * nx;
+          vAy -= mA * sum * ny;
+          wA -= iA * (n1A * x1 + n2A * x2);
+          vBx += mB * sum * nx;
+          vBy += mB * sum * ny;
+          wB += iB * (n1B * x1 + n2B * x2);
+        }
+      }
+    }
+    let changed = firstSequential == 2;
+    for (let j = firstSequential; j < pointCount; j++) {
+      const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+      const impact = ld(p, IMPACT);
+      if (mode == IMPACT_CONTINUE ? impact != 5 : impact == 4 || impact == 5) continue;
+      const leverA = ld(p, RN_A) + dnA;
+      const leverB = ld(p, RN_B) + dnB;
+      const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * leverB - wA * leverA;
+      // The approach at the sub-step's end (see above).
+      const u = vn + 0.5 * kickNormal(markA, markB, nx, ny, leverA, leverB);
+      const accumulated = ld(p, NORMAL_IMPULSE);
+      const k = mA + mB + iA * leverA * leverA + iB * leverB * leverB;
+      if (!(k > 0)) continue;
+      let impulse: f64;
+      if (mode == IMPACT_CONTINUE) {
+        const target = -restitution * ld(p, RELATIVE_VELOCITY);
+        impulse = max<f64>((target - u) / k, -accumulated);
+      } else {
+        if (vn >= -(accumulated > 0 && impact != 2 ? loadSpeed : impactSpeed)) continue;
+        const separation =
+          dpn +
+          (ld(p, R_BX) * nBx + ld(p, R_BY) * nBy) -
+          (ld(p, R_AX) * nAx + ld(p, R_AY) * nAy) +
+          ld(p, BASE_SEPARATION);
+        if (separation >= LINEAR_SLOP) continue;
+        impulse = (-(1 + restitution) * u) / k;
+        started++;
+        st(p, RELATIVE_VELOCITY, u);
+        st(p, IMPACT, 5);
+        if (impulse > ld(p, MAX_NORMAL_IMPULSE)) st(p, MAX_NORMAL_IMPULSE, impulse);
+      }
+      st(p, NORMAL_IMPULSE, accumulated + impulse);
+      st(p, TOTAL_NORMAL_IMPULSE, ld(p, TOTAL_NORMAL_IMPULSE) + impulse);
+      vAx -= mA * impulse * nx;
+      vAy -= mA * impulse * ny;
+      wA -= iA * leverA * impulse;
+      vBx += mB * impulse * nx;
+      vBy += mB * impulse * ny;
+      wB += iB * leverB * impulse;
+      changed = true;
+    }
+    if (!changed) continue;
+    if (a != 0) {
+      st(sa, V_X, vAx);
+      st(sa, V_Y, vAy);
+      st(sa, W, wA);
+      store<f64>(markA, 1);
+    }
+    if (b != 0) {
+      st(sb, V_X, vBx);
+      st(sb, V_Y, vBy);
+      st(sb, W, wB);
+      store<f64>(markB, 1);
+    }
+  }
+  return started;
 }
 
 /** Counts of the last prepare: circle pairs listed, heavy-on-light constraints. */
@@ -1566,7 +1914,7 @@ export function storeImpulses(
       const mp = m + ((<usize>(C_POINTS + j * C_POINT_STRIDE)) << 3);
       const impact = ld(p, IMPACT);
       if (impact == 2 || impact == 3) bounced = 1;
-      st(mp, C_NORMAL_IMPULSE, ld(p, IMPACT) == 2 ? 0 : ld(p, NORMAL_IMPULSE));
+      st(mp, C_NORMAL_IMPULSE, impact == 2 || impact == 6 ? 0 : ld(p, NORMAL_IMPULSE));
       st(mp, C_TANGENT_IMPULSE, ld(p, TANGENT_IMPULSE));
       st(mp, C_MAX_NORMAL_IMPULSE, ld(p, MAX_NORMAL_IMPULSE));
       st(mp, C_RELATIVE_VELOCITY, ld(p, RELATIVE_VELOCITY));

@@ -1,4 +1,4 @@
-import type { Vec2Like, WorldOptions } from '@physical/engine';
+import type { Vec2Like, WorldOptions, WorldSettingName } from '@physical/engine';
 import type { BodyDefinition, JointDefinition } from './definitions.ts';
 import type { OffscreenView } from './offscreen-renderer.ts';
 
@@ -71,7 +71,7 @@ const SETTABLE: { readonly [P in BodyProperty]: true } = {
 export const BODY_PROPERTIES = Object.keys(SETTABLE) as readonly BodyProperty[];
 
 /** World settings a page may change while it runs. */
-export type WorldSetting = 'gravity' | 'subSteps' | 'restitutionThreshold' | 'enableSleep';
+export type WorldSetting = WorldSettingName;
 
 /** A query answered by the worker's world. */
 export type Query =

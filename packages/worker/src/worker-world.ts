@@ -1,6 +1,11 @@
 import {
   PhysicalError,
-  World,
+  bodyAtPoint,
+  checkQueryBox,
+  checkRay,
+  checkTimeStep,
+  checkWorldOptions,
+  checkWorldSetting,
   type Body,
   type ContactView,
   type Duration,
@@ -8,6 +13,7 @@ import {
   type Vec2,
   type Vec2Like,
   type WorldOptions,
+  type WorldSettingValues,
 } from '@physical/engine';
 import {
   MAX_REMOTE_STEPS_IN_FLIGHT,
@@ -115,10 +121,13 @@ export class WorkerWorld implements DrawingSource {
   /** Bytes of pose data received in the last applied step(s) (transferred mode; 0 when shared). */
   lastPoseBytes = 0;
   private readonly worker: WorkerLike;
-  /** Page copies of the bodies and joints: for checking input, drawing and hit-testing. */
-  private readonly mirror: World;
-  /** An empty world that checks each step's dt with the engine's own rule (stepping it is free). */
-  private readonly checker = new World();
+  // The page side keeps no World (no solver, broad phase or contacts: the worker has them): copies
+  // of the bodies and joints built by the engine's factories, for checking input, drawing and
+  // hit-testing, in the world's order, and the settings the page can read. Input the World would
+  // refuse is refused here with the engine's own checks (`checkTimeStep`, `checkWorldSetting`...).
+  private readonly bodyList: Body[] = [];
+  private readonly jointList: Joint[] = [];
+  private readonly settings: WorldSettingValues;
   private readonly bodyById = new Map<number, Body>();
   private readonly idByBody = new Map<Body, number>();
   private readonly jointById = new Map<number, Joint>();
@@ -159,7 +168,7 @@ export class WorkerWorld implements DrawingSource {
     }
     this.worker = worker;
     const worldOptions = plainCopy(options.world ?? {}, 'world') as WorldOptions;
-    this.mirror = new World(worldOptions);
+    this.settings = checkWorldOptions(worldOptions);
     const isolated =
       typeof SharedArrayBuffer !== 'undefined' &&
       (globalThis as { crossOriginIsolated?: boolean }).crossOriginIsolated === true;
@@ -203,7 +212,7 @@ export class WorkerWorld implements DrawingSource {
     const id = this.nextBodyId;
     this.post({ type: 'add', id, definition: posted });
     this.nextBodyId++;
-    this.mirror.add(body);
+    this.bodyList.push(body);
     this.bodyById.set(id, body);
     this.idByBody.set(body, id);
     this.ensureCapacity(id);
@@ -223,9 +232,12 @@ export class WorkerWorld implements DrawingSource {
     const body = this.requireBody(id);
     this.post({ type: 'remove', id });
     for (const [jointId, joint] of this.jointById) {
-      if (joint.bodyA === body || joint.bodyB === body) this.jointById.delete(jointId);
+      if (joint.bodyA === body || joint.bodyB === body) {
+        this.jointById.delete(jointId);
+        this.jointList.splice(this.jointList.indexOf(joint), 1);
+      }
     }
-    this.mirror.remove(body);
+    this.bodyList.splice(this.bodyList.indexOf(body), 1);
     this.bodyById.delete(id);
     this.idByBody.delete(body);
     this.stale.delete(id);
@@ -239,7 +251,7 @@ export class WorkerWorld implements DrawingSource {
 
   /** Ids of the bodies, in the world's order. */
   get bodyIds(): BodyId[] {
-    return this.mirror.bodies.map((body) => this.idByBody.get(body)! as BodyId);
+    return this.bodyList.map((body) => this.idByBody.get(body)! as BodyId);
   }
 
   /** Adds a joint between bodies of this world (ids in place of bodies) and returns its id. */
@@ -248,7 +260,7 @@ export class WorkerWorld implements DrawingSource {
     const id = this.nextJointId;
     this.post({ type: 'addJoint', id, definition: posted });
     this.nextJointId++;
-    this.mirror.addJoint(joint);
+    this.jointList.push(joint);
     this.jointById.set(id, joint);
     this.changed();
     return id as JointId;
@@ -260,7 +272,7 @@ export class WorkerWorld implements DrawingSource {
     if (joint === undefined) throw new PhysicalError('id', `no joint ${String(id)} in this world.`);
     this.post({ type: 'removeJoint', id });
     this.jointById.delete(id);
-    if (joint.world !== null) this.mirror.removeJoint(joint);
+    this.jointList.splice(this.jointList.indexOf(joint), 1);
   }
 
   /**
@@ -413,7 +425,7 @@ export class WorkerWorld implements DrawingSource {
 
   /** Gravity (m/s^2). */
   get gravity(): Readonly<Vec2> {
-    return this.mirror.gravity;
+    return this.settings.gravity;
   }
 
   set gravity(value: Vec2Like) {
@@ -422,7 +434,7 @@ export class WorkerWorld implements DrawingSource {
 
   /** Sub-steps per step. */
   get subSteps(): number {
-    return this.mirror.subSteps;
+    return this.settings.subSteps;
   }
 
   set subSteps(value: number) {
@@ -431,7 +443,7 @@ export class WorkerWorld implements DrawingSource {
 
   /** Restitution threshold (m/s). */
   get restitutionThreshold(): number {
-    return this.mirror.restitutionThreshold;
+    return this.settings.restitutionThreshold;
   }
 
   set restitutionThreshold(value: number) {
@@ -440,7 +452,7 @@ export class WorkerWorld implements DrawingSource {
 
   /** Whether resting bodies sleep. */
   get enableSleep(): boolean {
-    return this.mirror.enableSleep;
+    return this.settings.enableSleep;
   }
 
   set enableSleep(value: boolean) {
@@ -456,7 +468,7 @@ export class WorkerWorld implements DrawingSource {
    */
   step(dt: number = 1 / 60): void {
     // The engine's own rule (range, and 0 is no step), thrown here rather than in the worker.
-    this.checker.step(dt);
+    checkTimeStep(dt);
     if (dt === 0) return;
     this.requestSteps(dt, 1);
   }
@@ -481,7 +493,7 @@ export class WorkerWorld implements DrawingSource {
       );
     }
     const dt = 1 / stepsPerSecond;
-    this.checker.step(dt);
+    checkTimeStep(dt);
     let last = -1;
     let debt = 0;
     let handle = 0;
@@ -576,7 +588,7 @@ export class WorkerWorld implements DrawingSource {
   rayCast(from: Vec2Like, to: Vec2Like): Promise<WorkerRayCastHit | null> {
     const a = plainVector(from) as Vec2Like;
     const b = plainVector(to) as Vec2Like;
-    this.mirror.rayCast(a, b); // checks the points
+    checkRay(a, b);
     return this.ask({ kind: 'rayCast', from: a, to: b }) as Promise<WorkerRayCastHit | null>;
   }
 
@@ -588,7 +600,7 @@ export class WorkerWorld implements DrawingSource {
       maxX: number;
       maxY: number;
     };
-    this.mirror.bodiesInAABB(copy);
+    checkQueryBox(copy);
     const { minX, minY, maxX, maxY } = copy;
     return this.ask({ kind: 'bodiesInAABB', box: { minX, minY, maxX, maxY } }) as Promise<BodyId[]>;
   }
@@ -641,18 +653,18 @@ export class WorkerWorld implements DrawingSource {
   get bodies(): readonly Body[] {
     // Not synced: the canvas draws them at `remote.poseOf`, and syncing 2,000 copies each frame
     // would cost the main thread what the worker saves it.
-    return this.mirror.bodies;
+    return this.bodyList;
   }
 
   /** The page copies of the joints (for `<physical-canvas>`). */
   get joints(): readonly Joint[] {
-    return this.mirror.joints;
+    return this.jointList;
   }
 
   /** The page copy under a world point (m), or null (for `<physical-canvas>`'s hit-testing). */
   bodyAt(point: Vec2Like): Body | null {
     this.syncCopies();
-    return this.mirror.bodyAt(point);
+    return bodyAtPoint(this.bodyList, point);
   }
 
   /** Contacts are not streamed: visits none. */
@@ -718,18 +730,11 @@ export class WorkerWorld implements DrawingSource {
     this.emit('wake');
   }
 
-  /** Checks a setting on the page's world (the engine's own error), then posts what it holds. */
+  /** Checks a setting with the engine's own rule (its error), posts what it holds, keeps it. */
   private setting(name: WorldSetting, value: unknown): void {
-    const mirror = this.mirror as unknown as Record<string, unknown>;
-    const before = mirror[name];
-    mirror[name] = value;
-    const held = name === 'gravity' ? plainVector(this.mirror.gravity) : mirror[name];
-    try {
-      this.post({ type: 'setting', name, value: held });
-    } catch (error) {
-      mirror[name] = name === 'gravity' ? plainVector(before) : before;
-      throw error;
-    }
+    const held = checkWorldSetting(name, value);
+    this.post({ type: 'setting', name, value: held });
+    (this.settings as unknown as Record<string, unknown>)[name] = held;
     this.changed();
   }
 

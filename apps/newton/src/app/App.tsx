@@ -26,6 +26,8 @@ import { SCREENS, screenFromHash, type ScreenId } from './screens.ts';
 import { theme } from './theme.ts';
 
 const LOCALE_KEY = 'newton.locale';
+/** The other screens' code is fetched this long after the start if nothing was tapped (ms). */
+const PREFETCH_AFTER_MS = 8000;
 
 // Each screen is its own chunk, fetched the first time it is shown: the first screen paints
 // without the code of the other two.
@@ -89,14 +91,34 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
     setVisited((old) => (old.has(screen) ? old : new Set([...old, screen])));
   }, [screen]);
   const current = SCREENS.find((item) => item.id === screen)!;
-  // Once the first screen is up, fetch the others' code while idle: switching is then instant.
+  // Once the learner has used the first screen (or after a while), fetch the others' code while
+  // idle: switching is then instant. Not sooner: on a slow phone, parsing two screens' code
+  // while the first one starts delayed its first tap.
   useEffect(() => {
-    const id = setTimeout(() => {
-      void import('../screens/inertia/InertiaScreen.tsx');
-      void import('../screens/forces/ForcesScreen.tsx');
-      void import('../screens/reactions/ReactionsScreen.tsx');
-    }, 2500);
-    return () => clearTimeout(id);
+    let idle = 0;
+    const prefetch = (): void => {
+      stop();
+      const load = (): void => {
+        void import('../screens/inertia/InertiaScreen.tsx');
+        void import('../screens/forces/ForcesScreen.tsx');
+        void import('../screens/reactions/ReactionsScreen.tsx');
+      };
+      if (typeof requestIdleCallback === 'function')
+        idle = requestIdleCallback(load, { timeout: 3000 });
+      else load();
+    };
+    const timer = setTimeout(prefetch, PREFETCH_AFTER_MS);
+    const stop = (): void => {
+      clearTimeout(timer);
+      window.removeEventListener('pointerup', prefetch);
+      window.removeEventListener('keyup', prefetch);
+    };
+    window.addEventListener('pointerup', prefetch);
+    window.addEventListener('keyup', prefetch);
+    return () => {
+      stop();
+      if (idle !== 0) cancelIdleCallback(idle);
+    };
   }, []);
 
   useEffect(() => {

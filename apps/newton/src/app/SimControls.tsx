@@ -1,12 +1,16 @@
 import { Box, IconButton, ToggleButton, Tooltip, Typography } from '@mui/material';
 import { useI18n } from '../i18n/i18n.tsx';
+import { Live } from './Live.tsx';
 import { PauseIcon, PlayIcon, ResetAllIcon, ResetIcon, SlowIcon, StepIcon } from './icons.tsx';
 
 export interface SimControlsProps {
   readonly paused: boolean;
   readonly slow: boolean;
-  /** Simulated time (s). */
-  readonly time: number;
+  /**
+   * Simulated time (s); as a function, the time's text re-renders on its own while playing (the
+   * screen around it need not).
+   */
+  readonly time: number | (() => number);
   readonly onTogglePlay: () => void;
   readonly onStep: () => void;
   readonly onToggleSlow: () => void;
@@ -19,7 +23,7 @@ export interface SimControlsProps {
 /** Play / pause, single step, slow motion and reset, with the simulated time. */
 export function SimControls(props: SimControlsProps) {
   const { t, unit } = useI18n();
-  const { paused, slow } = props;
+  const { paused, slow, time } = props;
   const playLabel = paused ? t('controls.play') : t('controls.pause');
   return (
     <Box
@@ -99,7 +103,13 @@ export function SimControls(props: SimControlsProps) {
         sx={{ ml: 'auto', fontVariantNumeric: 'tabular-nums', color: 'text.secondary', pr: 1 }}
         data-readout="time"
       >
-        {t('controls.time', { value: unit(props.time, 's', 2, 2) })}
+        {typeof time === 'number' ? (
+          t('controls.time', { value: unit(time, 's', 2, 2) })
+        ) : (
+          <Live active={!paused} watch={() => String(time())}>
+            {() => t('controls.time', { value: unit(time(), 's', 2, 2) })}
+          </Live>
+        )}
       </Typography>
     </Box>
   );

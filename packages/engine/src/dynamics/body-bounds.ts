@@ -2,6 +2,7 @@ import type { BroadPhase } from '../collision/broad-phase.ts';
 import { AABB_MARGIN, SPECULATIVE_DISTANCE } from '../core/constants.ts';
 import { AABB } from '../geometry/aabb.ts';
 import type { Body } from './body.ts';
+import { B_MAX_EXTENT, B_VX, B_VY, B_W } from './body-memory.ts';
 import type { Shape } from './shape.ts';
 
 /**
@@ -57,11 +58,14 @@ export class BodyBounds {
 
   private measureMotion(body: Body): void {
     const dt = this.dt;
-    const spin = Math.abs(body.angularVelocityValue) * body.maxExtent * dt;
+    // The body's numbers in place (body-memory.ts).
+    const d = body.store.data;
+    const b = body.base;
+    const spin = Math.abs(d[b + B_W]!) * d[b + B_MAX_EXTENT]! * dt;
     let grow = SPECULATIVE_DISTANCE;
     if (spin > AABB_MARGIN) grow += spin;
-    let dx = body.velocityX * dt;
-    let dy = body.velocityY * dt;
+    let dx = d[b + B_VX]! * dt;
+    let dy = d[b + B_VY]! * dt;
     // A body that moves farther in a step than the fat margin gets its box stretched along its
     // velocity, so the pair exists (and its speculative contact can stop the motion) before it
     // reaches what it will hit; stretching slower bodies would only make idle pairs.

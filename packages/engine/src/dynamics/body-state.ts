@@ -7,6 +7,12 @@
 //   3 deltaAngle            rotation this step, exact sum of h w (rad)
 //   4 dpx, 5 dpy            translation of the centre of mass this step (m)
 //   6 qc, 7 qs              rotation this step as cosine/sine (for the contact anchors)
+// After the states, MARK_STRIDE numbers per state (from BodyStates.marks):
+//   0 mark                  1 while an impact of this sub-step has reached the body (the contact
+//                           kernel's impacts, wasm/contact-kernel.ts), else 0
+//   1 kvx, 2 kvy, 3 kw      the velocity change of this sub-step's integration (gravity, forces,
+//                           damping), so that a bounce reverses the approach at the moment of
+//                           contact, not the sub-step's average (the kernel's solve)
 
 import type { SolverMemory } from './solver-memory.ts';
 
@@ -33,6 +39,12 @@ export const DP_Y = 5;
 export const Q_C = 6;
 export const Q_S = 7;
 
+export const MARK_STRIDE = 4;
+export const MARK = 0;
+export const KICK_VX = 1;
+export const KICK_VY = 2;
+export const KICK_W = 3;
+
 /** Growable array of solver body states, in the solver's memory (solver-memory.ts). */
 export class BodyStates {
   constructor(private readonly memory: SolverMemory) {}
@@ -42,11 +54,27 @@ export class BodyStates {
     return this.memory.states;
   }
 
-  /** Makes room for `count` states plus the identity slot, and resets the identity slot. */
+  /** Where the impact marks and sub-step velocity changes start in `data` (see the layout above). */
+  marks = 0;
+
+  /**
+   * Makes room for `count` states plus the identity slot and their impact marks and velocity
+   * changes, resets the identity slot and clears the marks and changes.
+   */
   reserve(count: number): Float64Array {
-    const d = this.memory.reserveStates((count + 1) * STATE_STRIDE);
+    const d = this.memory.reserveStates(stateDoubles(count));
     d.fill(0, 0, STATE_STRIDE);
     d[Q_C] = 1;
+    this.marks = (count + 1) * STATE_STRIDE;
+    d.fill(0, this.marks, this.marks + (count + 1) * MARK_STRIDE);
     return d;
   }
+}
+
+/**
+ * The state numbers of `count` bodies: the identity slot, the states, and a mark and velocity
+ * change per state.
+ */
+export function stateDoubles(count: number): number {
+  return (count + 1) * (STATE_STRIDE + MARK_STRIDE);
 }

@@ -24,9 +24,48 @@ import { computeCapsuleMass } from '../geometry/capsule.ts';
 import { computeCircleMass } from '../geometry/circle.ts';
 import { MassData } from '../geometry/mass-data.ts';
 import { computePolygonMass } from '../geometry/polygon.ts';
-import { Transform } from '../math/transform.ts';
+import type { BodyStore } from './body-memory.ts';
+import {
+  BODY_STRIDE,
+  createLocalBodyStore,
+  B_ANGLE,
+  B_ANGLE0,
+  B_ANGULAR_DAMPING,
+  B_CENTER0_X,
+  B_CENTER0_Y,
+  B_CENTER_X,
+  B_CENTER_Y,
+  B_DRAG,
+  B_FORCE_X,
+  B_FORCE_Y,
+  B_GRAVITY_SCALE,
+  B_INERTIA,
+  B_INERTIA_OVERRIDE,
+  B_INV_INERTIA,
+  B_INV_MASS,
+  B_LINEAR_DAMPING,
+  B_LOCAL_CENTER_X,
+  B_LOCAL_CENTER_Y,
+  B_MASS,
+  B_MASS_OVERRIDE,
+  B_MAX_EXTENT,
+  B_MIN_EXTENT,
+  B_ORIGIN_REACH,
+  B_SLEEP_TIME,
+  B_TORQUE,
+  B_VX,
+  B_VY,
+  B_W,
+  B_AWAKE,
+  B_FLAGS,
+  FLAG_FIXED_ROTATION,
+  FLAG_ALLOW_SLEEP,
+  FLAG_BULLET,
+} from './body-memory.ts';
+import { BodyTransform } from './body-transform.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { World } from '../world/world.ts';
+import type { BodyHost } from './body-host.ts';
 import type { Contact } from './contact.ts';
 import { BODY_EVENT_NAMES, type BodyEvents } from './events.ts';
 import { Force, validateDuration, type ForceOptions, type TorqueOptions } from './force.ts';
@@ -153,81 +192,284 @@ export class Body<UserData = unknown> {
   userData: UserData | undefined;
 
   // ---- Internal state. Fields marked @internal are stripped from the published types. ----
-  // Every numeric field starts as a number where it is declared: a field declared without a
-  // value starts as undefined, V8 then stores it as a generic value, and each later write of a
-  // fractional number allocates (the step must allocate nothing). Real-valued fields start as
-  // -0, a double: V8 keeps a field first written with a small integer as one, and the first
-  // fraction written to it later (the first push in a world without gravity, the first force,
-  // the first body to rest) changes the hidden class of every body, throwing away all compiled
-  // code that reads bodies: a stutter, and garbage, until it is compiled again. The same holds
-  // for the engine's other hot classes (Transform, AABB, Manifold, the joints...). Every zero an
-  // app can read is written as +0 before it can see it (test/api/zeros-read-as-positive-zero).
-  /** @internal Transform of the body origin. */
-  readonly transform: Transform = new Transform();
+  // The body's numbers (pose, velocities, mass properties, settings, flags, sleep) are not
+  // fields: they live in the body memory (body-memory.ts), in the world's solver memory while the
+  // body is in a world, and the accessors below read and write them there. They start as -0, as
+  // the fields they replace did; every zero an app can read is written as +0 before it can see
+  // it (test/api/zeros-read-as-positive-zero). The remaining fields start as a value of their
+  // final kind where declared, so V8 gives every body the same hidden class from the start.
+  /**
+   * @internal Where the body's numbers live (body-memory.ts): the world's body memory while in a
+   * world, else a store of its own. Read `store.data` at each access: the world's view is
+   * replaced when its memory moves.
+   */
+  store: BodyStore = createLocalBodyStore();
+  /** @internal The body's first index in `store.data` (world index times BODY_STRIDE). */
+  base = 0;
+  /** @internal Transform of the body origin: a view of the body's numbers. */
+  readonly transform: BodyTransform = new BodyTransform(this.store, 0);
   /** @internal Unwrapped rotation (rad). */
-  angleValue = -0;
+  get angleValue(): number {
+    return this.store.data[this.base + B_ANGLE]!;
+  }
+  /** @internal */
+  set angleValue(value: number) {
+    this.store.data[this.base + B_ANGLE] = value;
+  }
   /** @internal Centre of mass, world (m). */
-  centerX = -0;
+  get centerX(): number {
+    return this.store.data[this.base + B_CENTER_X]!;
+  }
   /** @internal */
-  centerY = -0;
+  set centerX(value: number) {
+    this.store.data[this.base + B_CENTER_X] = value;
+  }
+  /** @internal */
+  get centerY(): number {
+    return this.store.data[this.base + B_CENTER_Y]!;
+  }
+  /** @internal */
+  set centerY(value: number) {
+    this.store.data[this.base + B_CENTER_Y] = value;
+  }
   /** @internal Centre of mass, body-local (m). */
-  localCenterX = -0;
+  get localCenterX(): number {
+    return this.store.data[this.base + B_LOCAL_CENTER_X]!;
+  }
   /** @internal */
-  localCenterY = -0;
+  set localCenterX(value: number) {
+    this.store.data[this.base + B_LOCAL_CENTER_X] = value;
+  }
+  /** @internal */
+  get localCenterY(): number {
+    return this.store.data[this.base + B_LOCAL_CENTER_Y]!;
+  }
+  /** @internal */
+  set localCenterY(value: number) {
+    this.store.data[this.base + B_LOCAL_CENTER_Y] = value;
+  }
   /** @internal Centre of mass and angle at the start of the step, for continuous collision. */
-  center0X = -0;
+  get center0X(): number {
+    return this.store.data[this.base + B_CENTER0_X]!;
+  }
   /** @internal */
-  center0Y = -0;
+  set center0X(value: number) {
+    this.store.data[this.base + B_CENTER0_X] = value;
+  }
   /** @internal */
-  angle0 = -0;
+  get center0Y(): number {
+    return this.store.data[this.base + B_CENTER0_Y]!;
+  }
+  /** @internal */
+  set center0Y(value: number) {
+    this.store.data[this.base + B_CENTER0_Y] = value;
+  }
+  /** @internal */
+  get angle0(): number {
+    return this.store.data[this.base + B_ANGLE0]!;
+  }
+  /** @internal */
+  set angle0(value: number) {
+    this.store.data[this.base + B_ANGLE0] = value;
+  }
   /** @internal Velocity of the centre of mass (m/s) and angular velocity (rad/s). */
-  velocityX = -0;
+  get velocityX(): number {
+    return this.store.data[this.base + B_VX]!;
+  }
   /** @internal */
-  velocityY = -0;
+  set velocityX(value: number) {
+    this.store.data[this.base + B_VX] = value;
+  }
   /** @internal */
-  angularVelocityValue = -0;
+  get velocityY(): number {
+    return this.store.data[this.base + B_VY]!;
+  }
+  /** @internal */
+  set velocityY(value: number) {
+    this.store.data[this.base + B_VY] = value;
+  }
+  /** @internal */
+  get angularVelocityValue(): number {
+    return this.store.data[this.base + B_W]!;
+  }
+  /** @internal */
+  set angularVelocityValue(value: number) {
+    this.store.data[this.base + B_W] = value;
+  }
   /** @internal Mass properties. */
-  massValue = -0;
+  get massValue(): number {
+    return this.store.data[this.base + B_MASS]!;
+  }
   /** @internal */
-  invMass = -0;
+  set massValue(value: number) {
+    this.store.data[this.base + B_MASS] = value;
+  }
   /** @internal */
-  inertiaValue = -0;
+  get invMass(): number {
+    return this.store.data[this.base + B_INV_MASS]!;
+  }
   /** @internal */
-  invInertia = -0;
+  set invMass(value: number) {
+    this.store.data[this.base + B_INV_MASS] = value;
+  }
   /** @internal */
-  massOverride = -0;
+  get inertiaValue(): number {
+    return this.store.data[this.base + B_INERTIA]!;
+  }
   /** @internal */
-  inertiaOverride = -0;
+  set inertiaValue(value: number) {
+    this.store.data[this.base + B_INERTIA] = value;
+  }
+  /** @internal */
+  get invInertia(): number {
+    return this.store.data[this.base + B_INV_INERTIA]!;
+  }
+  /** @internal */
+  set invInertia(value: number) {
+    this.store.data[this.base + B_INV_INERTIA] = value;
+  }
+  /** @internal */
+  get massOverride(): number {
+    return this.store.data[this.base + B_MASS_OVERRIDE]!;
+  }
+  /** @internal */
+  set massOverride(value: number) {
+    this.store.data[this.base + B_MASS_OVERRIDE] = value;
+  }
+  /** @internal */
+  get inertiaOverride(): number {
+    return this.store.data[this.base + B_INERTIA_OVERRIDE]!;
+  }
+  /** @internal */
+  set inertiaOverride(value: number) {
+    this.store.data[this.base + B_INERTIA_OVERRIDE] = value;
+  }
   /** @internal Force and torque to apply this step (N, N m), gathered from `forces`. */
-  forceX = -0;
+  get forceX(): number {
+    return this.store.data[this.base + B_FORCE_X]!;
+  }
   /** @internal */
-  forceY = -0;
+  set forceX(value: number) {
+    this.store.data[this.base + B_FORCE_X] = value;
+  }
   /** @internal */
-  torqueValue = -0;
+  get forceY(): number {
+    return this.store.data[this.base + B_FORCE_Y]!;
+  }
   /** @internal */
-  gravityScaleValue = -0;
+  set forceY(value: number) {
+    this.store.data[this.base + B_FORCE_Y] = value;
+  }
   /** @internal */
-  linearDampingValue = -0;
+  get torqueValue(): number {
+    return this.store.data[this.base + B_TORQUE]!;
+  }
   /** @internal */
-  angularDampingValue = -0;
+  set torqueValue(value: number) {
+    this.store.data[this.base + B_TORQUE] = value;
+  }
   /** @internal */
-  dragValue = -0;
+  get gravityScaleValue(): number {
+    return this.store.data[this.base + B_GRAVITY_SCALE]!;
+  }
   /** @internal */
-  fixedRotationValue = false;
+  set gravityScaleValue(value: number) {
+    this.store.data[this.base + B_GRAVITY_SCALE] = value;
+  }
   /** @internal */
-  allowSleepValue = true;
+  get linearDampingValue(): number {
+    return this.store.data[this.base + B_LINEAR_DAMPING]!;
+  }
   /** @internal */
-  bulletValue = false;
+  set linearDampingValue(value: number) {
+    this.store.data[this.base + B_LINEAR_DAMPING] = value;
+  }
   /** @internal */
-  awake = true;
+  get angularDampingValue(): number {
+    return this.store.data[this.base + B_ANGULAR_DAMPING]!;
+  }
   /** @internal */
-  sleepTime = -0;
+  set angularDampingValue(value: number) {
+    this.store.data[this.base + B_ANGULAR_DAMPING] = value;
+  }
+  /** @internal */
+  get dragValue(): number {
+    return this.store.data[this.base + B_DRAG]!;
+  }
+  /** @internal */
+  set dragValue(value: number) {
+    this.store.data[this.base + B_DRAG] = value;
+  }
+  /** @internal */
+  get sleepTime(): number {
+    return this.store.data[this.base + B_SLEEP_TIME]!;
+  }
+  /** @internal */
+  set sleepTime(value: number) {
+    this.store.data[this.base + B_SLEEP_TIME] = value;
+  }
   /** @internal Largest and smallest distance from the centre of mass to the surface (m). */
-  maxExtent = -0;
+  get maxExtent(): number {
+    return this.store.data[this.base + B_MAX_EXTENT]!;
+  }
   /** @internal */
-  minExtent = -0;
+  set maxExtent(value: number) {
+    this.store.data[this.base + B_MAX_EXTENT] = value;
+  }
+  /** @internal */
+  get minExtent(): number {
+    return this.store.data[this.base + B_MIN_EXTENT]!;
+  }
+  /** @internal */
+  set minExtent(value: number) {
+    this.store.data[this.base + B_MIN_EXTENT] = value;
+  }
   /** @internal Largest distance from the body origin to the surface (m), for manifold reuse. */
-  originReach = -0;
+  get originReach(): number {
+    return this.store.data[this.base + B_ORIGIN_REACH]!;
+  }
+  /** @internal */
+  set originReach(value: number) {
+    this.store.data[this.base + B_ORIGIN_REACH] = value;
+  }
+  /** @internal */
+  get fixedRotationValue(): boolean {
+    return (this.store.data[this.base + B_FLAGS]! & FLAG_FIXED_ROTATION) !== 0;
+  }
+  /** @internal */
+  set fixedRotationValue(value: boolean) {
+    const d = this.store.data;
+    const i = this.base + B_FLAGS;
+    d[i] = value ? d[i]! | FLAG_FIXED_ROTATION : d[i]! & ~FLAG_FIXED_ROTATION;
+  }
+  /** @internal */
+  get allowSleepValue(): boolean {
+    return (this.store.data[this.base + B_FLAGS]! & FLAG_ALLOW_SLEEP) !== 0;
+  }
+  /** @internal */
+  set allowSleepValue(value: boolean) {
+    const d = this.store.data;
+    const i = this.base + B_FLAGS;
+    d[i] = value ? d[i]! | FLAG_ALLOW_SLEEP : d[i]! & ~FLAG_ALLOW_SLEEP;
+  }
+  /** @internal */
+  get bulletValue(): boolean {
+    return (this.store.data[this.base + B_FLAGS]! & FLAG_BULLET) !== 0;
+  }
+  /** @internal */
+  set bulletValue(value: boolean) {
+    const d = this.store.data;
+    const i = this.base + B_FLAGS;
+    d[i] = value ? d[i]! | FLAG_BULLET : d[i]! & ~FLAG_BULLET;
+  }
+  /** @internal Awake (static bodies never are). */
+  get awake(): boolean {
+    return this.store.data[this.base + B_AWAKE] !== 0;
+  }
+  /** @internal */
+  set awake(value: boolean) {
+    this.store.data[this.base + B_AWAKE] = value ? 1 : 0;
+  }
   /** @internal */
   readonly shapeList: Shape[] = [];
   /** @internal */
@@ -320,7 +562,7 @@ export class Body<UserData = unknown> {
     this.transform.x = value.x;
     this.transform.y = value.y;
     this.syncCenter();
-    this.worldRef?.bodyMoved(this);
+    this.host?.bodyMoved(this);
   }
 
   /** Rotation (rad), unwrapped (it keeps counting past 2 pi). Setting it wakes the body. */
@@ -332,7 +574,7 @@ export class Body<UserData = unknown> {
     this.angleValue = requireAngle('angle', value);
     this.transform.set(this.transform.x, this.transform.y, value);
     this.syncCenter();
-    this.worldRef?.bodyMoved(this);
+    this.host?.bodyMoved(this);
   }
 
   /** Centre of mass in world coordinates (m); a reused view, like {@link position}. */
@@ -528,7 +770,8 @@ export class Body<UserData = unknown> {
   /** Wakes the body and everything resting on it. Harmless on an awake or static body. */
   wake(): void {
     if (this.type === 'static') return;
-    if (this.worldRef !== null) this.worldRef.wakeBody(this);
+    const host = this.host;
+    if (host !== null) host.wakeBody(this);
     else {
       this.awake = true;
       this.sleepTime = 0;
@@ -538,7 +781,8 @@ export class Body<UserData = unknown> {
   /** Puts the body to sleep now (it stops until something wakes it). */
   sleep(): void {
     if (this.type === 'static') return;
-    if (this.worldRef !== null) this.worldRef.sleepBody(this);
+    const host = this.host;
+    if (host !== null) host.sleepBody(this);
     else this.awake = false;
   }
 
@@ -554,25 +798,25 @@ export class Body<UserData = unknown> {
    * per convex part: this returns the first, and {@link shapes} lists them all.
    */
   addShape(options: ShapeOptions): Shape {
-    this.worldRef?.requireUnlocked('addShape');
+    this.host?.requireUnlocked('addShape');
     const added = this.createShapes(options, 'shape');
     // Check, then change: the new mass is computed (and may be refused) before the shape joins.
     const mass = this.computeMass([...this.shapeList, ...added]);
     this.shapeList.push(...added);
     this.commitMass(mass);
-    for (const shape of added) this.worldRef?.shapeAdded(shape);
+    for (const shape of added) this.host?.shapeAdded(shape);
     this.wake();
     return added[0]!;
   }
 
   /** Removes one of the body's shapes; the mass is computed again. */
   removeShape(shape: Shape): void {
-    this.worldRef?.requireUnlocked('removeShape');
+    this.host?.requireUnlocked('removeShape');
     const index = this.shapeList.indexOf(shape);
     if (index < 0) throw new PhysicalError('shape', 'is not a shape of this body.');
     const remaining = this.shapeList.filter((s) => s !== shape);
     const mass = this.computeMass(remaining);
-    this.worldRef?.shapeRemoved(shape);
+    this.host?.shapeRemoved(shape);
     this.shapeList.splice(index, 1);
     this.commitMass(mass);
     this.wake();
@@ -699,6 +943,36 @@ export class Body<UserData = unknown> {
   }
 
   // ---------------------------------------------------------------- internals
+
+  /** @internal The world, seen through the narrow interface bodies and shapes report to. */
+  get host(): BodyHost | null {
+    return this.worldRef;
+  }
+
+  /**
+   * @internal Moves the body's numbers to index `index` of `store` (copying them there) and
+   * reads them there from now on: the one copy made when a body joins a world, and when a
+   * world's bodies shift down after a removal.
+   */
+  moveTo(store: BodyStore, index: number): void {
+    const base = index * BODY_STRIDE;
+    if (store === this.store) {
+      if (base !== this.base) store.data.copyWithin(base, this.base, this.base + BODY_STRIDE);
+    } else {
+      const from = this.store.data;
+      const to = store.data;
+      for (let i = 0; i < BODY_STRIDE; i++) to[base + i] = from[this.base + i]!;
+    }
+    this.store = store;
+    this.base = base;
+    this.transform.store = store;
+    this.transform.base = base;
+  }
+
+  /** @internal The body leaves its world's memory: its numbers move to a store of its own. */
+  detachMemory(): void {
+    this.moveTo(createLocalBodyStore(), 0);
+  }
 
   /** @internal Recomputes the centre of mass in world coordinates from the transform. */
   syncCenter(): void {

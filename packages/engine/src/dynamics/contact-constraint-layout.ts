@@ -55,7 +55,9 @@ export const TOTAL_NORMAL_IMPULSE = 11;
 export const TOTAL_TANGENT_IMPULSE = 12;
 // Impact state of a point: 0 none; 1 an impact found in this sub-step's solve pass, to bounce in
 // its relax pass; 2 bounced in this sub-step (the bounce is not warm-started); 3 bounced in an
-// earlier sub-step of this step; 4 no bounce in this step (pressed, see prepareContacts).
+// earlier sub-step of this step; 4 no bounce in this step (pressed, see prepareContacts); 5 an
+// impact of the impact round under way, 6 an impact of an earlier round of this sub-step (see
+// the kernel's impacts: not warm-started either, and not a bounce that makes a contact pressed).
 // A point may bounce in states 0, 1 and 3.
 export const IMPACT = 15;
 // The lever arms' cross products with the normal when they were set (rA x n, rB x n): a pass
@@ -75,5 +77,12 @@ export const STRIDE: number = POINTS + 2 * POINT_STRIDE;
 // a wall bounces in consecutive steps while overlapping, and holding it loses energy (4 % in
 // test/fidelity/heavy-on-light.test.ts's gas).
 export const PRESSED_AFTER_BOUNCING_STEPS = 3;
+// The impact rounds' modes (the kernel's impacts, run by Solver.impactRounds): start a round
+// (closing the last one's impacts), move the open impacts on towards their targets between joint
+// passes, open the relax pass's bounces for that, close all and clear the marks.
+export const IMPACT_ROUND = 0;
+export const IMPACT_CONTINUE = 1;
+export const IMPACT_OPEN = 2;
+export const IMPACT_CLOSE = 3;
 /** Largest condition number (max K_jj^2 / det K) of a two-point block solved as a block. */
 export const MAX_CONDITION_NUMBER = 1000;

@@ -103,6 +103,7 @@ export interface ContactKernel {
     states: number,
     count: number,
   ): void;
+  /** A solve (useBias 1) or relax (0) pass; returns its bounces. `marks`: the impact marks. */
   solve(
     constraints: number,
     bodies: number,
@@ -112,8 +113,23 @@ export interface ContactKernel {
     inverseH: number,
     maxPushSpeed: number,
     restitutionThreshold: number,
+    impactSpeed: number,
+    loadSpeed: number,
+    marks: number,
     useBias: number,
-  ): void;
+  ): number;
+  /** One pass of the impact rounds in `mode` (IMPACT_ROUND, ...); returns the impacts started. */
+  impacts(
+    constraints: number,
+    bodies: number,
+    order: number,
+    states: number,
+    count: number,
+    impactSpeed: number,
+    loadSpeed: number,
+    marks: number,
+    mode: number,
+  ): number;
 }
 
 const wasm = (globalThis as { WebAssembly?: WasmApi }).WebAssembly;

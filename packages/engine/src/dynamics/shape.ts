@@ -239,9 +239,9 @@ export class Shape {
 
   set filter(value: FilterOptions) {
     const filter = resolveFilter('filter', value);
-    this.body.worldRef?.requireUnlocked('filter');
+    this.body.host?.requireUnlocked('filter');
     this.setFilter(filter);
-    this.body.worldRef?.shapeFilterChanged(this);
+    this.body.host?.shapeFilterChanged(this);
   }
 
   /** Whether this shape and `other` pass each other's filters (sensors aside). */

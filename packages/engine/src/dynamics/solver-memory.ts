@@ -1,6 +1,8 @@
+import { BODY_STRIDE, BodyStore } from './body-memory.ts';
 import { createContactKernel, type ContactKernel, type WasmMemory } from './contact-kernel.ts';
 
-// The solver's hot arrays in one block of memory: the body states and the body table
+// The world's hot arrays in one block of memory: the bodies' own numbers (body-memory.ts, the one
+// copy the Body handles read and write), the body states and the body table
 // (body-state.ts), the contact data with each slot's bodies (contact-data.ts), and the contact
 // constraints with their body offsets, visiting order, source slots and circle pairs
 // (contact-solver.ts). The contact kernel (contact-kernel.ts) reads them at the regions' byte
@@ -29,9 +31,11 @@ export const CONTACT_DATA = 6;
 export const CONTACT_BODIES = 7;
 /** The body table: doubles. */
 export const BODY_TABLE = 8;
-const REGIONS = 9;
+/** Every body's numbers, by world index (body-memory.ts): doubles. */
+export const BODIES = 9;
+const REGIONS = 10;
 /** Bytes per element of each region. */
-const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8];
+const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8];
 
 /**
  * @internal When worlds move to the WebAssembly kernel: at this many contacts in a step
@@ -50,6 +54,11 @@ export class SolverMemory {
   contactData: Float64Array = new Float64Array(0);
   contactBodies: Int32Array = new Int32Array(0);
   bodyTable: Float64Array = new Float64Array(0);
+  /**
+   * The bodies' numbers (body-memory.ts): the store every Body handle of the world reads through.
+   * Its `data` is this memory's BODIES region, replaced (with every other view) when it moves.
+   */
+  readonly bodyStore: BodyStore = new BodyStore(new Float64Array(0));
   /** Byte offset of each region, for the kernel. */
   readonly offsets: number[] = new Array<number>(REGIONS).fill(0);
   /** The contact passes over this memory: WebAssembly once it has moved there, else JavaScript. */
@@ -71,17 +80,19 @@ export class SolverMemory {
 
   private initialCapacities(): number[] {
     const initial = [64 * 8, 256 * this.constraintStride, 512, 256, 256, 256];
-    return initial.concat([256 * this.contactStride, 512, 64 * this.tableStride]);
+    return initial.concat([256 * this.contactStride, 512, 64 * this.tableStride, 64 * BODY_STRIDE]);
   }
 
   /**
-   * Shrinks back to the first sizes, keeping room for (and the numbers of) `contacts` contact
-   * slots: for a world that lost most of its bodies. Leaves the WebAssembly memory (which cannot
-   * shrink) for an ArrayBuffer; a later step with many contacts moves back to the kernel.
+   * Shrinks back to the first sizes, keeping room for (and the numbers of) `bodies` bodies and
+   * `contacts` contact slots: for a world that lost most of its bodies. Leaves the WebAssembly
+   * memory (which cannot shrink) for an ArrayBuffer; a later step with many contacts moves back
+   * to the kernel.
    */
-  shrink(contacts: number): void {
+  shrink(bodies: number, contacts: number): void {
     const wanted = this.initialCapacities();
     this.sizeContacts(wanted, contacts);
+    wanted[BODIES] = grown(wanted[BODIES]!, bodies * BODY_STRIDE);
     const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
@@ -114,6 +125,14 @@ export class SolverMemory {
     const wanted = this.capacities.slice();
     this.sizeContacts(wanted, count);
     this.layout(wanted, this.wasm !== null);
+  }
+
+  /**
+   * Makes room for `count` bodies' numbers (body-memory.ts), keeping them; replaces every view
+   * when it grows (never inside a step: bodies join between steps).
+   */
+  reserveBodies(count: number): void {
+    this.reserve(BODIES, count * BODY_STRIDE);
   }
 
   /** Makes room for `count` bodies in the body table. */
@@ -238,6 +257,7 @@ export class SolverMemory {
     this.contactData = f64(CONTACT_DATA);
     this.contactBodies = i32(CONTACT_BODIES);
     this.bodyTable = f64(BODY_TABLE);
+    this.bodyStore.data = f64(BODIES);
   }
 }
 

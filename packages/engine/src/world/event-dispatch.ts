@@ -139,8 +139,7 @@ export class EventDispatch {
       deliver(worldListeners, sensorListeners, visitorListeners, event, sensorBody, visitorBody);
     }
     // The reused event keeps no body reachable once delivered (a removed one, with its userData).
-    event.sensorShape = event.visitorShape = null as unknown as Shape;
-    event.sensorBody = event.visitorBody = null as unknown as Body;
+    forgetSensorBodies(event);
   }
 
   private emitContact(type: 'contactBegin' | 'contactEnd', shapeA: Shape, shapeB: Shape): void {
@@ -161,8 +160,7 @@ export class EventDispatch {
     } else {
       deliver(worldListeners, listenersA, listenersB, event, bodyA, bodyB);
     }
-    event.shapeA = event.shapeB = null as unknown as Shape;
-    event.bodyA = event.bodyB = null as unknown as Body;
+    forgetBodies(event);
   }
 
   /** An end: every world listener, then each body's own while the body is in the world. */
@@ -264,10 +262,19 @@ export class EventDispatch {
   }
 }
 
-/** The reused collision event keeps no body reachable between steps. */
-export function forgetBodies(event: CollisionEventData): void {
+/**
+ * A reused collision or contact event keeps no body reachable once delivered (a removed one, with
+ * its userData), nor between steps.
+ */
+export function forgetBodies(event: CollisionEventData | ContactEventData): void {
   event.shapeA = event.shapeB = null as unknown as Shape;
   event.bodyA = event.bodyB = null as unknown as Body;
+}
+
+/** The same for the reused sensor event. */
+function forgetSensorBodies(event: SensorEventData): void {
+  event.sensorShape = event.visitorShape = null as unknown as Shape;
+  event.sensorBody = event.visitorBody = null as unknown as Body;
 }
 
 /** A begin, collision or move: world listeners, then each body's, while neither is queued out. */

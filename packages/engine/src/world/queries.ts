@@ -1,13 +1,14 @@
 import type { BroadPhase } from '../collision/broad-phase.ts';
 import { AABB, aabbOverlaps } from '../geometry/aabb.ts';
-import { circleContainsPoint, rayCastCircle } from '../geometry/circle.ts';
-import { capsuleContainsPoint, rayCastCapsule } from '../geometry/capsule.ts';
-import { polygonContainsPoint, rayCastPolygon } from '../geometry/polygon.ts';
+import { rayCastCircle } from '../geometry/circle.ts';
+import { rayCastCapsule } from '../geometry/capsule.ts';
+import { rayCastPolygon } from '../geometry/polygon.ts';
 import { RayHit, RayInput } from '../geometry/ray.ts';
 import { rayCastSegment } from '../geometry/segment.ts';
 import type { Vec2 } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
 import type { Shape } from '../dynamics/shape.ts';
+import { shapeContainsPoint } from './body-at-point.ts';
 
 /** The first shape a ray hits. */
 export interface RayCastHit {
@@ -96,14 +97,7 @@ export class WorldQueries {
   private readonly pointCallback = (_proxyKey: number, shapeId: number): boolean => {
     const shape = this.shapes[shapeId];
     if (shape === null || shape === undefined) return true;
-    const g = shape.geometry;
-    const xf = shape.body.transform;
-    const inside =
-      g.kind === 'circle'
-        ? circleContainsPoint(g, xf, this.pointX, this.pointY)
-        : g.kind === 'polygon'
-          ? polygonContainsPoint(g, xf, this.pointX, this.pointY)
-          : g.kind === 'capsule' && capsuleContainsPoint(g, xf, this.pointX, this.pointY);
+    const inside = shapeContainsPoint(shape, this.pointX, this.pointY);
     // Prefer the body added last: it is drawn on top.
     if (inside && (this.best === null || shape.body.worldIndex > this.best.body.worldIndex)) {
       this.best = shape;

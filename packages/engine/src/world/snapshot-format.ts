@@ -52,6 +52,8 @@ export interface WorldInternals {
   readonly shapesById: (Shape | null)[];
   readonly shapeTable: ShapeTable;
   readonly freeShapeIds: number[];
+  /** Moves a loaded body's numbers into the world's body memory at world index `index`. */
+  placeBody(body: Body, index: number): void;
   nextBodyId: number;
   stepCount: number;
   lastStep: number;

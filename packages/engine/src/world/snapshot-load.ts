@@ -136,6 +136,7 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
     });
     body.worldRef = w.world;
     body.worldIndex = i;
+    w.placeBody(body, i);
     body.removalPending = false;
     body.solverIndex = 0;
     w.bodies.push(body);

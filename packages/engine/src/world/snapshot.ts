@@ -30,12 +30,7 @@ import { World } from './world.ts';
 // shapes, forces), joint-snapshot.ts (joints), snapshot-values.ts (numbers and checked readers).
 
 export type { SnapshotNumber, SnapshotValue } from './snapshot-values.ts';
-export {
-  SNAPSHOT_FORMAT,
-  SNAPSHOT_VERSION,
-  type WorldInternals,
-  type WorldSnapshot,
-} from './snapshot-format.ts';
+export { SNAPSHOT_FORMAT, SNAPSHOT_VERSION, type WorldSnapshot } from './snapshot-format.ts';
 
 /**
  * Saves everything that decides the world's future as plain, JSON-compatible data: restoring it

@@ -1,17 +1,6 @@
 import { PhysicalError } from '../core/errors.ts';
 import { callAll, Listeners } from '../core/listeners.ts';
-import {
-  describeValue,
-  MAX_ACCELERATION,
-  MAX_TIME_STEP,
-  MIN_TIME_STEP,
-  requireBoolean,
-  requireCoordinate,
-  requireFunction,
-  requireObject,
-  requireRange,
-  requireVector,
-} from '../core/validate.ts';
+import { describeValue, requireFunction, requireVector } from '../core/validate.ts';
 import { BroadPhase, type ProxyType } from '../collision/broad-phase.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
@@ -32,17 +21,16 @@ import { ShapeTable } from '../dynamics/shape-table.ts';
 import { Solver } from '../dynamics/solver.ts';
 import { EventDispatch, forgetBodies } from './event-dispatch.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
-import type { WorldInternals } from './snapshot.ts';
+import type { WorldInternals } from './snapshot-format.ts';
 import { ShapeQueries, type QueryPose, type ShapeCastHit } from './shape-queries.ts';
 import {
-  requireRestitutionThreshold,
   resolveKernel,
   resolveWorldOptions,
-  validateSubSteps,
   type ResolvedWorldOptions,
   type WorldOptions,
 } from './world-options.ts';
 import { SizeWarning } from './size-warning.ts';
+import { checkQueryBox, checkRay, checkTimeStep, checkWorldSetting } from './world-checks.ts';
 
 /** Events of a world: a body's events for every body, plus bodies added, removed and woken. */
 export type WorldEvents = BodyEvents & WorldOnlyEvents;
@@ -59,6 +47,9 @@ const PROXY_TYPE: Record<Body['type'], ProxyType> = { static: 0, kinematic: 1, d
  * const ball = world.add(particle({ position: { x: 5, y: 0 }, radius: 0.25 }));
  * for (let i = 0; i < 60; i++) world.step(1 / 60);
  */
+// World is the BodyHost of its bodies (`Body.host` returns it as one, which the compiler checks);
+// not declared with `implements`, because the host's methods are internal and leave the
+// published types.
 export class World {
   private readonly settings: ResolvedWorldOptions;
   private readonly bodyList: Body[] = [];
@@ -125,7 +116,7 @@ export class World {
   }
 
   set gravity(value: Vec2Like) {
-    requireVector('gravity', value, MAX_ACCELERATION);
+    checkWorldSetting('gravity', value);
     if (value.x === this.settings.gravityX && value.y === this.settings.gravityY) return;
     this.settings.gravityX = value.x;
     this.settings.gravityY = value.y;
@@ -138,7 +129,7 @@ export class World {
   }
 
   set subSteps(value: number) {
-    this.settings.subSteps = validateSubSteps(value);
+    this.settings.subSteps = checkWorldSetting('subSteps', value) as number;
   }
 
   /** Approach speed (m/s) below which collisions do not bounce; 0 for exact restitution. */
@@ -147,7 +138,7 @@ export class World {
   }
 
   set restitutionThreshold(value: number) {
-    this.settings.restitutionThreshold = requireRestitutionThreshold(value);
+    this.settings.restitutionThreshold = checkWorldSetting('restitutionThreshold', value) as number;
   }
 
   /** Whether resting bodies fall asleep. Turning it off wakes every body. */
@@ -156,7 +147,7 @@ export class World {
   }
 
   set enableSleep(value: boolean) {
-    this.settings.enableSleep = requireBoolean('enableSleep', value);
+    this.settings.enableSleep = checkWorldSetting('enableSleep', value) as boolean;
     if (!value) for (const body of this.bodyList) this.islands.wake(body);
   }
 
@@ -367,23 +358,18 @@ export class World {
         'cannot be called while the world is stepping (from a listener).',
       );
     }
-    requireRange('dt', dt, 0, MAX_TIME_STEP, 's');
+    checkTimeStep(dt);
     if (dt === 0) return;
-    if (dt < MIN_TIME_STEP) {
-      throw new PhysicalError(
-        'dt',
-        `must be 0 or from ${MIN_TIME_STEP} to ${MAX_TIME_STEP} s, got ${dt}.`,
-      );
-    }
     this.locked = true;
     this.holdsReferences = true;
     let thrown: Thrown | null = null;
     try {
+      this.contactManager.reservePairs(this.shapesById.length);
       this.broadPhase.updatePairs(this.onPair);
       // Room for the whole step in one move of the solver memory, then the new contacts.
       this.solver.reserve(this.bodyList.length, this.contactManager.countWithPending);
       this.contactManager.createPending();
-      this.contactManager.collide(dt, this.bodyList);
+      this.contactManager.collide(dt);
       this.solver.gatherBodies(this.bodyList, dt);
       this.solver.solve(this.contactManager.contacts.length, this.settings, dt);
       // The step moves its bodies' proxies together: their trees only grow until the rebuild
@@ -429,18 +415,13 @@ export class World {
     readonly maxX: number;
     readonly maxY: number;
   }): Body[] {
-    requireObject('box', box, 'a box { minX, minY, maxX, maxY } in metres');
-    requireCoordinate('box.minX', box.minX);
-    requireCoordinate('box.minY', box.minY);
-    requireCoordinate('box.maxX', box.maxX);
-    requireCoordinate('box.maxY', box.maxY);
+    checkQueryBox(box);
     return this.queries.bodiesInAABB(box.minX, box.minY, box.maxX, box.maxY);
   }
 
   /** The first shape hit by the ray from `from` to `to` (m), or null. */
   rayCast(from: Vec2Like, to: Vec2Like): RayCastHit | null {
-    requireVector('from', from);
-    requireVector('to', to);
+    checkRay(from, to);
     return this.queries.rayCast(from.x, from.y, to.x, to.y);
   }
 
@@ -449,8 +430,7 @@ export class World {
    * world order), one hit per shape. Sensors are not hit. A new array each call.
    */
   rayCastAll(from: Vec2Like, to: Vec2Like): RayCastHit[] {
-    requireVector('from', from);
-    requireVector('to', to);
+    checkRay(from, to);
     return this.queries.rayCastAll(from.x, from.y, to.x, to.y);
   }
 
@@ -518,7 +498,7 @@ export class World {
     this.listeners.off(type, listener);
   }
 
-  // ---------------------------------------------------------------- hooks used by Body
+  // ---------------------------------------------------------------- hooks used by Body (BodyHost)
 
   /** @internal A body was moved by hand (teleport): refresh its boxes and wake it. */
   bodyMoved(body: Body): void {
@@ -589,6 +569,10 @@ export class World {
   private insertBody(body: Body): void {
     body.id = this.nextBodyId++;
     body.worldIndex = this.bodyList.length;
+    // The body's numbers join the world's body memory (body-memory.ts): their one copy from now on.
+    const memory = this.solver.memory;
+    memory.reserveBodies(body.worldIndex + 1);
+    body.moveTo(memory.bodyStore, body.worldIndex);
     body.removalPending = false;
     body.center0X = body.centerX;
     body.center0Y = body.centerY;
@@ -648,8 +632,15 @@ export class World {
     while (body.jointList.length > 0) this.extractJoint(body.jointList[body.jointList.length - 1]!);
     this.contactManager.destroyContactsOf(body);
     for (const shape of body.shapeList) this.destroyProxy(shape);
+    // The body's numbers leave with it; the bodies after it move down one place, numbers and all.
+    body.detachMemory();
     this.bodyList.splice(body.worldIndex, 1);
-    for (let i = body.worldIndex; i < this.bodyList.length; i++) this.bodyList[i]!.worldIndex = i;
+    const store = this.solver.memory.bodyStore;
+    for (let i = body.worldIndex; i < this.bodyList.length; i++) {
+      const moved = this.bodyList[i]!;
+      moved.worldIndex = i;
+      moved.moveTo(store, i);
+    }
     this.contactManager.bodyRemoved(body.worldIndex);
     body.worldRef = null;
     body.worldIndex = -1;
@@ -685,7 +676,7 @@ export class World {
     const count = this.bodyList.length;
     if (this.mostBodies < 1024 || 4 * count > this.mostBodies) return;
     this.mostBodies = count;
-    this.solver.shrink(this.contactManager.contacts.length);
+    this.solver.shrink(count, this.contactManager.contacts.length);
     this.contactManager.shrink();
   }
 
@@ -812,6 +803,11 @@ export class World {
       shapesById: this.shapesById,
       shapeTable: this.shapeTable,
       freeShapeIds: this.freeShapeIds,
+      placeBody(body: Body, index: number): void {
+        const memory = world.solver.memory;
+        memory.reserveBodies(index + 1);
+        body.moveTo(memory.bodyStore, index);
+      },
       get nextBodyId(): number {
         return world.nextBodyId;
       },

@@ -8,7 +8,9 @@ import { World, particle, wall } from '@physical/engine';
 //
 // Speeds are taken at the floor's level, by energy, so they do not depend on where in its step the
 // ball happened to touch: a ball at height d above its resting height moving at v reaches the floor
-// at sqrt(v^2 + 2 g d) (falling) and left it at sqrt(v^2 + 2 g d) (rising).
+// at sqrt(v^2 + 2 g d) (falling) and left it at sqrt(v^2 + 2 g d) (rising). The velocity a body
+// reports is its last sub-step's average (semi-implicit Euler moves it by h v); at the step's end
+// it moves at that plus g h / 2, and that is the v above.
 
 const DT = 1 / 60;
 const G = 9.81;
@@ -32,7 +34,7 @@ function drop(restitution: number): Bounce {
     particle({ position: { x: 0, y: restY - DROP }, radius: RADIUS, restitution }),
   );
   const speedAtFloor = (): number => {
-    const v = ball.linearVelocity.y;
+    const v = ball.linearVelocity.y + (G * DT) / (2 * world.subSteps);
     const height = restY - ball.position.y;
     return Math.sqrt(v * v + 2 * G * Math.max(height, 0));
   };

@@ -11,6 +11,7 @@ import { useTicker } from '../../app/use-ticker.ts';
 import { TimeSeries } from '../../graphs/time-series.ts';
 import { TimeSeriesGraph } from '../../graphs/TimeSeriesGraph.tsx';
 import { useI18n } from '../../i18n/i18n.tsx';
+import { Ruler } from '../../lab/Ruler.tsx';
 import {
   createForcesTrack,
   drawMysteryMass,
@@ -71,6 +72,8 @@ export function ForcesScreen({ active }: { active: boolean }) {
   const [editing, setEditing] = useState<number | null>(null);
   const forces = useRef<Force[]>([]);
   const canvases = useRef<(PhysicalCanvasElement | null)[]>([null, null]);
+  const [ruler, setRuler] = useState(false);
+  const rulerCanvas = useCallback(() => canvases.current[0] ?? null, []);
   const series = useMemo(
     () =>
       NAMES.map(() => ({
@@ -176,34 +179,37 @@ export function ForcesScreen({ active }: { active: boolean }) {
       active={active}
       law={t('forces.law')}
       stage={
-        <Box sx={{ flex: 1, display: 'flex', flexDirection: 'column', gap: 0.5, minWidth: 0 }}>
-          {tracks.map((track, index) => (
-            <TrackView
-              key={index}
-              ref={(element) => {
-                canvases.current[index] = element;
-              }}
-              name={NAMES[index]!}
-              track={track}
-              color={SQUARE_COLORS[index]!}
-              // The clock starts with the motion: the tracks do not step before Start.
-              paused={sim.paused || !started}
-              timeScale={sim.timeScale}
-              position={series[index]!.position}
-              velocity={series[index]!.velocity}
-              acceleration={series[index]!.acceleration}
-              force={series[index]!.force}
-              hiddenMass={index === 1 && mysteryMass !== null && !mysteryFound}
-              onEdit={() => {
-                // B's mass is the mystery: only A's force can be set.
-                if (index === 1 && mysteryMass !== null) announce(t('forces.mysteryLocked'));
-                else setEditing(index);
-              }}
-              onPauseChange={sim.setPaused}
-              forceOn={started && track.finishedAt === null}
-            />
-          ))}
-        </Box>
+        <>
+          <Box sx={{ flex: 1, display: 'flex', flexDirection: 'column', gap: 0.5, minWidth: 0 }}>
+            {tracks.map((track, index) => (
+              <TrackView
+                key={index}
+                ref={(element) => {
+                  canvases.current[index] = element;
+                }}
+                name={NAMES[index]!}
+                track={track}
+                color={SQUARE_COLORS[index]!}
+                // The clock starts with the motion: the tracks do not step before Start.
+                paused={sim.paused || !started}
+                timeScale={sim.timeScale}
+                position={series[index]!.position}
+                velocity={series[index]!.velocity}
+                acceleration={series[index]!.acceleration}
+                force={series[index]!.force}
+                hiddenMass={index === 1 && mysteryMass !== null && !mysteryFound}
+                onEdit={() => {
+                  // B's mass is the mystery: only A's force can be set.
+                  if (index === 1 && mysteryMass !== null) announce(t('forces.mysteryLocked'));
+                  else setEditing(index);
+                }}
+                onPauseChange={sim.setPaused}
+                forceOn={started && track.finishedAt === null}
+              />
+            ))}
+          </Box>
+          {ruler && <Ruler canvas={rulerCanvas} version={tracks} />}
+        </>
       }
       panel={
         <>
@@ -224,6 +230,17 @@ export function ForcesScreen({ active }: { active: boolean }) {
                 />
               }
               label={<Typography variant="body2">{t('forces.sameForce')}</Typography>}
+            />
+            <FormControlLabel
+              sx={{ minHeight: 48, mr: 0 }}
+              control={
+                <Switch
+                  checked={ruler}
+                  onChange={(_event, value) => setRuler(value)}
+                  slotProps={{ input: { 'data-control': 'show-ruler' } as object }}
+                />
+              }
+              label={<Typography variant="body2">{t('lab.showRuler')}</Typography>}
             />
           </Box>
           <MysteryMass
@@ -287,6 +304,7 @@ export function ForcesScreen({ active }: { active: boolean }) {
         },
         onReset: () => rebuild(settings, sameForce, mysteryMass),
         onResetAll: () => {
+          setRuler(false);
           setSettings(DEFAULTS);
           setSameForce(false);
           setMysteryMass(null);

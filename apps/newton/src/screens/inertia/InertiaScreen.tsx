@@ -30,6 +30,8 @@ import { clipToWalls } from '../../app/clip-to-walls.ts';
 import { ElasticitySlider } from '../../app/ElasticitySlider.tsx';
 import { Stopwatch } from '../../app/Stopwatch.tsx';
 import { useI18n } from '../../i18n/i18n.tsx';
+import { Ruler } from '../../lab/Ruler.tsx';
+import { PUSH_KEYS, pushFromDrag, pushFromKeys, startsPush } from './body-push.ts';
 import { directionName } from './direction-name.ts';
 import { ForceDialog } from './ForceDialog.tsx';
 import {
@@ -77,6 +79,9 @@ export function InertiaScreen({ active }: { active: boolean }) {
   const [magnitude, setMagnitude] = useState(() => presetNumber(preset, 'F', 1));
   const forceRef = useRef<Force | null>(null);
   const [applied, setApplied] = useState(false);
+  // A push by hand (a drag from the body, or held arrow keys): its force, while it lasts.
+  const pushRef = useRef<Force | null>(null);
+  const [push, setPushState] = useState<{ x: number; y: number } | null>(null);
   const [dialogOpen, setDialogOpen] = useState(false);
   const [elasticity, setElasticityState] = useState(() => presetNumber(preset, 'e', 1));
   const [surface, setSurfaceState] = useState<Surface>(() =>
@@ -85,7 +90,8 @@ export function InertiaScreen({ active }: { active: boolean }) {
   const settingsRef = useRef({ elasticity, surface });
   settingsRef.current = { elasticity, surface };
   // What the canvas shows besides the body: the arrows, and the values written beside them.
-  const [show, setShow] = useState({ vectors: true, values: true });
+  const [show, setShow] = useState({ vectors: true, values: true, ruler: false });
+  const rulerCanvas = useCallback(() => canvasRef.current, []);
   const showRef = useRef(show);
   showRef.current = show;
   useEffect(() => {
@@ -124,7 +130,9 @@ export function InertiaScreen({ active }: { active: boolean }) {
     const host = hostRef.current;
     const size = sceneSizeFor(host?.clientWidth ?? 0, host?.clientHeight ?? 0);
     forceRef.current = null;
+    pushRef.current = null;
     setApplied(false);
+    setPushState(null);
     speed.clear();
     setScene(createInertiaScene(size.width, size.height, settingsRef.current));
   }, [speed]);
@@ -135,7 +143,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
     setElasticityState(1);
     setSurfaceState('ice');
     settingsRef.current = { elasticity: 1, surface: 'ice' };
-    setShow({ vectors: true, values: true });
+    setShow({ vectors: true, values: true, ruler: false });
     build();
   }, [build]);
 
@@ -197,8 +205,18 @@ export function InertiaScreen({ active }: { active: boolean }) {
         );
       }
       // Every force on the body, its value beside it, and their sum (dashed colour of its own).
-      const applied = forceRef.current;
-      const forces = forcesOn(current, applied === null ? null : { x: applied.x, y: applied.y });
+      // The applied force: the constant one and a push by hand, summed.
+      const constant = forceRef.current;
+      const pushing = pushRef.current;
+      const forces = forcesOn(
+        current,
+        constant === null && pushing === null
+          ? null
+          : {
+              x: (constant?.x ?? 0) + (pushing?.x ?? 0),
+              y: (constant?.y ?? 0) + (pushing?.y ?? 0),
+            },
+      );
       const labels = labelsRef.current;
       const texts: { at: { x: number; y: number }; text: string; color: string }[] = [];
       const arrow = (
@@ -304,6 +322,109 @@ export function InertiaScreen({ active }: { active: boolean }) {
     canvasRef.current?.invalidate();
   };
 
+  /** Starts, changes or (with null) releases the push by hand. */
+  const setPush = useCallback(
+    (vector: { x: number; y: number } | null): void => {
+      const current = sceneRef.current;
+      if (current === null) return;
+      const old = pushRef.current;
+      if (vector === null || (vector.x === 0 && vector.y === 0)) {
+        if (old === null) return;
+        old.remove();
+        pushRef.current = null;
+        setPushState(null);
+        announce(t('inertia.pushReleased'));
+      } else {
+        if (old === null) {
+          pushRef.current = current.body.applyForce(vector, { duration: 'constant' });
+          current.body.wake();
+          announce(
+            t('inertia.pushStarted', {
+              force: unit(Math.hypot(vector.x, vector.y), 'N', 1),
+              angle: number(screenAngle(vector), 0),
+            }),
+          );
+        } else old.setVector(vector);
+        setPushState(vector);
+      }
+      canvasRef.current?.invalidate();
+    },
+    [announce, t, unit, number],
+  );
+
+  // A press on the body and a pull push it: the way the finger moved, harder the farther, until
+  // the finger lets go. Presses elsewhere go on to the canvas.
+  useEffect(() => {
+    const host = hostRef.current;
+    if (host === null || scene === null) return;
+    let pointer: number | null = null;
+    let start = { x: 0, y: 0 };
+    const toWorld = (event: PointerEvent) =>
+      canvasRef.current?.clientToWorld(event.clientX, event.clientY);
+    const onDown = (event: PointerEvent): void => {
+      const point = toWorld(event);
+      if (pointer !== null || point === undefined || !startsPush(scene.body.position, point))
+        return;
+      pointer = event.pointerId;
+      start = point;
+      host.setPointerCapture(event.pointerId);
+      event.preventDefault();
+      event.stopPropagation();
+    };
+    const onMove = (event: PointerEvent): void => {
+      if (event.pointerId !== pointer) return;
+      const point = toWorld(event);
+      event.stopPropagation();
+      if (point !== undefined) setPush(pushFromDrag(start, point));
+    };
+    const onUp = (event: PointerEvent): void => {
+      if (event.pointerId !== pointer) return;
+      event.stopPropagation();
+      pointer = null;
+      setPush(null);
+    };
+    host.addEventListener('pointerdown', onDown, true);
+    host.addEventListener('pointermove', onMove, true);
+    host.addEventListener('pointerup', onUp, true);
+    host.addEventListener('pointercancel', onUp, true);
+    return () => {
+      host.removeEventListener('pointerdown', onDown, true);
+      host.removeEventListener('pointermove', onMove, true);
+      host.removeEventListener('pointerup', onUp, true);
+      host.removeEventListener('pointercancel', onUp, true);
+    };
+  }, [scene, setPush]);
+
+  // The keyboard's push: arrow keys held on the focused canvas push that way until let go.
+  useEffect(() => {
+    const canvas = canvasRef.current;
+    if (canvas === null || scene === null) return;
+    const held = new Set<string>();
+    const onKeyDown = (event: KeyboardEvent): void => {
+      if (PUSH_KEYS[event.key] === undefined) return;
+      event.preventDefault();
+      if (held.has(event.key)) return;
+      held.add(event.key);
+      setPush(pushFromKeys(held));
+    };
+    const onKeyUp = (event: KeyboardEvent): void => {
+      if (!held.delete(event.key)) return;
+      setPush(held.size === 0 ? null : pushFromKeys(held));
+    };
+    const onBlur = (): void => {
+      held.clear();
+      setPush(null);
+    };
+    canvas.addEventListener('keydown', onKeyDown);
+    canvas.addEventListener('keyup', onKeyUp);
+    canvas.addEventListener('blur', onBlur);
+    return () => {
+      canvas.removeEventListener('keydown', onKeyDown);
+      canvas.removeEventListener('keyup', onKeyUp);
+      canvas.removeEventListener('blur', onBlur);
+    };
+  }, [scene, setPush]);
+
   const confirmForce = (newAngle: number, newMagnitude: number): void => {
     setAngle(newAngle);
     setMagnitude(newMagnitude);
@@ -317,8 +438,16 @@ export function InertiaScreen({ active }: { active: boolean }) {
   // Pressed against a wall the solver leaves a jitter of a few mm/s: that is rest.
   const moving = rawSpeed > REST_SPEED;
   const currentSpeed = moving ? rawSpeed : 0;
+  const constant = applied ? forceVector(angle, magnitude) : null;
   const forces =
-    scene === null ? null : forcesOn(scene, applied ? forceVector(angle, magnitude) : null);
+    scene === null
+      ? null
+      : forcesOn(
+          scene,
+          constant === null && push === null
+            ? null
+            : { x: (constant?.x ?? 0) + (push?.x ?? 0), y: (constant?.y ?? 0) + (push?.y ?? 0) },
+        );
   const frictionSize = forces === null ? 0 : Math.hypot(forces.friction.x, forces.friction.y);
   const wallSize = forces === null ? 0 : Math.hypot(forces.wall.x, forces.wall.y);
   const netSize = forces === null ? 0 : Math.hypot(forces.net.x, forces.net.y);
@@ -344,12 +473,24 @@ export function InertiaScreen({ active }: { active: boolean }) {
                 angle: number(screenAngle(velocity), 0),
               })
             : t('inertia.describeRest'),
-          force: applied
-            ? t('inertia.describeForce', {
-                force: unit(magnitude, 'N', 1),
-                angle: number(angle, 0),
-              })
-            : t('inertia.describeNoForce'),
+          force: [
+            applied
+              ? t('inertia.describeForce', {
+                  force: unit(magnitude, 'N', 1),
+                  angle: number(angle, 0),
+                })
+              : push === null
+                ? t('inertia.describeNoForce')
+                : '',
+            push === null
+              ? ''
+              : t('inertia.describePush', {
+                  force: unit(Math.hypot(push.x, push.y), 'N', 1),
+                  angle: number(screenAngle(push), 0),
+                }),
+          ]
+            .filter((part) => part !== '')
+            .join(' '),
         }) +
         ' ' +
         netDescription;
@@ -369,21 +510,29 @@ export function InertiaScreen({ active }: { active: boolean }) {
       active={active}
       law={t('inertia.law')}
       stage={
-        <Box ref={hostRef} sx={{ flex: 1, minWidth: 0, display: 'flex' }}>
-          <PhysicalCanvas
-            maxPixelRatio={CANVAS_PIXEL_RATIO}
-            ref={canvasRef}
-            paused={sim.paused}
-            world={scene?.world ?? null}
-            fit="contain"
-            viewBox={viewBox}
-            timeScale={sim.timeScale}
-            drawOverlay={drawOverlay}
-            onPauseChange={({ paused }) => sim.setPaused(paused)}
-            aria-label={description}
-            style={{ flex: 1, height: 'auto', minHeight: 0 }}
-          />
-        </Box>
+        <>
+          <Box
+            ref={hostRef}
+            // The finger pushes the body: the browser must not take the drag for a pan.
+            sx={{ flex: 1, minWidth: 0, display: 'flex', touchAction: 'none' }}
+          >
+            <PhysicalCanvas
+              drag={false}
+              maxPixelRatio={CANVAS_PIXEL_RATIO}
+              ref={canvasRef}
+              paused={sim.paused}
+              world={scene?.world ?? null}
+              fit="contain"
+              viewBox={viewBox}
+              timeScale={sim.timeScale}
+              drawOverlay={drawOverlay}
+              onPauseChange={({ paused }) => sim.setPaused(paused)}
+              aria-label={description}
+              style={{ flex: 1, height: 'auto', minHeight: 0 }}
+            />
+          </Box>
+          {show.ruler && <Ruler canvas={rulerCanvas} version={scene} />}
+        </>
       }
       panel={
         <>
@@ -411,7 +560,14 @@ export function InertiaScreen({ active }: { active: boolean }) {
               name="force"
               label={t('inertia.force')}
               value={
-                applied ? `${unit(magnitude, 'N', 1)}, ${number(angle, 0)}°` : t('inertia.forceOff')
+                push !== null
+                  ? t('inertia.pushValue', {
+                      force: unit(Math.hypot(push.x, push.y), 'N', 1),
+                      angle: number(screenAngle(push), 0),
+                    })
+                  : applied
+                    ? `${unit(magnitude, 'N', 1)}, ${number(angle, 0)}°`
+                    : t('inertia.forceOff')
               }
             />
             <Readout
@@ -466,7 +622,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
             </ToggleButtonGroup>
           </Box>
           <Box sx={{ display: 'flex', flexWrap: 'wrap', columnGap: 1, px: 0.5 }}>
-            {(['vectors', 'values'] as const).map((name) => (
+            {(['vectors', 'values', 'ruler'] as const).map((name) => (
               <FormControlLabel
                 key={name}
                 sx={{ minHeight: 48, mr: 0 }}

@@ -38,7 +38,7 @@ import { presetFor } from '../../app/presets.ts';
 import { Readout } from '../../app/Readout.tsx';
 import { SIDE_BY_SIDE, ScreenLayout } from '../../app/ScreenLayout.tsx';
 import { STEP, simulatedTime, useSimulation } from '../../app/use-simulation.ts';
-import { useTicker } from '../../app/use-ticker.ts';
+import { Live } from '../../app/Live.tsx';
 import { clipToWalls } from '../../app/clip-to-walls.ts';
 import { ElasticitySlider } from '../../app/ElasticitySlider.tsx';
 import { useI18n, type MessageKey } from '../../i18n/i18n.tsx';
@@ -256,11 +256,14 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   const [exportStatus, setExportStatus] = useState('');
   const { announce, region } = useAnnouncer('reactions');
   const [, rerender] = useReducer((count: number) => count + 1, 0);
-  useTicker(active && !sim.paused, 100, () => {
+  // The live readouts re-render on their own (Live), not the whole screen: with 50 particles a
+  // re-render of the screen ten times a second took most of a slow phone's frame time.
+  const live = active && !sim.paused;
+  const liveKey = useCallback((): string => {
     const current = sceneRef.current;
     if (current === null) return '';
     return `${current.world.steps}:${current.particles.size}:${current.world.awakeBodyCount}`;
-  });
+  }, []);
 
   const labelOf = useCallback(
     (body: Body): string => sceneRef.current?.particles.get(body)?.label ?? '?',
@@ -806,7 +809,6 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   const info = selected === null ? undefined : scene?.particles.get(selected);
   const push = settings.tiltOn ? trayAcceleration(tilt) : { x: 0, y: 0 };
   const pushSize = Math.hypot(push.x, push.y);
-  const record = recorder.record;
   const viewBox =
     scene === null
       ? null
@@ -826,9 +828,10 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           vy: body.linearVelocity.y,
           selected: body === selected,
         }));
-  const historyIndex = rewound ?? history.length - 1;
-  const recordTotal = (moment: 'before' | 'after'): string =>
-    record === null ? '–' : number(totalMomentumOf(record[moment]).x, 2, 2);
+  const recordTotal = (moment: 'before' | 'after'): string => {
+    const now = recorder.record;
+    return now === null ? '–' : number(totalMomentumOf(now[moment]).x, 2, 2);
+  };
 
   return (
     <ScreenLayout
@@ -923,50 +926,54 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                   sx={{ minHeight: 40, px: 0.5, display: 'flex', alignItems: 'center' }}
                   data-readout="particle-info"
                 >
-                  {selected !== null && info !== undefined ? (
-                    <Box
-                      sx={{
-                        display: 'grid',
-                        gridTemplateColumns: 'repeat(4, auto)',
-                        gap: 1,
-                        flex: 1,
-                      }}
-                    >
-                      <Readout
-                        name="particle-mass"
-                        label={`${t('reactions.mass')} ${info.label}`}
-                        value={unit(selected.mass, 'kg', 3)}
-                      />
-                      <Readout
-                        name="particle-speed"
-                        label={t('reactions.speed')}
-                        value={unit(
-                          Math.hypot(selected.linearVelocity.x, selected.linearVelocity.y),
-                          'm/s',
-                          2,
-                          2,
-                        )}
-                      />
-                      <Readout
-                        name="particle-impulse"
-                        label={t('reactions.impulse')}
-                        value={
-                          info.lastImpulse === null
-                            ? t('reactions.none')
-                            : unit(info.lastImpulse, 'N·s', 3)
-                        }
-                      />
-                      <Readout
-                        name="particle-position"
-                        label={t('reactions.position')}
-                        value={`${number(selected.position.x, 2, 2)}, ${number(selected.position.y, 2, 2)} m`}
-                      />
-                    </Box>
-                  ) : (
-                    <Typography variant="body2" sx={{ color: 'text.secondary' }}>
-                      {t('reactions.tapToInspect')}
-                    </Typography>
-                  )}
+                  <Live active={live} watch={liveKey}>
+                    {() =>
+                      selected !== null && info !== undefined ? (
+                        <Box
+                          sx={{
+                            display: 'grid',
+                            gridTemplateColumns: 'repeat(4, auto)',
+                            gap: 1,
+                            flex: 1,
+                          }}
+                        >
+                          <Readout
+                            name="particle-mass"
+                            label={`${t('reactions.mass')} ${info.label}`}
+                            value={unit(selected.mass, 'kg', 3)}
+                          />
+                          <Readout
+                            name="particle-speed"
+                            label={t('reactions.speed')}
+                            value={unit(
+                              Math.hypot(selected.linearVelocity.x, selected.linearVelocity.y),
+                              'm/s',
+                              2,
+                              2,
+                            )}
+                          />
+                          <Readout
+                            name="particle-impulse"
+                            label={t('reactions.impulse')}
+                            value={
+                              info.lastImpulse === null
+                                ? t('reactions.none')
+                                : unit(info.lastImpulse, 'N·s', 3)
+                            }
+                          />
+                          <Readout
+                            name="particle-position"
+                            label={t('reactions.position')}
+                            value={`${number(selected.position.x, 2, 2)}, ${number(selected.position.y, 2, 2)} m`}
+                          />
+                        </Box>
+                      ) : (
+                        <Typography variant="body2" sx={{ color: 'text.secondary' }}>
+                          {t('reactions.tapToInspect')}
+                        </Typography>
+                      )
+                    }
+                  </Live>
                 </Box>
                 {/* The readouts keep their text's width and go below the pad when it lacks room. */}
                 <Box sx={{ display: 'flex', flexWrap: 'wrap', alignItems: 'center', gap: 1 }}>
@@ -1033,13 +1040,19 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                           : String(scene?.particles.size ?? 0)
                       }
                     />
-                    <Readout
-                      name="momentum"
-                      label={t('reactions.momentumCollision')}
-                      value={
-                        record === null ? '–' : `${recordTotal('before')} → ${recordTotal('after')}`
-                      }
-                    />
+                    <Live active={live} watch={liveKey}>
+                      {() => (
+                        <Readout
+                          name="momentum"
+                          label={t('reactions.momentumCollision')}
+                          value={
+                            recorder.record === null
+                              ? '–'
+                              : `${recordTotal('before')} → ${recordTotal('after')}`
+                          }
+                        />
+                      )}
+                    </Live>
                   </Box>
                 </Box>
               </>
@@ -1075,7 +1088,11 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                 <LabSetup rows={labRows} version={version} onChange={changeLab} />
               </>
             )}
-            {tab === 'results' && <LabResults record={record} />}
+            {tab === 'results' && (
+              <Live active={live} watch={liveKey}>
+                {() => <LabResults record={recorder.record} />}
+              </Live>
+            )}
             {tab === 'options' && (
               <>
                 <Box sx={{ display: 'flex', flexWrap: 'wrap', columnGap: 1, px: 0.5 }}>
@@ -1193,12 +1210,16 @@ export function ReactionsScreen({ active }: { active: boolean }) {
             )}
             {tab === 'data' && (
               <>
-                <RewindBar
-                  length={history.length}
-                  index={historyIndex}
-                  timeAt={(index) => history.entry(index)?.time ?? 0}
-                  onSeek={seek}
-                />
+                <Live active={live} watch={liveKey}>
+                  {() => (
+                    <RewindBar
+                      length={history.length}
+                      index={rewound ?? history.length - 1}
+                      timeAt={(index) => history.entry(index)?.time ?? 0}
+                      onSeek={seek}
+                    />
+                  )}
+                </Live>
                 <CsvExport
                   csv={() => log.toCsv()}
                   fileName="newton-reactions.csv"
@@ -1221,7 +1242,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       controls={{
         paused: sim.paused,
         slow: sim.slow,
-        time: scene === null ? 0 : simulatedTime(scene.world),
+        time: () => (sceneRef.current === null ? 0 : simulatedTime(sceneRef.current.world)),
         onTogglePlay: sim.togglePlay,
         onToggleSlow: sim.toggleSlow,
         onStep: () =>

@@ -27,7 +27,13 @@ export class JointSolver {
   get activeCount(): number {
     return this.count;
   }
-  private readonly step: JointStep = { h: 0, inverseH: 0, dt: 0, softness: new Softness() };
+  private readonly step: JointStep = {
+    h: 0,
+    inverseH: 0,
+    dt: 0,
+    softness: new Softness(),
+    maxBiasSpeed: 0,
+  };
   /** The exact solve of hinge chains with unlike masses, once a hinge has been solved. */
   chains: PinChains | null = null;
   /** Each kind's batch, once a joint of it was solved; in `batches` in that order. */
@@ -36,13 +42,20 @@ export class JointSolver {
 
   /**
    * Picks the joints to solve and prepares them; `contactHertz` as the contacts use it,
-   * `bodyCount` the step's awake bodies.
+   * `bodyCount` the step's awake bodies, `maxLinearSpeed` the world's speed limit.
    */
-  prepare(dt: number, subSteps: number, contactHertz: number, bodyCount: number): void {
+  prepare(
+    dt: number,
+    subSteps: number,
+    contactHertz: number,
+    bodyCount: number,
+    maxLinearSpeed: number,
+  ): void {
     const step = this.step;
     step.dt = dt;
     step.h = dt / subSteps;
     step.inverseH = subSteps / dt;
+    step.maxBiasSpeed = maxLinearSpeed;
     step.softness.set(2 * contactHertz, JOINT_DAMPING_RATIO, step.h);
     const list = this.list;
     const active = this.active;
@@ -66,7 +79,7 @@ export class JointSolver {
       this.chains ??= joint.createChains();
     }
     this.count = count;
-    this.chains?.prepare(active, count, bodyCount, step.h);
+    this.chains?.prepare(active, count, bodyCount, step.h, maxLinearSpeed);
     // After the chains: they add their pins' geometric stiffness to the joints' inertia.
     for (let i = 0; i < count; i++) this.batchOf[active[i]!.type]!.add(active[i]!);
   }

@@ -44,6 +44,13 @@ export interface JointStep {
   dt: number;
   /** Softness of the rigid joints' position correction this step. */
   readonly softness: Softness;
+  /**
+   * Fastest a joint's position correction may ask its bodies to move (m/s): the world's
+   * maxLinearSpeed, which no body exceeds anyway. A joint torn metres (or, restored from a
+   * damaged snapshot, 4e10 m) open would otherwise ask for biasRate times that gap, an impulse no
+   * speed limit can realise, that grows its warm start and spills into every contact.
+   */
+  maxBiasSpeed: number;
 }
 
 /**

@@ -62,6 +62,8 @@ export class PinChains {
   private hinge1: Int32Array = new Int32Array(64);
   private hinge2: Int32Array = new Int32Array(64);
   private used: Uint8Array = new Uint8Array(16);
+  /** Farthest a body moves in one projection (m): maxLinearSpeed h, set by prepare. */
+  private maxMove = -0;
 
   /** Forgets the last step's joints (see Solver.releaseReferences). */
   release(): void {
@@ -70,14 +72,19 @@ export class PinChains {
     releaseFrom(this.pins, 0);
   }
 
-  /** Finds the chains among `joints` (prepared this step); `bodyCount`: awake bodies. */
+  /**
+   * Finds the chains among `joints` (prepared this step); `bodyCount`: awake bodies;
+   * `maxLinearSpeed`: the world's speed limit, which also bounds the projection (see run).
+   */
   prepare(
     joints: readonly { pinJoint(): PinJoint | null }[],
     count: number,
     bodyCount: number,
     h: number,
+    maxLinearSpeed: number,
   ): void {
     this.chainCount = 0;
+    this.maxMove = maxLinearSpeed * h;
     const pins = this.pins;
     let pinCount = 0;
     let unlike = false;
@@ -189,7 +196,13 @@ export class PinChains {
         const onNext = next.stateA === x ? 0 : 1;
         const extra = h * (t[2 * k + onJoint]! + t[2 * k + 2 + onNext]!);
         const inverse = onJoint === 0 ? joint.invInertiaA : joint.invInertiaB;
-        const stiff = inverse / (1 + inverse * extra);
+        // A body that cannot turn stays so: 0 / (1 + 0 * extra) is NaN once a load overflows.
+        // At most MAX_STIFFENING times its inertia: the loads are last step's impulses, and a
+        // link made stiffer needs larger impulses to turn (a constant torque on it, a joint
+        // pulling it), which made it stiffer still: a 10,000:1 chain with 1,000 N m on its first
+        // link grew its impulses a thousandfold per sub-step until they overflowed.
+        const stiff =
+          inverse > 0 ? inverse / Math.min(1 + inverse * extra, MAX_STIFFENING) : inverse;
         if (onJoint === 0) joint.invInertiaA = stiff;
         else joint.invInertiaB = stiff;
         if (onNext === 0) next.invInertiaA = stiff;
@@ -205,9 +218,17 @@ export class PinChains {
    * closes exactly (post-stabilisation, Cline and Pai 2003): a taut chain of light links whips
    * sideways at no first-order cost to its pins, and the second-order drift would otherwise be
    * pushed back by velocity, which makes energy.
+   *
+   * The projection moves each body at most maxLinearSpeed h and MAX_PROJECTION_TURN per
+   * sub-step, as the solver's speed limits move any pose: a pin torn far open (a body teleported
+   * by a setter or a damaged snapshot, a far-anchored joint dragging a light link) would
+   * otherwise be closed in one jump of any length, and bodies thrown that far come back into
+   * contacts with levers of that length, whose impulses grow step after step until they
+   * overflow (a 30:1 chain restored with one link 4e10 m off went non-finite in 3 steps).
    */
   run(s: Float64Array, biasRate: number, useBias: boolean, positions: boolean): void {
     const t = this.scratch;
+    LIMITS[0] = this.maxMove;
     let begin = 0;
     for (let c = 0; c < this.chainCount; c++) {
       const end = this.chainEnd[c]!;
@@ -254,7 +275,7 @@ export class PinChains {
           y2 -= l21 * t[p + 9]! + l22 * t[p + 10]!;
         }
         const det = k11 * k22 - k12 * k12;
-        if (!(det > 0)) {
+        if (!(det > 0 && det < Infinity)) {
           // A degenerate chain (a zero-mass gap): leave it to the sequential passes this time.
           begin = -1;
           break;
@@ -330,6 +351,16 @@ export class PinChains {
 const MAX_PROJECTION_TURN = 0.2;
 
 /**
+ * Largest factor by which the geometric stiffness multiplies a link's inertia for a step (see
+ * PinChains.stiffen). Every regression hash, the chain samples' among them, is the same with it;
+ * 1e4 still let a 10,000:1 chain of eight links with 1,000 N m on its first link go NaN.
+ */
+const MAX_STIFFENING = 1e3;
+
+/** The projection's move limit (m), for applyPin: a call with a fractional argument would box it. */
+const LIMITS = new Float64Array(1);
+
+/**
  * Applies the pin impulse in t (x at o + 15, y at o + 5, on B; the opposite on A) to one side of
  * the joint (levers at o): to its velocity, or (`positions`) to its pose, as a positional impulse.
  */
@@ -357,8 +388,27 @@ function applyPin(
     s[k + W] = s[k + W]! + turn;
     return;
   }
-  s[k + DP_X] = s[k + DP_X]! + m * px;
-  s[k + DP_Y] = s[k + DP_Y]! + m * py;
+  let dx = m * px;
+  let dy = m * py;
+  const maxMove = LIMITS[0]!;
+  const moveSquared = dx * dx + dy * dy;
+  if (!(moveSquared <= maxMove * maxMove)) {
+    // Along the same direction, maxMove long (scaled by the larger component first, so an
+    // overflowed square does not turn the direction into NaN); the rest closes in later sub-steps.
+    const big = Math.max(Math.abs(dx), Math.abs(dy));
+    if (big < Infinity) {
+      const ux = dx / big;
+      const uy = dy / big;
+      const scale = maxMove / Math.sqrt(ux * ux + uy * uy);
+      dx = ux * scale;
+      dy = uy * scale;
+    } else {
+      dx = 0;
+      dy = 0;
+    }
+  }
+  s[k + DP_X] = s[k + DP_X]! + dx;
+  s[k + DP_Y] = s[k + DP_Y]! + dy;
   const angle = Math.max(-MAX_PROJECTION_TURN, Math.min(MAX_PROJECTION_TURN, turn));
   if (angle === 0) return;
   // The turn of contact-solver's advancePose, written out: a call with a fractional argument

@@ -117,6 +117,8 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   private rBy = -0;
   private deltaCenterX = -0;
   private deltaCenterY = -0;
+  /** JointStep.maxBiasSpeed, for the chains' pinError. */
+  private maxBiasSpeed = -0;
   private deltaAngle = -0;
   private axialMass = -0;
   private readonly springSoftness = new Softness();
@@ -349,6 +351,7 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   /** @internal */
   prepare(step: JointStep): void {
     this.prepareBodies(step);
+    this.maxBiasSpeed = step.maxBiasSpeed;
     const a = this.bodyA;
     const b = this.bodyB;
     const ta = a.transform;
@@ -482,8 +485,18 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
     }
     const wA = s[a + W]!;
     const wB = s[b + W]!;
-    out[offset] = s[b + V_X]! - wB * rBy - (s[a + V_X]! - wA * rAy) + biasRate * gapX;
-    out[offset + 1] = s[b + V_Y]! + wB * rBx - (s[a + V_Y]! + wA * rAx) + biasRate * gapY;
+    let biasX = biasRate * gapX;
+    let biasY = biasRate * gapY;
+    // At most maxBiasSpeed, as in the batch's solve (see JointStep.maxBiasSpeed).
+    const biasSquared = biasX * biasX + biasY * biasY;
+    const maxBias = this.maxBiasSpeed;
+    if (biasSquared > maxBias * maxBias) {
+      const ratio = maxBias / Math.sqrt(biasSquared);
+      biasX *= ratio;
+      biasY *= ratio;
+    }
+    out[offset] = s[b + V_X]! - wB * rBy - (s[a + V_X]! - wA * rAy) + biasX;
+    out[offset + 1] = s[b + V_Y]! + wB * rBx - (s[a + V_Y]! + wA * rAx) + biasY;
   }
 
   /** @internal */
@@ -591,6 +604,7 @@ export class RevoluteBatch extends FlatJointBatch<RevoluteJoint> {
     const d = this.data;
     const states = this.states;
     const soft = step.softness;
+    const maxBias = step.maxBiasSpeed;
     for (let i = 0; i < this.count; i++) {
       const o = i * STRIDE;
       const a = states[2 * i]!;
@@ -693,6 +707,13 @@ export class RevoluteBatch extends FlatJointBatch<RevoluteJoint> {
           const sepY = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + d[o + DELTA_CENTER_Y]!;
           biasX = soft.biasRate * sepX;
           biasY = soft.biasRate * sepY;
+          // At most maxBiasSpeed (see JointStep.maxBiasSpeed).
+          const biasSquared = biasX * biasX + biasY * biasY;
+          if (biasSquared > maxBias * maxBias) {
+            const ratio = maxBias / Math.sqrt(biasSquared);
+            biasX *= ratio;
+            biasY *= ratio;
+          }
           massScale = soft.massScale;
           impulseScale = soft.impulseScale;
         }

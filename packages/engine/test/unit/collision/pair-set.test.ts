@@ -88,4 +88,19 @@ describe('PairSet', () => {
     expect(set.add(10, 11)).toBe(true);
     expect(set.has(11, 10)).toBe(true);
   });
+
+  it('keeps its members through reserve, and then holds the reserved pairs without growing', () => {
+    const set = new PairSet();
+    for (let i = 0; i < 100; i++) set.add(i, 3 * i + 7);
+    set.reserve(5000);
+    expect(set.size).toBe(100);
+    for (let i = 0; i < 100; i++) expect(set.has(3 * i + 7, i)).toBe(true);
+    expect(set.has(1, 2)).toBe(false);
+    // The arrays are replaced only when the set grows.
+    const arrays = set as unknown as { lows: Int32Array };
+    const lows = arrays.lows;
+    for (let i = 100; i < 5000; i++) set.add(i, 3 * i + 7);
+    expect(arrays.lows).toBe(lows);
+    expect(set.size).toBe(5000);
+  });
 });

@@ -2,7 +2,7 @@ import { describe, expect, it } from 'vitest';
 import { World, box, particle, restoreSnapshot, takeSnapshot, wall } from '@physical/engine';
 
 // The narrow phase decides most contacts from flat copies of the shapes' boxes (shape-table.ts)
-// and of the bodies' poses (body-poses.ts). A stale copy would skip a contact that touches, so
+// and the bodies' own numbers (body-memory.ts, read in place). A stale copy would skip a contact that touches, so
 // every path that moves a box must write the copy too, and a shape that left its world must not.
 
 type Internals = ReturnType<World['internals']>;

@@ -1,0 +1,70 @@
+// Contacts made and ended per step (issue 30, item 4), with the step time beside them, for
+// Physical only: `npm run bench:churn -- --scenes tumbler,rain`. Every scene runs in this one
+// process, after a fresh build of the engine (`npm run build -w @physical/engine`).
+import { performance } from 'node:perf_hooks';
+import { parseArgs } from 'node:util';
+import { physical, physicalWorldOf } from './engines/physical.ts';
+import { buildScene } from './scenes/index.ts';
+import type { StepApi } from './types.ts';
+
+/** The counters ContactManager keeps (internal: read through World.internals). */
+interface Churn {
+  readonly made: number;
+  readonly destroyed: number;
+  readonly contacts: readonly unknown[];
+}
+
+const { values } = parseArgs({
+  options: {
+    scenes: { type: 'string', default: 'tumbler,rain' },
+    steps: { type: 'string' },
+  },
+});
+
+function median(list: number[]): number {
+  const sorted = [...list].sort((a, b) => a - b);
+  const mid = sorted.length >> 1;
+  return sorted.length % 2 === 1 ? sorted[mid]! : 0.5 * (sorted[mid - 1]! + sorted[mid]!);
+}
+
+for (const name of values.scenes.split(',')) {
+  const scene = buildScene(name, {
+    small: false,
+    ...(values.steps === undefined ? {} : { steps: Number(values.steps) }),
+  });
+  const bench = physical.create(scene);
+  const world = physicalWorldOf(bench)!;
+  const manager = (world as unknown as { internals(): { contactManager: Churn } }).internals()
+    .contactManager;
+  const api: StepApi = {
+    moveKinematicTo: bench.moveKinematicTo.bind(bench),
+    createGroup: (group) => bench.createGroup!(group),
+    destroyGroup: (handle) => bench.destroyGroup!(handle),
+  };
+  const ms: number[] = [];
+  let made = 0;
+  let ended = 0;
+  let contacts = 0;
+  for (let step = 0; step < scene.steps; step++) {
+    const made0 = manager.made;
+    const ended0 = manager.destroyed;
+    scene.onStep?.(step, api);
+    const t = performance.now();
+    bench.step();
+    ms.push(performance.now() - t);
+    // Step 0 makes every first contact: counted apart.
+    if (step > 0) {
+      made += manager.made - made0;
+      ended += manager.destroyed - ended0;
+      contacts += manager.contacts.length;
+    }
+  }
+  const n = scene.steps - 1;
+  const timed = ms.slice(1);
+  process.stdout.write(
+    `${name}: ${n} steps; per step ${(made / n).toFixed(0)} contacts made, ` +
+      `${(ended / n).toFixed(0)} ended, ${(contacts / n).toFixed(0)} alive; ` +
+      `median ${median(timed).toFixed(2)} ms/step; first step ${ms[0]!.toFixed(1)} ms ` +
+      `(${(ms[0]! / median(timed)).toFixed(1)}x the median)\n`,
+  );
+}
