@@ -166,6 +166,22 @@ function kickNormal(kA: usize, kB: usize, nx: f64, ny: f64, leverA: f64, leverB:
   );
 }
 
+/**
+ * Before point `p` is warm-started: a bounce is a one-off impulse, not a contact force to carry
+ * into the next sub-step; an impact of an earlier round neither (see impacts). One function for
+ * the scalar pass and the lanes, so they cannot drift apart.
+ */
+function dropOneOffImpulse(p: usize): void {
+  const impact = ld(p, IMPACT);
+  if (impact == 2) {
+    st(p, IMPACT, 3);
+    st(p, NORMAL_IMPULSE, 0);
+  } else if (impact == 6) {
+    st(p, IMPACT, 0);
+    st(p, NORMAL_IMPULSE, 0);
+  }
+}
+
 function advancePose(k: usize, dx: f64, dy: f64, angle: f64): void {
   st(k, DP_X, ld(k, DP_X) + dx);
   st(k, DP_Y, ld(k, DP_Y) + dy);
@@ -270,14 +286,8 @@ function warmStartPair(cPtr: usize, bodiesPtr: usize, sPtr: usize, i1: i32, i2: 
   for (let j = 0; j < pointCount; j++) {
     const p1 = c1 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
     const p2 = c2 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
-    if (ld(p1, IMPACT) == 2) {
-      st(p1, IMPACT, 3);
-      st(p1, NORMAL_IMPULSE, 0);
-    }
-    if (ld(p2, IMPACT) == 2) {
-      st(p2, IMPACT, 3);
-      st(p2, NORMAL_IMPULSE, 0);
-    }
+    dropOneOffImpulse(p1);
+    dropOneOffImpulse(p2);
     const pn = lanes(p1, p2, NORMAL_IMPULSE);
     const pt = lanes(p1, p2, TANGENT_IMPULSE);
     const px = f64x2.add(f64x2.mul(pn, nx), f64x2.mul(pt, tx));
@@ -690,16 +700,7 @@ export function warmStart(
     const dtB = -(sBx * nx + sBy * ny);
     for (let j = 0; j < pointCount; j++) {
       const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
-      // A bounce is a one-off impulse, not a contact force to carry into the next sub-step;
-      // an impact of an earlier round neither (see impacts).
-      const impact = ld(p, IMPACT);
-      if (impact == 2) {
-        st(p, IMPACT, 3);
-        st(p, NORMAL_IMPULSE, 0);
-      } else if (impact == 6) {
-        st(p, IMPACT, 0);
-        st(p, NORMAL_IMPULSE, 0);
-      }
+      dropOneOffImpulse(p);
       const pn = ld(p, NORMAL_IMPULSE);
       const pt = ld(p, TANGENT_IMPULSE);
       const px = pn * nx + pt * tx;
