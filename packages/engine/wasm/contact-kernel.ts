@@ -552,6 +552,7 @@ function solvePair(
 
   for (let j = firstSequential; j < pointCount; j++) {
     const p1 = pointAt(c1, j);
+    const p2 = pointAt(c2, j);
     const separation = separationLanes(p1, dpn, nAx, nAy, nBx, nBy);
     const leverA = f64x2.add(lanesOf(p1, RN_A), dnA);
     const leverB = f64x2.add(lanesOf(p1, RN_B), dnB);
@@ -600,6 +601,7 @@ function solvePair(
   const friction = lanesOf(c1, FRICTION);
   for (let j = 0; j < pointCount; j++) {
     const p1 = pointAt(c1, j);
+    const p2 = pointAt(c2, j);
     const leverA = f64x2.sub(
       dtA,
       f64x2.add(f64x2.mul(lanesOf(p1, R_AX), nx), f64x2.mul(lanesOf(p1, R_AY), ny)),
