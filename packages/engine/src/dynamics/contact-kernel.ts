@@ -148,7 +148,7 @@ function compile(): object | null {
     const bytes = new Uint8Array(hex.length / 2);
     // Character codes, not parseInt(substr): this loop runs once, cold, and parseInt over 17,000
     // two-letter strings took 17-26 ms of a 5,000-box pyramid's first step (CPU time, shared
-    // machine); this takes about 1.
+    // machine); this took 3-9 ms on the same machine.
     for (let i = 0; i < bytes.length; i++) {
       bytes[i] = (nibble(hex.charCodeAt(2 * i)) << 4) | nibble(hex.charCodeAt(2 * i + 1));
     }
