@@ -28,6 +28,7 @@ const root = new URL('..', import.meta.url);
 const file = (path: string): string => fileURLToPath(new URL(path, root));
 export const KERNEL_SOURCE = file('wasm/contact-kernel.ts');
 export const KERNEL_LAYOUT = file('wasm/contact-layout.ts');
+export const KERNEL_LANES = file('wasm/contact-lanes.ts');
 export const KERNEL_BINARY_MODULE = file('src/dynamics/contact-kernel-binary.ts');
 export const KERNEL_JAVASCRIPT_MODULE = file('src/dynamics/contact-kernel-javascript.ts');
 
@@ -66,11 +67,18 @@ export function kernelLayout(): string {
   return lines.join('\n') + '\n';
 }
 
-/** Compiles the kernel with the given layout; returns the optimised module's bytes. */
-async function compile(layout: string): Promise<Uint8Array> {
+/**
+ * Compiles the kernel with the given layout; returns the optimised module's bytes. With `lanes`,
+ * wasm/contact-lanes.ts is replaced by LANES true: pairs of independent constraints are solved in
+ * f64x2 lanes (SIMD, WebAssembly only); without, the module has no SIMD, for wasm2js.
+ */
+async function compile(layout: string, lanes: boolean): Promise<Uint8Array> {
   const sources: Record<string, string> = {
     'contact-kernel.ts': readFileSync(KERNEL_SOURCE, 'utf8'),
     'contact-layout.ts': layout,
+    'contact-lanes.ts': lanes
+      ? 'export const LANES: bool = true;\n'
+      : readFileSync(KERNEL_LANES, 'utf8'),
   };
   const outputs: Record<string, Uint8Array | string> = {};
   const result = await asc.main(
@@ -87,6 +95,7 @@ async function compile(layout: string): Promise<Uint8Array> {
       '--importMemory',
       '--noExportMemory',
       '--noAssert',
+      ...(lanes ? ['--enable', 'simd'] : []),
     ],
     {
       readFile: (name: string) => sources[name] ?? null,
@@ -158,11 +167,12 @@ async function kernelJavaScriptModule(factory: string): Promise<string> {
 /** Every generated file, path to text, built afresh from the sources. */
 export async function buildContactKernel(): Promise<Record<string, string>> {
   const layout = kernelLayout();
-  const binary = await compile(layout);
+  const binary = await compile(layout, true);
+  const scalar = await compile(layout, false);
   return {
     [KERNEL_LAYOUT]: layout,
     [KERNEL_BINARY_MODULE]: kernelBinaryModule(Buffer.from(binary).toString('hex')),
-    [KERNEL_JAVASCRIPT_MODULE]: await kernelJavaScriptModule(toJavaScript(binary)),
+    [KERNEL_JAVASCRIPT_MODULE]: await kernelJavaScriptModule(toJavaScript(scalar)),
   };
 }
 

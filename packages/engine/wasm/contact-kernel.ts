@@ -119,6 +119,7 @@ import {
   V_Y,
   W,
 } from './contact-layout';
+import { LANES } from './contact-lanes';
 
 function ld(p: usize, k: i32): f64 {
   return load<f64>(p + ((<usize>k) << 3));
@@ -165,6 +166,22 @@ function kickNormal(kA: usize, kB: usize, nx: f64, ny: f64, leverA: f64, leverB:
   );
 }
 
+/**
+ * Before point `p` is warm-started: a bounce is a one-off impulse, not a contact force to carry
+ * into the next sub-step; an impact of an earlier round neither (see impacts). One function for
+ * the scalar pass and the lanes, so they cannot drift apart.
+ */
+function dropOneOffImpulse(p: usize): void {
+  const impact = ld(p, IMPACT);
+  if (impact == 2) {
+    st(p, IMPACT, 3);
+    st(p, NORMAL_IMPULSE, 0);
+  } else if (impact == 6) {
+    st(p, IMPACT, 0);
+    st(p, NORMAL_IMPULSE, 0);
+  }
+}
+
 function advancePose(k: usize, dx: f64, dy: f64, angle: f64): void {
   st(k, DP_X, ld(k, DP_X) + dx);
   st(k, DP_Y, ld(k, DP_Y) + dy);
@@ -180,6 +197,444 @@ function advancePose(k: usize, dx: f64, dy: f64, angle: f64): void {
   }
 }
 
+// Contacts in lanes (WebAssembly build only, LANES): two neighbours of the visiting order that
+// share no moving body (found as they come: the order is not changed for them, see
+// src/dynamics/README.md, "Contacts in lanes") are solved side by side in the two lanes of an
+// f64x2 (Box2D v3 solves graph colours in SIMD lanes, b2ContactConstraintSIMD). Each lane does the scalar pass's f64 operations in
+// the same order, and f64x2 operations round exactly as f64 ones, so a pair gives the bits of the
+// two constraints solved one after the other, which is what the JavaScript build (LANES false,
+// wasm2js cannot translate SIMD) does with the same order. Pairs take the common path only (equal
+// point counts; in the solve pass no restitution and equal block flags, and a block case both
+// lanes accept); any other pair goes through the scalar pass one constraint at a time.
+
+/** Number k of two constraints (or points, or states) as the lanes of an f64x2. */
+function lanes(p1: usize, p2: usize, k: i32): v128 {
+  return f64x2.replace_lane(f64x2.splat(ld(p1, k)), 1, ld(p2, k));
+}
+
+function stLanes(p1: usize, p2: usize, k: i32, v: v128): void {
+  st(p1, k, f64x2.extract_lane(v, 0));
+  st(p2, k, f64x2.extract_lane(v, 1));
+}
+
+/** A state's velocity, unless it is slot 0 (immovable: the shared identity state). */
+function stVelocity(s: usize, lane: u8, vx: v128, vy: v128, w: v128): void {
+  if (lane == 0) {
+    st(s, V_X, f64x2.extract_lane(vx, 0));
+    st(s, V_Y, f64x2.extract_lane(vy, 0));
+    st(s, W, f64x2.extract_lane(w, 0));
+  } else {
+    st(s, V_X, f64x2.extract_lane(vx, 1));
+    st(s, V_Y, f64x2.extract_lane(vy, 1));
+    st(s, W, f64x2.extract_lane(w, 1));
+  }
+}
+
+/** Whether constraints i1 and i2 share no moving body (state slot 0 is immovable). */
+function independent(bodiesPtr: usize, i1: i32, i2: i32): bool {
+  const a1 = load<i32>(bodiesPtr + ((<usize>i1) << 3));
+  const b1 = load<i32>(bodiesPtr + ((<usize>i1) << 3), 4);
+  const a2 = load<i32>(bodiesPtr + ((<usize>i2) << 3));
+  const b2 = load<i32>(bodiesPtr + ((<usize>i2) << 3), 4);
+  return (a1 == 0 || (a1 != a2 && a1 != b2)) && (b1 == 0 || (b1 != a2 && b1 != b2));
+}
+
+/** The warm start of independent constraints i1 and i2 in lanes; false (nothing done) off the common path. */
+function warmStartPair(cPtr: usize, bodiesPtr: usize, sPtr: usize, i1: i32, i2: i32): bool {
+  const c1 = cPtr + ((<usize>(i1 * STRIDE)) << 3);
+  const c2 = cPtr + ((<usize>(i2 * STRIDE)) << 3);
+  const pointCount = <i32>ld(c1, POINT_COUNT);
+  if (<i32>ld(c2, POINT_COUNT) != pointCount) return false;
+  const a1 = load<i32>(bodiesPtr + ((<usize>i1) << 3));
+  const b1 = load<i32>(bodiesPtr + ((<usize>i1) << 3), 4);
+  const a2 = load<i32>(bodiesPtr + ((<usize>i2) << 3));
+  const b2 = load<i32>(bodiesPtr + ((<usize>i2) << 3), 4);
+  const sa1 = sPtr + ((<usize>a1) << 3);
+  const sb1 = sPtr + ((<usize>b1) << 3);
+  const sa2 = sPtr + ((<usize>a2) << 3);
+  const sb2 = sPtr + ((<usize>b2) << 3);
+  const mA = lanes(c1, c2, INV_MASS_A);
+  const iA = lanes(c1, c2, INV_I_A);
+  const mB = lanes(c1, c2, INV_MASS_B);
+  const iB = lanes(c1, c2, INV_I_B);
+  const nx = lanes(c1, c2, NORMAL_X);
+  const ny = lanes(c1, c2, NORMAL_Y);
+  const tx = ny;
+  const ty = f64x2.neg(nx);
+  let vAx = lanes(sa1, sa2, V_X);
+  let vAy = lanes(sa1, sa2, V_Y);
+  let wA = lanes(sa1, sa2, W);
+  let vBx = lanes(sb1, sb2, V_X);
+  let vBy = lanes(sb1, sb2, V_Y);
+  let wB = lanes(sb1, sb2, W);
+  const shiftA = lanes(c1, c2, SHIFT_WEIGHT_A);
+  const shiftB = lanes(c1, c2, SHIFT_WEIGHT_B);
+  const eAx = f64x2.sub(lanes(sa1, sa2, DP_X), lanes(c1, c2, REF_DP_AX));
+  const eAy = f64x2.sub(lanes(sa1, sa2, DP_Y), lanes(c1, c2, REF_DP_AY));
+  const eBx = f64x2.sub(lanes(sb1, sb2, DP_X), lanes(c1, c2, REF_DP_BX));
+  const eBy = f64x2.sub(lanes(sb1, sb2, DP_Y), lanes(c1, c2, REF_DP_BY));
+  const shiftX = f64x2.add(f64x2.mul(shiftA, eAx), f64x2.mul(shiftB, eBx));
+  const shiftY = f64x2.add(f64x2.mul(shiftA, eAy), f64x2.mul(shiftB, eBy));
+  const sAx = f64x2.sub(shiftX, eAx);
+  const sAy = f64x2.sub(shiftY, eAy);
+  const sBx = f64x2.sub(shiftX, eBx);
+  const sBy = f64x2.sub(shiftY, eBy);
+  const dnA = f64x2.sub(f64x2.mul(sAx, ny), f64x2.mul(sAy, nx));
+  const dnB = f64x2.sub(f64x2.mul(sBx, ny), f64x2.mul(sBy, nx));
+  const dtA = f64x2.neg(f64x2.add(f64x2.mul(sAx, nx), f64x2.mul(sAy, ny)));
+  const dtB = f64x2.neg(f64x2.add(f64x2.mul(sBx, nx), f64x2.mul(sBy, ny)));
+  for (let j = 0; j < pointCount; j++) {
+    const p1 = c1 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+    const p2 = c2 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+    dropOneOffImpulse(p1);
+    dropOneOffImpulse(p2);
+    const pn = lanes(p1, p2, NORMAL_IMPULSE);
+    const pt = lanes(p1, p2, TANGENT_IMPULSE);
+    const px = f64x2.add(f64x2.mul(pn, nx), f64x2.mul(pt, tx));
+    const py = f64x2.add(f64x2.mul(pn, ny), f64x2.mul(pt, ty));
+    const rtA = f64x2.sub(
+      dtA,
+      f64x2.add(f64x2.mul(lanes(p1, p2, R_AX), nx), f64x2.mul(lanes(p1, p2, R_AY), ny)),
+    );
+    const rtB = f64x2.sub(
+      dtB,
+      f64x2.add(f64x2.mul(lanes(p1, p2, R_BX), nx), f64x2.mul(lanes(p1, p2, R_BY), ny)),
+    );
+    wA = f64x2.sub(
+      wA,
+      f64x2.mul(
+        iA,
+        f64x2.add(f64x2.mul(pn, f64x2.add(lanes(p1, p2, RN_A), dnA)), f64x2.mul(pt, rtA)),
+      ),
+    );
+    vAx = f64x2.sub(vAx, f64x2.mul(mA, px));
+    vAy = f64x2.sub(vAy, f64x2.mul(mA, py));
+    wB = f64x2.add(
+      wB,
+      f64x2.mul(
+        iB,
+        f64x2.add(f64x2.mul(pn, f64x2.add(lanes(p1, p2, RN_B), dnB)), f64x2.mul(pt, rtB)),
+      ),
+    );
+    vBx = f64x2.add(vBx, f64x2.mul(mB, px));
+    vBy = f64x2.add(vBy, f64x2.mul(mB, py));
+  }
+  if (a1 != 0) stVelocity(sa1, 0, vAx, vAy, wA);
+  if (b1 != 0) stVelocity(sb1, 0, vBx, vBy, wB);
+  if (a2 != 0) stVelocity(sa2, 1, vAx, vAy, wA);
+  if (b2 != 0) stVelocity(sb2, 1, vBx, vBy, wB);
+  return true;
+}
+
+/** The separation of point p1/p2 now (see solve). */
+function separationLanes(
+  p1: usize,
+  p2: usize,
+  dpn: v128,
+  nAx: v128,
+  nAy: v128,
+  nBx: v128,
+  nBy: v128,
+): v128 {
+  return f64x2.add(
+    f64x2.sub(
+      f64x2.add(
+        dpn,
+        f64x2.add(f64x2.mul(lanes(p1, p2, R_BX), nBx), f64x2.mul(lanes(p1, p2, R_BY), nBy)),
+      ),
+      f64x2.add(f64x2.mul(lanes(p1, p2, R_AX), nAx), f64x2.mul(lanes(p1, p2, R_AY), nAy)),
+    ),
+    lanes(p1, p2, BASE_SEPARATION),
+  );
+}
+
+/** Stores the larger of v and number k, lane by lane (the scalar pass's `if (v > old) st(v)`). */
+function stMaxLanes(p1: usize, p2: usize, k: i32, v: v128): void {
+  const old = lanes(p1, p2, k);
+  stLanes(p1, p2, k, v128.bitselect(v, old, f64x2.gt(v, old)));
+}
+
+/**
+ * One solve (useBias) or relax pass of independent constraints i1 and i2 in lanes; false, with
+ * nothing written, off the common path (see above).
+ */
+function solvePair(
+  cPtr: usize,
+  bodiesPtr: usize,
+  sPtr: usize,
+  i1: i32,
+  i2: i32,
+  inverseH: f64,
+  maxPushSpeed: f64,
+  useBias: bool,
+): bool {
+  const c1 = cPtr + ((<usize>(i1 * STRIDE)) << 3);
+  const c2 = cPtr + ((<usize>(i2 * STRIDE)) << 3);
+  const pointCount = <i32>ld(c1, POINT_COUNT);
+  const block = ld(c1, BLOCK) == 1;
+  if (
+    <i32>ld(c2, POINT_COUNT) != pointCount ||
+    (ld(c2, BLOCK) == 1) != block ||
+    ld(c1, RESTITUTION) > 0 ||
+    ld(c2, RESTITUTION) > 0
+  ) {
+    return false;
+  }
+  const a1 = load<i32>(bodiesPtr + ((<usize>i1) << 3));
+  const b1 = load<i32>(bodiesPtr + ((<usize>i1) << 3), 4);
+  const a2 = load<i32>(bodiesPtr + ((<usize>i2) << 3));
+  const b2 = load<i32>(bodiesPtr + ((<usize>i2) << 3), 4);
+  const sa1 = sPtr + ((<usize>a1) << 3);
+  const sb1 = sPtr + ((<usize>b1) << 3);
+  const sa2 = sPtr + ((<usize>a2) << 3);
+  const sb2 = sPtr + ((<usize>b2) << 3);
+  const zero = f64x2.splat(0);
+  const one = f64x2.splat(1);
+  const rate = f64x2.splat(inverseH);
+  const floor = f64x2.splat(-maxPushSpeed);
+  const mA = lanes(c1, c2, INV_MASS_A);
+  const iA = lanes(c1, c2, INV_I_A);
+  const mB = lanes(c1, c2, INV_MASS_B);
+  const iB = lanes(c1, c2, INV_I_B);
+  const nx = lanes(c1, c2, NORMAL_X);
+  const ny = lanes(c1, c2, NORMAL_Y);
+  const biasRate = lanes(c1, c2, BIAS_RATE);
+  let vAx = lanes(sa1, sa2, V_X);
+  let vAy = lanes(sa1, sa2, V_Y);
+  let wA = lanes(sa1, sa2, W);
+  let vBx = lanes(sb1, sb2, V_X);
+  let vBy = lanes(sb1, sb2, V_Y);
+  let wB = lanes(sb1, sb2, W);
+  const dpAx = lanes(sa1, sa2, DP_X);
+  const dpAy = lanes(sa1, sa2, DP_Y);
+  const dpBx = lanes(sb1, sb2, DP_X);
+  const dpBy = lanes(sb1, sb2, DP_Y);
+  const shiftA = lanes(c1, c2, SHIFT_WEIGHT_A);
+  const shiftB = lanes(c1, c2, SHIFT_WEIGHT_B);
+  const eAx = f64x2.sub(dpAx, lanes(c1, c2, REF_DP_AX));
+  const eAy = f64x2.sub(dpAy, lanes(c1, c2, REF_DP_AY));
+  const eBx = f64x2.sub(dpBx, lanes(c1, c2, REF_DP_BX));
+  const eBy = f64x2.sub(dpBy, lanes(c1, c2, REF_DP_BY));
+  const shiftX = f64x2.add(f64x2.mul(shiftA, eAx), f64x2.mul(shiftB, eBx));
+  const shiftY = f64x2.add(f64x2.mul(shiftA, eAy), f64x2.mul(shiftB, eBy));
+  const sAx = f64x2.sub(shiftX, eAx);
+  const sAy = f64x2.sub(shiftY, eAy);
+  const sBx = f64x2.sub(shiftX, eBx);
+  const sBy = f64x2.sub(shiftY, eBy);
+  const dnA = f64x2.sub(f64x2.mul(sAx, ny), f64x2.mul(sAy, nx));
+  const dnB = f64x2.sub(f64x2.mul(sBx, ny), f64x2.mul(sBy, nx));
+  const qAc = lanes(sa1, sa2, Q_C);
+  const qAs = lanes(sa1, sa2, Q_S);
+  const qBc = lanes(sb1, sb2, Q_C);
+  const qBs = lanes(sb1, sb2, Q_S);
+  const nAx = f64x2.add(f64x2.mul(qAc, nx), f64x2.mul(qAs, ny));
+  const nAy = f64x2.sub(f64x2.mul(qAc, ny), f64x2.mul(qAs, nx));
+  const nBx = f64x2.add(f64x2.mul(qBc, nx), f64x2.mul(qBs, ny));
+  const nBy = f64x2.sub(f64x2.mul(qBc, ny), f64x2.mul(qBs, nx));
+  const dpn = f64x2.add(f64x2.mul(f64x2.sub(dpBx, dpAx), nx), f64x2.mul(f64x2.sub(dpBy, dpAy), ny));
+  // The soft step's numbers of a touching point (the scalar pass's `else if (useBias)`).
+  const massScaleSoft = useBias ? lanes(c1, c2, MASS_SCALE) : one;
+  const impulseScaleSoft = useBias ? lanes(c1, c2, IMPULSE_SCALE) : zero;
+
+  let firstSequential = 0;
+  if (block) {
+    const p1 = c1 + ((<usize>POINTS) << 3);
+    const p2 = p1 + ((<usize>POINT_STRIDE) << 3);
+    const q1 = c2 + ((<usize>POINTS) << 3);
+    const q2 = q1 + ((<usize>POINT_STRIDE) << 3);
+    // Lanes: (constraint 1, constraint 2); p1/q1 their first points, p2/q2 their second.
+    const separation1 = separationLanes(p1, q1, dpn, nAx, nAy, nBx, nBy);
+    const separation2 = separationLanes(p2, q2, dpn, nAx, nAy, nBx, nBy);
+    const n1A = f64x2.add(lanes(p1, q1, RN_A), dnA);
+    const n1B = f64x2.add(lanes(p1, q1, RN_B), dnB);
+    const n2A = f64x2.add(lanes(p2, q2, RN_A), dnA);
+    const n2B = f64x2.add(lanes(p2, q2, RN_B), dnB);
+    const k11 = lanes(c1, c2, BLOCK_K11);
+    const k12 = lanes(c1, c2, BLOCK_K12);
+    const k22 = lanes(c1, c2, BLOCK_K22);
+    const speculative1 = f64x2.gt(separation1, zero);
+    const speculative2 = f64x2.gt(separation2, zero);
+    let bias1 = f64x2.mul(separation1, rate);
+    let bias2 = f64x2.mul(separation2, rate);
+    let gamma1 = zero;
+    let gamma2 = zero;
+    if (useBias) {
+      const scale = lanes(c1, c2, IMPULSE_SCALE);
+      bias1 = v128.bitselect(
+        bias1,
+        f64x2.max(f64x2.mul(biasRate, separation1), floor),
+        speculative1,
+      );
+      bias2 = v128.bitselect(
+        bias2,
+        f64x2.max(f64x2.mul(biasRate, separation2), floor),
+        speculative2,
+      );
+      gamma1 = v128.bitselect(zero, f64x2.div(f64x2.mul(k11, scale), massScaleSoft), speculative1);
+      gamma2 = v128.bitselect(zero, f64x2.div(f64x2.mul(k22, scale), massScaleSoft), speculative2);
+    } else {
+      bias1 = v128.bitselect(bias1, zero, speculative1);
+      bias2 = v128.bitselect(bias2, zero, speculative2);
+    }
+    const dvn = f64x2.add(f64x2.mul(f64x2.sub(vBx, vAx), nx), f64x2.mul(f64x2.sub(vBy, vAy), ny));
+    const vn1 = f64x2.sub(f64x2.add(dvn, f64x2.mul(wB, n1B)), f64x2.mul(wA, n1A));
+    const vn2 = f64x2.sub(f64x2.add(dvn, f64x2.mul(wB, n2B)), f64x2.mul(wA, n2A));
+    const accumulated1 = lanes(p1, q1, NORMAL_IMPULSE);
+    const accumulated2 = lanes(p2, q2, NORMAL_IMPULSE);
+    const a11 = f64x2.add(k11, gamma1);
+    const a22 = f64x2.add(k22, gamma2);
+    const r1 = f64x2.sub(
+      f64x2.add(vn1, bias1),
+      f64x2.add(f64x2.mul(k11, accumulated1), f64x2.mul(k12, accumulated2)),
+    );
+    const r2 = f64x2.sub(
+      f64x2.add(vn2, bias2),
+      f64x2.add(f64x2.mul(k12, accumulated1), f64x2.mul(k22, accumulated2)),
+    );
+    // The scalar pass's four cases, each lane taking the first that holds.
+    const det = f64x2.sub(f64x2.mul(a11, a22), f64x2.mul(k12, k12));
+    const y1 = f64x2.div(f64x2.sub(f64x2.mul(k12, r2), f64x2.mul(a22, r1)), det);
+    const y2 = f64x2.div(f64x2.sub(f64x2.mul(k12, r1), f64x2.mul(a11, r2)), det);
+    const z1 = f64x2.div(f64x2.neg(r1), a11);
+    const z2 = f64x2.div(f64x2.neg(r2), a22);
+    const case1 = v128.and(f64x2.ge(y1, zero), f64x2.ge(y2, zero));
+    const case2 = v128.and(f64x2.ge(z1, zero), f64x2.ge(f64x2.add(f64x2.mul(k12, z1), r2), zero));
+    const case3 = v128.and(f64x2.ge(z2, zero), f64x2.ge(f64x2.add(f64x2.mul(k12, z2), r1), zero));
+    const case4 = v128.and(f64x2.ge(r1, zero), f64x2.ge(r2, zero));
+    const none = f64x2.splat(-1);
+    let x1 = v128.bitselect(zero, none, case4);
+    let x2 = x1;
+    x1 = v128.bitselect(zero, x1, case3);
+    x2 = v128.bitselect(z2, x2, case3);
+    x1 = v128.bitselect(z1, x1, case2);
+    x2 = v128.bitselect(zero, x2, case2);
+    x1 = v128.bitselect(y1, x1, case1);
+    x2 = v128.bitselect(y2, x2, case1);
+    if (!i64x2.all_true(v128.and(f64x2.ge(x1, zero), f64x2.ge(x2, zero)))) return false;
+    firstSequential = 2;
+    const dx1 = f64x2.sub(x1, accumulated1);
+    const dx2 = f64x2.sub(x2, accumulated2);
+    stLanes(p1, q1, NORMAL_IMPULSE, x1);
+    stLanes(p2, q2, NORMAL_IMPULSE, x2);
+    if (!useBias) {
+      stLanes(p1, q1, TOTAL_NORMAL_IMPULSE, f64x2.add(lanes(p1, q1, TOTAL_NORMAL_IMPULSE), x1));
+      stLanes(p2, q2, TOTAL_NORMAL_IMPULSE, f64x2.add(lanes(p2, q2, TOTAL_NORMAL_IMPULSE), x2));
+    }
+    stMaxLanes(p1, q1, MAX_NORMAL_IMPULSE, dx1);
+    stMaxLanes(p2, q2, MAX_NORMAL_IMPULSE, dx2);
+    const sum = f64x2.add(dx1, dx2);
+    vAx = f64x2.sub(vAx, f64x2.mul(f64x2.mul(mA, sum), nx));
+    vAy = f64x2.sub(vAy, f64x2.mul(f64x2.mul(mA, sum), ny));
+    wA = f64x2.sub(wA, f64x2.mul(iA, f64x2.add(f64x2.mul(n1A, dx1), f64x2.mul(n2A, dx2))));
+    vBx = f64x2.add(vBx, f64x2.mul(f64x2.mul(mB, sum), nx));
+    vBy = f64x2.add(vBy, f64x2.mul(f64x2.mul(mB, sum), ny));
+    wB = f64x2.add(wB, f64x2.mul(iB, f64x2.add(f64x2.mul(n1B, dx1), f64x2.mul(n2B, dx2))));
+  }
+
+  for (let j = firstSequential; j < pointCount; j++) {
+    const p1 = c1 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+    const p2 = c2 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+    const separation = separationLanes(p1, p2, dpn, nAx, nAy, nBx, nBy);
+    const leverA = f64x2.add(lanes(p1, p2, RN_A), dnA);
+    const leverB = f64x2.add(lanes(p1, p2, RN_B), dnB);
+    const speculative = f64x2.gt(separation, zero);
+    const bias = v128.bitselect(
+      f64x2.mul(separation, rate),
+      useBias ? f64x2.max(f64x2.mul(biasRate, separation), floor) : zero,
+      speculative,
+    );
+    const massScale = v128.bitselect(one, massScaleSoft, speculative);
+    const impulseScale = v128.bitselect(zero, impulseScaleSoft, speculative);
+    const vn = f64x2.sub(
+      f64x2.add(
+        f64x2.add(f64x2.mul(f64x2.sub(vBx, vAx), nx), f64x2.mul(f64x2.sub(vBy, vAy), ny)),
+        f64x2.mul(wB, leverB),
+      ),
+      f64x2.mul(wA, leverA),
+    );
+    const accumulated = lanes(p1, p2, NORMAL_IMPULSE);
+    const newImpulse = f64x2.max(
+      f64x2.sub(
+        f64x2.sub(
+          accumulated,
+          f64x2.mul(f64x2.mul(lanes(p1, p2, NORMAL_MASS), massScale), f64x2.add(vn, bias)),
+        ),
+        f64x2.mul(impulseScale, accumulated),
+      ),
+      zero,
+    );
+    const impulse = f64x2.sub(newImpulse, accumulated);
+    stLanes(p1, p2, NORMAL_IMPULSE, newImpulse);
+    if (!useBias) {
+      stLanes(
+        p1,
+        p2,
+        TOTAL_NORMAL_IMPULSE,
+        f64x2.add(lanes(p1, p2, TOTAL_NORMAL_IMPULSE), newImpulse),
+      );
+    }
+    stMaxLanes(p1, p2, MAX_NORMAL_IMPULSE, impulse);
+    vAx = f64x2.sub(vAx, f64x2.mul(f64x2.mul(mA, impulse), nx));
+    vAy = f64x2.sub(vAy, f64x2.mul(f64x2.mul(mA, impulse), ny));
+    wA = f64x2.sub(wA, f64x2.mul(f64x2.mul(iA, leverA), impulse));
+    vBx = f64x2.add(vBx, f64x2.mul(f64x2.mul(mB, impulse), nx));
+    vBy = f64x2.add(vBy, f64x2.mul(f64x2.mul(mB, impulse), ny));
+    wB = f64x2.add(wB, f64x2.mul(f64x2.mul(iB, leverB), impulse));
+  }
+
+  const dtA = f64x2.neg(f64x2.add(f64x2.mul(sAx, nx), f64x2.mul(sAy, ny)));
+  const dtB = f64x2.neg(f64x2.add(f64x2.mul(sBx, nx), f64x2.mul(sBy, ny)));
+  const friction = lanes(c1, c2, FRICTION);
+  for (let j = 0; j < pointCount; j++) {
+    const p1 = c1 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+    const p2 = c2 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+    const leverA = f64x2.sub(
+      dtA,
+      f64x2.add(f64x2.mul(lanes(p1, p2, R_AX), nx), f64x2.mul(lanes(p1, p2, R_AY), ny)),
+    );
+    const leverB = f64x2.sub(
+      dtB,
+      f64x2.add(f64x2.mul(lanes(p1, p2, R_BX), nx), f64x2.mul(lanes(p1, p2, R_BY), ny)),
+    );
+    const vt = f64x2.sub(
+      f64x2.add(
+        f64x2.sub(f64x2.mul(f64x2.sub(vBx, vAx), ny), f64x2.mul(f64x2.sub(vBy, vAy), nx)),
+        f64x2.mul(wB, leverB),
+      ),
+      f64x2.mul(wA, leverA),
+    );
+    const accumulated = lanes(p1, p2, TANGENT_IMPULSE);
+    const maxFriction = f64x2.mul(friction, lanes(p1, p2, NORMAL_IMPULSE));
+    const minFriction = f64x2.neg(maxFriction);
+    const free = f64x2.sub(accumulated, f64x2.mul(lanes(p1, p2, TANGENT_MASS), vt));
+    const above = f64x2.gt(free, maxFriction);
+    const below = v128.andnot(f64x2.lt(free, minFriction), above);
+    const newImpulse = v128.bitselect(minFriction, v128.bitselect(maxFriction, free, above), below);
+    const impulse = f64x2.sub(newImpulse, accumulated);
+    stLanes(p1, p2, TANGENT_IMPULSE, newImpulse);
+    if (!useBias) {
+      stLanes(
+        p1,
+        p2,
+        TOTAL_TANGENT_IMPULSE,
+        f64x2.add(lanes(p1, p2, TOTAL_TANGENT_IMPULSE), newImpulse),
+      );
+    }
+    vAx = f64x2.sub(vAx, f64x2.mul(f64x2.mul(mA, impulse), ny));
+    vAy = f64x2.add(vAy, f64x2.mul(f64x2.mul(mA, impulse), nx));
+    wA = f64x2.sub(wA, f64x2.mul(f64x2.mul(iA, leverA), impulse));
+    vBx = f64x2.add(vBx, f64x2.mul(f64x2.mul(mB, impulse), ny));
+    vBy = f64x2.sub(vBy, f64x2.mul(f64x2.mul(mB, impulse), nx));
+    wB = f64x2.add(wB, f64x2.mul(f64x2.mul(iB, leverB), impulse));
+  }
+
+  if (a1 != 0) stVelocity(sa1, 0, vAx, vAy, wA);
+  if (b1 != 0) stVelocity(sb1, 0, vBx, vBy, wB);
+  if (a2 != 0) stVelocity(sa2, 1, vAx, vAy, wA);
+  if (b2 != 0) stVelocity(sb2, 1, vBx, vBy, wB);
+  return true;
+}
+
 /**
  * Applies last step's accumulated impulses, so resting contacts start where they left off; to the
  * `count` constraints listed from `orderPtr`.
@@ -193,6 +648,13 @@ export function warmStart(
 ): void {
   for (let n = 0; n < count; n++) {
     const i = load<i32>(orderPtr + ((<usize>n) << 2));
+    if (LANES && n + 1 < count) {
+      const i2 = load<i32>(orderPtr + ((<usize>(n + 1)) << 2));
+      if (independent(bodiesPtr, i, i2) && warmStartPair(cPtr, bodiesPtr, sPtr, i, i2)) {
+        n++;
+        continue;
+      }
+    }
     const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
     const a = load<i32>(bodiesPtr + ((<usize>i) << 3));
     const b = load<i32>(bodiesPtr + ((<usize>i) << 3), 4);
@@ -238,16 +700,7 @@ export function warmStart(
     const dtB = -(sBx * nx + sBy * ny);
     for (let j = 0; j < pointCount; j++) {
       const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
-      // A bounce is a one-off impulse, not a contact force to carry into the next sub-step;
-      // an impact of an earlier round neither (see impacts).
-      const impact = ld(p, IMPACT);
-      if (impact == 2) {
-        st(p, IMPACT, 3);
-        st(p, NORMAL_IMPULSE, 0);
-      } else if (impact == 6) {
-        st(p, IMPACT, 0);
-        st(p, NORMAL_IMPULSE, 0);
-      }
+      dropOneOffImpulse(p);
       const pn = ld(p, NORMAL_IMPULSE);
       const pt = ld(p, TANGENT_IMPULSE);
       const px = pn * nx + pt * tx;
@@ -301,6 +754,16 @@ export function solve(
   let bounces: i32 = 0;
   for (let n = 0; n < count; n++) {
     const i = load<i32>(orderPtr + ((<usize>n) << 2));
+    if (LANES && n + 1 < count) {
+      const i2 = load<i32>(orderPtr + ((<usize>(n + 1)) << 2));
+      if (
+        independent(bodiesPtr, i, i2) &&
+        solvePair(cPtr, bodiesPtr, sPtr, i, i2, inverseH, maxPushSpeed, useBias)
+      ) {
+        n++;
+        continue;
+      }
+    }
     const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
     const a = load<i32>(bodiesPtr + ((<usize>i) << 3));
     const b = load<i32>(bodiesPtr + ((<usize>i) << 3), 4);

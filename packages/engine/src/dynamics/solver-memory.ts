@@ -1,5 +1,10 @@
 import { BODY_STRIDE, BodyStore } from './body-memory.ts';
-import { createContactKernel, type ContactKernel, type WasmMemory } from './contact-kernel.ts';
+import {
+  compileContactKernel,
+  createContactKernel,
+  type ContactKernel,
+  type WasmMemory,
+} from './contact-kernel.ts';
 
 // The world's hot arrays in one block of memory: the bodies' own numbers (body-memory.ts, the one
 // copy the Body handles read and write), the body states and the body table
@@ -117,6 +122,14 @@ export class SolverMemory {
   reserveStates(doubles: number): Float64Array {
     this.reserve(STATES, doubles);
     return this.states;
+  }
+
+  /**
+   * Compiles the kernel's WebAssembly module now (once per process; see compileContactKernel),
+   * for a world that may move there: its first big step then does not wait for the compile.
+   */
+  expectWebAssembly(): void {
+    if (!this.wasmRefused) compileContactKernel();
   }
 
   /** Makes room for `count` contact slots, keeping their contents. */

@@ -93,6 +93,7 @@ export class World {
   constructor(options: WorldOptions = {}) {
     this.settings = resolveWorldOptions(options);
     if (resolveKernel(options) === 'javascript') this.solver.memory.refuseWebAssembly();
+    else this.solver.memory.expectWebAssembly();
     this.queries = new WorldQueries(this.broadPhase, this.shapesById);
     this.solver.joints.list = this.jointList;
     this.shapeQueries = new ShapeQueries(this.broadPhase, this.shapesById);

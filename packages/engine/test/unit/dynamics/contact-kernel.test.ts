@@ -1,4 +1,4 @@
-import { afterEach, describe, expect, it } from 'vitest';
+import { afterEach, describe, expect, it, vi } from 'vitest';
 import { World, box, particle, regularPolygon, takeSnapshot, wall } from '@physical/engine';
 import type { Body } from '@physical/engine';
 import { readFileSync } from 'node:fs';
@@ -146,6 +146,48 @@ describe('the contact kernel, built to WebAssembly and to JavaScript', () => {
     }
     auto.step(1 / 60);
     expect(usesWebAssembly(auto)).toBe(true);
+  });
+
+  it('compiles its WebAssembly module once per process, when the first world that may use it is created', async () => {
+    // A fresh copy of the engine (its module not compiled yet), with WebAssembly.Module counted.
+    vi.resetModules();
+    const engine = await import('../../../src/index.ts');
+    // The engine's types assume only ES2022 (no WebAssembly namespace), as contact-kernel.ts does.
+    const api = (
+      globalThis as unknown as { WebAssembly: { Module: new (bytes: Uint8Array) => object } }
+    ).WebAssembly;
+    const original = api.Module;
+    let compiles = 0;
+    class Counted extends original {
+      constructor(bytes: Uint8Array) {
+        super(bytes);
+        compiles++;
+      }
+    }
+    api.Module = Counted;
+    try {
+      new engine.World({ kernel: 'javascript' });
+      expect(compiles).toBe(0);
+      const world = new engine.World();
+      // At creation, not in the first step that needs it (a big world's first step).
+      expect(compiles).toBe(1);
+      new engine.World();
+      world.add(engine.wall({ from: { x: -6, y: 0 }, to: { x: 6, y: 0 } }));
+      for (let i = 0; i < 100; i++) {
+        world.add(
+          engine.box({
+            position: { x: -4.5 + (i % 10), y: -0.5 - Math.floor(i / 10) },
+            width: 1,
+            height: 1,
+          }),
+        );
+      }
+      world.step(1 / 60);
+      expect(usesWebAssembly(world as unknown as World)).toBe(true);
+      expect(compiles).toBe(1);
+    } finally {
+      api.Module = original;
+    }
   });
 
   it('refuses a kernel option other than auto or javascript, naming it', () => {
