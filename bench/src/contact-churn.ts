@@ -11,7 +11,7 @@ import type { StepApi } from './types.ts';
 interface Churn {
   readonly made: number;
   readonly destroyed: number;
-  readonly contacts: readonly unknown[];
+  readonly count: number;
 }
 
 const { values } = parseArgs({
@@ -56,7 +56,7 @@ for (const name of values.scenes.split(',')) {
     if (step > 0) {
       made += manager.made - made0;
       ended += manager.destroyed - ended0;
-      contacts += manager.contacts.length;
+      contacts += manager.count;
     }
   }
   const n = scene.steps - 1;

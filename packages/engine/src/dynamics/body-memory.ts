@@ -24,7 +24,8 @@
 //  28 fx, 29 fy, 30 torque   force and torque of this step, gathered from the body's forces
 //  31 flags                  FLAG_* bits
 //  32 mass override, 33 inertia override (0: computed from the shapes)
-//  34-39 free (the stride stays a whole number of cache lines)
+//  34 contact head           first key of the body's contact edges plus one, 0: none (contact-edges.ts)
+//  35-39 free (the stride stays a whole number of cache lines)
 
 export const BODY_STRIDE = 40;
 export const B_X = 0;
@@ -61,6 +62,7 @@ export const B_TORQUE = 30;
 export const B_FLAGS = 31;
 export const B_MASS_OVERRIDE = 32;
 export const B_INERTIA_OVERRIDE = 33;
+export const B_CONTACT_HEAD = 34;
 
 /** Bits of B_FLAGS. */
 export const FLAG_FIXED_ROTATION = 1;

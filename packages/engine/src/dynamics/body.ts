@@ -66,7 +66,6 @@ import { BodyTransform } from './body-transform.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { World } from '../world/world.ts';
 import type { BodyHost } from './body-host.ts';
-import type { Contact } from './contact.ts';
 import { BODY_EVENT_NAMES, type BodyEvents } from './events.ts';
 import { Force, validateDuration, type ForceOptions, type TorqueOptions } from './force.ts';
 import type { Joint } from './joints/joint.ts';
@@ -474,8 +473,6 @@ export class Body<UserData = unknown> {
   readonly shapeList: Shape[] = [];
   /** @internal */
   readonly forceList: Force[] = [];
-  /** @internal Contacts touching this body's shapes (both touching and merely overlapping boxes). */
-  readonly contacts: Contact[] = [];
   /** @internal Joints attached to this body that are in the world. */
   readonly jointList: Joint[] = [];
   /** @internal The world holding the body, or null. */

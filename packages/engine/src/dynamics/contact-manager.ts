@@ -5,7 +5,6 @@ import type { Body } from './body.ts';
 import type { BodyStore } from './body-memory.ts';
 import {
   canCollide,
-  Contact,
   GATE_MARGIN,
   GATE_REACH,
   GATE_REL_C,
@@ -14,10 +13,12 @@ import {
   GATE_REL_Y,
   gateTransformA,
   gateTransformB,
+  initContactSlot,
   narrowPhaseGate,
   shouldSwap,
   updateManifold,
 } from './contact.ts';
+import type { ContactEdges } from './contact-edges.ts';
 import {
   CACHE,
   CONTACT_STRIDE,
@@ -63,16 +64,19 @@ const PAIRS_PER_SHAPE = 3;
 /**
  * Owns the contacts: creates one when the broad phase reports a new pair of overlapping fat boxes,
  * updates every active one in the narrow phase, and destroys it when the boxes part and the shapes
- * are more than KEEP_GAP apart. Contacts are
- * pooled, so a scene that keeps its pairs allocates nothing.
+ * are more than KEEP_GAP apart. A contact is a slot of flat memory, nothing else: its numbers,
+ * bodies, shapes and pair kind in {@link ContactData}, its place in its bodies' contact lists in
+ * {@link ContactEdges}. Making one fills a slot and links two edges; ending one unlinks them and
+ * moves the last slot into its place: no object is made, pooled or rewired.
  */
 export class ContactManager {
-  /** Every contact, in creation order (removal swaps the last one in). */
-  readonly contacts: Contact[] = [];
-  /** The contacts' numbers: slot i belongs to contacts[i]. */
+  /** Contacts alive: slots 0 to count - 1, in creation order (removal moves the last one in). */
+  count = 0;
+  /** The contacts' numbers, bodies, shapes and pair kinds, by slot. */
   readonly slots: ContactData;
-  /** Contacts that started touching during the last narrow phase (the first `beganCount`). */
-  readonly began: Contact[] = [];
+  /** Shape pairs that started touching during the last narrow phase (the first `beganCount`). */
+  readonly beganA: Shape[] = [];
+  readonly beganB: Shape[] = [];
   beganCount = 0;
   /** Shape pairs that stopped touching during the last narrow phase (or were destroyed touching). */
   readonly endedA: Shape[] = [];
@@ -82,7 +86,6 @@ export class ContactManager {
   made = 0;
   destroyed = 0;
   private readonly pairs = new PairSet();
-  private readonly pool: Contact[] = [];
   /** Pairs accepted by addPair, not yet contacts (the first `pendingCount`, already ordered). */
   private readonly pendingA: Shape[] = [];
   private readonly pendingB: Shape[] = [];
@@ -90,7 +93,7 @@ export class ContactManager {
 
   /** Contacts there will be once createPending has run. */
   get countWithPending(): number {
-    return this.contacts.length + this.pendingCount;
+    return this.count + this.pendingCount;
   }
   /** The bodies' numbers (body-memory.ts), which the narrow phase's gates read in place. */
   private readonly bodyStore: BodyStore;
@@ -99,9 +102,39 @@ export class ContactManager {
     private readonly islands: Islands,
     memory: SolverMemory,
     private readonly table: ShapeTable,
+    /** Each body's contact list (shared with the island search). */
+    readonly edges: ContactEdges,
+    /** The world's bodies by world index, and its shapes by id: what a slot's numbers name. */
+    private readonly bodies: readonly Body[],
+    private readonly shapes: readonly (Shape | null)[],
   ) {
     this.slots = new ContactData(memory);
     this.bodyStore = memory.bodyStore;
+  }
+
+  /** Body A of the contact in `slot`. */
+  bodyA(slot: number): Body {
+    return this.bodies[this.slots.bodies[2 * slot]!]!;
+  }
+
+  /** Body B of the contact in `slot`. */
+  bodyB(slot: number): Body {
+    return this.bodies[this.slots.bodies[2 * slot + 1]!]!;
+  }
+
+  /** Shape A of the contact in `slot`. */
+  shapeA(slot: number): Shape {
+    return this.shapes[this.slots.shapes[2 * slot]!]!;
+  }
+
+  /** Shape B of the contact in `slot`. */
+  shapeB(slot: number): Shape {
+    return this.shapes[this.slots.shapes[2 * slot + 1]!]!;
+  }
+
+  /** Whether the contact in `slot` touches: its slot holds manifold points (contact.ts). */
+  touching(slot: number): boolean {
+    return this.slots.data[slot * CONTACT_STRIDE + POINT_COUNT] !== 0;
   }
 
   /**
@@ -160,18 +193,13 @@ export class ContactManager {
   createPending(): void {
     const count = this.pendingCount;
     if (count === 0) return;
-    this.slots.reserve(this.contacts.length + count);
+    this.slots.reserve(this.count + count);
+    this.edges.reserve(this.count + count);
     const data = this.slots.data;
     for (let n = 0; n < count; n++) {
-      const contact = this.pool.pop() ?? new Contact();
-      contact.index = this.contacts.length;
-      contact.init(this.pendingA[n]!, this.pendingB[n]!, data);
-      this.setPair(contact);
-      this.contacts.push(contact);
-      contact.indexInA = contact.bodyA.contacts.length;
-      contact.bodyA.contacts.push(contact);
-      contact.indexInB = contact.bodyB.contacts.length;
-      contact.bodyB.contacts.push(contact);
+      const slot = this.count++;
+      this.fillSlot(slot, this.pendingA[n]!, this.pendingB[n]!, data);
+      this.edges.link(slot);
     }
     this.made += count;
     this.pendingCount = 0;
@@ -194,7 +222,6 @@ export class ContactManager {
     // The world's body memory does not move during the narrow phase (bodies join between steps).
     const pose = this.bodyStore.data;
     const boxes = this.table.data;
-    const contacts = this.contacts;
     const data = this.slots.data;
     const slotBodies = this.slots.bodies;
     const slotShapes = this.slots.shapes;
@@ -202,7 +229,7 @@ export class ContactManager {
     const geometries = this.table.geometries;
     const gate = narrowPhaseGate;
     let i = 0;
-    while (i < contacts.length) {
+    while (i < this.count) {
       // Offsets: body-memory.ts (stride 40: pose 0-3, velocity 4-6, origin reach 7, max extent 8,
       // awake 9) and shape-table.ts (stride 8; fat box from 4). Literals: the loop is hot.
       const pa = slotBodies[2 * i]! * 40;
@@ -233,7 +260,7 @@ export class ContactManager {
           boxes[sa + 1]! - KEEP_GAP > boxes[sb + 3]! ||
           boxes[sb + 1]! - KEEP_GAP > boxes[sa + 3]!)
       ) {
-        this.destroy(contacts[i]!, false);
+        this.destroy(i, false);
         continue; // the last contact now sits at index i
       }
       const base = i * CONTACT_STRIDE;
@@ -253,11 +280,7 @@ export class ContactManager {
         boxes[sb + 1]! - margin > boxes[sa + 3]!
       ) {
         // A contact touches exactly when its slot holds points (contact.ts keeps them together).
-        if (data[base + POINT_COUNT] !== 0) {
-          const contact = contacts[i]!;
-          contact.touching = false;
-          this.recordEnd(contact);
-        }
+        if (data[base + POINT_COUNT] !== 0) this.recordEnd(i);
         data[base + POINT_COUNT] = 0;
         data[base + HAS_CACHE] = 0;
         i++;
@@ -336,23 +359,25 @@ export class ContactManager {
       const wasTouching = data[base + POINT_COUNT] !== 0;
       const touching =
         updateManifold(
-          contacts,
           i,
           kinds[i]!,
           geometries[sa >> 3]!,
           geometries[sb >> 3]!,
           dt,
           data,
+          pose,
+          pa,
+          pb,
         ) > 0;
       if (touching !== wasTouching) {
-        const contact = contacts[i]!;
-        contact.touching = touching;
         if (touching) {
-          this.began[this.beganCount++] = contact;
-          this.wake(contact.bodyA);
-          this.wake(contact.bodyB);
+          const n = this.beganCount++;
+          this.beganA[n] = this.shapes[sa >> 3]!;
+          this.beganB[n] = this.shapes[sb >> 3]!;
+          this.wake(this.bodies[slotBodies[2 * i]!]!);
+          this.wake(this.bodies[slotBodies[2 * i + 1]!]!);
         } else {
-          this.recordEnd(contact);
+          this.recordEnd(i);
         }
       }
       i++;
@@ -367,76 +392,100 @@ export class ContactManager {
 
   /** Destroys every contact of a body (it is being removed), waking what touched it. */
   destroyContactsOf(body: Body): void {
-    while (body.contacts.length > 0) {
-      this.destroy(body.contacts[body.contacts.length - 1]!, true);
+    const edges = this.edges;
+    for (let key = edges.first(body.worldIndex); key >= 0; key = edges.first(body.worldIndex)) {
+      this.destroy(key >> 1, true);
     }
   }
 
   /** The body at world index `index` left the world (its contacts are already destroyed). */
   bodyRemoved(index: number): void {
-    this.slots.bodyRemoved(index, this.contacts.length);
+    this.slots.bodyRemoved(index, this.count);
   }
 
   /** Destroys every contact of a shape (it is being removed). */
   destroyContactsOfShape(shape: Shape): void {
-    const contacts = shape.body.contacts;
-    for (let i = contacts.length - 1; i >= 0; i--) {
-      const contact = contacts[i]!;
-      if (contact.shapeA === shape || contact.shapeB === shape) this.destroy(contact, true);
-    }
+    this.destroyContactsWhere(shape.body, shape.id, -1, false);
+  }
+
+  /** Destroys the contacts of a shape that its filter now forbids, waking their bodies. */
+  destroyForbiddenContactsOf(shape: Shape): void {
+    this.destroyContactsWhere(shape.body, shape.id, -1, true);
   }
 
   /** Destroys the contacts between two bodies (a joint now keeps them from colliding). */
   destroyContactsBetween(bodyA: Body, bodyB: Body): void {
-    const contacts = bodyA.contacts;
-    for (let i = contacts.length - 1; i >= 0; i--) {
-      const contact = contacts[i]!;
-      if (contact.other(bodyA) === bodyB) this.destroy(contact, false);
+    this.destroyContactsWhere(bodyA, -1, bodyB.worldIndex, false);
+  }
+
+  /**
+   * Destroys the contacts of `body` with shape id `shape` on one side (-1: any) and the body at
+   * world index `other` on the other (-1: any); with `forbidden`, only those whose filters forbid
+   * the pair, waking their bodies. After each end the walk starts again from the list's head: the
+   * end moved the last slot, and with it the keys of its edges.
+   */
+  private destroyContactsWhere(body: Body, shape: number, other: number, forbidden: boolean): void {
+    const edges = this.edges;
+    const shapes = this.slots.shapes;
+    let key = edges.first(body.worldIndex);
+    while (key >= 0) {
+      const slot = key >> 1;
+      if (
+        (shape < 0 || shapes[2 * slot] === shape || shapes[2 * slot + 1] === shape) &&
+        (other < 0 || edges.other(key) === other) &&
+        (!forbidden || !this.shapeA(slot).collidesWith(this.shapeB(slot)))
+      ) {
+        this.destroy(slot, shape >= 0);
+        key = edges.first(body.worldIndex);
+      } else {
+        key = edges.next[key]!;
+      }
+    }
+  }
+
+  /** Wakes every body in contact with `body` (a static body was moved by hand). */
+  wakeContactsOf(body: Body): void {
+    const edges = this.edges;
+    for (let key = edges.first(body.worldIndex); key >= 0; key = edges.next[key]!) {
+      this.islands.wake(this.bodies[edges.other(key)]!);
     }
   }
 
   /**
-   * Recreates a contact from a snapshot: shapes already ordered, appended to the contact list.
-   * The caller fills its slot of the contact data and the bodies' contact lists.
+   * Recreates a contact from a snapshot: shapes already ordered, in the next slot, which it
+   * returns. The caller fills the slot's numbers and links its edges into the bodies' lists.
    */
-  restoreContact(shapeA: Shape, shapeB: Shape): Contact {
+  restoreContact(shapeA: Shape, shapeB: Shape): number {
     this.pairs.add(shapeA.id, shapeB.id);
-    const contact = new Contact();
-    contact.index = this.contacts.length;
-    this.slots.reserve(contact.index + 1);
-    contact.init(shapeA, shapeB, this.slots.data);
-    this.setPair(contact);
-    this.contacts.push(contact);
-    return contact;
+    const slot = this.count;
+    this.slots.reserve(slot + 1);
+    this.edges.reserve(slot + 1);
+    this.fillSlot(slot, shapeA, shapeB, this.slots.data);
+    this.count++;
+    return slot;
   }
 
-  /** Destroys one contact (its filter now forbids it), waking its bodies if it touched. */
-  destroyContact(contact: Contact): void {
-    this.destroy(contact, true);
-  }
-
-  private destroy(contact: Contact, wakeBodies: boolean): void {
-    if (contact.touching) {
-      this.recordEnd(contact);
+  /**
+   * Ends the contact in `slot`: reports its end if it touched (waking its bodies with
+   * `wakeBodies`), unlinks its edges and moves the last contact into its slot.
+   */
+  private destroy(slot: number, wakeBodies: boolean): void {
+    if (this.touching(slot)) {
+      this.recordEnd(slot);
       if (wakeBodies) {
-        this.islands.wake(contact.bodyA);
-        this.islands.wake(contact.bodyB);
+        this.islands.wake(this.bodyA(slot));
+        this.islands.wake(this.bodyB(slot));
       }
     }
-    this.pairs.remove(contact.shapeA.id, contact.shapeB.id);
-    removeFromBody(contact.bodyA.contacts, contact.indexInA, contact);
-    removeFromBody(contact.bodyB.contacts, contact.indexInB, contact);
-    const last = this.contacts.pop()!;
-    if (last !== contact) {
-      this.contacts[contact.index] = last;
-      this.slots.move(last.index, contact.index);
-      last.index = contact.index;
+    const shapes = this.slots.shapes;
+    this.pairs.remove(shapes[2 * slot]!, shapes[2 * slot + 1]!);
+    this.edges.unlink(slot);
+    const last = --this.count;
+    if (last !== slot) {
+      this.edges.move(last, slot);
+      this.slots.move(last, slot);
     }
-    contact.index = -1;
-    contact.touching = false;
     this.destroyed++;
-    contact.release();
-    this.pool.push(contact);
   }
 
   /**
@@ -444,7 +493,8 @@ export class ContactManager {
    * shapes): overwritten with null in place. The ends not yet reported stay.
    */
   releaseReferences(): void {
-    releaseFrom(this.began, 0);
+    releaseFrom(this.beganA, 0);
+    releaseFrom(this.beganB, 0);
     this.beganCount = 0;
     releaseFrom(this.endedA, this.endedCount);
     releaseFrom(this.endedB, this.endedCount);
@@ -452,10 +502,10 @@ export class ContactManager {
     releaseFrom(this.pendingB, this.pendingCount);
   }
 
-  /** Frees the pooled contacts and the per-step lists' room after the world shrank a lot. */
+  /** Frees the per-step lists' room after the world shrank a lot. */
   shrink(): void {
-    this.pool.length = 0;
-    this.began.length = 0;
+    this.beganA.length = 0;
+    this.beganB.length = 0;
     this.beganCount = 0;
     this.endedA.length = this.endedCount;
     this.endedB.length = this.endedCount;
@@ -463,30 +513,15 @@ export class ContactManager {
     this.pendingB.length = this.pendingCount;
   }
 
-  private setPair(contact: Contact): void {
-    this.slots.setPair(
-      contact.index,
-      contact.bodyA.worldIndex,
-      contact.bodyB.worldIndex,
-      contact.shapeA.id,
-      contact.shapeB.id,
-      contact.pairKind,
-    );
+  /** Sets up `slot` for the pair of shapes a and b (ordered): numbers, bodies, shapes, kind. */
+  private fillSlot(slot: number, a: Shape, b: Shape, data: Float64Array): void {
+    const kind = initContactSlot(slot, a, b, data);
+    this.slots.setPair(slot, a.body.worldIndex, b.body.worldIndex, a.id, b.id, kind);
   }
 
-  private recordEnd(contact: Contact): void {
+  private recordEnd(slot: number): void {
     const n = this.endedCount++;
-    this.endedA[n] = contact.shapeA;
-    this.endedB[n] = contact.shapeB;
+    this.endedA[n] = this.shapeA(slot);
+    this.endedB[n] = this.shapeB(slot);
   }
-}
-
-/** Swap-removes a contact from a body's list, fixing the moved contact's back-index. */
-function removeFromBody(list: Contact[], index: number, contact: Contact): void {
-  const last = list.pop()!;
-  if (last === contact) return;
-  list[index] = last;
-  // The list belongs to one body, which is either side of the moved contact.
-  if (last.bodyA.contacts === list) last.indexInA = index;
-  else last.indexInB = index;
 }

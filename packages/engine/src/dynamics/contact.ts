@@ -14,7 +14,15 @@ import type { Circle } from '../geometry/circle.ts';
 import type { Polygon } from '../geometry/polygon.ts';
 import type { Segment } from '../geometry/segment.ts';
 import { Transform } from '../math/transform.ts';
-import type { Body } from './body.ts';
+import {
+  B_CENTER_X,
+  B_CENTER_Y,
+  B_LOCAL_CENTER_X,
+  B_LOCAL_CENTER_Y,
+  B_VX,
+  B_VY,
+  B_W,
+} from './body-memory.ts';
 import {
   CACHE,
   CONTACT_STRIDE,
@@ -66,81 +74,44 @@ export function shouldSwap(a: Shape, b: Shape): boolean {
 }
 
 /**
- * A potential or actual contact between two shapes whose fat boxes overlap. It lives from the
- * moment the broad phase finds the pair until the boxes separate, so its impulses carry from step
- * to step (warm starting). Its numbers (manifold, impulses, reuse cache) live in the contact
- * manager's flat {@link ContactData}, in slot {@link index}; the object keeps who touches whom.
+ * Sets up contact slot `slot` of `data` for a new pair (a and b already ordered, see shouldSwap):
+ * clears its numbers and mixes the materials. Returns the pair kind (which collide function
+ * applies). A contact is its slot: its shapes, bodies and kind are in the contact data's flat
+ * arrays (contact-data.ts) and its place in each body's contact list in the contact edges
+ * (contact-edges.ts); no object stands for it.
  */
-export class Contact {
-  shapeA!: Shape;
-  shapeB!: Shape;
-  bodyA!: Body;
-  bodyB!: Body;
-  /** Which collide function applies. */
-  pairKind = 0;
-  /** The manifold has at least one point (possibly speculative). */
-  touching = false;
-  /** Slot in the contact data and index in the world's contact array; and in each body's list. */
-  index = -1;
-  indexInA = -1;
-  indexInB = -1;
-
-  /** Forgets its shapes and bodies when it goes back to the pool (a removed body is released). */
-  release(): void {
-    this.shapeA = this.shapeB = null as unknown as Shape;
-    this.bodyA = this.bodyB = null as unknown as Body;
+export function initContactSlot(slot: number, a: Shape, b: Shape, data: Float64Array): number {
+  const base = slot * CONTACT_STRIDE;
+  data.fill(0, base, base + CONTACT_STRIDE);
+  data[base + FRICTION] = Math.sqrt(a.friction * b.friction);
+  data[base + RESTITUTION] = Math.max(a.restitution, b.restitution);
+  const kindA = a.geometry.kind;
+  const kindB = b.geometry.kind;
+  if (kindA === 'circle') return PAIR_CIRCLES;
+  if (kindA === 'capsule') return kindB === 'circle' ? PAIR_CAPSULE_CIRCLE : PAIR_CAPSULES;
+  if (kindA === 'polygon') {
+    return kindB === 'circle'
+      ? PAIR_POLYGON_CIRCLE
+      : kindB === 'capsule'
+        ? PAIR_POLYGON_CAPSULE
+        : PAIR_POLYGONS;
   }
-
-  /**
-   * Sets up a pooled contact for a new pair in slot `index` of `data`; a and b must already be
-   * ordered (see shouldSwap).
-   */
-  init(a: Shape, b: Shape, data: Float64Array): void {
-    this.shapeA = a;
-    this.shapeB = b;
-    this.bodyA = a.body;
-    this.bodyB = b.body;
-    this.touching = false;
-    const base = this.index * CONTACT_STRIDE;
-    data.fill(0, base, base + CONTACT_STRIDE);
-    data[base + FRICTION] = Math.sqrt(a.friction * b.friction);
-    data[base + RESTITUTION] = Math.max(a.restitution, b.restitution);
-    const kindA = a.geometry.kind;
-    const kindB = b.geometry.kind;
-    if (kindA === 'circle') this.pairKind = PAIR_CIRCLES;
-    else if (kindA === 'capsule')
-      this.pairKind = kindB === 'circle' ? PAIR_CAPSULE_CIRCLE : PAIR_CAPSULES;
-    else if (kindA === 'polygon')
-      this.pairKind =
-        kindB === 'circle'
-          ? PAIR_POLYGON_CIRCLE
-          : kindB === 'capsule'
-            ? PAIR_POLYGON_CAPSULE
-            : PAIR_POLYGONS;
-    else
-      this.pairKind =
-        kindB === 'circle'
-          ? PAIR_SEGMENT_CIRCLE
-          : kindB === 'capsule'
-            ? PAIR_SEGMENT_CAPSULE
-            : PAIR_SEGMENT_POLYGON;
-  }
-
-  /** The body on the other side of the contact. */
-  other(body: Body): Body {
-    return body === this.bodyA ? this.bodyB : this.bodyA;
-  }
+  return kindB === 'circle'
+    ? PAIR_SEGMENT_CIRCLE
+    : kindB === 'capsule'
+      ? PAIR_SEGMENT_CAPSULE
+      : PAIR_SEGMENT_POLYGON;
 }
 
 /**
  * Narrow phase in full for contact slot `slot`: recomputes the manifold of geometries `a` and `b`
  * (pair kind `kind`) at the transforms in {@link gateTransformA} and {@link gateTransformB} into
  * the slot of `data`, and carries the accumulated impulses over to points with the same feature
- * id. Returns the number of points (the contact touches when it is not 0); the caller keeps
- * `Contact.touching` equal to that. The contact manager's gates (contact-manager.ts) ran first:
- * the shapes are within the margin in {@link narrowPhaseGate}, and the manifold could not be
- * reused. The Contact object, `contacts[slot]`, is read only for circle pairs and far speculative
- * points, so the common pair is computed from the slot, the geometries and the transforms alone.
+ * id. Returns the number of points (the contact touches when it is not 0). The contact manager's
+ * gates (contact-manager.ts) ran first: the shapes are within the margin in
+ * {@link narrowPhaseGate}, and the manifold could not be reused. The bodies' numbers are read in
+ * place in the body memory `pose` at offsets `pa` and `pb` (body-memory.ts), for circle pairs and
+ * far speculative points only.
  *
  * Speculative contacts (Catto, "Speculative contacts", 2013): a point is kept while the gap is
  * under SPECULATIVE_DISTANCE, or while the shapes approach fast enough to close the gap within
@@ -150,13 +121,15 @@ export class Contact {
  * approach along that point's normal.
  */
 export function updateManifold(
-  contacts: readonly Contact[],
   slot: number,
   kind: number,
   a: Geometry,
   b: Geometry,
   dt: number,
   data: Float64Array,
+  pose: Float64Array,
+  pa: number,
+  pb: number,
 ): number {
   const base = slot * CONTACT_STRIDE;
   const gate = narrowPhaseGate;
@@ -203,21 +176,17 @@ export function updateManifold(
       collideSegmentAndCapsule(a as Segment, xfA, b as Capsule, xfB, m);
       break;
   }
-  if (reach > 0 && kind !== PAIR_CIRCLES && hasFarPoint(m)) {
-    const contact = contacts[slot]!;
-    dropPassingPoints(m, contact.bodyA, contact.bodyB, dt);
-  }
+  if (reach > 0 && kind !== PAIR_CIRCLES && hasFarPoint(m)) dropPassingPoints(m, pose, pa, pb, dt);
   // The solver pushes particles along their line of centres (see contact-solver.ts). Read
   // here, not when the contact starts, because adding a shape can move a centre of mass.
-  if (kind === PAIR_CIRCLES)
-    writeCentredCircleRadius(data, base + RADIUS_A, contacts[slot]!.shapeA);
+  if (kind === PAIR_CIRCLES) writeCentredCircleRadius(data, base + RADIUS_A, a, pose, pa);
   if (
     kind === PAIR_CIRCLES ||
     kind === PAIR_POLYGON_CIRCLE ||
     kind === PAIR_SEGMENT_CIRCLE ||
     kind === PAIR_CAPSULE_CIRCLE
   ) {
-    writeCentredCircleRadius(data, base + RADIUS_B, contacts[slot]!.shapeB);
+    writeCentredCircleRadius(data, base + RADIUS_B, b, pose, pb);
   }
 
   // Carry the impulses of last step's points over to the new points with the same feature.
@@ -304,14 +273,23 @@ function storeCache(
   data[base + HAS_CACHE] = 1;
 }
 
-/** Writes the radius of a circle shape centred on its body's centre of mass, else 0, to data[at]. */
-function writeCentredCircleRadius(data: Float64Array, at: number, shape: Shape): void {
-  const g = shape.geometry;
-  const body = shape.body;
+/**
+ * Writes the radius of circle geometry `g` if it is centred on its body's centre of mass (the
+ * body's stride at `p` of the body memory), else 0, to data[at].
+ */
+function writeCentredCircleRadius(
+  data: Float64Array,
+  at: number,
+  g: Geometry,
+  pose: Float64Array,
+  p: number,
+): void {
   // Written in place rather than returned: V8 boxes a fractional return value of a call it does
   // not inline, and this runs per circle contact per step.
   data[at] =
-    g.kind !== 'circle' || g.centerX !== body.localCenterX || g.centerY !== body.localCenterY
+    g.kind !== 'circle' ||
+    g.centerX !== pose[p + B_LOCAL_CENTER_X] ||
+    g.centerY !== pose[p + B_LOCAL_CENTER_Y]
       ? 0
       : g.radius;
 }
@@ -319,7 +297,7 @@ function writeCentredCircleRadius(data: Float64Array, at: number, shape: Shape):
 /** The narrow phase's output before it is copied into a contact's slot (one step at a time). */
 const scratch = new Manifold();
 
-// What the contact manager's gates computed for the contact it hands to Contact.update: a scratch
+// What the contact manager's gates computed for the contact it hands to updateManifold: a scratch
 // array rather than arguments, since V8 boxes fractional arguments of calls it does not inline.
 export const GATE_MARGIN = 0;
 export const GATE_REACH = 1;
@@ -341,24 +319,33 @@ function hasFarPoint(m: Manifold): boolean {
   return false;
 }
 
-/** Keeps far speculative points only where the bodies approach along the normal fast enough. */
-function dropPassingPoints(m: Manifold, bodyA: Body, bodyB: Body, dt: number): void {
+/**
+ * Keeps far speculative points only where the bodies (strides `pa` and `pb` of the body memory
+ * `pose`) approach along the normal fast enough.
+ */
+function dropPassingPoints(
+  m: Manifold,
+  pose: Float64Array,
+  pa: number,
+  pb: number,
+  dt: number,
+): void {
   const nx = m.normalX;
   const ny = m.normalY;
   let kept = 0;
   for (let i = 0; i < m.pointCount; i++) {
     const p = m.points[i]!;
     if (p.separation >= SPECULATIVE_DISTANCE) {
-      const wA = bodyA.angularVelocityValue;
-      const wB = bodyB.angularVelocityValue;
+      const wA = pose[pa + B_W]!;
+      const wB = pose[pb + B_W]!;
       const vx =
-        bodyB.velocityX -
-        wB * (p.y - bodyB.centerY) -
-        (bodyA.velocityX - wA * (p.y - bodyA.centerY));
+        pose[pb + B_VX]! -
+        wB * (p.y - pose[pb + B_CENTER_Y]!) -
+        (pose[pa + B_VX]! - wA * (p.y - pose[pa + B_CENTER_Y]!));
       const vy =
-        bodyB.velocityY +
-        wB * (p.x - bodyB.centerX) -
-        (bodyA.velocityY + wA * (p.x - bodyA.centerX));
+        pose[pb + B_VY]! +
+        wB * (p.x - pose[pb + B_CENTER_X]!) -
+        (pose[pa + B_VY]! + wA * (p.x - pose[pa + B_CENTER_X]!));
       const approach = -(vx * nx + vy * ny) * dt;
       if (p.separation >= SPECULATIVE_DISTANCE + 1.5 * approach) continue;
     }

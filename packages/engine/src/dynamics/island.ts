@@ -1,5 +1,6 @@
 import { releaseFrom } from '../core/release.ts';
 import type { Body } from './body.ts';
+import type { ContactEdges } from './contact-edges.ts';
 
 /**
  * Sleep by islands: bodies that touch or are joined (through dynamic or kinematic bodies, never
@@ -22,6 +23,15 @@ export class Islands {
   private held = false;
   /** collect's rest threshold (s); a double from the start, so V8 keeps the field unboxed. */
   private minimumRest = 0.5;
+
+  /**
+   * `edges`: each body's contact list, walked by key; `bodies`: the world's bodies by world index
+   * (what an edge's other side names).
+   */
+  constructor(
+    private readonly edges: ContactEdges,
+    private readonly bodies: readonly Body[],
+  ) {}
 
   /** Drops the references its search lists hold (a removed body must not stay reachable). */
   releaseReferences(): void {
@@ -100,10 +110,10 @@ export class Islands {
       current.sleepTime = 0;
       woken[count++] = current;
       if (current.type === 'kinematic') continue;
-      for (let i = 0; i < current.contacts.length; i++) {
-        const contact = current.contacts[i]!;
-        if (!contact.touching) continue;
-        const other = contact.other(current);
+      const edges = this.edges;
+      for (let key = edges.first(current.worldIndex); key >= 0; key = edges.next[key]!) {
+        if (!edges.touching(key)) continue;
+        const other = this.bodies[edges.other(key)]!;
         if (other.type === 'static' || other.awake) continue;
         other.awake = true;
         stack[top++] = other;
@@ -153,11 +163,11 @@ export class Islands {
       members[memberCount++] = body;
       // A kinematic body does not join islands together: what touches it is not connected through it.
       if (body.type === 'kinematic') continue;
-      for (let i = 0; i < body.contacts.length; i++) {
-        const contact = body.contacts[i]!;
-        if (!contact.touching) continue;
+      const edges = this.edges;
+      for (let key = edges.first(body.worldIndex); key >= 0; key = edges.next[key]!) {
+        if (!edges.touching(key)) continue;
         this.held = true;
-        const other = contact.other(body);
+        const other = this.bodies[edges.other(key)]!;
         if (other.type === 'static' || other.islandStamp === stamp) continue;
         if (other.sleepTime < minimumRest || other.islandStamp > passStart) return false;
         // A moving kinematic body keeps what it touches awake (checked above); a resting one is

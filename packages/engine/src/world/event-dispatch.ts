@@ -1,6 +1,5 @@
 import { callAll, type Listeners, type ListenerEntry } from '../core/listeners.ts';
 import { bodyListeners, type Body } from '../dynamics/body.ts';
-import type { Contact } from '../dynamics/contact.ts';
 import {
   CONTACT_STRIDE,
   NORMAL_X,
@@ -58,12 +57,10 @@ export class EventDispatch {
   /** The step's events: contact begins and ends, sensor begins, collisions, moves. */
   dispatchStep(): void {
     const manager = this.contactManager;
-    const began = manager.began;
-    if (manager.beganCount > 0) {
-      for (let i = 0; i < manager.beganCount; i++) {
-        const contact = began[i]!;
-        this.emitContact('contactBegin', contact.shapeA, contact.shapeB);
-      }
+    const beganA = manager.beganA;
+    const beganB = manager.beganB;
+    for (let i = 0; i < manager.beganCount; i++) {
+      this.emitContact('contactBegin', beganA[i]!, beganB[i]!);
     }
     this.dispatchEnds();
     this.dispatchSensorBegins();
@@ -178,15 +175,15 @@ export class EventDispatch {
   }
 
   private dispatchCollisions(): void {
-    const contacts = this.contactManager.contacts;
+    const manager = this.contactManager;
     const slots = this.solver.constraints.slots;
     const worldListeners = this.listeners.get('collision');
     if (worldListeners === undefined && bodyListeners.total === 0) return;
     const event = this.collisionEvent;
     for (let i = 0; i < this.solver.constraints.count; i++) {
-      const contact = contacts[slots[i]!]!;
-      const bodyA = contact.bodyA;
-      const bodyB = contact.bodyB;
+      const slot = slots[i]!;
+      const bodyA = manager.bodyA(slot);
+      const bodyB = manager.bodyB(slot);
       if (
         worldListeners === undefined &&
         bodyA.listeners.total === 0 &&
@@ -199,17 +196,18 @@ export class EventDispatch {
       if (worldListeners === undefined && listenersA === undefined && listenersB === undefined)
         continue;
       if (bodyA.removalPending || bodyB.removalPending) continue;
-      this.fillCollisionEvent(contact, event);
+      this.fillCollisionEvent(slot, event);
       if (event.normalImpulse <= 0) continue;
       deliver(worldListeners, listenersA, listenersB, event, bodyA, bodyB);
     }
     forgetBodies(event);
   }
 
-  /** Fills the reused collision event from a contact's slot (also `World.forEachContact`). */
-  fillCollisionEvent(contact: Contact, event: CollisionEventData): void {
-    const data = this.contactManager.slots.data;
-    const base = contact.index * CONTACT_STRIDE;
+  /** Fills the reused collision event from contact slot `slot` (also `World.forEachContact`). */
+  fillCollisionEvent(slot: number, event: CollisionEventData): void {
+    const manager = this.contactManager;
+    const data = manager.slots.data;
+    const base = slot * CONTACT_STRIDE;
     const pointCount = data[base + POINT_COUNT]!;
     let normalImpulse = 0;
     let tangentImpulse = 0;
@@ -229,10 +227,10 @@ export class EventDispatch {
       point.normalImpulse = pointNormal;
       point.tangentImpulse = pointTangent;
     }
-    event.bodyA = contact.bodyA;
-    event.bodyB = contact.bodyB;
-    event.shapeA = contact.shapeA;
-    event.shapeB = contact.shapeB;
+    event.bodyA = manager.bodyA(slot);
+    event.bodyB = manager.bodyB(slot);
+    event.shapeA = manager.shapeA(slot);
+    event.shapeB = manager.shapeB(slot);
     event.normalX = data[base + NORMAL_X]!;
     event.normalY = data[base + NORMAL_Y]!;
     event.pointCount = pointCount;

@@ -11,7 +11,6 @@ import {
   POINT_COUNT,
   RESTITUTION,
 } from '../dynamics/contact-data.ts';
-import type { Contact } from '../dynamics/contact.ts';
 import type { Shape } from '../dynamics/shape.ts';
 import { MAX_TIME_STEP, MIN_TIME_STEP } from '../core/validate.ts';
 import { buildJoint, readJoint, type JointPlan } from './joint-snapshot.ts';
@@ -205,7 +204,8 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
 
   // Contacts.
   const contactEntries = arr('contacts', field(root, '', 'contacts'));
-  const contacts: Contact[] = [];
+  /** The slot of each saved contact (its index: contacts are restored in order). */
+  const contacts: number[] = [];
   const pairs = new Set<string>();
   contactEntries.forEach((entry, i) => {
     const path = `contacts[${i}]`;
@@ -233,7 +233,7 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
     if (pairs.has(key)) fail(`${path}.shapes`, 'repeats a pair of shapes.');
     pairs.add(key);
     const contact = w.contactManager.restoreContact(a, b);
-    contact.touching = bool(`${path}.touching`, field(o, path, 'touching'));
+    const touching = bool(`${path}.touching`, field(o, path, 'touching'));
     const values = finites(
       `${path}.data`,
       field(o, path, 'data'),
@@ -245,7 +245,7 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
     int(`${path}.data[${POINT_COUNT}]`, values[POINT_COUNT], 0, 2);
     int(`${path}.data[${HAS_CACHE}]`, values[HAS_CACHE], 0, 1);
     // The solver takes a contact with manifold points as touching (contact-solver.ts).
-    if (contact.touching !== values[POINT_COUNT]! > 0) {
+    if (touching !== values[POINT_COUNT]! > 0) {
       fail(
         `${path}.touching`,
         `must be ${values[POINT_COUNT]! > 0}: data holds ${values[POINT_COUNT]} points.`,
@@ -266,18 +266,27 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
     if (values[POINT_COUNT]! > 0 && !(Math.abs(normal - 1) <= 1e-6)) {
       fail(`${path}.data[${NORMAL_X}]`, `must hold a unit normal, got one of length ${normal}.`);
     }
-    w.contactManager.slots.data.set(values, contact.index * CONTACT_STRIDE);
+    w.contactManager.slots.data.set(values, contact * CONTACT_STRIDE);
     contacts.push(contact);
   });
 
   // Each body's contact list, in its saved order: exactly the contacts that name the body.
   const seen = new Uint8Array(contacts.length);
+  const slotBodies = w.contactManager.slots.bodies;
+  const edgeLists: number[][] = [];
   w.bodies.forEach((body, i) => {
     const list = contactLists[i]!;
+    const keys: number[] = [];
     list.forEach((index, k) => {
       const contact = contacts[index];
       const side =
-        contact === undefined ? 0 : contact.bodyA === body ? 1 : contact.bodyB === body ? 2 : 0;
+        contact === undefined
+          ? 0
+          : slotBodies[2 * contact] === body.worldIndex
+            ? 1
+            : slotBodies[2 * contact + 1] === body.worldIndex
+              ? 2
+              : 0;
       if (contact === undefined || side === 0 || (seen[index]! & side) !== 0) {
         fail(
           `bodies[${i}].contacts[${k}]`,
@@ -285,15 +294,18 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
         );
       }
       seen[index]! |= side;
-      if (side === 1) contact.indexInA = body.contacts.length;
-      else contact.indexInB = body.contacts.length;
-      body.contacts.push(contact);
+      keys.push(2 * contact + side - 1);
     });
+    edgeLists.push(keys);
   });
   seen.forEach((flags, index) => {
     if (flags !== 3)
       fail(`contacts[${index}]`, 'is missing from the contact list of one of its bodies.');
   });
+  // Linked at the lists' heads, last first, so each list reads in its saved order.
+  for (const keys of edgeLists) {
+    for (let k = keys.length - 1; k >= 0; k--) w.contactManager.edges.pushEdge(keys[k]!);
+  }
 
   // Sensors, in their saved order, with their overlaps.
   const sensorEntries = arr('sensors', field(root, '', 'sensors'));

@@ -2,7 +2,7 @@ import { exportBroadPhaseState } from '../collision/broad-phase-state.ts';
 import type { TreeState } from '../collision/dynamic-tree-state.ts';
 import type { Body } from '../dynamics/body.ts';
 import { CONTACT_STRIDE } from '../dynamics/contact-data.ts';
-import type { Contact } from '../dynamics/contact.ts';
+import type { ContactManager } from '../dynamics/contact-manager.ts';
 import type { Shape } from '../dynamics/shape.ts';
 import { saveJoint } from './joint-snapshot.ts';
 import {
@@ -66,7 +66,7 @@ function saveShape(shape: Shape): SnapshotValue {
   };
 }
 
-function saveBody(body: Body, contactIndex: Map<Contact, number>): Record<string, SnapshotValue> {
+function saveBody(body: Body, contacts: ContactManager): Record<string, SnapshotValue> {
   const xf = body.transform;
   return {
     id: body.id,
@@ -99,18 +99,29 @@ function saveBody(body: Body, contactIndex: Map<Contact, number>): Record<string
       duration: typeof f.duration === 'number' ? enc(f.duration) : f.duration,
       remaining: enc(f.remaining),
     })),
-    contacts: body.contacts.map((c) => contactIndex.get(c)!),
+    contacts: contactList(body, contacts),
   };
 }
 
-function saveContact(contact: Contact, data: Float64Array): Record<string, SnapshotValue> {
+/** The slots of a body's contacts, in the order of its contact list (contact-edges.ts). */
+function contactList(body: Body, contacts: ContactManager): number[] {
+  const edges = contacts.edges;
+  const list: number[] = [];
+  for (let key = edges.first(body.worldIndex); key >= 0; key = edges.next[key]!) {
+    list.push(key >> 1);
+  }
+  return list;
+}
+
+function saveContact(slot: number, contacts: ContactManager): Record<string, SnapshotValue> {
   // The contact's numbers (manifold, warm-start impulses, reuse cache) are one slot of the
   // contact data: saved whole, in the slot's own layout (see dynamics/contact-data.ts).
-  const base = contact.index * CONTACT_STRIDE;
+  const base = slot * CONTACT_STRIDE;
+  const shapes = contacts.slots.shapes;
   return {
-    shapes: [contact.shapeA.id, contact.shapeB.id],
-    touching: contact.touching,
-    data: encAll(data.subarray(base, base + CONTACT_STRIDE)),
+    shapes: [shapes[2 * slot]!, shapes[2 * slot + 1]!],
+    touching: contacts.touching(slot),
+    data: encAll(contacts.slots.data.subarray(base, base + CONTACT_STRIDE)),
   };
 }
 
@@ -121,8 +132,8 @@ function saveTree(tree: TreeState): SnapshotValue {
 /** @internal Writes a world's state as a snapshot. */
 export function saveWorld(w: WorldInternals): WorldSnapshot {
   const s = w.settings;
-  const contactIndex = new Map<Contact, number>();
-  w.contactManager.contacts.forEach((c, i) => contactIndex.set(c, i));
+  const manager = w.contactManager;
+  const contactSlots = Array.from({ length: manager.count }, (_, slot) => slot);
   const broadPhase = exportBroadPhaseState(w.broadPhase);
   return {
     format: SNAPSHOT_FORMAT,
@@ -147,8 +158,8 @@ export function saveWorld(w: WorldInternals): WorldSnapshot {
       shapeSlots: w.shapesById.length,
       freeShapeIds: w.freeShapeIds.slice(),
     },
-    bodies: w.bodies.map((b) => saveBody(b, contactIndex)),
-    contacts: w.contactManager.contacts.map((c) => saveContact(c, w.contactManager.slots.data)),
+    bodies: w.bodies.map((b) => saveBody(b, manager)),
+    contacts: contactSlots.map((slot) => saveContact(slot, manager)),
     sensors: w.sensors.shapes.map((shape, i) => ({
       shape: shape.id,
       visitors: w.sensors.overlaps[i]!.map((v) => v.id),

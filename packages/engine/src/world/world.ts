@@ -6,6 +6,7 @@ import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
 import { BodyBounds } from '../dynamics/body-bounds.ts';
 import { ContactManager } from '../dynamics/contact-manager.ts';
+import { ContactEdges } from '../dynamics/contact-edges.ts';
 import { ContinuousSolver } from '../dynamics/continuous.ts';
 import {
   WORLD_EVENT_NAMES,
@@ -53,21 +54,25 @@ const PROXY_TYPE: Record<Body['type'], ProxyType> = { static: 0, kinematic: 1, d
 export class World {
   private readonly settings: ResolvedWorldOptions;
   private readonly bodyList: Body[] = [];
+  private readonly shapesById: (Shape | null)[] = [];
   private readonly broadPhase = new BroadPhase();
   private readonly bounds = new BodyBounds(this.broadPhase);
-  private readonly islands = new Islands();
   private readonly solver = new Solver();
+  private readonly contactEdges = new ContactEdges(this.solver.memory);
+  private readonly islands = new Islands(this.contactEdges, this.bodyList);
   private readonly shapeTable = new ShapeTable();
   private readonly contactManager = new ContactManager(
     this.islands,
     this.solver.memory,
     this.shapeTable,
+    this.contactEdges,
+    this.bodyList,
+    this.shapesById,
   );
   private readonly continuous = new ContinuousSolver();
   private readonly sensors = new Sensors();
   private readonly queries: WorldQueries;
   private readonly shapeQueries: ShapeQueries;
-  private readonly shapesById: (Shape | null)[] = [];
   private readonly freeShapeIds: number[] = [];
   private nextBodyId = 0;
   private locked = false;
@@ -372,7 +377,7 @@ export class World {
       this.contactManager.createPending();
       this.contactManager.collide(dt);
       this.solver.gatherBodies(this.bodyList, dt);
-      this.solver.solve(this.contactManager.contacts.length, this.settings, dt);
+      this.solver.solve(this.contactManager.count, this.settings, dt);
       // The step moves its bodies' proxies together: their trees only grow until the rebuild
       // below (BroadPhase.deferring), which queries may precede, since grown trees stay exact.
       this.broadPhase.deferring = true;
@@ -471,9 +476,10 @@ export class World {
   forEachContact(visitor: (contact: ContactView) => void): void {
     requireFunction('visitor', visitor);
     const event = this.events.collisionEvent;
-    for (const contact of this.contactManager.contacts) {
-      if (!contact.touching) continue;
-      this.events.fillCollisionEvent(contact, event);
+    const manager = this.contactManager;
+    for (let slot = 0; slot < manager.count; slot++) {
+      if (!manager.touching(slot)) continue;
+      this.events.fillCollisionEvent(slot, event);
       visitor(event);
     }
     forgetBodies(event);
@@ -509,7 +515,7 @@ export class World {
     if (this.bodyList[body.worldIndex] !== body) return; // joins at the end of the step
     this.refreshProxies(body, true);
     if (body.type === 'static') {
-      for (const contact of body.contacts) this.islands.wake(contact.other(body));
+      this.contactManager.wakeContactsOf(body);
     } else {
       this.islands.wake(body);
     }
@@ -546,12 +552,7 @@ export class World {
    */
   shapeFilterChanged(shape: Shape): void {
     if (shape.proxyKey < 0) return;
-    const contacts = shape.body.contacts;
-    for (let i = contacts.length - 1; i >= 0; i--) {
-      const contact = contacts[i]!;
-      if (contact.shapeA !== shape && contact.shapeB !== shape) continue;
-      if (!contact.shapeA.collidesWith(contact.shapeB)) this.contactManager.destroyContact(contact);
-    }
+    this.contactManager.destroyForbiddenContactsOf(shape);
     this.broadPhase.bufferMove(shape.proxyKey);
     this.wakeBody(shape.body);
     this.events.dispatchEnds();
@@ -656,8 +657,8 @@ export class World {
   /**
    * A removed body (and its userData) must not stay reachable from the world: the step's lists
    * still point at the last step's bodies and shapes, so the first removal after a step
-   * overwrites them with null (in place: the next step allocates nothing). Pooled contacts drop
-   * theirs when they go back to the pool (ContactManager.destroyContact).
+   * overwrites them with null (in place: the next step allocates nothing). Contacts hold no
+   * references: they are slots of numbers (ContactManager).
    */
   private releaseReferences(): void {
     if (!this.holdsReferences) return;
@@ -677,7 +678,7 @@ export class World {
     const count = this.bodyList.length;
     if (this.mostBodies < 1024 || 4 * count > this.mostBodies) return;
     this.mostBodies = count;
-    this.solver.shrink(count, this.contactManager.contacts.length);
+    this.solver.shrink(count, this.contactManager.count);
     this.contactManager.shrink();
   }
 
