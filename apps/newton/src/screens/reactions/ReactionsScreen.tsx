@@ -32,7 +32,8 @@ import {
   useState,
 } from 'react';
 import { useAnnouncer } from '../../app/Announcer.tsx';
-import { REDUCED_MOTION, CANVAS_PIXEL_RATIO } from '../../app/theme.ts';
+import { REDUCED_MOTION } from '../../app/theme.ts';
+import { usePixelRatioGovernor } from '../../app/use-pixel-ratio-governor.ts';
 import { AddIcon, DeleteIcon, PhoneTiltIcon } from '../../app/icons.tsx';
 import { useOrientationRebuild } from '../../app/use-orientation-rebuild.ts';
 import { presetFor } from '../../app/presets.ts';
@@ -258,6 +259,8 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   // The live readouts re-render on their own (Live), not the whole screen: with 50 particles a
   // re-render of the screen ten times a second took most of a slow phone's frame time.
   const live = active && !sim.paused;
+  // Fewer pixels once the canvas cannot draw its frames in time (a slow phone, many particles).
+  const pixelRatio = usePixelRatioGovernor(canvasRef, live);
   const liveKey = useCallback((): string => {
     const current = sceneRef.current;
     if (current === null) return '';
@@ -858,7 +861,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       stage={
         <Box ref={hostRef} data-arrows="0" sx={{ flex: 1, minWidth: 0, display: 'flex' }}>
           <PhysicalCanvas
-            maxPixelRatio={CANVAS_PIXEL_RATIO}
+            maxPixelRatio={pixelRatio}
             ref={canvasRef}
             paused={sim.paused}
             world={scene?.world ?? null}
