@@ -27,6 +27,7 @@ export type { FrameScheduler } from './element/frame-scheduler.ts';
 export { DEFAULT_BACKGROUND, DYNAMIC_PALETTE } from './draw/body-style.ts';
 export type { BodyDrawInfo, BodyStyle, ResolvedBodyStyle } from './draw/body-style.ts';
 export { ARROW_COLORS, drawArrow } from './draw/draw-arrow.ts';
+export { ArrowBatch } from './draw/arrow-batch.ts';
 export type { ArrowKind, ArrowStyle } from './draw/draw-arrow.ts';
 export type { DebugOverlays } from './draw/debug-overlays.ts';
 export type { Pose } from './draw/pose.ts';

@@ -1,6 +1,7 @@
 import { createContext, useContext, useMemo, type ReactNode } from 'react';
 import de from './messages/de.json';
 import en from './messages/en.json';
+import { formatNumber, pluralForm } from './format-number.ts';
 
 /** A message key: every key of the English file (the German file has the same keys). */
 export type MessageKey = keyof typeof en;
@@ -30,21 +31,10 @@ const PLURAL = /\{(\w+), plural, one \{([^{}]*)\} other \{([^{}]*)\}\}/g;
 /** Builds the translator and formatters of a locale (pure; used by the provider and tests). */
 export function createI18n(locale: Locale): I18n {
   const messages = MESSAGES[locale];
-  const formats = new Map<string, Intl.NumberFormat>();
-  const number = (value: number, digits = 2, minDigits = 0): string => {
-    const id = `${digits}:${minDigits}`;
-    let format = formats.get(id);
-    if (format === undefined) {
-      format = new Intl.NumberFormat(locale, {
-        maximumFractionDigits: digits,
-        minimumFractionDigits: minDigits,
-      });
-      formats.set(id, format);
-    }
+  // Formatted without Intl (formatNumber): the first Intl formatter loads the locale's data.
+  const number = (value: number, digits = 2, minDigits = 0): string =>
     // Avoid "-0".
-    return format.format(Math.abs(value) < 0.5 * 10 ** -digits ? 0 : value);
-  };
-  const plurals = new Intl.PluralRules(locale);
+    formatNumber(Math.abs(value) < 0.5 * 10 ** -digits ? 0 : value, locale, digits, minDigits);
   return {
     locale,
     t: (key, values) =>
@@ -54,7 +44,7 @@ export function createI18n(locale: Locale): I18n {
         .replace(PLURAL, (match, name: string, one: string, other: string) => {
           const value = values?.[name];
           if (typeof value !== 'number') return match;
-          const form = plurals.select(value) === 'one' ? one : other;
+          const form = pluralForm(value) === 'one' ? one : other;
           return form.replace(/#/g, number(value, 2));
         })
         .replace(/\{(\w+)\}/g, (match, name: string) =>

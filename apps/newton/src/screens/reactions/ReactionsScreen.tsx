@@ -15,6 +15,7 @@ import {
 } from '@mui/material';
 import {
   ARROW_COLORS,
+  ArrowBatch,
   drawArrow,
   type OverlayDrawer,
   type PhysicalCanvasElement,
@@ -31,7 +32,8 @@ import {
   useState,
 } from 'react';
 import { useAnnouncer } from '../../app/Announcer.tsx';
-import { REDUCED_MOTION, CANVAS_PIXEL_RATIO } from '../../app/theme.ts';
+import { REDUCED_MOTION } from '../../app/theme.ts';
+import { usePixelRatioGovernor } from '../../app/use-pixel-ratio-governor.ts';
 import { AddIcon, DeleteIcon, PhoneTiltIcon } from '../../app/icons.tsx';
 import { useOrientationRebuild } from '../../app/use-orientation-rebuild.ts';
 import { presetFor } from '../../app/presets.ts';
@@ -62,14 +64,9 @@ import {
   reactionArrowLength,
   type ArrowMeasure,
 } from './collision-arrows.ts';
-import {
-  CollisionRecorder,
-  kineticEnergyOf,
-  stateOf,
-  totalMomentumOf,
-  type CollisionRecord,
-} from './collision-lab.ts';
+import { CollisionRecorder, totalMomentumOf, type CollisionRecord } from './collision-lab.ts';
 import { LabResults } from './LabResults.tsx';
+import { ParticleColumns } from './particle-columns.ts';
 import { LabSetup, type LabField, type LabRow } from './LabSetup.tsx';
 import {
   DEFAULT_ELASTICITY,
@@ -105,6 +102,8 @@ const SELECTED_STYLE = { stroke: '#ffffff', lineWidth: 3 } as const;
 const CHOSEN_STYLE = { stroke: '#82b1ff', lineWidth: 2 } as const;
 /** Metres of arrow per kg m/s of momentum. */
 const MOMENTUM_ARROW_SCALE = 0.5;
+/** The momentum arrows' batch, reused every frame. */
+const momentumArrows = new ArrowBatch();
 /** The chosen particles' velocity arrows, which a learner drags. */
 const HANDLE_COLOR = '#ffffff';
 /** Saved steps to rewind through: the last 5 s at 60 steps a second. */
@@ -234,6 +233,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     [],
   );
   const log = useMemo(() => new MeasurementLog(), []);
+  const columns = useMemo(() => new ParticleColumns(), []);
   const [initialPreset] = useState(() => settingsFromPreset(location.hash));
   const [settings, setSettings] = useState<Settings>(initialPreset ?? DEFAULT_SETTINGS);
   const settingsRef = useRef(settings);
@@ -259,6 +259,8 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   // The live readouts re-render on their own (Live), not the whole screen: with 50 particles a
   // re-render of the screen ten times a second took most of a slow phone's frame time.
   const live = active && !sim.paused;
+  // Fewer pixels once the canvas cannot draw its frames in time (a slow phone, many particles).
+  const pixelRatio = usePixelRatioGovernor(canvasRef, live);
   const liveKey = useCallback((): string => {
     const current = sceneRef.current;
     if (current === null) return '';
@@ -366,13 +368,44 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     return () => window.removeEventListener('hashchange', onHash);
   }, [build]);
 
+  // The labels and the chosen pair change only when particles come, go or are chosen: a moment
+  // shares the last one's lists until then (one snapshot entry a step, and no new arrays a step).
+  const lastMoment = useRef<{
+    scene: ReactionsScene;
+    added: number;
+    size: number;
+    pair: readonly Body[];
+    labels: (string | null)[];
+    chosen: string[];
+  } | null>(null);
   const momentData = useCallback(
-    (current: ReactionsScene): MomentData => ({
-      labels: labelsByIndex(current),
-      added: current.added,
-      chosen: chosenRef.current.map((body) => current.particles.get(body)?.label ?? ''),
-      record: recorder.record,
-    }),
+    (current: ReactionsScene): MomentData => {
+      const pair = chosenRef.current;
+      let last = lastMoment.current;
+      if (
+        last === null ||
+        last.scene !== current ||
+        last.added !== current.added ||
+        last.size !== current.particles.size ||
+        last.pair !== pair
+      ) {
+        last = {
+          scene: current,
+          added: current.added,
+          size: current.particles.size,
+          pair,
+          labels: labelsByIndex(current),
+          chosen: pair.map((body) => current.particles.get(body)?.label ?? ''),
+        };
+        lastMoment.current = last;
+      }
+      return {
+        labels: last.labels,
+        added: current.added,
+        chosen: last.chosen,
+        record: recorder.record,
+      };
+    },
     [recorder],
   );
 
@@ -425,21 +458,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       after: () => {
         const time = simulatedTime(world);
         if (recorder.afterStep(time - STEP)) describe(scene);
-        const values = [];
-        for (const [body, info] of scene.particles) {
-          const state = stateOf(body, info.label);
-          const name = info.label;
-          values.push(
-            { name: `${name} x`, unit: 'm', value: state.x },
-            { name: `${name} y`, unit: 'm', value: state.y },
-            { name: `${name} vx`, unit: 'm/s', value: state.vx },
-            { name: `${name} vy`, unit: 'm/s', value: state.vy },
-            { name: `${name} px`, unit: 'kg m/s', value: state.mass * state.vx },
-            { name: `${name} py`, unit: 'kg m/s', value: state.mass * state.vy },
-            { name: `${name} KE`, unit: 'J', value: kineticEnergyOf(state) },
-          );
-        }
-        log.add(time, values);
+        log.add(time, columns.fill(scene.particles));
         history.record(world, time, momentData(scene));
       },
     });
@@ -447,7 +466,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       offCollision();
       offSteps();
     };
-  }, [scene, arrows, recorder, history, log, announce, t, unit, describe, momentData]);
+  }, [scene, arrows, recorder, history, log, columns, announce, t, unit, describe, momentData]);
 
   // Paused, or another particle chosen or set up: the description says how things are now.
   useEffect(() => {
@@ -670,21 +689,22 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       clipToWalls(context, current.width, current.height);
       const lab = chosenRef.current;
       // Momentum arrows m v of the other particles; the chosen ones' velocity arrows, to drag.
+      // One batch (a few fills) for all of them: with 50 particles, 100 strokes and fills a
+      // frame cost a slow phone more raster time than the particles themselves.
+      momentumArrows.begin(context, 2, 1 / scale, ARROW_COLORS.velocity);
       for (const body of current.particles.keys()) {
         const v = body.linearVelocity;
         if (lab.includes(body)) continue;
         if (Math.hypot(v.x, v.y) < 0.02) continue;
-        drawArrow(
-          context,
-          scale,
-          body.position,
-          {
-            x: body.mass * v.x * MOMENTUM_ARROW_SCALE,
-            y: body.mass * v.y * MOMENTUM_ARROW_SCALE,
-          },
-          { kind: 'velocity', width: 2 },
+        const position = body.position;
+        momentumArrows.add(
+          position.x,
+          position.y,
+          body.mass * v.x * MOMENTUM_ARROW_SCALE,
+          body.mass * v.y * MOMENTUM_ARROW_SCALE,
         );
       }
+      momentumArrows.finish();
       for (const { arrow, opacity } of visible) {
         const value =
           measure === 'impulse' ? arrow.impulse : averageForce(arrow.impulse, contactTime);
@@ -841,7 +861,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       stage={
         <Box ref={hostRef} data-arrows="0" sx={{ flex: 1, minWidth: 0, display: 'flex' }}>
           <PhysicalCanvas
-            maxPixelRatio={CANVAS_PIXEL_RATIO}
+            maxPixelRatio={pixelRatio}
             ref={canvasRef}
             paused={sim.paused}
             world={scene?.world ?? null}
