@@ -19,6 +19,11 @@ export interface RewindOptions<Data> {
   readonly data: (index: number) => Data;
   /** Called just before each step of world `index` (e.g. to keep the velocity for Δv / Δt). */
   readonly before?: (index: number) => void;
+  /**
+   * Called just after each step of world `index`, before the moment is saved (e.g. Reactions'
+   * collision record, which the saved moment keeps).
+   */
+  readonly after?: (index: number) => void;
   /** What world `index` measures at the moment just stepped to (and at the first moment). */
   readonly measure: (index: number) => readonly Measured[];
   /**
@@ -135,7 +140,10 @@ export function useRewind<Data>(options: RewindOptions<Data>): Rewind {
           }
           optionsRef.current.before?.(index);
         },
-        after: () => save(world, index),
+        after: () => {
+          optionsRef.current.after?.(index);
+          save(world, index);
+        },
       });
     });
     return () => {

@@ -20,7 +20,7 @@ import {
   type OverlayDrawer,
   type PhysicalCanvasElement,
 } from '@physical/canvas';
-import type { Body } from '@physical/engine';
+import type { Body, World } from '@physical/engine';
 import { PhysicalCanvas } from '@physical/react';
 import {
   useCallback,
@@ -44,11 +44,8 @@ import { Live } from '../../app/Live.tsx';
 import { clipToWalls } from '../../app/clip-to-walls.ts';
 import { ElasticitySlider } from '../../app/ElasticitySlider.tsx';
 import { useI18n, type MessageKey } from '../../i18n/i18n.tsx';
-import { CsvExport } from '../../lab/CsvExport.tsx';
-import { MeasurementLog } from '../../lab/measurement-log.ts';
-import { RewindBar } from '../../lab/RewindBar.tsx';
-import { SnapshotHistory } from '../../lab/snapshot-history.ts';
-import { observeSteps } from '../../lab/step-hook.ts';
+import { DataTools } from '../../lab/DataTools.tsx';
+import { useRewind } from '../../lab/use-rewind.ts';
 import {
   requestTiltPermission,
   tiltNeedsPermission,
@@ -127,11 +124,6 @@ const TAB_LABELS: Record<PanelTab, MessageKey> = {
   results: 'reactions.tabResults',
   options: 'reactions.tabOptions',
   data: 'reactions.tabData',
-};
-const CSV_MESSAGES: Record<'copied' | 'downloaded' | 'failed', MessageKey> = {
-  copied: 'lab.csvCopied',
-  downloaded: 'lab.csvDownloaded',
-  failed: 'lab.csvFailed',
 };
 
 /** The settings of the screen (what Reset all returns to its defaults). */
@@ -223,16 +215,6 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   sceneRef.current = scene;
   const arrows = useMemo(() => new CollisionArrows(), []);
   const recorder = useMemo(() => new CollisionRecorder(), []);
-  const history = useMemo(
-    () =>
-      new SnapshotHistory<MomentData>({
-        capacity: HISTORY_STEPS,
-        interval: SNAPSHOT_INTERVAL,
-        step: STEP,
-      }),
-    [],
-  );
-  const log = useMemo(() => new MeasurementLog(), []);
   const columns = useMemo(() => new ParticleColumns(), []);
   const [initialPreset] = useState(() => settingsFromPreset(location.hash));
   const [settings, setSettings] = useState<Settings>(initialPreset ?? DEFAULT_SETTINGS);
@@ -246,14 +228,9 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   const [sensorOn, setSensorOn] = useState(false);
   const [needsPermission] = useState(tiltButtonUseful);
   const [tab, setTab] = useState<PanelTab>(initialPreset !== null ? 'setup' : 'tray');
-  /** The saved moment shown while rewound, or null when live at the newest. */
-  const [rewound, setRewound] = useState<number | null>(null);
-  const rewoundRef = useRef(rewound);
-  rewoundRef.current = rewound;
   /** Bumped when the setup's values change from outside the table (the fields refill). */
   const [version, bumpVersion] = useReducer((count: number) => count + 1, 0);
   const [description, setDescription] = useState('');
-  const [exportStatus, setExportStatus] = useState('');
   const { announce, region } = useAnnouncer('reactions');
   const [, rerender] = useReducer((count: number) => count + 1, 0);
   // The live readouts re-render on their own (Live), not the whole screen: with 50 particles a
@@ -320,54 +297,6 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     [t, unit, recorder],
   );
 
-  /** A new scene with the settings (and the lab's particles, if any), paused for a lab. */
-  const build = useCallback(
-    (next: Settings = settingsRef.current) => {
-      const host = hostRef.current;
-      const size = sceneSizeFor(host?.clientWidth ?? 0, host?.clientHeight ?? 0);
-      arrows.clear();
-      history.clear();
-      log.clear();
-      setRewound(null);
-      setSelected(null);
-      setTiltState({ x: 0, y: 0 });
-      const created = createReactionsScene(size.width, size.height, next.elasticity);
-      setWallsOn(created, next.wallsOn);
-      setTiltOn(created, next.tiltOn);
-      let pair: Body[] = [];
-      if (next.lab !== null) {
-        pair = setUpLab(created, next.lab);
-        sim.setPaused(true);
-      }
-      sceneRef.current = created;
-      choosePair(pair, created);
-      setSelected(pair[0] ?? null);
-      bumpVersion();
-      setScene(created);
-      describe(created);
-    },
-    [arrows, history, log, sim, choosePair, describe],
-  );
-
-  useLayoutEffect(() => {
-    if (active && scene === null) build();
-  }, [active, scene, build]);
-  const rebuild = useCallback(() => build(), [build]);
-  useOrientationRebuild(hostRef, active ? scene : null, rebuild, sceneSizeFor);
-
-  // A preset link followed while the screen is up sets it up again.
-  useEffect(() => {
-    const onHash = (): void => {
-      const next = settingsFromPreset(location.hash);
-      if (next === null) return;
-      setSettings(next);
-      setTab('setup');
-      build(next);
-    };
-    window.addEventListener('hashchange', onHash);
-    return () => window.removeEventListener('hashchange', onHash);
-  }, [build]);
-
   // The labels and the chosen pair change only when particles come, go or are chosen: a moment
   // shares the last one's lists until then (one snapshot entry a step, and no new arrays a step).
   const lastMoment = useRef<{
@@ -409,12 +338,101 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     [recorder],
   );
 
-  // Each step: the collision lab's record, the measurement log and a snapshot to rewind to.
+  // Step back, scrub and CSV: the world saved each step, with the names and the lab's record.
+  const worlds = useMemo(() => (scene === null ? null : [scene.world]), [scene]);
+  const rewind = useRewind<MomentData>({
+    worlds,
+    capacity: HISTORY_STEPS,
+    interval: SNAPSHOT_INTERVAL,
+    data: () => momentData(sceneRef.current!),
+    before: () => recorder.beforeStep(),
+    // The lab's record of this step first: the saved moment keeps it.
+    after: () => {
+      const current = sceneRef.current;
+      if (current === null) return;
+      if (recorder.afterStep(simulatedTime(current.world) - STEP)) describe(current);
+    },
+    measure: () => columns.fill(sceneRef.current!.particles),
+    adopt: ([world]: readonly World[], [data]: readonly MomentData[]) => {
+      const current = sceneRef.current;
+      if (current === null || world === undefined || data === undefined) return;
+      const next = adoptWorld(current, world, data.labels, data.added);
+      // The switches as they are now, not as they were.
+      const now = settingsRef.current;
+      setElasticity(next, now.elasticity);
+      setWallsOn(next, now.wallsOn);
+      next.tiltOn = now.tiltOn;
+      setTilt(next, current.tilt);
+      // Those switches may differ from the moment's: going on from here, it needs its own snapshot.
+      worldChanged();
+      const byLabel = new Map([...next.particles].map(([body, info]) => [info.label, body]));
+      const pair = data.chosen.flatMap((label) => byLabel.get(label) ?? []);
+      arrows.clear();
+      choosePair(pair, next);
+      recorder.record = data.record;
+      setSelected(selected === null ? null : (byLabel.get(labelOf(selected)) ?? null));
+      sceneRef.current = next;
+      setScene(next);
+      bumpVersion();
+      describe(next);
+    },
+    pause: () => sim.setPaused(true),
+  });
+  const clearRewind = rewind.clear;
+  const worldChanged = rewind.changed;
+
+  /** A new scene with the settings (and the lab's particles, if any), paused for a lab. */
+  const build = useCallback(
+    (next: Settings = settingsRef.current) => {
+      const host = hostRef.current;
+      const size = sceneSizeFor(host?.clientWidth ?? 0, host?.clientHeight ?? 0);
+      arrows.clear();
+      clearRewind();
+      setSelected(null);
+      setTiltState({ x: 0, y: 0 });
+      const created = createReactionsScene(size.width, size.height, next.elasticity);
+      setWallsOn(created, next.wallsOn);
+      setTiltOn(created, next.tiltOn);
+      let pair: Body[] = [];
+      if (next.lab !== null) {
+        pair = setUpLab(created, next.lab);
+        sim.setPaused(true);
+      }
+      sceneRef.current = created;
+      choosePair(pair, created);
+      setSelected(pair[0] ?? null);
+      bumpVersion();
+      setScene(created);
+      describe(created);
+    },
+    [arrows, clearRewind, sim, choosePair, describe],
+  );
+
+  useLayoutEffect(() => {
+    if (active && scene === null) build();
+  }, [active, scene, build]);
+  const rebuild = useCallback(() => build(), [build]);
+  useOrientationRebuild(hostRef, active ? scene : null, rebuild, sceneSizeFor);
+
+  // A preset link followed while the screen is up sets it up again.
+  useEffect(() => {
+    const onHash = (): void => {
+      const next = settingsFromPreset(location.hash);
+      if (next === null) return;
+      setSettings(next);
+      setTab('setup');
+      build(next);
+    };
+    window.addEventListener('hashchange', onHash);
+    return () => window.removeEventListener('hashchange', onHash);
+  }, [build]);
+
+  // Each collision: the arrows, the lab's record (its steps are recorded around each step by
+  // the rewind hook) and what is announced.
   useEffect(() => {
     if (scene === null) return;
     const world = scene.world;
-    if (history.length === 0) history.record(world, simulatedTime(world), momentData(scene));
-    const offCollision = world.on('collision', (event) => {
+    return world.on('collision', (event) => {
       arrows.record(event, STEP, simulatedTime(world));
       recorder.collided(event);
       const measure = settingsRef.current.measure;
@@ -442,73 +460,28 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           info.lastImpulse = event.normalImpulse;
       }
     });
-    const offSteps = observeSteps(world, {
-      before: () => {
-        // Going on from a moment stepped back to: its future is rewritten.
-        const index = rewoundRef.current;
-        if (index !== null) {
-          const entry = history.entry(index);
-          history.truncateAfter(index);
-          if (entry !== undefined) log.truncateAfter(entry.time);
-          rewoundRef.current = null;
-          setRewound(null);
-        }
-        recorder.beforeStep();
-      },
-      after: () => {
-        const time = simulatedTime(world);
-        if (recorder.afterStep(time - STEP)) describe(scene);
-        log.add(time, columns.fill(scene.particles));
-        history.record(world, time, momentData(scene));
-      },
-    });
-    return () => {
-      offCollision();
-      offSteps();
-    };
-  }, [scene, arrows, recorder, history, log, columns, announce, t, unit, describe, momentData]);
+  }, [scene, arrows, recorder, announce, t, unit]);
 
   // Paused, or another particle chosen or set up: the description says how things are now.
   useEffect(() => {
     if (sim.paused) describe();
   }, [sim.paused, describe, chosen, version]);
 
-  /** Goes to the saved moment `index` (paused there): step back and scrub. */
-  const seek = (index: number): void => {
-    const current = sceneRef.current;
-    if (current === null || history.length === 0) return;
-    const clamped = Math.min(history.length - 1, Math.max(0, index));
-    sim.setPaused(true);
-    const { world, entry } = history.restore(clamped);
-    const next = adoptWorld(current, world, entry.data.labels, entry.data.added);
-    // The switches as they are now, not as they were.
-    const now = settingsRef.current;
-    setElasticity(next, now.elasticity);
-    setWallsOn(next, now.wallsOn);
-    next.tiltOn = now.tiltOn;
-    setTilt(next, current.tilt);
-    const byLabel = new Map([...next.particles].map(([body, info]) => [info.label, body]));
-    const pair = entry.data.chosen.flatMap((label) => byLabel.get(label) ?? []);
-    arrows.clear();
-    choosePair(pair, next);
-    recorder.record = entry.data.record;
-    setSelected(selected === null ? null : (byLabel.get(labelOf(selected)) ?? null));
-    rewoundRef.current = clamped;
-    setRewound(clamped);
-    sceneRef.current = next;
-    setScene(next);
-    bumpVersion();
-    describe(next);
-  };
-
-  const changeTilt = useCallback((next: Tilt) => {
-    const current = sceneRef.current;
-    setTiltState(next);
-    if (current !== null) {
-      setTilt(current, next);
-      canvasRef.current?.invalidate();
-    }
-  }, []);
+  const changeTilt = useCallback(
+    (next: Tilt) => {
+      const current = sceneRef.current;
+      setTiltState(next);
+      if (current !== null) {
+        const { x, y } = current.world.gravity;
+        setTilt(current, next);
+        // Only a new gravity changes the world (a level sensor repeats its reading).
+        const now = current.world.gravity;
+        if (now.x !== x || now.y !== y) worldChanged();
+        canvasRef.current?.invalidate();
+      }
+    },
+    [worldChanged],
+  );
 
   // Device orientation: listen while visible; where the browser asks first (iOS), readings
   // arrive once the learner allowed them with the button.
@@ -618,10 +591,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       setSettings((old) => ({ ...old, lab }));
     }
     // The saved moments led to another state: this is the new start.
-    history.clear();
-    history.record(current.world, simulatedTime(current.world), momentData(current));
-    rewoundRef.current = null;
-    setRewound(null);
+    rewind.restart();
     canvasRef.current?.invalidate();
     describe(current);
     rerender();
@@ -788,6 +758,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       return;
     }
     const body = spawnParticle(scene, point);
+    worldChanged();
     canvasRef.current?.invalidate();
     rerender();
     announce(
@@ -823,6 +794,12 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     if (change.elasticity !== undefined) setElasticity(current, next.elasticity);
     if (change.wallsOn !== undefined) setWallsOn(current, next.wallsOn);
     if (change.tiltOn !== undefined) setTiltOn(current, next.tiltOn);
+    if (
+      change.elasticity !== undefined ||
+      change.wallsOn !== undefined ||
+      change.tiltOn !== undefined
+    )
+      worldChanged();
     canvasRef.current?.invalidate();
   };
 
@@ -1016,6 +993,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                           if (scene === null) return;
                           setSelected(null);
                           clearParticles(scene);
+                          worldChanged();
                           choosePair([], scene);
                           arrows.clear();
                           rerender();
@@ -1229,32 +1207,12 @@ export function ReactionsScreen({ active }: { active: boolean }) {
               </>
             )}
             {tab === 'data' && (
-              <>
-                <Live active={live} watch={liveKey}>
-                  {() => (
-                    <RewindBar
-                      length={history.length}
-                      index={rewound ?? history.length - 1}
-                      timeAt={(index) => history.entry(index)?.time ?? 0}
-                      onSeek={seek}
-                    />
-                  )}
-                </Live>
-                <CsvExport
-                  csv={() => log.toCsv()}
-                  fileName="newton-reactions.csv"
-                  onDone={(outcome) => {
-                    const text = t(CSV_MESSAGES[outcome], { rows: log.length });
-                    setExportStatus(text);
-                    announce(text, true);
-                  }}
-                />
-                {exportStatus !== '' && (
-                  <Typography variant="caption" data-readout="csv-status">
-                    {exportStatus}
-                  </Typography>
-                )}
-              </>
+              <DataTools
+                rewind={rewind}
+                fileName="newton-reactions.csv"
+                live={live}
+                announce={announce}
+              />
             )}
           </Box>
         </>
@@ -1272,7 +1230,6 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           setSettings(DEFAULT_SETTINGS);
           settingsRef.current = DEFAULT_SETTINGS;
           setTab('tray');
-          setExportStatus('');
           sim.setPaused(false);
           build(DEFAULT_SETTINGS);
         },
