@@ -181,6 +181,18 @@ interface MomentData {
   readonly record: CollisionRecord | null;
 }
 
+/**
+ * A tab's label in one line, cut with an ellipsis where five tabs share a narrow panel (a
+ * 375x667 phone in landscape): without it "Results" and "Options" ran into each other.
+ */
+const TAB_LABEL_STYLE = {
+  display: 'block',
+  maxWidth: '100%',
+  overflow: 'hidden',
+  textOverflow: 'ellipsis',
+  whiteSpace: 'nowrap',
+} as const;
+
 /** Where tilt can be asked for and makes sense: a touch device whose browser asks first (iOS). */
 function tiltButtonUseful(): boolean {
   return (
@@ -893,7 +905,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
               <Tab
                 key={id}
                 value={id}
-                label={t(TAB_LABELS[id])}
+                label={<span style={TAB_LABEL_STYLE}>{t(TAB_LABELS[id])}</span>}
                 id={`reactions-tab-${id}`}
                 aria-controls={`reactions-tabpanel-${id}`}
                 data-tab={id}
