@@ -3,9 +3,9 @@ import { PATH_BATCH_SIZE } from './path-batch.ts';
 
 /**
  * Many arrows of one colour and opacity (collision arrows of one step), filled as outlines: shaft
- * and head in one polygon, one fill per {@link PATH_BATCH_SIZE} arrows, where `drawArrow`
- * strokes the shaft and fills the head of each arrow with its own style. Same proportions as
- * `drawArrow`; the shaft starts square rather than round.
+ * and head in one polygon, one fill per batch of arrows (path-batch.ts: longer paths raster
+ * slower), where `drawArrow` strokes the shaft and fills the head of each arrow with its own style.
+ * Same proportions as `drawArrow`; the shaft starts square rather than round.
  */
 export class ArrowBatch {
   private context: CanvasRenderingContext2D | null = null;
