@@ -60,26 +60,7 @@ export function watchEnvironment(
   onDensity();
   undo.push(() => density?.removeEventListener('change', onDensity));
 
-  const intersection = new IntersectionObserver((entries) => {
-    if (entries[entries.length - 1]!.isIntersecting) loop.resume('offscreen');
-    else loop.suspend('offscreen');
-  });
-  intersection.observe(container);
-  undo.push(() => {
-    intersection.disconnect();
-    loop.resume('offscreen');
-  });
-
-  const onVisibility = (): void => {
-    if (document.visibilityState === 'hidden') loop.suspend('hidden');
-    else loop.resume('hidden');
-  };
-  onVisibility();
-  document.addEventListener('visibilitychange', onVisibility);
-  undo.push(() => {
-    document.removeEventListener('visibilitychange', onVisibility);
-    loop.resume('hidden');
-  });
+  undo.push(loop.suspendWhileUnseen(container));
 
   return {
     get prefersReducedMotion() {

@@ -32,26 +32,7 @@ export function watchEnvironment(
   resize.observe(element);
   undo.push(() => resize.disconnect());
 
-  const intersection = new IntersectionObserver((entries) => {
-    if (entries[entries.length - 1]!.isIntersecting) loop.resume('offscreen');
-    else loop.suspend('offscreen');
-  });
-  intersection.observe(element);
-  undo.push(() => {
-    intersection.disconnect();
-    loop.resume('offscreen');
-  });
-
-  const onVisibility = (): void => {
-    if (document.visibilityState === 'hidden') loop.suspend('hidden');
-    else loop.resume('hidden');
-  };
-  onVisibility();
-  document.addEventListener('visibilitychange', onVisibility);
-  undo.push(() => {
-    document.removeEventListener('visibilitychange', onVisibility);
-    loop.resume('hidden');
-  });
+  undo.push(loop.suspendWhileUnseen(element));
 
   const motion = matchMedia('(prefers-reduced-motion: reduce)');
   const onMotion = (): void => listener.reducedMotionChanged(motion.matches);

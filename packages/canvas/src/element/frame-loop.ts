@@ -105,6 +105,31 @@ export class FrameLoop {
     this.invalidate();
   }
 
+  /**
+   * Suspends the loop while `element` is off screen (IntersectionObserver) or the page is hidden
+   * (visibilitychange), when nothing it draws would be seen. Browser only. Returns the function
+   * that stops watching and lifts both suspensions.
+   */
+  suspendWhileUnseen(element: Element): () => void {
+    const intersection = new IntersectionObserver((entries) => {
+      if (entries[entries.length - 1]!.isIntersecting) this.resume('offscreen');
+      else this.suspend('offscreen');
+    });
+    intersection.observe(element);
+    const onVisibility = (): void => {
+      if (document.visibilityState === 'hidden') this.suspend('hidden');
+      else this.resume('hidden');
+    };
+    onVisibility();
+    document.addEventListener('visibilitychange', onVisibility);
+    return () => {
+      intersection.disconnect();
+      document.removeEventListener('visibilitychange', onVisibility);
+      this.resume('offscreen');
+      this.resume('hidden');
+    };
+  }
+
   /** Replaces the scheduler (a pending frame moves to the new one). */
   setScheduler(scheduler: FrameScheduler): void {
     const wasScheduled = this.isScheduled;

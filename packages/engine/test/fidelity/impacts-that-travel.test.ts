@@ -1,7 +1,14 @@
 import { describe, expect, it } from 'vitest';
 import { reportMeasured } from './measured.ts';
-import { World, box, particle, revoluteJoint } from '@physical/engine';
-import type { Body } from '@physical/engine';
+import { World, box, particle } from '@physical/engine';
+import {
+  DT,
+  ballisticPendulumErrors,
+  dropOnRestingBalls,
+  gasEnergyChange,
+  sequentialRebound,
+  wedgeEnergyGain,
+} from './impact-scenes.ts';
 
 // Laws of impacts that travel (issue #29): an impact that passes through a body already pressed
 // (by the ground, by another body) or held (by a joint) keeps momentum, and with e = 1 energy.
@@ -19,160 +26,6 @@ import type { Body } from '@physical/engine';
 //   speed and the disc's speed are the closed form's within 1 %.
 // - A resting e = 1 ball on the ground stays put (< 1 cm) and sleeps by 12 s (the resting 20-row
 //   pyramid of e = 0.5 boxes is test/fidelity/elastic-by-default.test.ts).
-
-const DT = 1 / 60;
-
-/** Mulberry32: a small seeded PRNG, so the scene is the same on every run. */
-function random(seed: number): () => number {
-  let a = seed >>> 0;
-  return () => {
-    a = (a + 0x6d2b79f5) >>> 0;
-    let t = a;
-    t = Math.imul(t ^ (t >>> 15), t | 1);
-    t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
-    return ((t ^ (t >>> 14)) >>> 0) / 4294967296;
-  };
-}
-
-/**
- * Sequential impacts (e = 1) of a top ball falling at speed 1 on a column of balls resting on the
- * floor, `masses` from the top down: each round, every touching pair that approaches from the top
- * down, then the floor, until nothing approaches. Returns the top ball's rebound speed squared,
- * i.e. its rebound height over its drop height. (With two balls the order is forced; with three
- * equal ones every order gives the same answer: the impulse passes through unchanged.)
- */
-function sequentialRebound(...masses: number[]): number {
-  // Downward positive.
-  const v: number[] = masses.map((_, i) => (i === 0 ? 1 : 0));
-  const n = masses.length;
-  for (let round = 0; round < 1000; round++) {
-    let acted = false;
-    for (let i = 0; i + 1 < n; i++) {
-      if (v[i]! > v[i + 1]!) {
-        const m1 = masses[i]!;
-        const m2 = masses[i + 1]!;
-        const u1 = ((m1 - m2) * v[i]! + 2 * m2 * v[i + 1]!) / (m1 + m2);
-        v[i + 1] = ((m2 - m1) * v[i + 1]! + 2 * m1 * v[i]!) / (m1 + m2);
-        v[i] = u1;
-        acted = true;
-      }
-    }
-    if (v[n - 1]! > 0) {
-      v[n - 1] = -v[n - 1]!;
-      acted = true;
-    }
-    if (!acted) break;
-  }
-  return v[0]! < 0 ? v[0]! * v[0]! : 0;
-}
-
-const RADIUS = 0.25;
-const DROP = 1;
-
-/**
- * Top ball's rebound height over its drop height: a ball of mass `masses[0]` dropped on a column
- * of balls of the other masses (from the top down) resting on the floor; with one mass, the ball
- * dropped on the floor itself.
- */
-function dropOnRestingBalls(...masses: number[]): number {
-  const world = new World();
-  const material = { restitution: 1, friction: 0 };
-  // Floor's top face at y = 0 (y-down).
-  world.add(box({ type: 'static', position: { x: 0, y: 0.5 }, width: 20, height: 1, ...material }));
-  const area = Math.PI * RADIUS * RADIUS;
-  const resting = masses.length - 1;
-  // The resting column, from the floor up.
-  for (let k = 0; k < resting; k++) {
-    world.add(
-      particle({
-        position: { x: 0, y: -RADIUS - 2 * RADIUS * k },
-        radius: RADIUS,
-        density: masses[resting - k]! / area,
-        ...material,
-      }),
-    );
-  }
-  const touchY = -RADIUS - 2 * RADIUS * resting;
-  const top = world.add(
-    particle({
-      position: { x: 0, y: touchY - DROP },
-      radius: RADIUS,
-      density: masses[0]! / area,
-      ...material,
-    }),
-  );
-  // The first rebound's apex: after the hit, until the top ball falls again (the balls may
-  // come down together and bounce again).
-  let hit = false;
-  let peak = Infinity;
-  for (let i = 0; i < 240; i++) {
-    world.step(DT);
-    if (top.linearVelocity.y < 0) hit = true;
-    if (hit && top.linearVelocity.y > 0) break;
-    if (hit) peak = Math.min(peak, top.position.y);
-  }
-  return hit ? (touchY - peak) / DROP : 0;
-}
-
-/** Kinetic plus potential energy (y-down, gravity g, zero at y = 0). */
-function energy(bodies: readonly Body[], g: number): number {
-  let sum = 0;
-  for (const body of bodies) sum += body.kineticEnergy - body.mass * g * body.position.y;
-  return sum;
-}
-
-/**
- * Relative energy change in 60 s of an e = 1, frictionless gas of `count` balls (radius 0.2-0.35 m,
- * masses spread evenly on a log scale from `lightest` to `heaviest`, speeds 2-6 m/s) on a grid in
- * a closed square box of side `size` under gravity.
- */
-function gasEnergyChange(
-  seed: number,
-  count: number,
-  size: number,
-  lightest: number,
-  heaviest: number,
-): number {
-  const world = new World();
-  const material = { restitution: 1, friction: 0 };
-  // The floor's top at y = size (y-down).
-  const h = size / 2;
-  for (const [x, y, width, height] of [
-    [h, -0.5, size + 2, 1],
-    [h, size + 0.5, size + 2, 1],
-    [-0.5, h, 1, size + 2],
-    [size + 0.5, h, 1, size + 2],
-  ] as const) {
-    world.add(box({ type: 'static', position: { x, y }, width, height, ...material }));
-  }
-  const rand = random(seed);
-  const balls: Body[] = [];
-  const side = Math.ceil(Math.sqrt(count));
-  const cell = size / side;
-  for (let i = 0; i < count; i++) {
-    const radius = 0.2 + 0.15 * rand();
-    const mass = lightest * (heaviest / lightest) ** rand();
-    const speed = 2 + 4 * rand();
-    const direction = 2 * Math.PI * rand();
-    balls.push(
-      world.add(
-        particle({
-          position: { x: cell * (0.5 + (i % side)), y: cell * (0.5 + Math.floor(i / side)) },
-          radius,
-          density: mass / (Math.PI * radius * radius),
-          linearVelocity: { x: speed * Math.cos(direction), y: speed * Math.sin(direction) },
-          ...material,
-        }),
-      ),
-    );
-  }
-  const g = world.gravity.y;
-  const energy = (): number =>
-    balls.reduce((sum, b) => sum + b.kineticEnergy + b.mass * g * (size - b.position.y), 0);
-  const start = energy();
-  for (let i = 0; i < 60 / DT; i++) world.step(DT);
-  return (energy() - start) / start;
-}
 
 describe('impacts that travel', () => {
   it('a ball dropped on an equal ball resting on the floor (e = 1) rebounds to its drop height', () => {
@@ -226,7 +79,7 @@ describe('impacts that travel', () => {
     (count, size, lightest, heaviest, seeds) => {
       const changes: number[] = [];
       for (let seed = 1; seed <= seeds; seed++) {
-        changes.push(Math.abs(gasEnergyChange(seed, count, size, lightest, heaviest)));
+        changes.push(Math.abs(gasEnergyChange({ seed, balls: count, size, lightest, heaviest })));
       }
       const worst = Math.max(...changes);
       reportMeasured(
@@ -246,40 +99,11 @@ describe('impacts that travel', () => {
     // lying on the floor. Without gravity, so that the energy is all kinetic: under gravity the
     // semi-implicit Euler flight and a bounce's catch-up change the energy between step ends by up
     // to 2 % for a single ball bouncing on the floor, which would hide what the wedge does.
-    let worst = 0;
-    for (const scene of ['sliding', 'coming down'] as const) {
-      const world = new World({ gravity: { x: 0, y: 0 } });
-      const material = { restitution: 1, friction: 0 };
-      world.add(
-        box({ type: 'static', position: { x: 0, y: 0.5 }, width: 40, height: 1, ...material }),
-      );
-      const light = world.add(
-        particle({
-          position: scene === 'sliding' ? { x: -3, y: -0.1 } : { x: 0, y: -0.1 },
-          radius: 0.1,
-          density: 0.15 / (Math.PI * 0.01),
-          linearVelocity: scene === 'sliding' ? { x: 17, y: 0 } : { x: 0, y: 0 },
-          ...material,
-        }),
-      );
-      const heavy = world.add(
-        particle({
-          position: scene === 'sliding' ? { x: 0, y: -0.5 } : { x: 0.05, y: -2 },
-          radius: 0.5,
-          density: 5.9 / (Math.PI * 0.25),
-          linearVelocity: scene === 'sliding' ? { x: 0, y: 0 } : { x: 0, y: 4 },
-          ...material,
-        }),
-      );
-      const bodies = [light, heavy];
-      let before = energy(bodies, 0);
-      for (let i = 0; i < 180; i++) {
-        world.step(DT);
-        const after = energy(bodies, 0);
-        worst = Math.max(worst, (after - before) / before);
-        before = after;
-      }
-    }
+    // The light ball slides in at 17 m/s; the heavy one comes down at 16 / 4 = 4 m/s.
+    const worst = Math.max(
+      wedgeEnergyGain(0.15, 5.9, 17, 'sliding'),
+      wedgeEnergyGain(0.15, 5.9, 16, 'coming down'),
+    );
     reportMeasured(
       'light ball wedged under a heavy one, e = 1: largest energy gain in a step',
       worst,
@@ -289,51 +113,8 @@ describe('impacts that travel', () => {
   });
 
   it('an elastic ballistic pendulum (a disc hits a rod pinned at one end) leaves at the closed-form speeds', () => {
-    const world = new World({ gravity: { x: 0, y: 0 } });
-    const ground = world.add(
-      box({ type: 'static', position: { x: 0, y: -1 }, width: 1, height: 0.2 }),
-    );
-    const L = 2;
-    const M = 2;
-    const width = 0.1;
-    // The rod hangs from its top end at the origin (y-down), along +y.
-    const rod = world.add(
-      box({
-        position: { x: 0, y: L / 2 },
-        width,
-        height: L,
-        density: M / (width * L),
-        restitution: 1,
-        friction: 0,
-      }),
-    );
-    world.addJoint(revoluteJoint({ bodyA: ground, bodyB: rod, anchor: { x: 0, y: 0 } }));
-    const m = 1;
-    const u = 3;
-    const d = 1;
-    const r = 0.1;
-    const disc = world.add(
-      particle({
-        position: { x: -1, y: d },
-        radius: r,
-        density: m / (Math.PI * r * r),
-        linearVelocity: { x: u, y: 0 },
-        restitution: 1,
-        friction: 0,
-      }),
-    );
-    // Closed form: the rod turns about the pin, inertia M (L^2 + width^2) / 3 there; its point at
-    // depth d has the effective mass I / d^2. Elastic collision of m with that mass.
-    const inertia = (M * (L * L + width * width)) / 3;
-    const mr = inertia / (d * d);
-    const discAfter = ((m - mr) / (m + mr)) * u;
-    const omegaAfter = (((2 * m) / (m + mr)) * u) / d;
-    for (let i = 0; i < 40; i++) world.step(DT);
-    // y-down: a rod swinging to +x turns clockwise on screen, a negative angle in y-up terms;
-    // compare speeds.
-    const omegaError =
-      Math.abs(Math.abs(rod.angularVelocity) - Math.abs(omegaAfter)) / Math.abs(omegaAfter);
-    const discError = Math.abs(disc.linearVelocity.x - discAfter) / Math.abs(discAfter);
+    // A 2 m, 2 kg rod hit 1 m below its pin by a 1 kg disc at 3 m/s.
+    const [omegaError, discError] = ballisticPendulumErrors({ L: 2, d: 1, M: 2, m: 1, u: 3 });
     reportMeasured(
       'elastic ballistic pendulum: rod angular speed, relative error',
       omegaError,
