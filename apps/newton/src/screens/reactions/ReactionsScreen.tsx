@@ -182,18 +182,6 @@ interface MomentData {
   readonly record: CollisionRecord | null;
 }
 
-/**
- * A tab's label in one line, cut with an ellipsis where five tabs share a narrow panel (a
- * 375x667 phone in landscape): without it "Results" and "Options" ran into each other.
- */
-const TAB_LABEL_STYLE = {
-  display: 'block',
-  maxWidth: '100%',
-  overflow: 'hidden',
-  textOverflow: 'ellipsis',
-  whiteSpace: 'nowrap',
-} as const;
-
 /** A key per record object: the results table renders when the record is another one. */
 const recordKeys = new WeakMap<CollisionRecord, string>();
 let recordCount = 0;
@@ -882,17 +870,22 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           <Tabs
             value={tab}
             onChange={(_event, value: PanelTab) => setTab(value)}
-            variant="fullWidth"
+            // Five whole labels: they share the row where it is wide enough, and where it is
+            // not (a 375x667 phone in landscape gives the panel 220 px) the row scrolls sideways
+            // rather than cut "Results" and "Ergebnis" to a few letters.
+            variant="scrollable"
+            scrollButtons={false}
             aria-label={t('reactions.panel')}
             sx={{
               minHeight: 48,
-              // Five tabs side by side on a 320 px phone, in German too.
               '& .MuiTab-root': {
                 minHeight: 48,
                 minWidth: 0,
-                px: 0.25,
+                flex: '1 0 auto',
+                px: 1,
                 fontSize: '0.8125rem',
                 letterSpacing: 0,
+                whiteSpace: 'nowrap',
               },
             }}
           >
@@ -900,7 +893,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
               <Tab
                 key={id}
                 value={id}
-                label={<span style={TAB_LABEL_STYLE}>{t(TAB_LABELS[id])}</span>}
+                label={t(TAB_LABELS[id])}
                 id={`reactions-tab-${id}`}
                 aria-controls={`reactions-tabpanel-${id}`}
                 data-tab={id}
