@@ -42,6 +42,7 @@ import { SIDE_BY_SIDE, ScreenLayout } from '../../app/ScreenLayout.tsx';
 import { STEP, simulatedTime, useSimulation } from '../../app/use-simulation.ts';
 import { Live } from '../../app/Live.tsx';
 import { LiveText } from '../../app/LiveText.tsx';
+import { listenToCanvasDrags } from '../../app/canvas-drag.ts';
 import { clipToWalls } from '../../app/clip-to-walls.ts';
 import { ElasticitySlider } from '../../app/ElasticitySlider.tsx';
 import { useI18n, type MessageKey } from '../../i18n/i18n.tsx';
@@ -623,50 +624,31 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   useEffect(() => {
     const host = hostRef.current;
     if (host === null || scene === null) return;
-    let dragging: { body: Body; pointerId: number } | null = null;
-    const toWorld = (event: PointerEvent) =>
-      canvasRef.current?.clientToWorld(event.clientX, event.clientY);
-    const onDown = (event: PointerEvent): void => {
-      const point = toWorld(event);
-      if (point === undefined) return;
-      for (const body of chosenRef.current) {
-        const handle = handlePoint(body);
-        if (Math.hypot(handle.x - point.x, handle.y - point.y) > HANDLE_REACH) continue;
-        dragging = { body, pointerId: event.pointerId };
-        host.setPointerCapture(event.pointerId);
-        event.preventDefault();
-        event.stopPropagation();
+    let dragging: Body | null = null;
+    return listenToCanvasDrags(host, (x, y) => canvasRef.current?.clientToWorld(x, y), {
+      press: (point) => {
+        dragging =
+          chosenRef.current.find((body) => {
+            const handle = handlePoint(body);
+            return Math.hypot(handle.x - point.x, handle.y - point.y) <= HANDLE_REACH;
+          }) ?? null;
+        if (dragging === null) return false;
         sim.setPaused(true);
-        setSelected(body);
-        return;
-      }
-    };
-    const onMove = (event: PointerEvent): void => {
-      if (dragging === null || event.pointerId !== dragging.pointerId) return;
-      const point = toWorld(event);
-      if (point === undefined) return;
-      event.stopPropagation();
-      dragging.body.linearVelocity = velocityFromHandle(dragging.body, point);
-      canvasRef.current?.invalidate();
-      rerender();
-    };
-    const onUp = (event: PointerEvent): void => {
-      if (dragging === null || event.pointerId !== dragging.pointerId) return;
-      event.stopPropagation();
-      dragging = null;
-      bumpVersion();
-      afterLabEdit();
-    };
-    host.addEventListener('pointerdown', onDown, true);
-    host.addEventListener('pointermove', onMove, true);
-    host.addEventListener('pointerup', onUp, true);
-    host.addEventListener('pointercancel', onUp, true);
-    return () => {
-      host.removeEventListener('pointerdown', onDown, true);
-      host.removeEventListener('pointermove', onMove, true);
-      host.removeEventListener('pointerup', onUp, true);
-      host.removeEventListener('pointercancel', onUp, true);
-    };
+        setSelected(dragging);
+        return true;
+      },
+      move: (point) => {
+        if (dragging === null) return;
+        dragging.linearVelocity = velocityFromHandle(dragging, point);
+        canvasRef.current?.invalidate();
+        rerender();
+      },
+      release: () => {
+        dragging = null;
+        bumpVersion();
+        afterLabEdit();
+      },
+    });
     // afterLabEdit reads refs only: listening again on each render is not needed.
   }, [scene, sim.setPaused]);
 
