@@ -4,6 +4,7 @@ import { fileURLToPath } from 'node:url';
 import react from '@vitejs/plugin-react';
 import { defineConfig, type Plugin } from 'vite';
 import type { OutputBundle, OutputChunk } from 'rolldown';
+import { teacherPagesPlugin } from './scripts/teacher-pages.ts';
 
 const source = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
 
@@ -26,8 +27,6 @@ function precacheManifest(): Plugin {
       }
       for (const name of [
         'manifest.webmanifest',
-        'teacher.html',
-        'teacher.de.html',
         'teacher.css',
         'teacher-print.js',
         'icons/icon.svg',
@@ -38,7 +37,8 @@ function precacheManifest(): Plugin {
       ]) {
         files.push(`./${name}`);
         // Copied from public/ as they are: their contents count too, so a changed teacher page
-        // makes a new version (and the service worker fetches it again).
+        // makes a new version (and the service worker fetches it again). The teacher pages
+        // themselves are made by teacherPagesPlugin, which runs first: they are in the bundle.
         hash.update(name);
         hash.update(readFileSync(source(`public/${name}`)));
       }
@@ -100,7 +100,7 @@ function firstScreenPreload(): Plugin {
 export default defineConfig({
   base: './',
   root: source('.'),
-  plugins: [react(), precacheManifest(), firstScreenPreload()],
+  plugins: [react(), teacherPagesPlugin(), precacheManifest(), firstScreenPreload()],
   resolve: {
     alias: {
       '@physical/engine': source('../../packages/engine/src/index.ts'),

@@ -5,8 +5,10 @@
 // time (not wall time: the machine may be shared) of each event name on each busy thread, so
 // the main thread's frame shows as FireAnimationFrame (scripts) and
 // LayerTreeHost::DoUpdateLayers (the canvas's software raster at commit).
+// The frames modes take the CPU slowdown as RATE (default 4; RATE=1 for the machine's own speed)
+// and print the canvas' frame count, so that a figure per frame can be read off.
 // Usage: npm run build -w @physical/newton &&
-//   tsx e2e/bench/newton-profile.ts load|loadtrace|frames|trace [out.cpuprofile or out.json]
+//   [RATE=1] tsx e2e/bench/newton-profile.ts load|loadtrace|frames|trace [out.cpuprofile or out.json]
 import { writeFileSync } from 'node:fs';
 import { chromium, type CDPSession } from 'playwright-core';
 import { startPreviewServer } from '../newton/app-server.ts';
@@ -27,6 +29,7 @@ interface Profile {
 }
 
 const which = process.argv[2] ?? 'frames';
+const rate = Number(process.env['RATE'] ?? 4);
 const out = process.argv[3];
 const SLOW_4G = {
   offline: false,
@@ -159,7 +162,17 @@ try {
     await page.locator('#reactions [data-action="add"]').focus();
     for (let i = 0; i < 50; i++) await page.keyboard.press('Enter');
     const cdp = await context.newCDPSession(page);
-    await cdp.send('Emulation.setCPUThrottlingRate', { rate: 4 });
+    await cdp.send('Emulation.setCPUThrottlingRate', { rate });
+    const frameCount = (): Promise<number> =>
+      page.evaluate(
+        () =>
+          (
+            document.querySelector('#reactions physical-canvas') as unknown as {
+              frameCount: number;
+            }
+          ).frameCount,
+      );
+    const framesBefore = await frameCount();
     const moving = async (): Promise<void> => {
       for (let k = 0; k < 2; k++) {
         await page.evaluate((k) => {
@@ -176,6 +189,10 @@ try {
     };
     if (which === 'trace') await trace(cdp, moving);
     else await profile(cdp, moving);
+    const frames = (await frameCount()) - framesBefore;
+    process.stdout.write(
+      `${rate}x CPU: ${frames} canvas frames in 3 s (${(frames / 3).toFixed(0)}/s)\n`,
+    );
   }
 } finally {
   await browser.close();

@@ -142,6 +142,30 @@ export async function fitProblems(page: Page): Promise<string[]> {
         );
       }
     }
+    // A rail, bottom bar or tab label is whole: not cut with an ellipsis (its text wider than its
+    // box) nor running past its button ("Wechselwirkung" in a 72 px rail in landscape).
+    for (const control of document.querySelectorAll('[data-nav], [role="tab"]')) {
+      if (!shown(control)) continue;
+      const box = control.getBoundingClientRect();
+      for (const part of control.querySelectorAll('*')) {
+        const text = [...part.childNodes]
+          .filter((node) => node.nodeType === Node.TEXT_NODE)
+          .map((node) => node.textContent ?? '')
+          .join('')
+          .trim();
+        if (text === '' || !shown(part)) continue;
+        const rect = part.getBoundingClientRect();
+        if (part.clientWidth > 0 && part.scrollWidth > part.clientWidth) {
+          problems.push(
+            `the label "${text}" of ${describe(control)} is cut (${part.scrollWidth} > ${part.clientWidth} px)`,
+          );
+        } else if (rect.left < box.left - 0.5 || rect.right > box.right + 0.5) {
+          problems.push(
+            `the label "${text}" of ${describe(control)} runs past it (${Math.round(rect.width)} px in ${Math.round(box.width)} px)`,
+          );
+        }
+      }
+    }
     // A readout's text stays in its box: none runs under a button or off the screen.
     for (const value of document.querySelectorAll('[data-readout]')) {
       if (!shown(value)) continue;

@@ -177,6 +177,26 @@ describe('MeasurementLog', () => {
     expect(log.toCsv()).toBe('t (s),x (m)\r\n2,4\r\n3,6\r\n');
   });
 
+  it('keeps the newest maxRows rows in order through growth and wrap-around, columns added late empty before', () => {
+    const log = new MeasurementLog(300);
+    for (let i = 0; i < 700; i++) {
+      const values = [{ name: 'x', unit: 'm', value: i * 2 }];
+      if (i >= 500) values.push({ name: 'y', unit: 'm', value: -i });
+      log.add(i, values);
+    }
+    expect(log.length).toBe(300);
+    const lines = log.toCsv().trimEnd().split('\r\n');
+    expect(lines[0]).toBe('t (s),x (m),y (m)');
+    expect(lines[1]).toBe('400,800,');
+    expect(lines[101]).toBe('500,1000,-500');
+    expect(lines[300]).toBe('699,1398,-699');
+    // A world a step behind, after wrap-around: its older time goes into place.
+    log.add(698.5, [{ name: 'x', unit: 'm', value: 7 }]);
+    const after = log.toCsv().trimEnd().split('\r\n');
+    expect(after[1]).toBe('401,802,');
+    expect(after.slice(-3)).toEqual(['698,1396,-698', '698.5,7,', '699,1398,-699']);
+  });
+
   it('formats numbers for any spreadsheet and quotes cells that need it', () => {
     expect(formatNumber(-0)).toBe('0');
     expect(formatNumber(1 / 3)).toBe('0.333333333');

@@ -1,5 +1,5 @@
 import { Box } from '@mui/material';
-import { useCallback, useEffect, useRef, useState, type ReactElement } from 'react';
+import { useCallback, useEffect, useMemo, useRef, useState, type ReactElement } from 'react';
 import { playEventTone } from './sound.ts';
 
 /** Shortest time between two announcements (ms): a screen reader finishes a short sentence. */
@@ -15,8 +15,9 @@ export function useAnnouncer(name: string): {
   announce: (message: string, urgent?: boolean) => void;
   region: ReactElement;
 } {
-  const [text, setText] = useState('');
   const state = useRef({
+    /** The region's setter, while it is on the page. */
+    show: null as ((text: string) => void) | null,
     urgent: [] as string[],
     queue: [] as string[],
     lastAt: -Infinity,
@@ -45,9 +46,9 @@ export function useAnnouncer(name: string): {
     const next = current.urgent.shift() ?? current.queue.shift()!;
     current.lastAt = performance.now();
     // The same text again changes nothing on the page: nothing to wait for.
-    current.pending = next !== current.shown;
+    current.pending = next !== current.shown && current.show !== null;
     current.shown = next;
-    setText(next);
+    current.show?.(next);
     if (current.urgent.length > 0 || current.queue.length > 0) {
       current.timer = setTimeout(pump, ANNOUNCE_GAP_MS);
     }
@@ -64,17 +65,6 @@ export function useAnnouncer(name: string): {
     [pump],
   );
 
-  // The gap counts from when the text reached the page (a busy frame delays the commit), and
-  // from after the whole commit: a passive effect runs once the commit's task is over, so after
-  // a screen reader (or a MutationObserver) has seen the change. A layout effect ran inside the
-  // commit, and a long commit then shortened the next gap as the page showed it (1,362 ms
-  // between two texts in a loaded CI run).
-  useEffect(() => {
-    if (text === '') return;
-    state.current.lastAt = performance.now();
-    state.current.pending = false;
-  }, [text]);
-
   useEffect(() => {
     const current = state.current;
     return () => {
@@ -82,7 +72,40 @@ export function useAnnouncer(name: string): {
     };
   }, []);
 
-  const region = (
+  // The region keeps the text as its own state: a message re-renders the region alone, not the
+  // screen that announces (with 50 particles a screen render for each collision message cost a
+  // slow phone a frame or two).
+  const region = useMemo(() => <AnnouncerRegion name={name} state={state.current} />, [name]);
+  return { announce, region };
+}
+
+/** The parts of an announcer's state its region reads and writes. */
+interface RegionState {
+  show: ((text: string) => void) | null;
+  lastAt: number;
+  pending: boolean;
+}
+
+/** The visually hidden live region of {@link useAnnouncer}, holding the text spoken last. */
+function AnnouncerRegion({ name, state }: { name: string; state: RegionState }) {
+  const [text, setText] = useState('');
+  useEffect(() => {
+    state.show = setText;
+    return () => {
+      state.show = null;
+    };
+  }, [state]);
+  // The gap counts from when the text reached the page (a busy frame delays the commit), and
+  // from after the whole commit: a passive effect runs once the commit's task is over, so after
+  // a screen reader (or a MutationObserver) has seen the change. A layout effect ran inside the
+  // commit, and a long commit then shortened the next gap as the page showed it (1,362 ms
+  // between two texts in a loaded CI run).
+  useEffect(() => {
+    if (text === '') return;
+    state.lastAt = performance.now();
+    state.pending = false;
+  }, [text, state]);
+  return (
     <Box
       role="status"
       aria-live="polite"
@@ -105,5 +128,4 @@ export function useAnnouncer(name: string): {
       {text}
     </Box>
   );
-  return { announce, region };
 }

@@ -16,6 +16,15 @@ const ICONS: Record<ScreenId, ReactElement> = {
   reactions: <ReactionIcon />,
 };
 
+/**
+ * A label as its accessible name: without the soft hyphens (U+00AD) a message may hold where a
+ * long word can break in the narrow rail ("Wechsel-wirkung" in German), so that a screen reader
+ * and a search by name find the word whole.
+ */
+export function wholeWord(label: string): string {
+  return label.replace(/\u00ad/g, '');
+}
+
 export interface NavigationProps {
   readonly current: ScreenId;
   readonly onChange: (screen: ScreenId) => void;
@@ -37,6 +46,7 @@ export function BottomNav({ current, onChange }: NavigationProps) {
             key={id}
             value={id}
             label={t(label)}
+            aria-label={wholeWord(t(label))}
             icon={ICONS[id]}
             aria-current={current === id ? 'page' : undefined}
             href={`#${id}`}
@@ -83,6 +93,7 @@ export function NavRail({ current, onChange }: NavigationProps) {
               onChange(id);
             }}
             aria-current={selected ? 'page' : undefined}
+            aria-label={wholeWord(t(label))}
             data-nav={id}
             sx={{
               flexDirection: 'column',
@@ -105,7 +116,17 @@ export function NavRail({ current, onChange }: NavigationProps) {
             >
               {ICONS[id]}
             </Box>
-            <Typography variant="caption" sx={{ fontWeight: selected ? 700 : 500 }}>
+            {/* A long word breaks at its soft hyphen (shown as a hyphen) rather than run past. */}
+            <Typography
+              variant="caption"
+              sx={{
+                fontWeight: selected ? 700 : 500,
+                maxWidth: '100%',
+                textAlign: 'center',
+                hyphens: 'manual',
+                lineHeight: 1.25,
+              }}
+            >
               {t(label)}
             </Typography>
           </ButtonBase>

@@ -1,7 +1,11 @@
 import { Box, Typography } from '@mui/material';
+import type { ReactNode } from 'react';
 
-/** A labelled live value: "Speed / 0.734 m/s". */
-export function Readout({ label, value, name }: { label: string; value: string; name: string }) {
+/**
+ * A labelled live value: "Speed / 0.734 m/s". The value is a text, or a `LiveText` that
+ * rewrites itself without a render.
+ */
+export function Readout({ label, value, name }: { label: string; value: ReactNode; name: string }) {
   return (
     <Box sx={{ minWidth: 0 }}>
       <Typography

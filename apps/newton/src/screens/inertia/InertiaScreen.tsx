@@ -1,3 +1,4 @@
+import { listenToCanvasDrags } from '../../app/canvas-drag.ts';
 import {
   Box,
   Button,
@@ -455,42 +456,16 @@ export function InertiaScreen({ active }: { active: boolean }) {
   useEffect(() => {
     const host = hostRef.current;
     if (host === null || scene === null) return;
-    let pointer: number | null = null;
     let start = { x: 0, y: 0 };
-    const toWorld = (event: PointerEvent) =>
-      canvasRef.current?.clientToWorld(event.clientX, event.clientY);
-    const onDown = (event: PointerEvent): void => {
-      const point = toWorld(event);
-      if (pointer !== null || point === undefined || !startsPush(scene.body.position, point))
-        return;
-      pointer = event.pointerId;
-      start = point;
-      host.setPointerCapture(event.pointerId);
-      event.preventDefault();
-      event.stopPropagation();
-    };
-    const onMove = (event: PointerEvent): void => {
-      if (event.pointerId !== pointer) return;
-      const point = toWorld(event);
-      event.stopPropagation();
-      if (point !== undefined) setPush(pushFromDrag(start, point));
-    };
-    const onUp = (event: PointerEvent): void => {
-      if (event.pointerId !== pointer) return;
-      event.stopPropagation();
-      pointer = null;
-      setPush(null);
-    };
-    host.addEventListener('pointerdown', onDown, true);
-    host.addEventListener('pointermove', onMove, true);
-    host.addEventListener('pointerup', onUp, true);
-    host.addEventListener('pointercancel', onUp, true);
-    return () => {
-      host.removeEventListener('pointerdown', onDown, true);
-      host.removeEventListener('pointermove', onMove, true);
-      host.removeEventListener('pointerup', onUp, true);
-      host.removeEventListener('pointercancel', onUp, true);
-    };
+    return listenToCanvasDrags(host, (x, y) => canvasRef.current?.clientToWorld(x, y), {
+      press: (point) => {
+        if (!startsPush(scene.body.position, point)) return false;
+        start = point;
+        return true;
+      },
+      move: (point) => setPush(pushFromDrag(start, point)),
+      release: () => setPush(null),
+    });
   }, [scene, setPush]);
 
   // The keyboard's push: arrow keys held on the focused canvas push that way until let go.

@@ -41,6 +41,8 @@ import { Readout } from '../../app/Readout.tsx';
 import { SIDE_BY_SIDE, ScreenLayout } from '../../app/ScreenLayout.tsx';
 import { STEP, simulatedTime, useSimulation } from '../../app/use-simulation.ts';
 import { Live } from '../../app/Live.tsx';
+import { LiveText } from '../../app/LiveText.tsx';
+import { listenToCanvasDrags } from '../../app/canvas-drag.ts';
 import { clipToWalls } from '../../app/clip-to-walls.ts';
 import { ElasticitySlider } from '../../app/ElasticitySlider.tsx';
 import { useI18n, type MessageKey } from '../../i18n/i18n.tsx';
@@ -58,10 +60,10 @@ import {
   CollisionArrows,
   DEFAULT_CONTACT_TIME,
   averageForce,
-  reactionArrowLength,
   type ArrowMeasure,
 } from './collision-arrows.ts';
 import { CollisionRecorder, totalMomentumOf, type CollisionRecord } from './collision-lab.ts';
+import { drawReactionArrows } from './draw-reaction-arrows.ts';
 import { LabResults } from './LabResults.tsx';
 import { ParticleColumns } from './particle-columns.ts';
 import { LabSetup, type LabField, type LabRow } from './LabSetup.tsx';
@@ -181,17 +183,18 @@ interface MomentData {
   readonly record: CollisionRecord | null;
 }
 
-/**
- * A tab's label in one line, cut with an ellipsis where five tabs share a narrow panel (a
- * 375x667 phone in landscape): without it "Results" and "Options" ran into each other.
- */
-const TAB_LABEL_STYLE = {
-  display: 'block',
-  maxWidth: '100%',
-  overflow: 'hidden',
-  textOverflow: 'ellipsis',
-  whiteSpace: 'nowrap',
-} as const;
+/** A key per record object: the results table renders when the record is another one. */
+const recordKeys = new WeakMap<CollisionRecord, string>();
+let recordCount = 0;
+function recordKey(record: CollisionRecord | null): string {
+  if (record === null) return '';
+  let key = recordKeys.get(record);
+  if (key === undefined) {
+    key = String(++recordCount);
+    recordKeys.set(record, key);
+  }
+  return key;
+}
 
 /** Where tilt can be asked for and makes sense: a touch device whose browser asks first (iOS). */
 function tiltButtonUseful(): boolean {
@@ -227,6 +230,8 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   sceneRef.current = scene;
   const arrows = useMemo(() => new CollisionArrows(), []);
   const recorder = useMemo(() => new CollisionRecorder(), []);
+  /** The strongest impulse (N s) between two particles in this step: told after it. */
+  const strongest = useRef(0);
   const columns = useMemo(() => new ParticleColumns(), []);
   const [initialPreset] = useState(() => settingsFromPreset(location.hash));
   const [settings, setSettings] = useState<Settings>(initialPreset ?? DEFAULT_SETTINGS);
@@ -245,17 +250,12 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   const [description, setDescription] = useState('');
   const { announce, region } = useAnnouncer('reactions');
   const [, rerender] = useReducer((count: number) => count + 1, 0);
-  // The live readouts re-render on their own (Live), not the whole screen: with 50 particles a
-  // re-render of the screen ten times a second took most of a slow phone's frame time.
+  // The live readouts rewrite their own text (LiveText) and the results table re-renders on its
+  // own (Live) when the record changed: with 50 particles a re-render of the screen ten times a
+  // second took most of a slow phone's frame time.
   const live = active && !sim.paused;
   // Fewer pixels once the canvas cannot draw its frames in time (a slow phone, many particles).
   const pixelRatio = usePixelRatioGovernor(canvasRef, live);
-  const liveKey = useCallback((): string => {
-    const current = sceneRef.current;
-    if (current === null) return '';
-    return `${current.world.steps}:${current.particles.size}:${current.world.awakeBodyCount}`;
-  }, []);
-
   const labelOf = useCallback(
     (body: Body): string => sceneRef.current?.particles.get(body)?.label ?? '?',
     [],
@@ -362,6 +362,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     after: () => {
       const current = sceneRef.current;
       if (current === null) return;
+      announceCollisionRef.current();
       if (recorder.afterStep(simulatedTime(current.world) - STEP)) describe(current);
     },
     measure: () => columns.fill(sceneRef.current!.particles),
@@ -447,32 +448,41 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     return world.on('collision', (event) => {
       arrows.record(event, STEP, simulatedTime(world));
       recorder.collided(event);
-      const measure = settingsRef.current.measure;
+      // Only the step's strongest collision is told (after the step): formatting a sentence for
+      // each of a crowd's collisions cost more than the announcer, which keeps two, would use.
       if (
-        event.normalImpulse > 0.02 &&
+        event.normalImpulse > Math.max(0.02, strongest.current) &&
         scene.particles.has(event.bodyA) &&
         scene.particles.has(event.bodyB)
       ) {
-        announce(
-          measure === 'impulse'
-            ? t('reactions.collidedImpulse', { impulse: unit(event.normalImpulse, 'N·s', 3) })
-            : t('reactions.collidedForce', {
-                force: unit(
-                  averageForce(event.normalImpulse, settingsRef.current.contactTime),
-                  'N',
-                  1,
-                ),
-                time: unit(settingsRef.current.contactTime, 's', 3),
-              }),
-        );
+        strongest.current = event.normalImpulse;
       }
-      for (const body of [event.bodyA, event.bodyB]) {
-        const info = scene.particles.get(body);
-        if (info !== undefined && event.normalImpulse > 1e-4)
-          info.lastImpulse = event.normalImpulse;
+      if (event.normalImpulse > 1e-4) {
+        const a = scene.particles.get(event.bodyA);
+        if (a !== undefined) a.lastImpulse = event.normalImpulse;
+        const b = scene.particles.get(event.bodyB);
+        if (b !== undefined) b.lastImpulse = event.normalImpulse;
       }
     });
-  }, [scene, arrows, recorder, announce, t, unit]);
+  }, [scene, arrows, recorder]);
+
+  /** Tells the step's strongest collision between particles, if any. */
+  const announceCollision = (): void => {
+    const impulse = strongest.current;
+    if (impulse === 0) return;
+    strongest.current = 0;
+    const { measure, contactTime } = settingsRef.current;
+    announce(
+      measure === 'impulse'
+        ? t('reactions.collidedImpulse', { impulse: unit(impulse, 'N·s', 3) })
+        : t('reactions.collidedForce', {
+            force: unit(averageForce(impulse, contactTime), 'N', 1),
+            time: unit(contactTime, 's', 3),
+          }),
+    );
+  };
+  const announceCollisionRef = useRef(announceCollision);
+  announceCollisionRef.current = announceCollision;
 
   // Paused, or another particle chosen or set up: the description says how things are now.
   useEffect(() => {
@@ -614,50 +624,31 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   useEffect(() => {
     const host = hostRef.current;
     if (host === null || scene === null) return;
-    let dragging: { body: Body; pointerId: number } | null = null;
-    const toWorld = (event: PointerEvent) =>
-      canvasRef.current?.clientToWorld(event.clientX, event.clientY);
-    const onDown = (event: PointerEvent): void => {
-      const point = toWorld(event);
-      if (point === undefined) return;
-      for (const body of chosenRef.current) {
-        const handle = handlePoint(body);
-        if (Math.hypot(handle.x - point.x, handle.y - point.y) > HANDLE_REACH) continue;
-        dragging = { body, pointerId: event.pointerId };
-        host.setPointerCapture(event.pointerId);
-        event.preventDefault();
-        event.stopPropagation();
+    let dragging: Body | null = null;
+    return listenToCanvasDrags(host, (x, y) => canvasRef.current?.clientToWorld(x, y), {
+      press: (point) => {
+        dragging =
+          chosenRef.current.find((body) => {
+            const handle = handlePoint(body);
+            return Math.hypot(handle.x - point.x, handle.y - point.y) <= HANDLE_REACH;
+          }) ?? null;
+        if (dragging === null) return false;
         sim.setPaused(true);
-        setSelected(body);
-        return;
-      }
-    };
-    const onMove = (event: PointerEvent): void => {
-      if (dragging === null || event.pointerId !== dragging.pointerId) return;
-      const point = toWorld(event);
-      if (point === undefined) return;
-      event.stopPropagation();
-      dragging.body.linearVelocity = velocityFromHandle(dragging.body, point);
-      canvasRef.current?.invalidate();
-      rerender();
-    };
-    const onUp = (event: PointerEvent): void => {
-      if (dragging === null || event.pointerId !== dragging.pointerId) return;
-      event.stopPropagation();
-      dragging = null;
-      bumpVersion();
-      afterLabEdit();
-    };
-    host.addEventListener('pointerdown', onDown, true);
-    host.addEventListener('pointermove', onMove, true);
-    host.addEventListener('pointerup', onUp, true);
-    host.addEventListener('pointercancel', onUp, true);
-    return () => {
-      host.removeEventListener('pointerdown', onDown, true);
-      host.removeEventListener('pointermove', onMove, true);
-      host.removeEventListener('pointerup', onUp, true);
-      host.removeEventListener('pointercancel', onUp, true);
-    };
+        setSelected(dragging);
+        return true;
+      },
+      move: (point) => {
+        if (dragging === null) return;
+        dragging.linearVelocity = velocityFromHandle(dragging, point);
+        canvasRef.current?.invalidate();
+        rerender();
+      },
+      release: () => {
+        dragging = null;
+        bumpVersion();
+        afterLabEdit();
+      },
+    });
     // afterLabEdit reads refs only: listening again on each render is not needed.
   }, [scene, sim.setPaused]);
 
@@ -687,33 +678,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
         );
       }
       momentumArrows.finish();
-      for (const { arrow, opacity } of visible) {
-        const value =
-          measure === 'impulse' ? arrow.impulse : averageForce(arrow.impulse, contactTime);
-        const length = reactionArrowLength(value, measure);
-        const from = { x: arrow.x, y: arrow.y };
-        const style = { width: 3, opacity: REDUCED_MOTION ? 1 : opacity };
-        drawArrow(
-          context,
-          scale,
-          from,
-          { x: arrow.nx * length, y: arrow.ny * length },
-          {
-            kind: 'force',
-            ...style,
-          },
-        );
-        drawArrow(
-          context,
-          scale,
-          from,
-          { x: -arrow.nx * length, y: -arrow.ny * length },
-          {
-            kind: 'impulse',
-            ...style,
-          },
-        );
-      }
+      drawReactionArrows(context, scale, visible, measure, contactTime, REDUCED_MOTION);
       context.restore();
       // Outside the clip: a handle may sit past a wall, and must stay reachable.
       for (const body of lab) {
@@ -887,17 +852,22 @@ export function ReactionsScreen({ active }: { active: boolean }) {
           <Tabs
             value={tab}
             onChange={(_event, value: PanelTab) => setTab(value)}
-            variant="fullWidth"
+            // Five whole labels: they share the row where it is wide enough, and where it is
+            // not (a 375x667 phone in landscape gives the panel 220 px) the row scrolls sideways
+            // rather than cut "Results" and "Ergebnis" to a few letters.
+            variant="scrollable"
+            scrollButtons={false}
             aria-label={t('reactions.panel')}
             sx={{
               minHeight: 48,
-              // Five tabs side by side on a 320 px phone, in German too.
               '& .MuiTab-root': {
                 minHeight: 48,
                 minWidth: 0,
-                px: 0.25,
+                flex: '1 0 auto',
+                px: 1,
                 fontSize: '0.8125rem',
                 letterSpacing: 0,
+                whiteSpace: 'nowrap',
               },
             }}
           >
@@ -905,7 +875,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
               <Tab
                 key={id}
                 value={id}
-                label={<span style={TAB_LABEL_STYLE}>{t(TAB_LABELS[id])}</span>}
+                label={t(TAB_LABELS[id])}
                 id={`reactions-tab-${id}`}
                 aria-controls={`reactions-tabpanel-${id}`}
                 data-tab={id}
@@ -935,54 +905,69 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                   sx={{ minHeight: 40, px: 0.5, display: 'flex', alignItems: 'center' }}
                   data-readout="particle-info"
                 >
-                  <Live active={live} watch={liveKey}>
-                    {() =>
-                      selected !== null && info !== undefined ? (
-                        <Box
-                          sx={{
-                            display: 'grid',
-                            gridTemplateColumns: 'repeat(4, auto)',
-                            gap: 1,
-                            flex: 1,
-                          }}
-                        >
-                          <Readout
-                            name="particle-mass"
-                            label={`${t('reactions.mass')} ${info.label}`}
-                            value={unit(selected.mass, 'kg', 3)}
+                  {selected !== null && info !== undefined ? (
+                    <Box
+                      sx={{
+                        display: 'grid',
+                        gridTemplateColumns: 'repeat(4, auto)',
+                        gap: 1,
+                        flex: 1,
+                      }}
+                    >
+                      <Readout
+                        name="particle-mass"
+                        label={`${t('reactions.mass')} ${info.label}`}
+                        value={unit(selected.mass, 'kg', 3)}
+                      />
+                      <Readout
+                        name="particle-speed"
+                        label={t('reactions.speed')}
+                        value={
+                          <LiveText
+                            active={active}
+                            text={() =>
+                              unit(
+                                Math.hypot(selected.linearVelocity.x, selected.linearVelocity.y),
+                                'm/s',
+                                2,
+                                2,
+                              )
+                            }
                           />
-                          <Readout
-                            name="particle-speed"
-                            label={t('reactions.speed')}
-                            value={unit(
-                              Math.hypot(selected.linearVelocity.x, selected.linearVelocity.y),
-                              'm/s',
-                              2,
-                              2,
-                            )}
-                          />
-                          <Readout
-                            name="particle-impulse"
-                            label={t('reactions.impulse')}
-                            value={
+                        }
+                      />
+                      <Readout
+                        name="particle-impulse"
+                        label={t('reactions.impulse')}
+                        value={
+                          <LiveText
+                            active={active}
+                            text={() =>
                               info.lastImpulse === null
                                 ? t('reactions.none')
                                 : unit(info.lastImpulse, 'N·s', 3)
                             }
                           />
-                          <Readout
-                            name="particle-position"
-                            label={t('reactions.position')}
-                            value={`${number(selected.position.x, 2, 2)}, ${number(selected.position.y, 2, 2)} m`}
+                        }
+                      />
+                      <Readout
+                        name="particle-position"
+                        label={t('reactions.position')}
+                        value={
+                          <LiveText
+                            active={active}
+                            text={() =>
+                              `${number(selected.position.x, 2, 2)}, ${number(selected.position.y, 2, 2)} m`
+                            }
                           />
-                        </Box>
-                      ) : (
-                        <Typography variant="body2" sx={{ color: 'text.secondary' }}>
-                          {t('reactions.tapToInspect')}
-                        </Typography>
-                      )
-                    }
-                  </Live>
+                        }
+                      />
+                    </Box>
+                  ) : (
+                    <Typography variant="body2" sx={{ color: 'text.secondary' }}>
+                      {t('reactions.tapToInspect')}
+                    </Typography>
+                  )}
                 </Box>
                 {/* The readouts keep their text's width and go below the pad when it lacks room. */}
                 <Box sx={{ display: 'flex', flexWrap: 'wrap', alignItems: 'center', gap: 1 }}>
@@ -1050,19 +1035,20 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                           : String(scene?.particles.size ?? 0)
                       }
                     />
-                    <Live active={live} watch={liveKey}>
-                      {() => (
-                        <Readout
-                          name="momentum"
-                          label={t('reactions.momentumCollision')}
-                          value={
+                    <Readout
+                      name="momentum"
+                      label={t('reactions.momentumCollision')}
+                      value={
+                        <LiveText
+                          active={active}
+                          text={() =>
                             recorder.record === null
                               ? '–'
                               : `${recordTotal('before')} → ${recordTotal('after')}`
                           }
                         />
-                      )}
-                    </Live>
+                      }
+                    />
                   </Box>
                 </Box>
               </>
@@ -1099,7 +1085,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
               </>
             )}
             {tab === 'results' && (
-              <Live active={live} watch={liveKey}>
+              <Live active={live} watch={() => recordKey(recorder.record)}>
                 {() => <LabResults record={recorder.record} />}
               </Live>
             )}

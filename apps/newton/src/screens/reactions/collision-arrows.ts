@@ -45,9 +45,13 @@ const MIN_IMPULSE = 1e-4;
  * (the newest), held for {@link ARROW_HOLD} and gone after {@link ARROW_LIFETIME}.
  */
 export class CollisionArrows {
-  private readonly pairs = new Map<string, ReactionArrow>();
+  /** By pair of bodies: A's id times 2^21 plus B's (a number key: no string per event). */
+  private readonly pairs = new Map<number, ReactionArrow>();
   private readonly ids = new WeakMap<Body, number>();
   private nextId = 0;
+  /** {@link visible}'s list and its entries, reused from frame to frame. */
+  private readonly shown: VisibleArrow[] = [];
+  private readonly pool: VisibleArrow[] = [];
 
   private idOf(body: Body): number {
     let id = this.ids.get(body);
@@ -67,23 +71,31 @@ export class CollisionArrows {
       x += event.points[i]!.x;
       y += event.points[i]!.y;
     }
-    const key = `${this.idOf(event.bodyA)}:${this.idOf(event.bodyB)}`;
-    const old = this.pairs.get(key);
+    const key = this.idOf(event.bodyA) * 2 ** 21 + this.idOf(event.bodyB);
+    let arrow = this.pairs.get(key);
     // Pushing on in the very next step: the same collision, its impulse adds up.
-    const going = old !== undefined && time - old.time <= 1.5 * dt;
-    this.pairs.set(key, {
-      x: x / event.pointCount,
-      y: y / event.pointCount,
-      nx: event.normalX,
-      ny: event.normalY,
-      impulse: (going ? old.impulse : 0) + event.normalImpulse,
-      time,
-    });
+    const going = arrow !== undefined && time - arrow.time <= 1.5 * dt;
+    const impulse = (going ? arrow!.impulse : 0) + event.normalImpulse;
+    // A pile on a tilted tray collides in every step: the pair's arrow is rewritten in place.
+    if (arrow === undefined) {
+      arrow = { x: 0, y: 0, nx: 0, ny: 0, impulse: 0, time: 0 };
+      this.pairs.set(key, arrow);
+    }
+    arrow.x = x / event.pointCount;
+    arrow.y = y / event.pointCount;
+    arrow.nx = event.normalX;
+    arrow.ny = event.normalY;
+    arrow.impulse = impulse;
+    arrow.time = time;
   }
 
-  /** The arrow pairs still visible at `time`, with their opacity (1 new, 0 gone). */
-  visible(time: number): { arrow: ReactionArrow; opacity: number }[] {
-    const result: { arrow: ReactionArrow; opacity: number }[] = [];
+  /**
+   * The arrow pairs still visible at `time`, with their opacity (1 new, 0 gone). The list and
+   * its entries are reused by the next call (drawn every frame, they make no garbage).
+   */
+  visible(time: number): readonly VisibleArrow[] {
+    const result = this.shown;
+    result.length = 0;
     for (const [key, arrow] of this.pairs) {
       const age = time - arrow.time;
       if (age > ARROW_LIFETIME || age < 0) {
@@ -91,7 +103,10 @@ export class CollisionArrows {
         continue;
       }
       const fade = (age - ARROW_HOLD) / (ARROW_LIFETIME - ARROW_HOLD);
-      result.push({ arrow, opacity: fade <= 0 ? 1 : 1 - fade });
+      const entry = (this.pool[result.length] ??= { arrow, opacity: 1 });
+      entry.arrow = arrow;
+      entry.opacity = fade <= 0 ? 1 : 1 - fade;
+      result.push(entry);
     }
     return result;
   }
@@ -99,6 +114,12 @@ export class CollisionArrows {
   clear(): void {
     this.pairs.clear();
   }
+}
+
+/** One arrow pair of {@link CollisionArrows.visible}, with its opacity (1 new, 0 gone). */
+export interface VisibleArrow {
+  arrow: ReactionArrow;
+  opacity: number;
 }
 
 /**
