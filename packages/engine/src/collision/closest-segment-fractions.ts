@@ -7,7 +7,7 @@
  * r = p1 - p2: at 0 d1 . d1, 1 d2 . d2, 2 d1 . d2, 3 r . d1, 4 r . d2. Out: at 5 the fraction f1
  * of the closest point along segment 1, at 6 f2 along segment 2, each in [0, 1].
  */
-export const segmentFractions = new Float64Array(7);
+export const segmentFractions: Float64Array = new Float64Array(7);
 
 /**
  * Fractions of the closest points of two segments of non-zero length (Ericson, Real-Time

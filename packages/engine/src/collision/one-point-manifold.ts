@@ -10,7 +10,7 @@ import { makeFeatureId, type Manifold } from './manifold.ts';
  * must not allocate. {@link circleCenterInA} writes the centre at 0, 1; {@link writeOnePoint}
  * reads the point at 0, 1, the unit normal at 2, 3 and the separation at 4, all in A's frame.
  */
-export const onePoint = new Float64Array(5);
+export const onePoint: Float64Array = new Float64Array(5);
 
 /** Writes circle B's centre in A's frame, c = RA^T (RB cb + pB - pA), to onePoint[0], [1]. */
 export function circleCenterInA(b: Circle, xfA: Transform, xfB: Transform): void {
