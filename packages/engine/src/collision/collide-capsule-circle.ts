@@ -1,7 +1,8 @@
 import type { Capsule } from '../geometry/capsule.ts';
 import type { Circle } from '../geometry/circle.ts';
 import type { Transform } from '../math/transform.ts';
-import { makeFeatureId, type Manifold } from './manifold.ts';
+import type { Manifold } from './manifold.ts';
+import { circleCenterInA, onePoint, writeOnePoint } from './one-point-manifold.ts';
 
 /**
  * Contact between a capsule A and a circle B: at most one point. The closest point q of A's core
@@ -19,10 +20,9 @@ export function collideCapsuleAndCircle(
 ): void {
   const speculativeDistance = out.speculativeDistance;
   // Circle centre in A's frame.
-  const wx = xfB.c * b.centerX - xfB.s * b.centerY + xfB.x - xfA.x;
-  const wy = xfB.s * b.centerX + xfB.c * b.centerY + xfB.y - xfA.y;
-  const cx = xfA.c * wx + xfA.s * wy;
-  const cy = -xfA.s * wx + xfA.c * wy;
+  circleCenterInA(b, xfA, xfB);
+  const cx = onePoint[0]!;
+  const cy = onePoint[1]!;
   const ex = a.x2 - a.x1;
   const ey = a.y2 - a.y1;
   let t = ((cx - a.x1) * ex + (cy - a.y1) * ey) / (ex * ex + ey * ey);
@@ -50,20 +50,10 @@ export function collideCapsuleAndCircle(
   const along = a.radius + 0.5 * separation;
   const px = qx + along * nx;
   const py = qy + along * ny;
-  const c = xfA.c;
-  const s = xfA.s;
-  const anchorX = c * px - s * py;
-  const anchorY = s * px + c * py;
-  out.normalX = c * nx - s * ny;
-  out.normalY = s * nx + c * ny;
-  out.pointCount = 1;
-  const point = out.points[0];
-  point.anchorAX = anchorX;
-  point.anchorAY = anchorY;
-  point.anchorBX = anchorX + xfA.x - xfB.x;
-  point.anchorBY = anchorY + xfA.y - xfB.y;
-  point.x = anchorX + xfA.x;
-  point.y = anchorY + xfA.y;
-  point.separation = separation;
-  point.id = makeFeatureId(0, 0);
+  onePoint[0] = px;
+  onePoint[1] = py;
+  onePoint[2] = nx;
+  onePoint[3] = ny;
+  onePoint[4] = separation;
+  writeOnePoint(out, xfA, xfB);
 }

@@ -1,6 +1,7 @@
 import { LINEAR_SLOP } from '../core/constants.ts';
 import type { Capsule } from '../geometry/capsule.ts';
 import type { Transform } from '../math/transform.ts';
+import { closestSegmentFractions, segmentFractions } from './closest-segment-fractions.ts';
 import { makeFeatureId, type Manifold } from './manifold.ts';
 
 // Two clipped face points for writeFacePoints, in A's frame relative to A's first centre:
@@ -57,27 +58,18 @@ export function collideCapsules(
   const d2y = q2y - p2y;
   const dd1 = d1x * d1x + d1y * d1y;
   const dd2 = d2x * d2x + d2y * d2y;
+  // r = p1 - p2, with p1 = (0, 0).
   const rx = -p2x;
   const ry = -p2y;
-  const rd1 = rx * d1x + ry * d1y;
-  const rd2 = rx * d2x + ry * d2y;
-  const d12 = d1x * d2x + d1y * d2y;
-  const denominator = dd1 * dd2 - d12 * d12;
-  // Clamps to [0, 1] written out, as in collide-polygons.ts (a helper call could box).
-  let f1 = 0;
-  if (denominator > 0) {
-    f1 = (d12 * rd2 - rd1 * dd2) / denominator;
-    f1 = f1 < 0 ? 0 : f1 > 1 ? 1 : f1;
-  }
-  let f2 = (d12 * f1 + rd2) / dd2;
-  if (f2 < 0) {
-    f2 = 0;
-    f1 = -rd1 / dd1;
-  } else if (f2 > 1) {
-    f2 = 1;
-    f1 = (d12 - rd1) / dd1;
-  }
-  f1 = f1 < 0 ? 0 : f1 > 1 ? 1 : f1;
+  const io = segmentFractions;
+  io[0] = dd1;
+  io[1] = dd2;
+  io[2] = d1x * d2x + d1y * d2y;
+  io[3] = rx * d1x + ry * d1y;
+  io[4] = rx * d2x + ry * d2y;
+  closestSegmentFractions();
+  const f1 = io[5]!;
+  const f2 = io[6]!;
   const closest1X = f1 * d1x;
   const closest1Y = f1 * d1y;
   const closest2X = p2x + f2 * d2x;

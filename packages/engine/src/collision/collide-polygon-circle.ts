@@ -2,7 +2,8 @@ import { LINEAR_SLOP } from '../core/constants.ts';
 import type { Circle } from '../geometry/circle.ts';
 import type { Polygon } from '../geometry/polygon.ts';
 import type { Transform } from '../math/transform.ts';
-import { makeFeatureId, type Manifold } from './manifold.ts';
+import type { Manifold } from './manifold.ts';
+import { circleCenterInA, onePoint, writeOnePoint } from './one-point-manifold.ts';
 
 /**
  * Contact between a (possibly rounded) polygon A and a circle B: at most one point.
@@ -27,11 +28,10 @@ export function collidePolygonAndCircle(
   const count = a.count;
   const rA = a.radius;
   const rB = b.radius;
-  // Circle centre in A's frame: c = RA^T (RB cb + pB - pA).
-  const wx = xfB.c * b.centerX - xfB.s * b.centerY + xfB.x - xfA.x;
-  const wy = xfB.s * b.centerX + xfB.c * b.centerY + xfB.y - xfA.y;
-  const cx = xfA.c * wx + xfA.s * wy;
-  const cy = -xfA.s * wx + xfA.c * wy;
+  // Circle centre in A's frame.
+  circleCenterInA(b, xfA, xfB);
+  const cx = onePoint[0]!;
+  const cy = onePoint[1]!;
 
   let edge = 0;
   let faceSeparation = -Infinity;
@@ -80,20 +80,10 @@ export function collidePolygonAndCircle(
   const along = rA + 0.5 * separation;
   const px = surfaceX + along * nx;
   const py = surfaceY + along * ny;
-  const c = xfA.c;
-  const s = xfA.s;
-  const anchorX = c * px - s * py;
-  const anchorY = s * px + c * py;
-  out.normalX = c * nx - s * ny;
-  out.normalY = s * nx + c * ny;
-  out.pointCount = 1;
-  const point = out.points[0];
-  point.anchorAX = anchorX;
-  point.anchorAY = anchorY;
-  point.anchorBX = anchorX + xfA.x - xfB.x;
-  point.anchorBY = anchorY + xfA.y - xfB.y;
-  point.x = anchorX + xfA.x;
-  point.y = anchorY + xfA.y;
-  point.separation = separation;
-  point.id = makeFeatureId(0, 0);
+  onePoint[0] = px;
+  onePoint[1] = py;
+  onePoint[2] = nx;
+  onePoint[3] = ny;
+  onePoint[4] = separation;
+  writeOnePoint(out, xfA, xfB);
 }

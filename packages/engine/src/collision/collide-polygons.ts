@@ -1,6 +1,7 @@
 import { LINEAR_SLOP, MAX_POLYGON_VERTICES } from '../core/constants.ts';
 import type { Polygon } from '../geometry/polygon.ts';
 import type { Transform } from '../math/transform.ts';
+import { closestSegmentFractions, segmentFractions } from './closest-segment-fractions.ts';
 import { makeFeatureId, type Manifold } from './manifold.ts';
 
 // Scratch for one call, in frame F = A's local frame shifted to A's first vertex: coordinates
@@ -143,26 +144,15 @@ export function collidePolygons(
     const length2Squared = d2x * d2x + d2y * d2y;
     const rx = v11x - v21x;
     const ry = v11y - v21y;
-    const b12 = d1x * d2x + d1y * d2y;
-    const c1 = d1x * rx + d1y * ry;
-    const f2r = d2x * rx + d2y * ry;
-    const denominator = length1Squared * length2Squared - b12 * b12;
-    // Clamps to [0, 1] written out, not a helper call: V8 did not always inline one here, and
-    // then boxed its argument and result (the narrow phase must not allocate).
-    let f1 = 0;
-    if (denominator > 0) {
-      f1 = (b12 * f2r - c1 * length2Squared) / denominator;
-      f1 = f1 < 0 ? 0 : f1 > 1 ? 1 : f1;
-    }
-    let f2 = (b12 * f1 + f2r) / length2Squared;
-    if (f2 < 0) {
-      f2 = 0;
-      f1 = -c1 / length1Squared;
-    } else if (f2 > 1) {
-      f2 = 1;
-      f1 = (b12 - c1) / length1Squared;
-    }
-    f1 = f1 < 0 ? 0 : f1 > 1 ? 1 : f1;
+    const io = segmentFractions;
+    io[0] = length1Squared;
+    io[1] = length2Squared;
+    io[2] = d1x * d2x + d1y * d2y;
+    io[3] = d1x * rx + d1y * ry;
+    io[4] = d2x * rx + d2y * ry;
+    closestSegmentFractions();
+    const f1 = io[5]!;
+    const f2 = io[6]!;
     if ((f1 === 0 || f1 === 1) && (f2 === 0 || f2 === 1)) {
       const p2x = v21x + f2 * d2x;
       const p2y = v21y + f2 * d2y;

@@ -1,7 +1,8 @@
 import type { Circle } from '../geometry/circle.ts';
 import type { Segment } from '../geometry/segment.ts';
 import type { Transform } from '../math/transform.ts';
-import { makeFeatureId, type Manifold } from './manifold.ts';
+import type { Manifold } from './manifold.ts';
+import { circleCenterInA, onePoint, writeOnePoint } from './one-point-manifold.ts';
 
 /**
  * Contact between a segment A (a wall) and a circle B: at most one point.
@@ -23,10 +24,9 @@ export function collideSegmentAndCircle(
 ): void {
   const speculativeDistance = out.speculativeDistance;
   // Everything in A's frame.
-  const wx = xfB.c * b.centerX - xfB.s * b.centerY + xfB.x - xfA.x;
-  const wy = xfB.s * b.centerX + xfB.c * b.centerY + xfB.y - xfA.y;
-  const cx = xfA.c * wx + xfA.s * wy;
-  const cy = -xfA.s * wx + xfA.c * wy;
+  circleCenterInA(b, xfA, xfB);
+  const cx = onePoint[0]!;
+  const cy = onePoint[1]!;
   const ex = a.x2 - a.x1;
   const ey = a.y2 - a.y1;
   const length = Math.sqrt(ex * ex + ey * ey);
@@ -59,20 +59,10 @@ export function collideSegmentAndCircle(
   // Midway between the wall point q and the circle's surface point c - r n.
   const px = 0.5 * (qx + cx - b.radius * nx);
   const py = 0.5 * (qy + cy - b.radius * ny);
-  const c = xfA.c;
-  const s = xfA.s;
-  const anchorX = c * px - s * py;
-  const anchorY = s * px + c * py;
-  out.normalX = c * nx - s * ny;
-  out.normalY = s * nx + c * ny;
-  out.pointCount = 1;
-  const point = out.points[0];
-  point.anchorAX = anchorX;
-  point.anchorAY = anchorY;
-  point.anchorBX = anchorX + xfA.x - xfB.x;
-  point.anchorBY = anchorY + xfA.y - xfB.y;
-  point.x = anchorX + xfA.x;
-  point.y = anchorY + xfA.y;
-  point.separation = separation;
-  point.id = makeFeatureId(0, 0);
+  onePoint[0] = px;
+  onePoint[1] = py;
+  onePoint[2] = nx;
+  onePoint[3] = ny;
+  onePoint[4] = separation;
+  writeOnePoint(out, xfA, xfB);
 }

@@ -196,6 +196,9 @@ export class ContactManager {
     this.slots.reserve(this.count + count);
     this.edges.reserve(this.count + count);
     const data = this.slots.data;
+    // The batch's slots cleared in one call, not one per contact: 15,000 calls in a pile's first
+    // step, made before V8 has optimised this loop.
+    data.fill(0, this.count * CONTACT_STRIDE, (this.count + count) * CONTACT_STRIDE);
     for (let n = 0; n < count; n++) {
       const slot = this.count++;
       this.fillSlot(slot, this.pendingA[n]!, this.pendingB[n]!, data);
@@ -460,7 +463,9 @@ export class ContactManager {
     const slot = this.count;
     this.slots.reserve(slot + 1);
     this.edges.reserve(slot + 1);
-    this.fillSlot(slot, shapeA, shapeB, this.slots.data);
+    const data = this.slots.data;
+    data.fill(0, slot * CONTACT_STRIDE, (slot + 1) * CONTACT_STRIDE);
+    this.fillSlot(slot, shapeA, shapeB, data);
     this.count++;
     return slot;
   }
@@ -513,7 +518,7 @@ export class ContactManager {
     this.pendingB.length = this.pendingCount;
   }
 
-  /** Sets up `slot` for the pair of shapes a and b (ordered): numbers, bodies, shapes, kind. */
+  /** Sets up the cleared `slot` for the pair of shapes a and b (ordered): numbers, bodies, shapes, kind. */
   private fillSlot(slot: number, a: Shape, b: Shape, data: Float64Array): void {
     const kind = initContactSlot(slot, a, b, data);
     this.slots.setPair(slot, a.body.worldIndex, b.body.worldIndex, a.id, b.id, kind);

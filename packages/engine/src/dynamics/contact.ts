@@ -74,15 +74,14 @@ export function shouldSwap(a: Shape, b: Shape): boolean {
 }
 
 /**
- * Sets up contact slot `slot` of `data` for a new pair (a and b already ordered, see shouldSwap):
- * clears its numbers and mixes the materials. Returns the pair kind (which collide function
- * applies). A contact is its slot: its shapes, bodies and kind are in the contact data's flat
- * arrays (contact-data.ts) and its place in each body's contact list in the contact edges
+ * Sets up contact slot `slot` of `data` for a new pair (a and b already ordered, see shouldSwap),
+ * whose numbers the caller has cleared: mixes the materials. Returns the pair kind (which collide
+ * function applies). A contact is its slot: its shapes, bodies and kind are in the contact data's
+ * flat arrays (contact-data.ts) and its place in each body's contact list in the contact edges
  * (contact-edges.ts); no object stands for it.
  */
 export function initContactSlot(slot: number, a: Shape, b: Shape, data: Float64Array): number {
   const base = slot * CONTACT_STRIDE;
-  data.fill(0, base, base + CONTACT_STRIDE);
   data[base + FRICTION] = Math.sqrt(a.friction * b.friction);
   data[base + RESTITUTION] = Math.max(a.restitution, b.restitution);
   const kindA = a.geometry.kind;
