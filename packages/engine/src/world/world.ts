@@ -19,6 +19,7 @@ import type { Joint } from '../dynamics/joints/joint.ts';
 import { Sensors } from '../dynamics/sensor.ts';
 import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
 import { ShapeTable } from '../dynamics/shape-table.ts';
+import { AABB } from '../geometry/aabb.ts';
 import { Solver } from '../dynamics/solver.ts';
 import { EventDispatch, forgetBodies } from './event-dispatch.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
@@ -61,6 +62,8 @@ export class World {
   private readonly contactEdges = new ContactEdges(this.solver.memory);
   private readonly islands = new Islands(this.contactEdges, this.bodyList);
   private readonly shapeTable = new ShapeTable();
+  /** A joining shape's fat box, read from the broad phase on its way into the shape table. */
+  private readonly fatScratch = new AABB();
   private readonly contactManager = new ContactManager(
     this.islands,
     this.solver.memory,
@@ -689,8 +692,7 @@ export class World {
     shape.attachTable(this.shapeTable);
     const box = this.bounds.speculativeBox(shape, this.lastStep);
     shape.proxyKey = this.broadPhase.createProxy(box, PROXY_TYPE[shape.body.type], id, false);
-    this.broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
-    shape.fatAABBChanged();
+    shape.setFatBox(this.broadPhase.getFatAABB(shape.proxyKey, this.fatScratch));
     if (shape.sensor) this.sensors.add(shape);
   }
 
