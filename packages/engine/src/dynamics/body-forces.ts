@@ -34,7 +34,7 @@ export function applyBodyForce(body: Body, force: Vec2Like, options: ForceOption
     result.localPointY = local.y;
     result.hasPoint = true;
   }
-  attachForce(body, result);
+  attachBodyForce(body, result);
   return result;
 }
 
@@ -48,7 +48,7 @@ export function applyBodyTorque(body: Body, torque: number, options: TorqueOptio
     "an object { duration? }, for example { duration: 'constant' }",
   );
   const result = new Force(0, 0, torque, validateDuration(options.duration ?? 'instant'));
-  attachForce(body, result);
+  attachBodyForce(body, result);
   return result;
 }
 
@@ -97,8 +97,11 @@ export function applyBodyAngularImpulse(body: Body, impulse: number): void {
   body.wake();
 }
 
-/** A new force joins the body: it removes itself and wakes the body through these. */
-function attachForce(body: Body, force: Force): void {
+/**
+ * @internal A new force joins the body (applyForce and applyTorque end with it, a snapshot's forces
+ * join with it): it removes itself and wakes the body through these.
+ */
+export function attachBodyForce(body: Body, force: Force): void {
   force.onRemove = (f) => body.removeForce(f);
   force.onChange = () => body.wake();
   body.forceList.push(force);

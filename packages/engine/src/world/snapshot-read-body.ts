@@ -1,5 +1,6 @@
 import { PhysicalError } from '../core/errors.ts';
 import { Body, type BodyType } from '../dynamics/body.ts';
+import { attachBodyForce } from '../dynamics/body-forces.ts';
 import { Force, type Duration } from '../dynamics/force.ts';
 import { AABB } from '../geometry/aabb.ts';
 import { CONVEX_PART, type Shape, type ShapeOptions } from '../dynamics/shape.ts';
@@ -361,8 +362,8 @@ export function readBody(path: string, o: Obj): { body: Body; contacts: number[]
       );
     const force = new Force(0, 0, 0, duration);
     // Body.applyForce refuses non-dynamic bodies; a restored body takes its saved forces as they
-    // were (attachForce is what applyForce ends with).
-    (body as unknown as { attachForce(f: Force): void }).attachForce(force);
+    // were (attachBodyForce is what applyForce ends with).
+    attachBodyForce(body, force);
     force.xValue = vector[0]!;
     force.yValue = vector[1]!;
     force.torqueValue = torque;
