@@ -14,6 +14,8 @@ import type { Shape } from './shape.ts';
  */
 export class BodyBounds {
   private readonly box = new AABB();
+  /** A shape's fat box, read from the broad phase on its way into the shape table. */
+  private readonly fat = new AABB();
   // The growth of the body last passed to measureMotion.
   private grow = -0;
   private backX = -0;
@@ -48,8 +50,7 @@ export class BodyBounds {
       const shape = shapes[i]!;
       const box = this.place(shape.computeAABB(body.transform));
       if (broadPhase.moveProxy(shape.proxyKey, box)) {
-        broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
-        shape.fatAABBChanged();
+        shape.setFatBox(broadPhase.getFatAABB(shape.proxyKey, this.fat));
       } else if (forcePairs && body.type === 'static') {
         broadPhase.bufferMove(shape.proxyKey);
       }

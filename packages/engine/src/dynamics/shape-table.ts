@@ -1,43 +1,78 @@
 import type { AABB } from '../geometry/aabb.ts';
 import type { Geometry } from './shape.ts';
 
-// What the contact loops need of every shape in a world, by shape id, kept beside the Shape
-// objects so those loops read numbers instead of loading each contact's Shape, AABB and geometry
-// (contact-manager.ts). Copies: Shape stays what the rest of the engine reads, and every write to
-// what is copied writes here too (Shape.computeAABB, Shape.fatAABBChanged, Shape's filter
-// setter; all of it when the shape joins the world, Shape.attachTable).
+// Every number of a shape in one place, by row: in a world the row is the shape id, and the
+// world's table is what the contact loops read (contact-manager.ts) without loading a Shape.
+// `Shape` is a handle: its getters and setters read and write its row here, so there is no second
+// copy to keep in step. A shape outside a world keeps a table of its own (one row), copied into
+// the world's table when it joins (Shape.attachTable) and out of it when it leaves, as a body's
+// store is (body-memory.ts).
 //
-// Boxes, stride 8 doubles per shape id:
+// Boxes, stride 8 doubles per row:
 //   0 minX, 1 minY, 2 maxX, 3 maxY       tight box at the body's pose (m)
 //   4 minX, 5 minY, 6 maxX, 7 maxY       the broad phase's fat box (m)
-// Filters, stride 4 int32 per shape id:
-//   0 category bits, 1 mask bits (as int32: `&` reads them so anyway), 2 group, 3 sensor (1/0)
-// The offsets are literals in contact-manager.ts, the one file whose loops read them.
+// Filters, stride 4 int32 per row:
+//   0 category bits, 1 mask bits (as int32: `&` reads them so anyway; read back with >>> 0),
+//   2 group, 3 sensor (1/0)
+// Materials, stride 4 doubles per row (not read by the contact loops, so apart from the boxes):
+//   0 density, 1 friction, 2 restitution, 3 free
+// The box and filter offsets are literals in contact-manager.ts, the one file whose loops read
+// them, and in shape.ts's accessors.
 export const SHAPE_STRIDE = 8;
 export const FILTER_STRIDE = 4;
+export const MATERIAL_STRIDE = 4;
 
-/** Every shape's boxes, filter and geometry in a world, by shape id. */
+/** Every shape's boxes, filter, material and geometry, by row (in a world, the shape id). */
 export class ShapeTable {
-  data: Float64Array = new Float64Array(SHAPE_STRIDE * 64);
-  filters: Int32Array = new Int32Array(FILTER_STRIDE * 64);
-  /** Each shape's geometry by shape id (null for a free id). */
+  data: Float64Array;
+  filters: Int32Array;
+  materials: Float64Array;
+  /** Each row's geometry (null for a free id). */
   readonly geometries: (Geometry | null)[] = [];
 
-  /** Makes room for shape id `id`, keeping what is stored. */
+  /** Room for `rows` rows at first; {@link reserve} grows it. */
+  constructor(rows = 64) {
+    this.data = new Float64Array(SHAPE_STRIDE * rows);
+    this.filters = new Int32Array(FILTER_STRIDE * rows);
+    this.materials = new Float64Array(MATERIAL_STRIDE * rows);
+  }
+
+  /** Makes room for row `id`, keeping what is stored. */
   reserve(id: number): void {
     while (this.geometries.length <= id) this.geometries.push(null);
     if ((id + 1) * SHAPE_STRIDE <= this.data.length) return;
-    let size = this.data.length;
-    while (size < (id + 1) * SHAPE_STRIDE) size *= 2;
-    const grown = new Float64Array(size);
+    let rows = this.data.length / SHAPE_STRIDE;
+    while (rows < id + 1) rows *= 2;
+    const grown = new Float64Array(rows * SHAPE_STRIDE);
     grown.set(this.data);
     this.data = grown;
-    const filters = new Int32Array((size / SHAPE_STRIDE) * FILTER_STRIDE);
+    const filters = new Int32Array(rows * FILTER_STRIDE);
     filters.set(this.filters);
     this.filters = filters;
+    const materials = new Float64Array(rows * MATERIAL_STRIDE);
+    materials.set(this.materials);
+    this.materials = materials;
   }
 
-  /** Stores shape `id`'s tight box. */
+  /** Copies row `from` of `source` into row `to` of this table (made room for first). */
+  copyRow(source: ShapeTable, from: number, to: number): void {
+    this.reserve(to);
+    this.data.set(
+      source.data.subarray(from * SHAPE_STRIDE, (from + 1) * SHAPE_STRIDE),
+      to * SHAPE_STRIDE,
+    );
+    this.filters.set(
+      source.filters.subarray(from * FILTER_STRIDE, (from + 1) * FILTER_STRIDE),
+      to * FILTER_STRIDE,
+    );
+    this.materials.set(
+      source.materials.subarray(from * MATERIAL_STRIDE, (from + 1) * MATERIAL_STRIDE),
+      to * MATERIAL_STRIDE,
+    );
+    this.geometries[to] = source.geometries[from]!;
+  }
+
+  /** Stores row `id`'s tight box. */
   setTight(id: number, box: AABB): void {
     const d = this.data;
     const p = id * SHAPE_STRIDE;
@@ -47,7 +82,7 @@ export class ShapeTable {
     d[p + 3] = box.maxY;
   }
 
-  /** Stores shape `id`'s fat box. */
+  /** Stores row `id`'s fat box. */
   setFat(id: number, box: AABB): void {
     const d = this.data;
     const p = id * SHAPE_STRIDE + 4;
@@ -56,14 +91,12 @@ export class ShapeTable {
     d[p + 2] = box.maxX;
     d[p + 3] = box.maxY;
   }
+}
 
-  /** Stores shape `id`'s filter and whether it is a sensor. */
-  setFilter(id: number, category: number, mask: number, group: number, sensor: boolean): void {
-    const f = this.filters;
-    const p = id * FILTER_STRIDE;
-    f[p] = category;
-    f[p + 1] = mask;
-    f[p + 2] = group;
-    f[p + 3] = sensor ? 1 : 0;
-  }
+/** A table of one row, for a shape outside a world. */
+export function createLocalShapeTable(geometry: Geometry): ShapeTable {
+  const table = new ShapeTable(1);
+  table.reserve(0);
+  table.geometries[0] = geometry;
+  return table;
 }

@@ -23,7 +23,13 @@ import type { Transform } from '../math/transform.ts';
 import type { Vec2Like } from '../math/vec2.ts';
 import type { Body } from './body.ts';
 import { filtersCollide, resolveFilter, type Filter, type FilterOptions } from './filter.ts';
-import type { ShapeTable } from './shape-table.ts';
+import {
+  createLocalShapeTable,
+  FILTER_STRIDE,
+  MATERIAL_STRIDE,
+  SHAPE_STRIDE,
+  type ShapeTable,
+} from './shape-table.ts';
 
 /** Sensor flag and collision filter, shared by every shape kind (and the body factories). */
 export interface CollisionOptions {
@@ -142,91 +148,96 @@ export class Shape {
   set body(_value: never) {
     readOnly('body', 'a shape stays on the body it was made for');
   }
-  /** @internal Behind {@link geometry}. */
-  geometryValue: Geometry;
-  /** Geometry in the body's frame (read-only: build a new shape to change it). */
-  get geometry(): Geometry {
-    return this.geometryValue;
-  }
-  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
-  set geometry(_value: never) {
-    readOnly('geometry', 'build a new shape to change it');
-  }
-  /** @internal Behind {@link density}. */
-  densityValue = 1;
-  /** Mass per area (kg/m^2). Read-only: a shape keeps the density it was built with. */
-  get density(): number {
-    return this.densityValue;
-  }
-  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
-  set density(_value: never) {
-    readOnly('density', 'a shape keeps the density it was built with (add a new shape)');
-  }
-  /** @internal Friction behind {@link friction}. */
-  frictionValue = 0.6;
-  /** @internal Restitution behind {@link restitution}. */
-  restitutionValue = -0;
-  /** @internal Behind {@link sensor}. */
-  sensorValue = false;
-  /** True for a sensor: it reports overlaps and never collides. Fixed at creation. */
-  get sensor(): boolean {
-    return this.sensorValue;
-  }
-  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
-  set sensor(_value: never) {
-    readOnly('sensor', 'a shape is a sensor or not from its creation (add a new shape)');
-  }
-  /** @internal Filter bits (see {@link filter}). */
-  categoryBits = 1;
-  /** @internal */
-  maskBits = 0xffffffff;
-  /** @internal */
-  groupIndex = 0;
+  /**
+   * @internal Where this shape's numbers and geometry live (shape-table.ts): the world's table,
+   * at row {@link row} (its id), or a table of its own outside a world. The one copy: every
+   * getter and setter below reads and writes it. Read `table.data` at each access (it is
+   * replaced when the table grows).
+   */
+  table: ShapeTable;
+  /** @internal This shape's row in {@link table}: its id in a world, 0 outside. */
+  row = 0;
   /** @internal Index in the world's sensor list, -1 when not a sensor in a world. */
   sensorIndex = -1;
-
   /** @internal World-local id, -1 outside a world. */
   id = -1;
   /** @internal Broad-phase proxy key, -1 outside a world. */
   proxyKey = -1;
-  /** @internal Tight bounding box at the body's current transform (m). */
-  readonly aabb: AABB = new AABB();
-  /** @internal The broad phase's fattened box. */
-  readonly fatAABB: AABB = new AABB();
-  /**
-   * @internal The world's flat copy of what its contact loops read of every shape (boxes, filter,
-   * geometry; shape-table.ts), which every write to those updates; null outside a world.
-   */
-  table: ShapeTable | null = null;
 
   /** `geometry` is built from `options` unless given (a part of a split polygon). */
   constructor(body: Body, options: ShapeOptions, field: string, geometry?: Geometry) {
     this.bodyValue = body;
     requireObject(field, options, 'a shape description object');
-    this.densityValue = requireNonNegative(`${field}.density`, options.density ?? 1, MAX_DENSITY);
-    this.frictionValue = requireFriction(`${field}.friction`, options.friction ?? 0.6);
-    this.restitutionValue = requireRestitution(`${field}.restitution`, options.restitution ?? 0);
-    this.geometryValue = geometry ?? createGeometries(options, field)[0]!;
-    this.sensorValue = optionalBoolean(`${field}.sensor`, options.sensor, false);
-    this.setFilter(resolveFilter(`${field}.filter`, options.filter));
+    const density = requireNonNegative(`${field}.density`, options.density ?? 1, MAX_DENSITY);
+    const friction = requireFriction(`${field}.friction`, options.friction ?? 0.6);
+    const restitution = requireRestitution(`${field}.restitution`, options.restitution ?? 0);
+    const table = createLocalShapeTable(geometry ?? createGeometries(options, field)[0]!);
+    this.table = table;
+    const sensor = optionalBoolean(`${field}.sensor`, options.sensor, false);
+    const filter = resolveFilter(`${field}.filter`, options.filter);
+    table.materials[0] = density;
+    table.materials[1] = friction;
+    table.materials[2] = restitution;
+    table.filters[3] = sensor ? 1 : 0;
+    this.setFilter(filter);
+  }
+
+  /** Geometry in the body's frame (read-only: build a new shape to change it). */
+  get geometry(): Geometry {
+    return this.table.geometries[this.row]!;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set geometry(_value: never) {
+    readOnly('geometry', 'build a new shape to change it');
+  }
+
+  /** Mass per area (kg/m^2). Read-only: a shape keeps the density it was built with. */
+  get density(): number {
+    return this.table.materials[this.row * MATERIAL_STRIDE]!;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set density(_value: never) {
+    readOnly('density', 'a shape keeps the density it was built with (add a new shape)');
+  }
+
+  /** True for a sensor: it reports overlaps and never collides. Fixed at creation. */
+  get sensor(): boolean {
+    return this.table.filters[this.row * FILTER_STRIDE + 3] === 1;
+  }
+  /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
+  set sensor(_value: never) {
+    readOnly('sensor', 'a shape is a sensor or not from its creation (add a new shape)');
   }
 
   /** Coulomb friction coefficient, 0 to 100. Two shapes mix as sqrt(fA * fB). */
   get friction(): number {
-    return this.frictionValue;
+    return this.table.materials[this.row * MATERIAL_STRIDE + 1]!;
   }
 
   set friction(value: number) {
-    this.frictionValue = requireFriction('friction', value);
+    this.table.materials[this.row * MATERIAL_STRIDE + 1] = requireFriction('friction', value);
   }
 
   /** Coefficient of restitution (bounciness), 0 to 10, usually 0..1. Two shapes mix as max. */
   get restitution(): number {
-    return this.restitutionValue;
+    return this.table.materials[this.row * MATERIAL_STRIDE + 2]!;
   }
 
   set restitution(value: number) {
-    this.restitutionValue = requireRestitution('restitution', value);
+    this.table.materials[this.row * MATERIAL_STRIDE + 2] = requireRestitution('restitution', value);
+  }
+
+  /** @internal Category bits (unsigned; see {@link filter}). */
+  get categoryBits(): number {
+    return this.table.filters[this.row * FILTER_STRIDE]! >>> 0;
+  }
+  /** @internal Mask bits (unsigned). */
+  get maskBits(): number {
+    return this.table.filters[this.row * FILTER_STRIDE + 1]! >>> 0;
+  }
+  /** @internal Group. */
+  get groupIndex(): number {
+    return this.table.filters[this.row * FILTER_STRIDE + 2]!;
   }
 
   /**
@@ -251,13 +262,11 @@ export class Shape {
   }
 
   private setFilter(filter: Filter): void {
-    this.categoryBits = filter.category;
-    this.maskBits = filter.mask;
-    this.groupIndex = filter.group;
-    const table = this.table;
-    if (table !== null) {
-      table.setFilter(this.id, filter.category, filter.mask, filter.group, this.sensor);
-    }
+    const f = this.table.filters;
+    const p = this.row * FILTER_STRIDE;
+    f[p] = filter.category;
+    f[p + 1] = filter.mask;
+    f[p + 2] = filter.group;
   }
 
   /** The shape's bounding box in world coordinates (m), at the body's current pose. */
@@ -277,38 +286,69 @@ export class Shape {
     return out;
   }
 
-  /** @internal Recomputes the tight box for a transform. */
+  /**
+   * @internal Recomputes the tight box for a transform and stores it as this shape's. The box
+   * returned is shared scratch: valid until the next call on any shape.
+   */
   computeAABB(xf: Transform): AABB {
     const g = this.geometry;
-    const box = this.aabb;
+    const box = scratchBox;
     if (g.kind === 'circle') computeCircleAABB(g, xf, box);
     else if (g.kind === 'polygon') computePolygonAABB(g, xf, box);
     else if (g.kind === 'capsule') computeCapsuleAABB(g, xf, box);
     else computeSegmentAABB(g, xf, box);
-    const table = this.table;
-    if (table !== null) table.setTight(this.id, box);
+    this.table.setTight(this.row, box);
     return box;
   }
 
-  /** @internal Copies {@link fatAABB}, just written, into the world's flat copy. */
-  fatAABBChanged(): void {
-    const table = this.table;
-    if (table !== null) table.setFat(this.id, this.fatAABB);
+  /** @internal Reads the tight box last stored (m) into `out`. */
+  readTightBox(out: AABB): AABB {
+    const d = this.table.data;
+    const p = this.row * SHAPE_STRIDE;
+    return out.set(d[p]!, d[p + 1]!, d[p + 2]!, d[p + 3]!);
   }
 
-  /** @internal Joins a world's shape table (this shape's id is set), or leaves it (null). */
+  /** @internal Reads the broad phase's fat box (m) into `out`. */
+  readFatBox(out: AABB): AABB {
+    const d = this.table.data;
+    const p = this.row * SHAPE_STRIDE + 4;
+    return out.set(d[p]!, d[p + 1]!, d[p + 2]!, d[p + 3]!);
+  }
+
+  /** @internal Stores the tight box (a snapshot's). */
+  setTightBox(box: AABB): void {
+    this.table.setTight(this.row, box);
+  }
+
+  /** @internal Stores the broad phase's fat box, just read from its proxy. */
+  setFatBox(box: AABB): void {
+    this.table.setFat(this.row, box);
+  }
+
+  /**
+   * @internal Moves this shape's numbers into a world's table at row {@link id} (set first), or
+   * out of it into a table of its own (null).
+   */
   attachTable(table: ShapeTable | null): void {
-    if (this.table !== null) this.table.geometries[this.id] = null;
+    const old = this.table;
+    const oldRow = this.row;
+    if (table === null) {
+      const local = createLocalShapeTable(old.geometries[oldRow]!);
+      local.copyRow(old, oldRow, 0);
+      old.geometries[oldRow] = null;
+      this.table = local;
+      this.row = 0;
+      return;
+    }
+    table.copyRow(old, oldRow, this.id);
+    if (old !== table) old.geometries[oldRow] = null;
     this.table = table;
-    if (table === null) return;
-    const id = this.id;
-    table.reserve(id);
-    table.geometries[id] = this.geometry;
-    table.setTight(id, this.aabb);
-    table.setFat(id, this.fatAABB);
-    table.setFilter(id, this.categoryBits, this.maskBits, this.groupIndex, this.sensor);
+    this.row = this.id;
   }
 }
+
+/** computeAABB's result: written by each call, read before the next. */
+const scratchBox = new AABB();
 
 /**
  * @internal The geometry of each shape that `options` makes: one, or the convex parts of a split

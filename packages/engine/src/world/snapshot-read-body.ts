@@ -1,6 +1,8 @@
 import { PhysicalError } from '../core/errors.ts';
 import { Body, type BodyType } from '../dynamics/body.ts';
+import { attachBodyForce } from '../dynamics/body-forces.ts';
 import { Force, type Duration } from '../dynamics/force.ts';
+import { AABB } from '../geometry/aabb.ts';
 import { CONVEX_PART, type Shape, type ShapeOptions } from '../dynamics/shape.ts';
 import {
   MAX_ACCELERATION,
@@ -193,14 +195,10 @@ function applyExactPolygon(path: string, shape: Shape, exact: number[]): void {
   g.centroidY = exact[4 * n + 1]!;
 }
 
-function readBox(
-  path: string,
-  v: unknown,
-  box: { set(a: number, b: number, c: number, d: number): unknown },
-): void {
+function readBox(path: string, v: unknown, box: AABB): AABB {
   const b = bounded(path, v, 4, SAVED_COORDINATE);
   if (b[0]! > b[2]! || b[1]! > b[3]!) fail(path, 'must hold minX, minY, maxX, maxY in order.');
-  box.set(b[0]!, b[1]!, b[2]!, b[3]!);
+  return box.set(b[0]!, b[1]!, b[2]!, b[3]!);
 }
 
 /** @internal A body of a snapshot, built and checked; its contact list is checked by the loader. */
@@ -257,11 +255,12 @@ export function readBody(path: string, o: Obj): { body: Body; contacts: number[]
     }
     throw error;
   }
+  const box = new AABB();
   built.forEach((b, i) => {
     const shape = body.shapeList[i]!;
     if (b.exact !== null) applyExactPolygon(`${b.sp}.geometry`, shape, b.exact);
-    readBox(`${b.sp}.aabb`, field(b.so, b.sp, 'aabb'), shape.aabb);
-    readBox(`${b.sp}.fatAABB`, field(b.so, b.sp, 'fatAABB'), shape.fatAABB);
+    shape.setTightBox(readBox(`${b.sp}.aabb`, field(b.so, b.sp, 'aabb'), box));
+    shape.setFatBox(readBox(`${b.sp}.fatAABB`, field(b.so, b.sp, 'fatAABB'), box));
     shape.id = int(`${b.sp}.id`, field(b.so, b.sp, 'id'), 0, MAX_ID);
     shape.proxyKey = int(`${b.sp}.proxyKey`, field(b.so, b.sp, 'proxyKey'), 0, 0x7fffffff);
     // The key names the tree (its low two bits, 3 is none); a body whose type the app wrote
@@ -363,8 +362,8 @@ export function readBody(path: string, o: Obj): { body: Body; contacts: number[]
       );
     const force = new Force(0, 0, 0, duration);
     // Body.applyForce refuses non-dynamic bodies; a restored body takes its saved forces as they
-    // were (attachForce is what applyForce ends with).
-    (body as unknown as { attachForce(f: Force): void }).attachForce(force);
+    // were (attachBodyForce is what applyForce ends with).
+    attachBodyForce(body, force);
     force.xValue = vector[0]!;
     force.yValue = vector[1]!;
     force.torqueValue = torque;

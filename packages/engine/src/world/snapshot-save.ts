@@ -4,6 +4,7 @@ import type { Body } from '../dynamics/body.ts';
 import { CONTACT_STRIDE } from '../dynamics/contact-data.ts';
 import type { ContactManager } from '../dynamics/contact-manager.ts';
 import type { Shape } from '../dynamics/shape.ts';
+import { AABB } from '../geometry/aabb.ts';
 import { saveJoint } from './joint-snapshot.ts';
 import {
   SNAPSHOT_FORMAT,
@@ -47,6 +48,7 @@ function saveGeometry(shape: Shape): SnapshotValue {
 }
 
 function saveShape(shape: Shape): SnapshotValue {
+  const box = new AABB();
   return {
     id: shape.id,
     proxyKey: shape.proxyKey,
@@ -56,13 +58,8 @@ function saveShape(shape: Shape): SnapshotValue {
     restitution: enc(shape.restitution),
     sensor: shape.sensor,
     filter: [shape.categoryBits, shape.maskBits, shape.groupIndex],
-    aabb: encAll([shape.aabb.minX, shape.aabb.minY, shape.aabb.maxX, shape.aabb.maxY]),
-    fatAABB: encAll([
-      shape.fatAABB.minX,
-      shape.fatAABB.minY,
-      shape.fatAABB.maxX,
-      shape.fatAABB.maxY,
-    ]),
+    aabb: encodeBox(shape.readTightBox(box)),
+    fatAABB: encodeBox(shape.readFatBox(box)),
   };
 }
 
@@ -170,4 +167,8 @@ export function saveWorld(w: WorldInternals): WorldSnapshot {
     },
     joints: w.joints.map(saveJoint),
   };
+}
+
+function encodeBox(box: AABB): SnapshotValue {
+  return encAll([box.minX, box.minY, box.maxX, box.maxY]);
 }

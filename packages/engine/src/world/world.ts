@@ -1,7 +1,7 @@
 import { PhysicalError } from '../core/errors.ts';
-import { callAll, Listeners } from '../core/listeners.ts';
+import { Listeners } from '../core/listeners.ts';
 import { describeValue, requireFunction, requireVector } from '../core/validate.ts';
-import { BroadPhase, type ProxyType } from '../collision/broad-phase.ts';
+import { BroadPhase } from '../collision/broad-phase.ts';
 import type { Vec2, Vec2Like } from '../math/vec2.ts';
 import type { Body } from '../dynamics/body.ts';
 import { BodyBounds } from '../dynamics/body-bounds.ts';
@@ -31,12 +31,11 @@ import {
   type WorldOptions,
 } from './world-options.ts';
 import { SizeWarning } from './size-warning.ts';
+import { WorldMembership } from './world-membership.ts';
 import { checkQueryBox, checkRay, checkTimeStep, checkWorldSetting } from './world-checks.ts';
 
 /** Events of a world: a body's events for every body, plus bodies added, removed and woken. */
 export type WorldEvents = BodyEvents & WorldOnlyEvents;
-
-const PROXY_TYPE: Record<Body['type'], ProxyType> = { static: 0, kinematic: 1, dynamic: 2 };
 
 /**
  * A physics world: the bodies, and the clock that moves them. Add and remove bodies at any time,
@@ -74,7 +73,6 @@ export class World {
   private readonly queries: WorldQueries;
   private readonly shapeQueries: ShapeQueries;
   private readonly freeShapeIds: number[] = [];
-  private nextBodyId = 0;
   private locked = false;
   private readonly pendingAdds: Body[] = [];
   private readonly pendingRemoves: Body[] = [];
@@ -83,15 +81,14 @@ export class World {
   private readonly pendingJointRemoves: Joint[] = [];
   private readonly listeners = new Listeners<WorldEvents>(WORLD_EVENT_NAMES);
   private readonly events: EventDispatch;
+  private readonly membership: WorldMembership;
   private readonly sizeWarning = new SizeWarning();
   private readonly gravityView: Vec2 = { x: 0, y: 0 };
   private readonly onPair = (shapeIdA: number, shapeIdB: number): void => {
     this.contactManager.addPair(shapeIdA, shapeIdB, this.shapesById);
   };
   /** Whether the step's lists still point at bodies of the last step (see releaseReferences). */
-  private holdsReferences = false;
   /** Most bodies since the memory was last sized down (see releaseMemory). */
-  private mostBodies = 0;
   private lastStep = 1 / 60;
   private stepCount = 0;
 
@@ -110,6 +107,21 @@ export class World {
       this.solver,
     );
     this.islands.onWake = (body) => this.events.emitWake(body);
+    this.membership = new WorldMembership({
+      bodyList: this.bodyList,
+      jointList: this.jointList,
+      shapesById: this.shapesById,
+      freeShapeIds: this.freeShapeIds,
+      shapeTable: this.shapeTable,
+      broadPhase: this.broadPhase,
+      bounds: this.bounds,
+      solver: this.solver,
+      contactManager: this.contactManager,
+      islands: this.islands,
+      sensors: this.sensors,
+      listeners: this.listeners,
+      lastStep: () => this.lastStep,
+    });
   }
 
   // ---------------------------------------------------------------- settings
@@ -203,7 +215,7 @@ export class World {
     body.worldRef = this;
     this.sizeWarning.check(body);
     if (this.locked) this.pendingAdds.push(body);
-    else this.insertBody(body);
+    else this.membership.insertBody(body);
     return body;
   }
 
@@ -234,7 +246,7 @@ export class World {
     this.locked = true;
     let thrown: Thrown | null = null;
     try {
-      this.extractBody(body);
+      this.membership.extractBody(body);
       this.events.dispatchEnds();
     } catch (error) {
       thrown = { error };
@@ -303,7 +315,7 @@ export class World {
     this.locked = true;
     let thrown: Thrown | null = null;
     try {
-      this.insertJoint(joint);
+      this.membership.insertJoint(joint);
       this.events.dispatchEnds();
     } catch (error) {
       thrown = { error };
@@ -339,7 +351,7 @@ export class World {
     this.locked = true;
     let thrown: Thrown | null = null;
     try {
-      this.extractJoint(joint);
+      this.membership.extractJoint(joint);
     } catch (error) {
       thrown = { error };
     }
@@ -367,7 +379,7 @@ export class World {
     checkTimeStep(dt);
     if (dt === 0) return;
     this.locked = true;
-    this.holdsReferences = true;
+    this.membership.holdsReferences = true;
     let thrown: Thrown | null = null;
     try {
       this.contactManager.reservePairs(this.shapesById.length);
@@ -543,7 +555,7 @@ export class World {
 
   /** @internal */
   shapeAdded(shape: Shape): void {
-    if (this.bodyList[shape.body.worldIndex] === shape.body) this.createProxy(shape);
+    if (this.bodyList[shape.body.worldIndex] === shape.body) this.membership.createProxy(shape);
   }
 
   /**
@@ -562,147 +574,11 @@ export class World {
   shapeRemoved(shape: Shape): void {
     if (shape.proxyKey < 0) return;
     this.contactManager.destroyContactsOfShape(shape);
-    this.destroyProxy(shape);
+    this.membership.destroyProxy(shape);
     this.events.dispatchEnds();
   }
 
   // ---------------------------------------------------------------- internals
-
-  private insertBody(body: Body): void {
-    body.id = this.nextBodyId++;
-    body.worldIndex = this.bodyList.length;
-    // The body's numbers join the world's body memory (body-memory.ts): their one copy from now on.
-    const memory = this.solver.memory;
-    memory.reserveBodies(body.worldIndex + 1);
-    body.moveTo(memory.bodyStore, body.worldIndex);
-    body.removalPending = false;
-    body.center0X = body.centerX;
-    body.center0Y = body.centerY;
-    body.angle0 = body.angleValue;
-    this.bodyList.push(body);
-    if (this.bodyList.length > this.mostBodies) this.mostBodies = this.bodyList.length;
-    for (const shape of body.shapeList) this.createProxy(shape);
-    callAll(this.listeners.get('bodyAdded'), body);
-  }
-
-  private insertJoint(joint: Joint): void {
-    const a = joint.bodyA;
-    const b = joint.bodyB;
-    // A body removed (or never joined) while the joint waited: the joint never joins.
-    if (this.bodyList[a.worldIndex] !== a || this.bodyList[b.worldIndex] !== b) {
-      joint.worldRef = null;
-      return;
-    }
-    joint.worldIndex = this.jointList.length;
-    joint.removalPending = false;
-    joint.resetImpulses();
-    joint.resetReaction();
-    this.jointList.push(joint);
-    a.jointList.push(joint);
-    if (b !== a) {
-      b.jointList.push(joint);
-      if (!joint.collideConnected) this.contactManager.destroyContactsBetween(a, b);
-    }
-    this.islands.wake(a);
-    this.islands.wake(b);
-  }
-
-  private extractJoint(joint: Joint): void {
-    const a = joint.bodyA;
-    const b = joint.bodyB;
-    this.jointList.splice(joint.worldIndex, 1);
-    for (let i = joint.worldIndex; i < this.jointList.length; i++)
-      this.jointList[i]!.worldIndex = i;
-    a.jointList.splice(a.jointList.indexOf(joint), 1);
-    if (b !== a) b.jointList.splice(b.jointList.indexOf(joint), 1);
-    joint.worldRef = null;
-    joint.worldIndex = -1;
-    joint.removalPending = false;
-    if (!joint.collideConnected && b !== a) {
-      // The pair may touch again: let the broad phase look for it.
-      for (const shape of a.shapeList)
-        if (shape.proxyKey >= 0) this.broadPhase.bufferMove(shape.proxyKey);
-      for (const shape of b.shapeList)
-        if (shape.proxyKey >= 0) this.broadPhase.bufferMove(shape.proxyKey);
-    }
-    this.islands.wake(a);
-    this.islands.wake(b);
-    callAll(this.listeners.get('jointRemoved'), joint);
-  }
-
-  private extractBody(body: Body): void {
-    while (body.jointList.length > 0) this.extractJoint(body.jointList[body.jointList.length - 1]!);
-    this.contactManager.destroyContactsOf(body);
-    for (const shape of body.shapeList) this.destroyProxy(shape);
-    // The body's numbers leave with it; the bodies after it move down one place, numbers and all.
-    body.detachMemory();
-    this.bodyList.splice(body.worldIndex, 1);
-    const store = this.solver.memory.bodyStore;
-    for (let i = body.worldIndex; i < this.bodyList.length; i++) {
-      const moved = this.bodyList[i]!;
-      moved.worldIndex = i;
-      moved.moveTo(store, i);
-    }
-    this.contactManager.bodyRemoved(body.worldIndex);
-    body.worldRef = null;
-    body.worldIndex = -1;
-    body.removalPending = false;
-    body.solverIndex = 0;
-    this.releaseReferences();
-    this.islands.releaseWoken();
-    this.releaseMemory();
-    callAll(this.listeners.get('bodyRemoved'), body);
-  }
-
-  /**
-   * A removed body (and its userData) must not stay reachable from the world: the step's lists
-   * still point at the last step's bodies and shapes, so the first removal after a step
-   * overwrites them with null (in place: the next step allocates nothing). Contacts hold no
-   * references: they are slots of numbers (ContactManager).
-   */
-  private releaseReferences(): void {
-    if (!this.holdsReferences) return;
-    this.holdsReferences = false;
-    this.solver.releaseReferences();
-    this.contactManager.releaseReferences();
-    this.islands.releaseReferences();
-    this.sensors.releaseReferences();
-  }
-
-  /**
-   * Once the world has lost three quarters of its most bodies, the room sized for them goes too
-   * (solver memory, per-body tables, pooled contacts), so a world emptied of 100,000 bodies
-   * weighs about what an empty one does. The next steps grow it again if needed.
-   */
-  private releaseMemory(): void {
-    const count = this.bodyList.length;
-    if (this.mostBodies < 1024 || 4 * count > this.mostBodies) return;
-    this.mostBodies = count;
-    this.solver.shrink(count, this.contactManager.count);
-    this.contactManager.shrink();
-  }
-
-  private createProxy(shape: Shape): void {
-    const id = this.freeShapeIds.length > 0 ? this.freeShapeIds.pop()! : this.shapesById.length;
-    shape.id = id;
-    this.shapesById[id] = shape;
-    shape.attachTable(this.shapeTable);
-    const box = this.bounds.speculativeBox(shape, this.lastStep);
-    shape.proxyKey = this.broadPhase.createProxy(box, PROXY_TYPE[shape.body.type], id, false);
-    this.broadPhase.getFatAABB(shape.proxyKey, shape.fatAABB);
-    shape.fatAABBChanged();
-    if (shape.sensor) this.sensors.add(shape);
-  }
-
-  private destroyProxy(shape: Shape): void {
-    this.sensors.remove(shape);
-    this.broadPhase.destroyProxy(shape.proxyKey);
-    this.shapesById[shape.id] = null;
-    this.freeShapeIds.push(shape.id);
-    shape.attachTable(null);
-    shape.id = -1;
-    shape.proxyKey = -1;
-  }
 
   /** Moves the body's shapes' broad-phase boxes to where the body is now (see BodyBounds). */
   private refreshProxies(body: Body, forcePairs: boolean): void {
@@ -770,11 +646,13 @@ export class World {
       try {
         while (this.pendingJointRemoves.length > 0) {
           const joint = this.pendingJointRemoves.shift()!;
-          if (joint.worldRef === this) this.extractJoint(joint);
+          if (joint.worldRef === this) this.membership.extractJoint(joint);
         }
-        while (this.pendingRemoves.length > 0) this.extractBody(this.pendingRemoves.shift()!);
-        while (this.pendingAdds.length > 0) this.insertBody(this.pendingAdds.shift()!);
-        while (this.pendingJointAdds.length > 0) this.insertJoint(this.pendingJointAdds.shift()!);
+        while (this.pendingRemoves.length > 0)
+          this.membership.extractBody(this.pendingRemoves.shift()!);
+        while (this.pendingAdds.length > 0) this.membership.insertBody(this.pendingAdds.shift()!);
+        while (this.pendingJointAdds.length > 0)
+          this.membership.insertJoint(this.pendingJointAdds.shift()!);
         this.events.dispatchEnds();
       } catch (error) {
         thrown ??= { error };
@@ -811,10 +689,10 @@ export class World {
         body.moveTo(memory.bodyStore, index);
       },
       get nextBodyId(): number {
-        return world.nextBodyId;
+        return world.membership.nextBodyId;
       },
       set nextBodyId(value: number) {
-        world.nextBodyId = value;
+        world.membership.nextBodyId = value;
       },
       get stepCount(): number {
         return world.stepCount;

@@ -39,6 +39,8 @@ const PUBLIC_MEMBERS: Record<string, string> = {
     'motorSpeed maxMotorTorque motorTorque enableSpring hertz dampingRatio',
   WeldJoint: 'type constructor linearHertz angularHertz dampingRatio',
   PhysicalError: 'field constructor',
+  // Body's base: the accessors of its numbers in the body memory, every one internal.
+  BodyNumbers: '',
 };
 
 /** Public (not private, not protected) member names of every class the declarations hold. */
@@ -83,6 +85,6 @@ describe('public types expose no internal state', () => {
   it.each(Object.keys(PUBLIC_MEMBERS))('%s declares only its public API', (name) => {
     const members = classes.get(name);
     expect(members, `no declaration of class ${name}`).toBeDefined();
-    expect([...members!].sort()).toEqual(PUBLIC_MEMBERS[name]!.split(' ').sort());
+    expect([...members!].sort()).toEqual(PUBLIC_MEMBERS[name]!.split(' ').filter(Boolean).sort());
   });
 });

@@ -1,36 +1,54 @@
 import { describe, expect, it } from 'vitest';
-import { World, box, particle, restoreSnapshot, takeSnapshot, wall } from '@physical/engine';
+import {
+  World,
+  box,
+  particle,
+  restoreSnapshot,
+  takeSnapshot,
+  wall,
+  type Shape,
+} from '@physical/engine';
+import { AABB } from '../../../src/geometry/aabb.ts';
+import { computeCapsuleAABB } from '../../../src/geometry/capsule.ts';
+import { computeCircleAABB } from '../../../src/geometry/circle.ts';
+import { computePolygonAABB } from '../../../src/geometry/polygon-queries.ts';
+import { computeSegmentAABB } from '../../../src/geometry/segment.ts';
 
-// The narrow phase decides most contacts from flat copies of the shapes' boxes (shape-table.ts)
-// and the bodies' own numbers (body-memory.ts, read in place). A stale copy would skip a contact that touches, so
-// every path that moves a box must write the copy too, and a shape that left its world must not.
+// A shape's numbers live once, in the shape table (shape-table.ts): the world's, at the row of
+// its id, which the narrow phase reads without loading the Shape; or a table of its own outside a
+// world. A stale box would skip a contact that touches, and a shape that left its world must not
+// write the row its id now names for another shape.
 
 type Internals = ReturnType<World['internals']>;
 
-function expectCopiesMatch(world: World): number {
-  const { shapesById, shapeTable } = world.internals() as Internals;
+/** The tight box of `shape` at its body's pose, computed here from the geometry alone. */
+function expectedTight(shape: Shape): number[] {
+  const g = shape.geometry;
+  const xf = shape.body.transform;
+  const out = new AABB();
+  if (g.kind === 'circle') computeCircleAABB(g, xf, out);
+  else if (g.kind === 'polygon') computePolygonAABB(g, xf, out);
+  else if (g.kind === 'capsule') computeCapsuleAABB(g, xf, out);
+  else computeSegmentAABB(g, xf, out);
+  return [out.minX, out.minY, out.maxX, out.maxY];
+}
+
+/** Checks every shape of `world` against its row; returns how many it checked. */
+function expectRowsMatch(world: World): number {
+  const { shapesById, shapeTable, broadPhase } = world.internals() as Internals;
   let checked = 0;
   for (const shape of shapesById) {
     if (shape === null) continue;
+    expect(shape.table).toBe(shapeTable);
+    expect(shape.row).toBe(shape.id);
     const p = shape.id * 8;
-    const copy = Array.from(shapeTable.data.subarray(p, p + 8));
-    const { aabb, fatAABB } = shape;
-    expect(copy).toEqual([
-      aabb.minX,
-      aabb.minY,
-      aabb.maxX,
-      aabb.maxY,
-      fatAABB.minX,
-      fatAABB.minY,
-      fatAABB.maxX,
-      fatAABB.maxY,
-    ]);
-    const f = Array.from(shapeTable.filters.subarray(shape.id * 4, shape.id * 4 + 4));
-    expect(f).toEqual([
-      shape.categoryBits | 0,
-      shape.maskBits | 0,
-      shape.groupIndex,
-      shape.sensor ? 1 : 0,
+    expect(Array.from(shapeTable.data.subarray(p, p + 4))).toEqual(expectedTight(shape));
+    const fat = broadPhase.getFatAABB(shape.proxyKey, new AABB());
+    expect(Array.from(shapeTable.data.subarray(p + 4, p + 8))).toEqual([
+      fat.minX,
+      fat.minY,
+      fat.maxX,
+      fat.maxY,
     ]);
     expect(shapeTable.geometries[shape.id]).toBe(shape.geometry);
     checked++;
@@ -51,25 +69,74 @@ function pile(): World {
   return world;
 }
 
-describe("the contact loops' shape table (boxes, filters, geometries)", () => {
-  it('equals every shape after steps, teleports, filter changes, removals, adds and a restore', () => {
+describe('the shape table, where shapes keep their numbers', () => {
+  it("holds every shape's boxes at its pose and fat box after steps, teleports, removals and a restore", () => {
     const world = pile();
     for (let step = 0; step < 90; step++) world.step(1 / 60);
-    expect(expectCopiesMatch(world)).toBe(13);
+    expect(expectRowsMatch(world)).toBe(13);
 
     // A body moved between steps by a setter, another removed, and a new one taking its id.
     const [, first, second] = world.bodies;
     first!.position = { x: 4, y: -1 };
     first!.angle = 0.7;
-    first!.shapes[0]!.filter = { category: 0x80000000, mask: 0xfffffffe, group: -3 };
     world.remove(second!);
     world.add(box({ position: { x: 0, y: -3 }, width: 1, height: 0.2 }));
-    expectCopiesMatch(world);
+    expectRowsMatch(world);
     for (let step = 0; step < 30; step++) world.step(1 / 60);
-    expectCopiesMatch(world);
+    expectRowsMatch(world);
 
     const restored = restoreSnapshot(takeSnapshot(world));
-    expect(expectCopiesMatch(restored)).toBe(13);
+    expect(expectRowsMatch(restored)).toBe(13);
+  });
+
+  it('writes a filter into the row the narrow phase reads (bits as int32)', () => {
+    const world = pile();
+    world.step(1 / 60);
+    const shape = world.bodies[2]!.shapes[0]!;
+    shape.filter = { category: 0x80000000, mask: 0xfffffffe, group: -3 };
+    const { shapeTable } = world.internals() as Internals;
+    const p = shape.id * 4;
+    expect(Array.from(shapeTable.filters.subarray(p, p + 4))).toEqual([
+      0x80000000 | 0,
+      0xfffffffe | 0,
+      -3,
+      0,
+    ]);
+    expect(shape.filter).toEqual({ category: 0x80000000, mask: 0xfffffffe, group: -3 });
+  });
+
+  it("keeps a shape's numbers through add and remove, in a table of its own outside a world", () => {
+    const world = pile();
+    const body = box({
+      position: { x: 3, y: -2 },
+      width: 0.5,
+      height: 0.5,
+      friction: 0.3,
+      restitution: 0.45,
+      density: 2.5,
+      filter: { category: 4, mask: 0xfffffff0, group: 7 },
+    });
+    const shape = body.shapes[0]!;
+    const geometry = shape.geometry;
+    const own = shape.table;
+    world.add(body);
+    world.step(1 / 60);
+    const { shapeTable } = world.internals() as Internals;
+    expect(shape.table).toBe(shapeTable);
+    shape.friction = 0.2;
+    world.remove(body);
+    expect(shape.table).not.toBe(shapeTable);
+    expect(shape.table).not.toBe(own);
+    expect(shape.row).toBe(0);
+    expect([shape.friction, shape.restitution, shape.density]).toEqual([0.2, 0.45, 2.5]);
+    expect(shape.filter).toEqual({ category: 4, mask: 0xfffffff0, group: 7 });
+    expect(shape.sensor).toBe(false);
+    expect(shape.geometry).toBe(geometry);
+    // Added again, its numbers come with it.
+    world.add(body);
+    expect(shape.table).toBe(shapeTable);
+    expect([shape.friction, shape.restitution, shape.density]).toEqual([0.2, 0.45, 2.5]);
+    expect(shape.filter).toEqual({ category: 4, mask: 0xfffffff0, group: 7 });
   });
 
   it('is not written by a shape that left its world, even when its id is reused', () => {
@@ -80,10 +147,15 @@ describe("the contact loops' shape table (boxes, filters, geometries)", () => {
     world.remove(removed);
     const newcomer = world.add(box({ position: { x: 1, y: -4 }, width: 0.5, height: 0.5 }));
     expect(newcomer.shapes[0]!.id).toBe(oldId);
+    const { shapeTable } = world.internals() as Internals;
+    const row = Array.from(shapeTable.data.subarray(oldId * 8, oldId * 8 + 8));
     // The removed body still works as an object: reading its bounds recomputes its box.
     removed.position = { x: 100, y: 100 };
-    removed.shapes[0]!.getBounds();
-    expectCopiesMatch(world);
+    expect(removed.shapes[0]!.getBounds().minX).toBeGreaterThan(99);
+    removed.shapes[0]!.friction = 0.1;
+    expect(Array.from(shapeTable.data.subarray(oldId * 8, oldId * 8 + 8))).toEqual(row);
+    expect(newcomer.shapes[0]!.friction).toBe(0.6);
+    expectRowsMatch(world);
   });
 
   it('a body teleported onto another between steps touches it at the next step', () => {
