@@ -1,5 +1,5 @@
-// A pile of 160 boxes and particles in a bin, stepped 240 times, for kernel.spec.ts: enough
-// contacts that the world moves to the WebAssembly contact kernel where the page allows it.
+// A pile of 160 boxes and particles in a bin, stepped 240 times, for kernel.spec.ts: the world
+// runs the WebAssembly contact kernel where the page allows it, else the JavaScript build.
 // `?kernel=javascript` creates the world with that option; `?entry=none` leaves out the
 // JavaScript build's entry (@physical/engine/javascript-kernel), which the page otherwise loads
 // first. The page counts the Content-Security-Policy violations it reports.

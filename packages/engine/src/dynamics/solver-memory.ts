@@ -142,7 +142,7 @@ export class SolverMemory {
     return this.bodyTable;
   }
 
-  /** Makes room for `count` constraints; moves to the WebAssembly kernel at the threshold. */
+  /** Makes room for `count` constraints; moves to the WebAssembly kernel at the tests' threshold. */
   reserveConstraints(count: number): void {
     const toWasm = this.wantsKernel(count);
     if (count <= this.capacities[CONSTRAINT_ORDER]! && toWasm === (this.wasm !== null)) return;
