@@ -6,6 +6,10 @@ import { defineConfig } from 'vitest/config';
 export default defineConfig({
   resolve: {
     alias: {
+      // Before '@physical/engine', which would also match its subpath.
+      '@physical/engine/javascript-kernel': fileURLToPath(
+        new URL('./packages/engine/src/javascript-kernel.ts', import.meta.url),
+      ),
       '@physical/engine': fileURLToPath(new URL('./packages/engine/src/index.ts', import.meta.url)),
       '@physical/canvas': fileURLToPath(new URL('./packages/canvas/src/index.ts', import.meta.url)),
       // Before '@physical/react', which would also match its subpath.

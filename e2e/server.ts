@@ -43,6 +43,10 @@ export async function startServer(): Promise<TestServer> {
     clearScreen: false,
     resolve: {
       alias: {
+        // Before '@physical/engine', which would also match its subpath.
+        '@physical/engine/javascript-kernel': fileURLToPath(
+          new URL('../packages/engine/src/javascript-kernel.ts', import.meta.url),
+        ),
         // PHYSICAL_ENGINE_ENTRY tests against another engine checkout (for example a release).
         '@physical/engine':
           process.env['PHYSICAL_ENGINE_ENTRY'] ??

@@ -7,10 +7,14 @@
 //   dom: engine + Physical UI; worker: engine + canvas (registered) + worker, for the page and
 //   the worker alike; react: engine + canvas + the React binding, with `react` left as an import
 //   (the page maps it, for example with an import map).
+// Each holds the engine whole, the JavaScript build of its contact passes included
+// (@physical/engine/javascript-kernel, registered): a page without a build step works under any
+// Content-Security-Policy, as before that build became an entry of its own.
 // Run by each package's `npm run build`: `tsx ../../scripts/bundle.ts <name>`.
 import { build } from 'esbuild';
 import { fileURLToPath } from 'node:url';
 
+const kernel = `import '@physical/engine/javascript-kernel';\n`;
 const entries: Record<string, string> = {
   engine: `export * from '@physical/engine';`,
   canvas: `export * from '@physical/engine';\nexport * from '@physical/canvas';\nimport '@physical/canvas/define';`,
@@ -20,7 +24,7 @@ const entries: Record<string, string> = {
 };
 
 const name = process.argv[2] ?? '';
-const contents = entries[name];
+const contents = entries[name] === undefined ? undefined : kernel + entries[name];
 if (contents === undefined) {
   throw new Error(`bundle: expected one of ${Object.keys(entries).join(', ')}, got "${name}"`);
 }
@@ -31,6 +35,7 @@ await build({
   stdin: { contents, resolveDir: source(name), sourcefile: `physical-${name}.bundle.ts` },
   // From the sources: the bundle needs no other package's dist, so each package builds once.
   alias: {
+    '@physical/engine/javascript-kernel': source('engine/src/javascript-kernel.ts'),
     '@physical/engine': source('engine/src/index.ts'),
     '@physical/canvas/define': source('canvas/src/define.ts'),
     '@physical/canvas': source('canvas/src/index.ts'),

@@ -1,8 +1,9 @@
-// A pile of 160 boxes and particles in a bin, stepped 240 times, for kernel.spec.ts: enough
-// contacts that the world moves to the WebAssembly contact kernel where the page allows it.
-// `?kernel=javascript` creates the world with that option. The page counts the
-// Content-Security-Policy violations it reports.
-import { World, box, particle, wall } from '@physical/engine';
+// A pile of 160 boxes and particles in a bin, stepped 240 times, for kernel.spec.ts: the world
+// runs the WebAssembly contact kernel where the page allows it, else the JavaScript build.
+// `?kernel=javascript` creates the world with that option; `?entry=none` leaves out the
+// JavaScript build's entry (@physical/engine/javascript-kernel), which the page otherwise loads
+// first. The page counts the Content-Security-Policy violations it reports.
+import { PhysicalError, World, box, particle, wall } from '@physical/engine';
 
 /** What the page leaves for the spec. */
 export interface PileResult {
@@ -15,6 +16,13 @@ export interface PileResult {
   maxY: number;
   /** The `securitypolicyviolation` events the page received, by violated directive. */
   violations: string[];
+  /**
+   * Whether a one-box world ran WebAssembly on its first step (compiled synchronously on the main
+   * thread, from the module's bytes inside the engine).
+   */
+  smallWorldKernel: boolean;
+  /** The message of the PhysicalError `new World()` threw, or null. */
+  error: string | null;
 }
 
 declare global {
@@ -27,9 +35,30 @@ const violations: string[] = [];
 document.addEventListener('securitypolicyviolation', (event) => {
   violations.push(event.effectiveDirective);
 });
-const kernel =
-  new URLSearchParams(location.search).get('kernel') === 'javascript' ? 'javascript' : 'auto';
-const world = new World({ gravity: { x: 0, y: 9.81 }, kernel });
+const search = new URLSearchParams(location.search);
+const kernel = search.get('kernel') === 'javascript' ? 'javascript' : 'auto';
+if (search.get('entry') !== 'none') await import('@physical/engine/javascript-kernel');
+const usesWebAssembly = (of: World): boolean =>
+  (of as unknown as { solver: { memory: { usesWebAssembly: boolean } } }).solver.memory
+    .usesWebAssembly;
+let error: string | null = null;
+let world: World;
+try {
+  world = new World({ gravity: { x: 0, y: 9.81 }, kernel });
+} catch (caught) {
+  if (!(caught instanceof PhysicalError)) throw caught;
+  error = caught.message;
+  // What the message says to do: load the JavaScript build, and the same world runs.
+  await import('@physical/engine/javascript-kernel');
+  world = new World({ gravity: { x: 0, y: 9.81 }, kernel });
+}
+let smallWorldKernel = false;
+if (error === null) {
+  const small = new World({ kernel });
+  small.add(box({ width: 1, height: 1 }));
+  small.step(1 / 60);
+  smallWorldKernel = usesWebAssembly(small);
+}
 world.add(wall({ from: { x: -6, y: 0 }, to: { x: 6, y: 0 } }));
 world.add(wall({ from: { x: -6, y: 0 }, to: { x: -6, y: -30 } }));
 world.add(wall({ from: { x: 6, y: 0 }, to: { x: 6, y: -30 } }));
@@ -64,15 +93,16 @@ const words = new Uint32Array(numbers.buffer);
 let bits = '';
 for (const word of words) bits += word.toString(16).padStart(8, '0');
 const ys = bodies.map((b) => b.position.y);
-const solver = (world as unknown as { solver: { memory: { usesWebAssembly: boolean } } }).solver;
 // The browser reports a violation in a task of its own: give it time to arrive.
 setTimeout(() => {
   window.pileResult = {
-    kernel: solver.memory.usesWebAssembly,
+    kernel: usesWebAssembly(world),
     bits,
     minY: Math.min(...ys),
     maxY: Math.max(...ys),
     violations,
+    smallWorldKernel,
+    error,
   };
   document.documentElement.dataset['ready'] = 'true';
 }, 300);

@@ -5,6 +5,8 @@ import {
   type RevoluteJointOptions,
   type ShapeOptions,
 } from '@physical/engine';
+// For the `physical-javascript` engine (kernel: 'javascript').
+import '@physical/engine/javascript-kernel';
 import {
   DT,
   SUB_STEPS,

@@ -6,9 +6,8 @@ import { bundleCrossEngineProgram, GLOBAL_NAME } from './cross-engine/bundle.ts'
 
 // The engine promises the same bits in every JavaScript engine (README: determinism). One bundle
 // of the engine and every sample runs in V8 (this process, in a fresh context, so the contact
-// kernel runs as WebAssembly once a world has 64 contacts) and in QuickJS (compiled to
-// WebAssembly, with its own math library and no WebAssembly of its own, so the JavaScript
-// passes run), and the two must report the same state hashes every 10 steps and the same bits
+// kernel runs as WebAssembly) and in QuickJS (compiled to WebAssembly, with its own math library
+// and no WebAssembly of its own, so the JavaScript passes run: the bundle imports their entry), and the two must report the same state hashes every 10 steps and the same bits
 // for every body's final position, angle and velocities.
 
 /** Steps per sample: QuickJS interprets 20-250 times slower than V8, so 1 s of each sample. */

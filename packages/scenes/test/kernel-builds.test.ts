@@ -1,6 +1,8 @@
 import { afterEach, describe, expect, it } from 'vitest';
 import { hashWorld, runScene, sceneValues, scenes } from '@physical/scenes';
 import { kernelSettings } from '../../engine/src/dynamics/solver-memory.ts';
+// The JavaScript build of the contact passes, compared here with the WebAssembly one.
+import '@physical/engine/javascript-kernel';
 
 // The contact passes have one source (packages/engine/wasm/contact-kernel.ts) built twice: to
 // WebAssembly and, by wasm2js, to JavaScript. Every sample must end in the same state whichever

@@ -1,7 +1,6 @@
 import { drawBodies, drawLabels, type BodyBatches } from './draw-bodies.ts';
-import { drawCollisionArrows } from './draw-collision-arrows.ts';
-import { drawDebugOverlays } from './draw-debug.ts';
 import { drawJoints } from './draw-joints.ts';
+import type { OverlaysDrawer } from './draw-overlays.ts';
 import type { Scene } from './scene.ts';
 
 /**
@@ -18,15 +17,17 @@ export function setWorldTransform(
 }
 
 /**
- * Draws a whole frame: background, bodies, joints, collision arrows, debug overlays, then `overlay` (in
- * world metres, for app drawings such as force arrows), then labels. The canvas's backing store
- * must be `viewport.width * devicePixelRatio` by `viewport.height * devicePixelRatio` pixels.
+ * Draws a whole frame: background, bodies, joints, collision arrows and debug overlays (with
+ * `overlays`, draw-overlays.ts, loaded apart), then `overlay` (in world metres, for app drawings
+ * such as force arrows), then labels. The canvas's backing store must be
+ * `viewport.width * devicePixelRatio` by `viewport.height * devicePixelRatio` pixels.
  */
 export function drawScene(
   context: CanvasRenderingContext2D,
   scene: Scene,
   batches: BodyBatches,
   overlay: ((context: CanvasRenderingContext2D) => void) | null = null,
+  overlays: OverlaysDrawer | null = null,
 ): void {
   const canvas = context.canvas;
   context.setTransform(1, 0, 0, 1, 0, 0);
@@ -40,10 +41,7 @@ export function drawScene(
   setWorldTransform(context, scene);
   drawBodies(context, scene, batches);
   drawJoints(context, scene);
-  if (scene.collisionArrows.length > 0) {
-    drawCollisionArrows(context, scene.viewport.scale, scene.collisionArrows, scene.forceScale);
-  }
-  drawDebugOverlays(context, scene);
+  if (overlays !== null) overlays(context, scene);
   if (overlay !== null) {
     context.save();
     overlay(context);

@@ -2,6 +2,7 @@ import type { Body } from '@physical/engine';
 import { DEFAULT_BACKGROUND } from '../draw/body-style.ts';
 import { BodyBatches } from '../draw/draw-bodies.ts';
 import { drawScene } from '../draw/draw-scene.ts';
+import type { OverlaysDrawer } from '../draw/draw-overlays.ts';
 import type { DrawingSource } from '../draw/drawing-source.ts';
 import type { Pose } from '../draw/pose.ts';
 import type { Scene } from '../draw/scene.ts';
@@ -19,6 +20,8 @@ export interface CanvasRendererHost {
   readonly arrows: CollisionArrows;
   /** The element's CSS size before the first resize report, or null while detached. */
   measure(): { width: number; height: number } | null;
+  /** Asks for a frame: the overlays' code arrived. */
+  redraw(): void;
 }
 
 /**
@@ -38,6 +41,9 @@ export class CanvasRenderer {
   private cssWidth = 0;
   private cssHeight = 0;
   private viewportInputsUnchanged = false;
+  /** The collision arrows and debug overlays (draw-overlays.ts), once loaded; see draw. */
+  private overlays: OverlaysDrawer | null = null;
+  private overlaysLoading = false;
 
   constructor(host: CanvasRendererHost, context: CanvasRenderingContext2D | null) {
     this.host = host;
@@ -114,7 +120,21 @@ export class CanvasRenderer {
     scene.forceScale = settings.forceScale;
     scene.velocityScale = settings.velocityScale;
     scene.reducedMotion = this.reducedMotion;
-    drawScene(context, scene, this.batches, overlay);
+    if (this.overlays === null && wantsOverlays(scene)) this.loadOverlays();
+    drawScene(context, scene, this.batches, overlay, this.overlays);
+  }
+
+  /**
+   * Loads the overlays' chunk the first time a frame asks for them, then draws again: they
+   * appear a frame or two after being turned on, and pages that never show them never load it.
+   */
+  private loadOverlays(): void {
+    if (this.overlaysLoading) return;
+    this.overlaysLoading = true;
+    void import('../draw/draw-overlays.ts').then(({ drawOverlays }) => {
+      this.overlays = drawOverlays;
+      this.host.redraw();
+    });
   }
 
   private updateViewport(): void {
@@ -153,4 +173,17 @@ export class CanvasRenderer {
       viewBox: settings.viewBox,
     });
   }
+}
+
+/** Whether a frame of `scene` shows collision arrows or a debug overlay. */
+function wantsOverlays(scene: Scene): boolean {
+  const debug = scene.debug;
+  return (
+    scene.collisionArrows.length > 0 ||
+    debug.aabbs ||
+    debug.centers ||
+    debug.velocities ||
+    debug.contacts ||
+    debug.normals
+  );
 }

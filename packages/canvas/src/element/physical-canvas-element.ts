@@ -168,6 +168,7 @@ export class PhysicalCanvasElement extends ElementBase {
         arrows: this.arrows,
         measure: () =>
           this.isConnectedValue ? { width: this.clientWidth, height: this.clientHeight } : null,
+        redraw: () => this.invalidate(),
       },
       context,
     );

@@ -1,5 +1,5 @@
+import { PhysicalError } from '../core/errors.ts';
 import { CONTACT_KERNEL_HEX } from './contact-kernel-binary.ts';
-import { createJavaScriptContactKernel } from './contact-kernel-javascript.ts';
 
 // The contact passes (prepare, warm start, solve, relax, store) have one source,
 // wasm/contact-kernel.ts (AssemblyScript), built twice by scripts/contact-kernel-build.ts: to
@@ -10,7 +10,9 @@ import { createJavaScriptContactKernel } from './contact-kernel-javascript.ts';
 // it loads, so a world's first steps run compiled code instead of waiting for JavaScript to get
 // hot, and the passes run without bounds checks or deoptimisation. The JavaScript build runs
 // where WebAssembly cannot compile (a Content-Security-Policy without 'wasm-unsafe-eval') and in
-// worlds created with `kernel: 'javascript'`.
+// worlds created with `kernel: 'javascript'`. It is not imported here: the package's entry
+// `@physical/engine/javascript-kernel` registers it (registerJavaScriptContactKernel), so apps
+// that run WebAssembly do not ship it (issue #30, target 5).
 
 /** The parts of the WebAssembly API used here (the engine's types assume only ES2022). */
 export interface WasmMemory {
@@ -133,6 +135,21 @@ export interface ContactKernel {
   ): number;
 }
 
+/** Creates the JavaScript build of the kernel over `imports.env.memory` (wasm2js's factory). */
+export type JavaScriptKernelFactory = (imports: KernelImports) => ContactKernel;
+
+/** The JavaScript build, once `@physical/engine/javascript-kernel` registered it. */
+let javaScriptKernel: JavaScriptKernelFactory | null = null;
+
+/** Makes the JavaScript build available to every world (the javascript-kernel entry calls it). */
+export function registerJavaScriptContactKernel(factory: JavaScriptKernelFactory): void {
+  javaScriptKernel = factory;
+}
+
+/** The fix every missing-build message names. */
+const IMPORT_IT =
+  "import '@physical/engine/javascript-kernel' once, before creating the world (the JavaScript build of the contact passes)";
+
 const wasm = (globalThis as { WebAssembly?: WasmApi }).WebAssembly;
 /** The compiled module: undefined until first needed, null where WebAssembly is unavailable. */
 let compiled: object | null | undefined;
@@ -163,21 +180,14 @@ function compile(): object | null {
   }
 }
 
-/**
- * Compiles the WebAssembly module now, unless it was compiled (or refused) before: once per
- * process. A world that may use it asks when it is created (SolverMemory.expectWebAssembly), so
- * the compile is not part of the first step that needs it.
- */
-export function compileContactKernel(): void {
-  if (compiled === undefined) compiled = compile();
-}
-
 const PAGE = 65536;
 
 /**
  * A memory of at least `bytes` bytes with the kernel bound to it: WebAssembly when `webAssembly`
- * is true and it can run (a WebAssembly memory of whole 64 KiB pages), else the JavaScript build
- * over an ordinary ArrayBuffer. `webAssembly` in the result says which.
+ * is true and it can run (a WebAssembly memory of whole 64 KiB pages), else the registered
+ * JavaScript build over an ordinary ArrayBuffer. `webAssembly` in the result says which. Throws a
+ * PhysicalError naming the `kernel` option and the import that fixes it when the JavaScript build
+ * is needed and was not registered.
  */
 export function createContactKernel(
   bytes: number,
@@ -191,10 +201,18 @@ export function createContactKernel(
         const instance = new wasm.Instance(compiled, { env: { memory } });
         return { memory, kernel: instance.exports as ContactKernel, webAssembly: true };
       } catch {
-        // Out of address space for another memory: this world runs the JavaScript build.
+        // Out of address space for another memory: the JavaScript build, if registered.
       }
     }
   }
+  if (javaScriptKernel === null) {
+    throw new PhysicalError(
+      'kernel',
+      webAssembly
+        ? `is 'auto', but WebAssembly cannot run here (no WebAssembly or no WebAssembly SIMD, a Content-Security-Policy without 'wasm-unsafe-eval', or no address space for another memory): ${IMPORT_IT}.`
+        : `is 'javascript', but the JavaScript build is not loaded: ${IMPORT_IT}.`,
+    );
+  }
   const memory = { buffer: new ArrayBuffer(bytes) };
-  return { memory, kernel: createJavaScriptContactKernel({ env: { memory } }), webAssembly: false };
+  return { memory, kernel: javaScriptKernel({ env: { memory } }), webAssembly: false };
 }

@@ -1,20 +1,15 @@
 import { BODY_STRIDE, BodyStore } from './body-memory.ts';
-import {
-  compileContactKernel,
-  createContactKernel,
-  type ContactKernel,
-  type WasmMemory,
-} from './contact-kernel.ts';
+import { createContactKernel, type ContactKernel, type WasmMemory } from './contact-kernel.ts';
 
 // The world's hot arrays in one block of memory: the bodies' own numbers (body-memory.ts, the one
 // copy the Body handles read and write), the body states and the body table
 // (body-state.ts), the contact data with each slot's bodies (contact-data.ts), and the contact
 // constraints with their body offsets, visiting order, source slots and circle pairs
 // (contact-solver.ts). The contact kernel (contact-kernel.ts) reads them at the regions' byte
-// offsets, the rest of the solver through typed-array views. A world starts on an ordinary
-// ArrayBuffer run by the kernel's JavaScript build and moves into a WebAssembly memory once it has
-// `kernelSettings.minConstraints` contacts (never with `kernel: 'javascript'`, nor where
-// WebAssembly cannot compile).
+// offsets, the rest of the solver through typed-array views. A world's memory is a WebAssembly
+// memory from its start (the JavaScript build of the kernel is an optional entry, and small worlds
+// lose nothing: see the engine README's WebAssembly section), or an ordinary ArrayBuffer run by
+// the JavaScript build with `kernel: 'javascript'` and where WebAssembly cannot compile.
 //
 // Regions, in this order, each growing by doubling (contents kept), each 8-byte aligned.
 
@@ -43,10 +38,10 @@ const REGIONS = 10;
 const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8];
 
 /**
- * @internal When worlds move to the WebAssembly kernel: at this many contacts in a step
- * (`Infinity`: never). Tests set it to compare both kernels.
+ * @internal When worlds move to the WebAssembly kernel: at this many contacts in a step (0, the
+ * default: from their start; `Infinity`: never). Tests set it to compare both kernels.
  */
-export const kernelSettings = { minConstraints: 64 };
+export const kernelSettings = { minConstraints: 0 };
 
 export class SolverMemory {
   /** Views of the regions; a later reserve of any region replaces them all. */
@@ -75,12 +70,23 @@ export class SolverMemory {
   private readonly capacities: number[] = new Array<number>(REGIONS).fill(0);
   private buffer: ArrayBuffer = new ArrayBuffer(0);
 
+  /** Holds nothing until {@link start}, which the world calls once it knows its `kernel`. */
   constructor(
     private readonly constraintStride: number,
     private readonly contactStride: number,
     private readonly tableStride: number,
-  ) {
-    this.layout(this.initialCapacities(), false);
+  ) {}
+
+  /**
+   * Lays out the first block: a WebAssembly memory (compiling the module once per process, so a
+   * world's first big step does not wait for it), or with `javaScriptOnly` (World's
+   * `kernel: 'javascript'`) an ArrayBuffer run by the JavaScript build, with no attempt to
+   * compile WebAssembly from then on. Throws the PhysicalError of createContactKernel when the
+   * JavaScript build is needed and not registered.
+   */
+  start(javaScriptOnly: boolean): void {
+    this.wasmRefused = javaScriptOnly;
+    this.layout(this.initialCapacities(), this.wantsKernel(0));
   }
 
   private initialCapacities(): number[] {
@@ -90,9 +96,8 @@ export class SolverMemory {
 
   /**
    * Shrinks back to the first sizes, keeping room for (and the numbers of) `bodies` bodies and
-   * `contacts` contact slots: for a world that lost most of its bodies. Leaves the WebAssembly
-   * memory (which cannot shrink) for an ArrayBuffer; a later step with many contacts moves back
-   * to the kernel.
+   * `contacts` contact slots: for a world that lost most of its bodies. A WebAssembly memory
+   * cannot shrink: the numbers move into a new, smaller one.
    */
   shrink(bodies: number, contacts: number): void {
     const wanted = this.initialCapacities();
@@ -101,7 +106,7 @@ export class SolverMemory {
     const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
-    this.layout(wanted, false);
+    this.layout(wanted, this.wantsKernel(contacts));
   }
 
   /** Whether the passes run as WebAssembly now (else the kernel's JavaScript build). */
@@ -109,27 +114,10 @@ export class SolverMemory {
     return this.wasm !== null;
   }
 
-  /**
-   * Keeps this memory an ArrayBuffer run by the JavaScript build, with no attempt to compile
-   * WebAssembly from now on (World's `kernel: 'javascript'`); moves back if it had moved.
-   */
-  refuseWebAssembly(): void {
-    this.wasmRefused = true;
-    if (this.wasm !== null) this.layout(this.capacities.slice(), false);
-  }
-
   /** Makes room for `doubles` state numbers; returns the states' view. */
   reserveStates(doubles: number): Float64Array {
     this.reserve(STATES, doubles);
     return this.states;
-  }
-
-  /**
-   * Compiles the kernel's WebAssembly module now (once per process; see compileContactKernel),
-   * for a world that may move there: its first big step then does not wait for the compile.
-   */
-  expectWebAssembly(): void {
-    if (!this.wasmRefused) compileContactKernel();
   }
 
   /** Makes room for `count` contact slots, keeping their contents. */
@@ -154,7 +142,7 @@ export class SolverMemory {
     return this.bodyTable;
   }
 
-  /** Makes room for `count` constraints; moves to the WebAssembly kernel at the threshold. */
+  /** Makes room for `count` constraints; moves to the WebAssembly kernel at the tests' threshold. */
   reserveConstraints(count: number): void {
     const toWasm = this.wantsKernel(count);
     if (count <= this.capacities[CONSTRAINT_ORDER]! && toWasm === (this.wasm !== null)) return;

@@ -54,14 +54,16 @@ export interface WorldOptions {
    * Which build of the contact passes runs (default `'auto'`). Both builds come from one source
    * and give bit-identical results; only speed and what the page must allow differ.
    *
-   * - `'auto'`: the JavaScript build while the world is small, then WebAssembly, compiled at run
-   *   time from bytes shipped inside the engine, once a step has 64 contacts; the JavaScript
-   *   build wherever WebAssembly cannot compile. A Content-Security-Policy must allow
-   *   `'wasm-unsafe-eval'` in `script-src` for WebAssembly; without it the browser refuses (and
-   *   reports a `securitypolicyviolation`) and the world carries on in JavaScript.
+   * - `'auto'`: WebAssembly from the first step, compiled at run time from bytes shipped inside
+   *   the engine. A Content-Security-Policy must allow `'wasm-unsafe-eval'` in `script-src` for
+   *   it; without it the browser refuses (and reports a `securitypolicyviolation`). Where
+   *   WebAssembly cannot compile, the JavaScript build runs if the page imported
+   *   `@physical/engine/javascript-kernel`; if not, `new World()` throws a `PhysicalError` on
+   *   `kernel` naming that import.
    * - `'javascript'`: the JavaScript build only, with no attempt at WebAssembly, so a page
-   *   under a strict policy (`script-src 'self'`) reports no violation. Large scenes step
-   *   slower (see the guide "WebAssembly and Content-Security-Policy").
+   *   under a strict policy (`script-src 'self'`) reports no violation. Needs
+   *   `import '@physical/engine/javascript-kernel'` first (else a `PhysicalError` says so).
+   *   Large scenes step slower (see the guide "WebAssembly and Content-Security-Policy").
    */
   readonly kernel?: 'auto' | 'javascript';
 }

@@ -94,8 +94,7 @@ export class World {
 
   constructor(options: WorldOptions = {}) {
     this.settings = resolveWorldOptions(options);
-    if (resolveKernel(options) === 'javascript') this.solver.memory.refuseWebAssembly();
-    else this.solver.memory.expectWebAssembly();
+    this.solver.memory.start(resolveKernel(options) === 'javascript');
     this.queries = new WorldQueries(this.broadPhase, this.shapesById);
     this.solver.joints.list = this.jointList;
     this.shapeQueries = new ShapeQueries(this.broadPhase, this.shapesById);

@@ -3,6 +3,8 @@ import { reportMeasured } from './measured.ts';
 import { World, box, particle, wall } from '@physical/engine';
 import type { Body } from '@physical/engine';
 import { kernelSettings } from '../../src/dynamics/solver-memory.ts';
+// The JavaScript build of the contact passes, compared here with the WebAssembly one.
+import '@physical/engine/javascript-kernel';
 
 // A pile stands on bouncy particles. A particle pressed into its neighbour by the bodies above
 // approaches it faster than the restitution threshold every sub-step; were each approach an

@@ -230,8 +230,8 @@ export function buildWorld(spec: WorldSpec): World {
   world.add(box({ position: { x: -9, y: -0.25 }, width: 0.5, height: 0.5 }));
   world.add(box({ position: { x: -9, y: -1 }, width: 1, height: 1, density: spec.stackRatio / 4 }));
 
-  // A pile of 45 boxes: over 64 contacts, so the world moves to the WebAssembly contact kernel
-  // (a restored world starts on the JavaScript passes and moves when it reaches as many).
+  // A pile of 45 boxes: over 64 contacts, enough for the contact kernel to matter (worlds, restored
+  // ones too, run its WebAssembly build from their first step).
   if (spec.pile) {
     for (let row = 0; row < 9; row++) {
       for (let i = 0; i < 9 - row; i++) {

@@ -43,6 +43,7 @@ export async function bundleCrossEngineProgram(): Promise<string> {
     platform: 'neutral',
     target: 'es2020',
     alias: {
+      '@physical/engine/javascript-kernel': here('../../../engine/src/javascript-kernel.ts'),
       '@physical/engine': here('../../../engine/src/index.ts'),
       '@physical/scenes': here('../../src/index.ts'),
     },

@@ -2,6 +2,8 @@
 // every sample, stepped from their default values, reporting state hashes along the way.
 import { STEP, bodyStates, hashWorld, sceneValues, scenes } from '@physical/scenes';
 import type { World } from '@physical/engine';
+// QuickJS has no WebAssembly: its worlds run the contact passes' JavaScript build.
+import '@physical/engine/javascript-kernel';
 import { buildHeldOutScene } from './held-out-scene.ts';
 
 /** The id the held-out scene runs under. */

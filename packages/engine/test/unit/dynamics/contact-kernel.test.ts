@@ -3,6 +3,8 @@ import { World, box, particle, regularPolygon, takeSnapshot, wall } from '@physi
 import type { Body } from '@physical/engine';
 import { readFileSync } from 'node:fs';
 import { kernelSettings } from '../../../src/dynamics/solver-memory.ts';
+// The JavaScript build of the contact passes, compared here with the WebAssembly one.
+import '@physical/engine/javascript-kernel';
 import { buildContactKernel } from '../../../scripts/contact-kernel-build.ts';
 import { bodyStates, differingBits } from './body-states.ts';
 
@@ -152,6 +154,7 @@ describe('the contact kernel, built to WebAssembly and to JavaScript', () => {
     // A fresh copy of the engine (its module not compiled yet), with WebAssembly.Module counted.
     vi.resetModules();
     const engine = await import('../../../src/index.ts');
+    await import('../../../src/javascript-kernel.ts');
     // The engine's types assume only ES2022 (no WebAssembly namespace), as contact-kernel.ts does.
     const api = (
       globalThis as unknown as { WebAssembly: { Module: new (bytes: Uint8Array) => object } }

@@ -4,6 +4,8 @@ import type { Body } from '@physical/engine';
 import { STATE_STRIDE } from '../../../src/dynamics/body-state.ts';
 import { batchSettings, SolverBatches } from '../../../src/dynamics/solver-batches.ts';
 import { kernelSettings } from '../../../src/dynamics/solver-memory.ts';
+// The JavaScript build of the contact passes, compared here with the WebAssembly one.
+import '@physical/engine/javascript-kernel';
 import { bodyStates, differingBits } from './body-states.ts';
 
 // Batches of islands (solver-batches.ts) must change when a constraint is solved, never what

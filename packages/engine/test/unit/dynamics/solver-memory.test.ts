@@ -11,6 +11,7 @@ const TABLE_STRIDE = 5;
 describe('SolverMemory.reserveStep', () => {
   it('grows every region a step needs at once and keeps their contents', () => {
     const memory = new SolverMemory(CONSTRAINT_STRIDE, CONTACT_STRIDE, TABLE_STRIDE);
+    memory.start(false);
     memory.reserveStates(16)[3] = 1.5;
     memory.reserveBodyTable(2)[7] = -2.25;
     memory.reserveContacts(1);
@@ -32,6 +33,7 @@ describe('SolverMemory.reserveStep', () => {
     // A step this size moves to the WebAssembly kernel, as reserveConstraints would.
     expect(contacts).toBeGreaterThanOrEqual(kernelSettings.minConstraints);
     expect(memory.kernel).not.toBeNull();
+    expect(memory.usesWebAssembly).toBe(true);
 
     // The same step again: nothing moves, so every view stays the one the passes hold.
     const views = [memory.states, memory.contactData, memory.constraintData, memory.bodyTable];
