@@ -37,13 +37,13 @@ import {
 
 // A prismatic joint's record: the head (joint-record.ts), the spring, motor and limit on its
 // translation (spring-motor-limit.ts), then:
-export const LOCAL_AXIS_X = SPRING_MOTOR_LIMIT_END; // the slide's direction in A's frame (unit)
-export const LOCAL_AXIS_Y = SPRING_MOTOR_LIMIT_END + 1;
-export const AXIS_X = SPRING_MOTOR_LIMIT_END + 2; // the axis in world orientation at the step's start
-export const AXIS_Y = SPRING_MOTOR_LIMIT_END + 3;
-export const PERPENDICULAR_IMPULSE = SPRING_MOTOR_LIMIT_END + 4; // accumulated (warm-started)
-export const ANGULAR_IMPULSE = SPRING_MOTOR_LIMIT_END + 5;
-export const STRIDE = SPRING_MOTOR_LIMIT_END + 6;
+export const LOCAL_AXIS_X: number = SPRING_MOTOR_LIMIT_END; // the slide's direction in A's frame (unit)
+export const LOCAL_AXIS_Y: number = SPRING_MOTOR_LIMIT_END + 1;
+export const AXIS_X: number = SPRING_MOTOR_LIMIT_END + 2; // the axis in world orientation at the step's start
+export const AXIS_Y: number = SPRING_MOTOR_LIMIT_END + 3;
+export const PERPENDICULAR_IMPULSE: number = SPRING_MOTOR_LIMIT_END + 4; // accumulated (warm-started)
+export const ANGULAR_IMPULSE: number = SPRING_MOTOR_LIMIT_END + 5;
+export const STRIDE: number = SPRING_MOTOR_LIMIT_END + 6;
 
 /**
  * @internal The prismatic joints of a world: their records, and the step's active ones solved in

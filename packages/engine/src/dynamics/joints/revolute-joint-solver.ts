@@ -36,11 +36,11 @@ import {
 
 // A revolute joint's record: the head (joint-record.ts), the spring, motor and limit on its angle
 // (spring-motor-limit.ts), then:
-export const LINEAR_IMPULSE_X = SPRING_MOTOR_LIMIT_END; // the point's accumulated impulse
-export const LINEAR_IMPULSE_Y = SPRING_MOTOR_LIMIT_END + 1;
-export const AXIAL_MASS = SPRING_MOTOR_LIMIT_END + 2; // this step: 1 / (1/IA + 1/IB)
-export const MAX_BIAS_SPEED = SPRING_MOTOR_LIMIT_END + 3; // this step's JointStep.maxBiasSpeed
-export const STRIDE = SPRING_MOTOR_LIMIT_END + 4;
+export const LINEAR_IMPULSE_X: number = SPRING_MOTOR_LIMIT_END; // the point's accumulated impulse
+export const LINEAR_IMPULSE_Y: number = SPRING_MOTOR_LIMIT_END + 1;
+export const AXIAL_MASS: number = SPRING_MOTOR_LIMIT_END + 2; // this step: 1 / (1/IA + 1/IB)
+export const MAX_BIAS_SPEED: number = SPRING_MOTOR_LIMIT_END + 3; // this step's JointStep.maxBiasSpeed
+export const STRIDE: number = SPRING_MOTOR_LIMIT_END + 4;
 
 /**
  * @internal The revolute joints of a world: their records, and the step's active ones solved in

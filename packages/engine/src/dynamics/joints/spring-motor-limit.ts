@@ -15,25 +15,25 @@ import {
 // here once, at the same offsets of both kinds' records (after the head, joint-record.ts); each
 // kind's solver rows apply them along its own axis.
 
-export const SPRING_ENABLED = JOINT_HEAD; // settings: 1 or 0
-export const HERTZ = JOINT_HEAD + 1;
-export const DAMPING_RATIO = JOINT_HEAD + 2;
-export const MOTOR_ON = JOINT_HEAD + 3;
-export const MOTOR_SPEED = JOINT_HEAD + 4;
-export const MAX_MOTOR = JOINT_HEAD + 5; // torque (N m) or force (N)
-export const LIMIT_ON = JOINT_HEAD + 6;
-export const LOWER = JOINT_HEAD + 7; // UPPER must follow LOWER (Joint.setLimits)
-export const UPPER = JOINT_HEAD + 8;
-export const SPRING_ON = JOINT_HEAD + 9; // this step: 1 when the spring acts (enabled, above 0 Hz)
-export const SPRING_BIAS_RATE = JOINT_HEAD + 10; // the spring's softness this step
-export const SPRING_MASS_SCALE = JOINT_HEAD + 11;
-export const SPRING_IMPULSE_SCALE = JOINT_HEAD + 12;
-export const SPRING_IMPULSE = JOINT_HEAD + 13; // accumulated impulses (warm-started)
-export const MOTOR_IMPULSE = JOINT_HEAD + 14;
-export const LOWER_IMPULSE = JOINT_HEAD + 15; // UPPER_IMPULSE must follow (enableLimit clears both)
-export const UPPER_IMPULSE = JOINT_HEAD + 16;
+export const SPRING_ENABLED: number = JOINT_HEAD; // settings: 1 or 0
+export const HERTZ: number = JOINT_HEAD + 1;
+export const DAMPING_RATIO: number = JOINT_HEAD + 2;
+export const MOTOR_ON: number = JOINT_HEAD + 3;
+export const MOTOR_SPEED: number = JOINT_HEAD + 4;
+export const MAX_MOTOR: number = JOINT_HEAD + 5; // torque (N m) or force (N)
+export const LIMIT_ON: number = JOINT_HEAD + 6;
+export const LOWER: number = JOINT_HEAD + 7; // UPPER must follow LOWER (Joint.setLimits)
+export const UPPER: number = JOINT_HEAD + 8;
+export const SPRING_ON: number = JOINT_HEAD + 9; // this step: 1 when the spring acts (enabled, above 0 Hz)
+export const SPRING_BIAS_RATE: number = JOINT_HEAD + 10; // the spring's softness this step
+export const SPRING_MASS_SCALE: number = JOINT_HEAD + 11;
+export const SPRING_IMPULSE_SCALE: number = JOINT_HEAD + 12;
+export const SPRING_IMPULSE: number = JOINT_HEAD + 13; // accumulated impulses (warm-started)
+export const MOTOR_IMPULSE: number = JOINT_HEAD + 14;
+export const LOWER_IMPULSE: number = JOINT_HEAD + 15; // UPPER_IMPULSE must follow (enableLimit clears both)
+export const UPPER_IMPULSE: number = JOINT_HEAD + 16;
 /** Where the kind's own numbers start. */
-export const SPRING_MOTOR_LIMIT_END = JOINT_HEAD + 17;
+export const SPRING_MOTOR_LIMIT_END: number = JOINT_HEAD + 17;
 
 /** The accumulated impulses of the spring, motor and limit rows. */
 export const SPRING_MOTOR_LIMIT_IMPULSES: readonly number[] = [
