@@ -169,9 +169,10 @@ export class PrismaticBatch extends FlatJointBatch {
       }
 
       if (d[o + LIMIT_ON] === 1) {
-        // Lower: translation - lower >= 0.
-        {
-          const c = translation - d[o + LOWER]!;
+        // Lower: translation - lower >= 0; upper: upper - translation >= 0, the same row with the
+        // sign turned. Speculative like contacts: a gap may close within the sub-step.
+        for (let side = 1; side >= -1; side -= 2) {
+          const c = side === 1 ? translation - d[o + LOWER]! : d[o + UPPER]! - translation;
           let bias = 0;
           let massScale = 1;
           let impulseScale = 0;
@@ -181,43 +182,31 @@ export class PrismaticBatch extends FlatJointBatch {
             massScale = soft.massScale;
             impulseScale = soft.impulseScale;
           }
-          const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
-          const old = d[o + LOWER_IMPULSE]!;
+          const cdot =
+            side === 1
+              ? ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA
+              : ax * (vAx - vBx) + ay * (vAy - vBy) + a1 * wA - a2 * wB;
+          const at = side === 1 ? LOWER_IMPULSE : UPPER_IMPULSE;
+          const old = d[o + at]!;
           const impulse = -axialMass * massScale * (cdot + bias) - impulseScale * old;
           const accumulated = Math.max(old + impulse, 0);
           const applied = accumulated - old;
-          d[o + LOWER_IMPULSE] = accumulated;
-          vAx -= mA * applied * ax;
-          vAy -= mA * applied * ay;
-          wA -= iA * applied * a1;
-          vBx += mB * applied * ax;
-          vBy += mB * applied * ay;
-          wB += iB * applied * a2;
-        }
-        // Upper: upper - translation >= 0, the same row with the sign turned.
-        {
-          const c = d[o + UPPER]! - translation;
-          let bias = 0;
-          let massScale = 1;
-          let impulseScale = 0;
-          if (c > 0) bias = c * step.inverseH;
-          else if (useBias) {
-            bias = soft.biasRate * c;
-            massScale = soft.massScale;
-            impulseScale = soft.impulseScale;
+          d[o + at] = accumulated;
+          if (side === 1) {
+            vAx -= mA * applied * ax;
+            vAy -= mA * applied * ay;
+            wA -= iA * applied * a1;
+            vBx += mB * applied * ax;
+            vBy += mB * applied * ay;
+            wB += iB * applied * a2;
+          } else {
+            vAx += mA * applied * ax;
+            vAy += mA * applied * ay;
+            wA += iA * applied * a1;
+            vBx -= mB * applied * ax;
+            vBy -= mB * applied * ay;
+            wB -= iB * applied * a2;
           }
-          const cdot = ax * (vAx - vBx) + ay * (vAy - vBy) + a1 * wA - a2 * wB;
-          const old = d[o + UPPER_IMPULSE]!;
-          const impulse = -axialMass * massScale * (cdot + bias) - impulseScale * old;
-          const accumulated = Math.max(old + impulse, 0);
-          const applied = accumulated - old;
-          d[o + UPPER_IMPULSE] = accumulated;
-          vAx += mA * applied * ax;
-          vAy += mA * applied * ay;
-          wA += iA * applied * a1;
-          vBx -= mB * applied * ax;
-          vBy -= mB * applied * ay;
-          wB -= iB * applied * a2;
         }
       }
 
