@@ -22,11 +22,7 @@ import {
   requirePoint,
 } from './joint.ts';
 import type { JointOptions } from './joint.ts';
-import {
-  LOCAL_ANCHOR_AX,
-  LOCAL_ANCHOR_BX,
-  REFERENCE_ANGLE,
-} from './joint-record.ts';
+import { LOCAL_ANCHOR_AX, LOCAL_ANCHOR_BX, REFERENCE_ANGLE } from './joint-record.ts';
 import {
   checkSpringMotorLimit,
   DAMPING_RATIO,

@@ -102,7 +102,11 @@ export function checkSpringMotorLimit(
 }
 
 /** @internal Writes checked settings into a joint's record at `o`. */
-export function writeSpringMotorLimit(d: Float64Array, o: number, settings: SpringMotorLimit): void {
+export function writeSpringMotorLimit(
+  d: Float64Array,
+  o: number,
+  settings: SpringMotorLimit,
+): void {
   d[o + LIMIT_ON] = settings.enableLimit ? 1 : 0;
   d[o + LOWER] = settings.lower;
   d[o + UPPER] = settings.upper;
