@@ -8,6 +8,7 @@ import { FlatJointBatch } from './joint-batch.ts';
 import {
   Joint,
   checkCollideConnected,
+  jointLayout,
   stateLayout,
   type JointLayout,
   type JointOptions,
@@ -26,7 +27,6 @@ import {
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
-  JOINT_HEAD,
   LOCAL_ANCHOR_AX,
   LOCAL_ANCHOR_BX,
   R_AX,
@@ -94,54 +94,56 @@ export function checkDistanceJointOptions(options: DistanceJointOptions<unknown>
 
 // A distance joint's record: the head (joint-record.ts), then its own numbers. The joint has no
 // angular row: its step angular impulse stays 0, as prepareBodies cleared it.
-const REST = JOINT_HEAD; // settings: rest length, shortest and longest length (m)
-const MIN_LENGTH = JOINT_HEAD + 1;
-const MAX_LENGTH = JOINT_HEAD + 2;
-const SPRING_ENABLED = JOINT_HEAD + 3; // 1 or 0: a spring, else a rigid rod
-const HERTZ = JOINT_HEAD + 4;
-const DAMPING_RATIO = JOINT_HEAD + 5;
-const EXPLICIT_SPRING = JOINT_HEAD + 6; // this step, 1 or 0: the spring acts as a force (see prepare)
-const SPRING_OMEGA = JOINT_HEAD + 7;
-const LENGTH_ROW_ON = JOINT_HEAD + 8; // 1 or 0: the rod, or the spring as a soft constraint
-const SPRING_BIAS_RATE = JOINT_HEAD + 9;
-const SPRING_MASS_SCALE = JOINT_HEAD + 10;
-const SPRING_IMPULSE_SCALE = JOINT_HEAD + 11;
-const LOWER_ON = JOINT_HEAD + 12; // 1 or 0: the minLength row
-const UPPER_ON = JOINT_HEAD + 13; // 1 or 0: the maxLength row
-const IMPULSE = JOINT_HEAD + 14; // accumulated impulses (warm-started)
-const LOWER_IMPULSE = JOINT_HEAD + 15;
-const UPPER_IMPULSE = JOINT_HEAD + 16;
-const SPRING_SUB_STEP_IMPULSE = JOINT_HEAD + 17; // the explicit spring's impulse in the sub-step
-const STRIDE = JOINT_HEAD + 18;
+const REST = 25; // JOINT_HEAD; settings: rest length, shortest and longest length (m)
+const MIN_LENGTH = 26; // JOINT_HEAD + 1
+const MAX_LENGTH = 27; // JOINT_HEAD + 2
+const SPRING_ENABLED = 28; // JOINT_HEAD + 3; 1 or 0: a spring, else a rigid rod
+const HERTZ = 29; // JOINT_HEAD + 4
+const DAMPING_RATIO = 30; // JOINT_HEAD + 5
+const EXPLICIT_SPRING = 31; // JOINT_HEAD + 6; this step, 1 or 0: the spring acts as a force (see prepare)
+const SPRING_OMEGA = 32; // JOINT_HEAD + 7
+const LENGTH_ROW_ON = 33; // JOINT_HEAD + 8; 1 or 0: the rod, or the spring as a soft constraint
+const SPRING_BIAS_RATE = 34; // JOINT_HEAD + 9
+const SPRING_MASS_SCALE = 35; // JOINT_HEAD + 10
+const SPRING_IMPULSE_SCALE = 36; // JOINT_HEAD + 11
+const LOWER_ON = 37; // JOINT_HEAD + 12; 1 or 0: the minLength row
+const UPPER_ON = 38; // JOINT_HEAD + 13; 1 or 0: the maxLength row
+const IMPULSE = 39; // JOINT_HEAD + 14; accumulated impulses (warm-started)
+const LOWER_IMPULSE = 40; // JOINT_HEAD + 15
+const UPPER_IMPULSE = 41; // JOINT_HEAD + 16
+const SPRING_SUB_STEP_IMPULSE = 42; // JOINT_HEAD + 17; the explicit spring's impulse in the sub-step
+const STRIDE = 43; // JOINT_HEAD + 18
 
 /** Below this anchor distance (m) the joint has no direction and does nothing. */
 const LENGTH_EPSILON = 1e-9;
 
-const LAYOUT: JointLayout = {
-  stride: STRIDE,
-  saved: {
-    localAnchorA: ['vector', LOCAL_ANCHOR_AX],
-    localAnchorB: ['vector', LOCAL_ANCHOR_BX],
-    length: ['nonNegative', REST],
-    minLength: ['nonNegative', MIN_LENGTH],
-    maxLength: ['nonNegativeOrInfinity', MAX_LENGTH],
-    enableSpring: ['boolean', SPRING_ENABLED],
-    hertz: ['nonNegative', HERTZ],
-    dampingRatio: ['nonNegative', DAMPING_RATIO],
-    impulse: ['finite', IMPULSE],
-    lowerImpulse: ['nonNegative', LOWER_IMPULSE],
-    upperImpulse: ['nonNegative', UPPER_IMPULSE],
-  },
-  impulses: [IMPULSE, LOWER_IMPULSE, UPPER_IMPULSE],
-};
+const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
+  STRIDE,
+  [
+    {
+      localAnchorA: ['vector', LOCAL_ANCHOR_AX],
+      localAnchorB: ['vector', LOCAL_ANCHOR_BX],
+      length: ['nonNegative', REST],
+      minLength: ['nonNegative', MIN_LENGTH],
+      maxLength: ['nonNegativeOrInfinity', MAX_LENGTH],
+      enableSpring: ['boolean', SPRING_ENABLED],
+      hertz: ['nonNegative', HERTZ],
+      dampingRatio: ['nonNegative', DAMPING_RATIO],
+      impulse: ['finite', IMPULSE],
+      lowerImpulse: ['nonNegative', LOWER_IMPULSE],
+      upperImpulse: ['nonNegative', UPPER_IMPULSE],
+    },
+  ],
+  [[IMPULSE, LOWER_IMPULSE, UPPER_IMPULSE]],
+);
 
 /** @internal What a world snapshot saves of a distance joint (see Joint.exportState). */
-export const DISTANCE_STATE: JointStateLayout = stateLayout(LAYOUT.saved, [
+export const DISTANCE_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, [
   ['minLength', 'length'],
   ['length', 'maxLength'],
 ]);
 
-const scratch = new Softness();
+const scratch = /* @__PURE__ */ new Softness();
 
 /**
  * Keeps two points at a distance, rigidly or as a damped spring, within an optional length range.

@@ -123,11 +123,25 @@ export interface JointLayout {
   readonly impulses: readonly number[];
 }
 
+/**
+ * @internal A kind's layout from its parts: saved fields in the order given, impulses likewise.
+ * (Built by a call, marked pure where a kind calls it, so a bundle that only checks joint options
+ * drops it: spreads at a module's top level would count as side effects.)
+ */
+export function jointLayout(
+  stride: number,
+  saved: readonly SavedFields[],
+  impulses: readonly (readonly number[])[],
+): JointLayout {
+  return { stride, saved: Object.assign({}, ...saved) as SavedFields, impulses: impulses.flat() };
+}
+
 /** @internal A snapshot's layout of a kind's saved values (its checks, from the one table). */
 export function stateLayout(
-  saved: SavedFields,
+  layout: Pick<JointLayout, 'saved'>,
   ordered: readonly (readonly [string, string])[],
 ): JointStateLayout {
+  const saved = layout.saved;
   const fields: Record<string, JointValueKind> = {};
   for (const key of Object.keys(saved)) fields[key] = saved[key]![0];
   return { fields, ordered };
@@ -141,7 +155,10 @@ const JOINT_SAVED: SavedFields = {
 };
 
 /** @internal Saved for every kind of joint (see {@link Joint.exportState}). */
-export const JOINT_STATE: JointStateLayout = stateLayout(JOINT_SAVED, []);
+export const JOINT_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(
+  { saved: JOINT_SAVED },
+  [],
+);
 
 /** @internal The two anchors and the reference angle, as revolute, prismatic and weld save them. */
 export const FRAME_SAVED: SavedFields = {

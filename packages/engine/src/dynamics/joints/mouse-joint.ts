@@ -7,6 +7,7 @@ import { Softness } from '../softness.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import {
   Joint,
+  jointLayout,
   stateLayout,
   type JointLayout,
   type JointStateLayout,
@@ -23,7 +24,6 @@ import {
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
-  JOINT_HEAD,
   LOCAL_ANCHOR_BX,
   LOCAL_ANCHOR_BY,
   R_BX,
@@ -81,40 +81,42 @@ export function checkMouseJointOptions(options: MouseJointOptions<unknown>) {
 // A mouse joint's record: the head (joint-record.ts; the grabbed point is B's local anchor, the
 // "A" side is the fixed target, so of A's numbers only zeros), then its own numbers. The spin brake
 // has no target angle: of its softness only the mass and impulse scales are used.
-const TARGET_X = JOINT_HEAD; // settings
-const TARGET_Y = JOINT_HEAD + 1;
-const MAX_FORCE = JOINT_HEAD + 2;
-const HERTZ = JOINT_HEAD + 3;
-const DAMPING_RATIO = JOINT_HEAD + 4;
-const LINEAR_BIAS_RATE = JOINT_HEAD + 5; // the pull's softness this step
-const LINEAR_MASS_SCALE = JOINT_HEAD + 6;
-const LINEAR_IMPULSE_SCALE = JOINT_HEAD + 7;
-const ANGULAR_BIAS_RATE = JOINT_HEAD + 8; // the spin brake's softness this step
-const ANGULAR_MASS_SCALE = JOINT_HEAD + 9;
-const ANGULAR_IMPULSE_SCALE = JOINT_HEAD + 10;
-const LINEAR_IMPULSE_X = JOINT_HEAD + 11; // accumulated impulses (warm-started)
-const LINEAR_IMPULSE_Y = JOINT_HEAD + 12;
-const ANGULAR_IMPULSE = JOINT_HEAD + 13;
-const STRIDE = JOINT_HEAD + 14;
+const TARGET_X = 25; // JOINT_HEAD; settings
+const TARGET_Y = 26; // JOINT_HEAD + 1
+const MAX_FORCE = 27; // JOINT_HEAD + 2
+const HERTZ = 28; // JOINT_HEAD + 3
+const DAMPING_RATIO = 29; // JOINT_HEAD + 4
+const LINEAR_BIAS_RATE = 30; // JOINT_HEAD + 5; the pull's softness this step
+const LINEAR_MASS_SCALE = 31; // JOINT_HEAD + 6
+const LINEAR_IMPULSE_SCALE = 32; // JOINT_HEAD + 7
+const ANGULAR_BIAS_RATE = 33; // JOINT_HEAD + 8; the spin brake's softness this step
+const ANGULAR_MASS_SCALE = 34; // JOINT_HEAD + 9
+const ANGULAR_IMPULSE_SCALE = 35; // JOINT_HEAD + 10
+const LINEAR_IMPULSE_X = 36; // JOINT_HEAD + 11; accumulated impulses (warm-started)
+const LINEAR_IMPULSE_Y = 37; // JOINT_HEAD + 12
+const ANGULAR_IMPULSE = 38; // JOINT_HEAD + 13
+const STRIDE = 39; // JOINT_HEAD + 14
 
-const LAYOUT: JointLayout = {
-  stride: STRIDE,
-  saved: {
-    localAnchor: ['vector', LOCAL_ANCHOR_BX],
-    target: ['vector', TARGET_X],
-    maxForce: ['nonNegative', MAX_FORCE],
-    hertz: ['positive', HERTZ],
-    dampingRatio: ['nonNegative', DAMPING_RATIO],
-    linearImpulse: ['vector', LINEAR_IMPULSE_X],
-    angularImpulse: ['finite', ANGULAR_IMPULSE],
-  },
-  impulses: [LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y, ANGULAR_IMPULSE],
-};
+const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
+  STRIDE,
+  [
+    {
+      localAnchor: ['vector', LOCAL_ANCHOR_BX],
+      target: ['vector', TARGET_X],
+      maxForce: ['nonNegative', MAX_FORCE],
+      hertz: ['positive', HERTZ],
+      dampingRatio: ['nonNegative', DAMPING_RATIO],
+      linearImpulse: ['vector', LINEAR_IMPULSE_X],
+      angularImpulse: ['finite', ANGULAR_IMPULSE],
+    },
+  ],
+  [[LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y, ANGULAR_IMPULSE]],
+);
 
 /** @internal What a world snapshot saves of a mouse joint (see Joint.exportState). */
-export const MOUSE_STATE: JointStateLayout = stateLayout(LAYOUT.saved, []);
+export const MOUSE_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, []);
 
-const scratch = new Softness();
+const scratch = /* @__PURE__ */ new Softness();
 
 /**
  * Pulls a point of one body toward a target with a damped spring of bounded force (Box2D v3's

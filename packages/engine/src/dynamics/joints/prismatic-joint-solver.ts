@@ -29,21 +29,21 @@ import {
   SPRING_IMPULSE,
   SPRING_IMPULSE_SCALE,
   SPRING_MASS_SCALE,
-  SPRING_MOTOR_LIMIT_END,
   SPRING_ON,
   UPPER,
   UPPER_IMPULSE,
 } from './spring-motor-limit.ts';
 
 // A prismatic joint's record: the head (joint-record.ts), the spring, motor and limit on its
-// translation (spring-motor-limit.ts), then:
-export const LOCAL_AXIS_X: number = SPRING_MOTOR_LIMIT_END; // the slide's direction in A's frame (unit)
-export const LOCAL_AXIS_Y: number = SPRING_MOTOR_LIMIT_END + 1;
-export const AXIS_X: number = SPRING_MOTOR_LIMIT_END + 2; // the axis in world orientation at the step's start
-export const AXIS_Y: number = SPRING_MOTOR_LIMIT_END + 3;
-export const PERPENDICULAR_IMPULSE: number = SPRING_MOTOR_LIMIT_END + 4; // accumulated (warm-started)
-export const ANGULAR_IMPULSE: number = SPRING_MOTOR_LIMIT_END + 5;
-export const STRIDE: number = SPRING_MOTOR_LIMIT_END + 6;
+// translation (spring-motor-limit.ts), then these (literals, as the passes read them best;
+// joint-layouts.test.ts checks they follow on and do not overlap):
+export const LOCAL_AXIS_X = 42; // SPRING_MOTOR_LIMIT_END; the slide's direction in A's frame (unit)
+export const LOCAL_AXIS_Y = 43; // SPRING_MOTOR_LIMIT_END + 1
+export const AXIS_X = 44; // SPRING_MOTOR_LIMIT_END + 2; the axis in world orientation at the step's start
+export const AXIS_Y = 45; // SPRING_MOTOR_LIMIT_END + 3
+export const PERPENDICULAR_IMPULSE = 46; // SPRING_MOTOR_LIMIT_END + 4; accumulated (warm-started)
+export const ANGULAR_IMPULSE = 47; // SPRING_MOTOR_LIMIT_END + 5
+export const STRIDE = 48; // SPRING_MOTOR_LIMIT_END + 6
 
 /**
  * @internal The prismatic joints of a world: their records, and the step's active ones solved in

@@ -14,6 +14,7 @@ import {
 import {
   Joint,
   checkCollideConnected,
+  jointLayout,
   stateLayout,
   type JointLayout,
   type JointStateLayout,
@@ -93,23 +94,29 @@ export function checkPrismaticJointOptions(options: PrismaticJointOptions<unknow
   return { anchor, axis, settings };
 }
 
-const LAYOUT: JointLayout = {
-  stride: STRIDE,
-  saved: {
-    localAnchorA: ['vector', LOCAL_ANCHOR_AX],
-    localAnchorB: ['vector', LOCAL_ANCHOR_BX],
-    localAxis: ['unitVector', LOCAL_AXIS_X],
-    referenceAngle: ['finite', REFERENCE_ANGLE],
-    ...springMotorLimitSaved(NAMES),
-    perpendicularImpulse: ['finite', PERPENDICULAR_IMPULSE],
-    angularImpulse: ['finite', ANGULAR_IMPULSE],
-    ...SPRING_MOTOR_LIMIT_IMPULSES_SAVED,
-  },
-  impulses: [PERPENDICULAR_IMPULSE, ANGULAR_IMPULSE, ...SPRING_MOTOR_LIMIT_IMPULSES],
-};
+const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
+  STRIDE,
+  [
+    {
+      localAnchorA: ['vector', LOCAL_ANCHOR_AX],
+      localAnchorB: ['vector', LOCAL_ANCHOR_BX],
+      localAxis: ['unitVector', LOCAL_AXIS_X],
+      referenceAngle: ['finite', REFERENCE_ANGLE],
+    },
+    /* @__PURE__ */ springMotorLimitSaved(NAMES),
+    {
+      perpendicularImpulse: ['finite', PERPENDICULAR_IMPULSE],
+      angularImpulse: ['finite', ANGULAR_IMPULSE],
+    },
+    SPRING_MOTOR_LIMIT_IMPULSES_SAVED,
+  ],
+  [[PERPENDICULAR_IMPULSE, ANGULAR_IMPULSE], SPRING_MOTOR_LIMIT_IMPULSES],
+);
 
 /** @internal What a world snapshot saves of a prismatic joint (see Joint.exportState). */
-export const PRISMATIC_STATE: JointStateLayout = stateLayout(LAYOUT.saved, [['lower', 'upper']]);
+export const PRISMATIC_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, [
+  ['lower', 'upper'],
+]);
 
 /**
  * A slider: body B moves along an axis fixed in body A and cannot turn relative to it; optional

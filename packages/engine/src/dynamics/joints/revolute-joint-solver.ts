@@ -28,19 +28,19 @@ import {
   SPRING_IMPULSE,
   SPRING_IMPULSE_SCALE,
   SPRING_MASS_SCALE,
-  SPRING_MOTOR_LIMIT_END,
   SPRING_ON,
   UPPER,
   UPPER_IMPULSE,
 } from './spring-motor-limit.ts';
 
 // A revolute joint's record: the head (joint-record.ts), the spring, motor and limit on its angle
-// (spring-motor-limit.ts), then:
-export const LINEAR_IMPULSE_X: number = SPRING_MOTOR_LIMIT_END; // the point's accumulated impulse
-export const LINEAR_IMPULSE_Y: number = SPRING_MOTOR_LIMIT_END + 1;
-export const AXIAL_MASS: number = SPRING_MOTOR_LIMIT_END + 2; // this step: 1 / (1/IA + 1/IB)
-export const MAX_BIAS_SPEED: number = SPRING_MOTOR_LIMIT_END + 3; // this step's JointStep.maxBiasSpeed
-export const STRIDE: number = SPRING_MOTOR_LIMIT_END + 4;
+// (spring-motor-limit.ts), then these (literals, as the passes read them best: see
+// dynamics/README.md; joint-layouts.test.ts checks they follow on and do not overlap):
+export const LINEAR_IMPULSE_X = 42; // SPRING_MOTOR_LIMIT_END; the point's accumulated impulse
+export const LINEAR_IMPULSE_Y = 43; // SPRING_MOTOR_LIMIT_END + 1
+export const AXIAL_MASS = 44; // SPRING_MOTOR_LIMIT_END + 2; this step: 1 / (1/IA + 1/IB)
+export const MAX_BIAS_SPEED = 45; // SPRING_MOTOR_LIMIT_END + 3; this step's JointStep.maxBiasSpeed
+export const STRIDE = 46; // SPRING_MOTOR_LIMIT_END + 4
 
 /**
  * @internal The revolute joints of a world: their records, and the step's active ones solved in

@@ -14,6 +14,7 @@ import {
   FRAME_SAVED,
   Joint,
   checkCollideConnected,
+  jointLayout,
   stateLayout,
   type JointLayout,
   type JointOptions,
@@ -101,19 +102,19 @@ export function checkRevoluteJointOptions(options: RevoluteJointOptions<unknown>
   return { anchor, settings };
 }
 
-const LAYOUT: JointLayout = {
-  stride: STRIDE,
-  saved: {
-    ...FRAME_SAVED,
-    ...springMotorLimitSaved(NAMES),
-    linearImpulse: ['vector', LINEAR_IMPULSE_X],
-    ...SPRING_MOTOR_LIMIT_IMPULSES_SAVED,
-  },
-  impulses: [LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y, ...SPRING_MOTOR_LIMIT_IMPULSES],
-};
+const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
+  STRIDE,
+  [
+    FRAME_SAVED,
+    /* @__PURE__ */ springMotorLimitSaved(NAMES),
+    { linearImpulse: ['vector', LINEAR_IMPULSE_X] },
+    SPRING_MOTOR_LIMIT_IMPULSES_SAVED,
+  ],
+  [[LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y], SPRING_MOTOR_LIMIT_IMPULSES],
+);
 
 /** @internal What a world snapshot saves of a revolute joint (see Joint.exportState). */
-export const REVOLUTE_STATE: JointStateLayout = stateLayout(LAYOUT.saved, [
+export const REVOLUTE_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, [
   ['lowerAngle', 'upperAngle'],
 ]);
 

@@ -1,6 +1,5 @@
 import { optionalBoolean } from '../../core/validate.ts';
 import { Softness } from '../softness.ts';
-import { JOINT_HEAD } from './joint-record.ts';
 import {
   optionalFinite,
   optionalNonNegative,
@@ -15,25 +14,25 @@ import {
 // here once, at the same offsets of both kinds' records (after the head, joint-record.ts); each
 // kind's solver rows apply them along its own axis.
 
-export const SPRING_ENABLED: number = JOINT_HEAD; // settings: 1 or 0
-export const HERTZ: number = JOINT_HEAD + 1;
-export const DAMPING_RATIO: number = JOINT_HEAD + 2;
-export const MOTOR_ON: number = JOINT_HEAD + 3;
-export const MOTOR_SPEED: number = JOINT_HEAD + 4;
-export const MAX_MOTOR: number = JOINT_HEAD + 5; // torque (N m) or force (N)
-export const LIMIT_ON: number = JOINT_HEAD + 6;
-export const LOWER: number = JOINT_HEAD + 7; // UPPER must follow LOWER (Joint.setLimits)
-export const UPPER: number = JOINT_HEAD + 8;
-export const SPRING_ON: number = JOINT_HEAD + 9; // this step: 1 when the spring acts (enabled, above 0 Hz)
-export const SPRING_BIAS_RATE: number = JOINT_HEAD + 10; // the spring's softness this step
-export const SPRING_MASS_SCALE: number = JOINT_HEAD + 11;
-export const SPRING_IMPULSE_SCALE: number = JOINT_HEAD + 12;
-export const SPRING_IMPULSE: number = JOINT_HEAD + 13; // accumulated impulses (warm-started)
-export const MOTOR_IMPULSE: number = JOINT_HEAD + 14;
-export const LOWER_IMPULSE: number = JOINT_HEAD + 15; // UPPER_IMPULSE must follow (enableLimit clears both)
-export const UPPER_IMPULSE: number = JOINT_HEAD + 16;
+export const SPRING_ENABLED = 25; // JOINT_HEAD; settings: 1 or 0
+export const HERTZ = 26; // JOINT_HEAD + 1
+export const DAMPING_RATIO = 27; // JOINT_HEAD + 2
+export const MOTOR_ON = 28; // JOINT_HEAD + 3
+export const MOTOR_SPEED = 29; // JOINT_HEAD + 4
+export const MAX_MOTOR = 30; // JOINT_HEAD + 5; torque (N m) or force (N)
+export const LIMIT_ON = 31; // JOINT_HEAD + 6
+export const LOWER = 32; // JOINT_HEAD + 7; UPPER must follow LOWER (Joint.setLimits)
+export const UPPER = 33; // JOINT_HEAD + 8
+export const SPRING_ON = 34; // JOINT_HEAD + 9; this step: 1 when the spring acts (enabled, above 0 Hz)
+export const SPRING_BIAS_RATE = 35; // JOINT_HEAD + 10; the spring's softness this step
+export const SPRING_MASS_SCALE = 36; // JOINT_HEAD + 11
+export const SPRING_IMPULSE_SCALE = 37; // JOINT_HEAD + 12
+export const SPRING_IMPULSE = 38; // JOINT_HEAD + 13; accumulated impulses (warm-started)
+export const MOTOR_IMPULSE = 39; // JOINT_HEAD + 14
+export const LOWER_IMPULSE = 40; // JOINT_HEAD + 15; UPPER_IMPULSE must follow (enableLimit clears both)
+export const UPPER_IMPULSE = 41; // JOINT_HEAD + 16
 /** Where the kind's own numbers start. */
-export const SPRING_MOTOR_LIMIT_END: number = JOINT_HEAD + 17;
+export const SPRING_MOTOR_LIMIT_END = 42; // JOINT_HEAD + 17
 
 /** The accumulated impulses of the spring, motor and limit rows. */
 export const SPRING_MOTOR_LIMIT_IMPULSES: readonly number[] = [
@@ -141,7 +140,7 @@ export const SPRING_MOTOR_LIMIT_IMPULSES_SAVED: SavedFields = {
   upperImpulse: ['nonNegative', UPPER_IMPULSE],
 };
 
-const scratch = new Softness();
+const scratch = /* @__PURE__ */ new Softness();
 
 /**
  * @internal The step's spring softness, and the impulses of the rows that are off

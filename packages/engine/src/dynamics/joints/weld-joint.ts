@@ -7,6 +7,7 @@ import {
   FRAME_SAVED,
   Joint,
   checkCollideConnected,
+  jointLayout,
   stateLayout,
   type JointLayout,
   type JointOptions,
@@ -22,7 +23,6 @@ import {
   INV_MASS_A,
   INV_MASS_B,
   JOINT_ANGLE_0,
-  JOINT_HEAD,
   R_AX,
   R_AY,
   R_BX,
@@ -64,40 +64,42 @@ export function checkWeldJointOptions(options: WeldJointOptions<unknown>) {
 }
 
 // A weld joint's record: the head (joint-record.ts), then its own numbers.
-const LINEAR_HERTZ = JOINT_HEAD; // settings
-const ANGULAR_HERTZ = JOINT_HEAD + 1;
-const DAMPING_RATIO = JOINT_HEAD + 2;
-const AXIAL_MASS = JOINT_HEAD + 3; // this step: 1 / (1/IA + 1/IB)
+const LINEAR_HERTZ = 25; // JOINT_HEAD; settings
+const ANGULAR_HERTZ = 26; // JOINT_HEAD + 1
+const DAMPING_RATIO = 27; // JOINT_HEAD + 2
+const AXIAL_MASS = 28; // JOINT_HEAD + 3; this step: 1 / (1/IA + 1/IB)
 // 1: the position hold has its own softness (bias rate, mass scale and impulse scale next), in
 // both passes; 0: rigid. The order is what solveSoftPoint reads.
-const LINEAR_SPRINGY = JOINT_HEAD + 4;
-const LINEAR_BIAS_RATE = JOINT_HEAD + 5; // then its mass scale and impulse scale
-const ANGULAR_SPRINGY = JOINT_HEAD + 8; // the same for the angle hold
-const ANGULAR_BIAS_RATE = JOINT_HEAD + 9;
-const ANGULAR_MASS_SCALE = JOINT_HEAD + 10;
-const ANGULAR_IMPULSE_SCALE = JOINT_HEAD + 11;
-const LINEAR_IMPULSE_X = JOINT_HEAD + 12; // accumulated impulses (warm-started)
-const LINEAR_IMPULSE_Y = JOINT_HEAD + 13;
-const ANGULAR_IMPULSE = JOINT_HEAD + 14;
-const STRIDE = JOINT_HEAD + 15;
+const LINEAR_SPRINGY = 29; // JOINT_HEAD + 4
+const LINEAR_BIAS_RATE = 30; // JOINT_HEAD + 5; then its mass scale and impulse scale
+const ANGULAR_SPRINGY = 33; // JOINT_HEAD + 8; the same for the angle hold
+const ANGULAR_BIAS_RATE = 34; // JOINT_HEAD + 9
+const ANGULAR_MASS_SCALE = 35; // JOINT_HEAD + 10
+const ANGULAR_IMPULSE_SCALE = 36; // JOINT_HEAD + 11
+const LINEAR_IMPULSE_X = 37; // JOINT_HEAD + 12; accumulated impulses (warm-started)
+const LINEAR_IMPULSE_Y = 38; // JOINT_HEAD + 13
+const ANGULAR_IMPULSE = 39; // JOINT_HEAD + 14
+const STRIDE = 40; // JOINT_HEAD + 15
 
-const LAYOUT: JointLayout = {
-  stride: STRIDE,
-  saved: {
-    ...FRAME_SAVED,
-    linearHertz: ['nonNegative', LINEAR_HERTZ],
-    angularHertz: ['nonNegative', ANGULAR_HERTZ],
-    dampingRatio: ['nonNegative', DAMPING_RATIO],
-    linearImpulse: ['vector', LINEAR_IMPULSE_X],
-    angularImpulse: ['finite', ANGULAR_IMPULSE],
-  },
-  impulses: [LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y, ANGULAR_IMPULSE],
-};
+const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
+  STRIDE,
+  [
+    FRAME_SAVED,
+    {
+      linearHertz: ['nonNegative', LINEAR_HERTZ],
+      angularHertz: ['nonNegative', ANGULAR_HERTZ],
+      dampingRatio: ['nonNegative', DAMPING_RATIO],
+      linearImpulse: ['vector', LINEAR_IMPULSE_X],
+      angularImpulse: ['finite', ANGULAR_IMPULSE],
+    },
+  ],
+  [[LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y, ANGULAR_IMPULSE]],
+);
 
 /** @internal What a world snapshot saves of a weld joint (see Joint.exportState). */
-export const WELD_STATE: JointStateLayout = stateLayout(LAYOUT.saved, []);
+export const WELD_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, []);
 
-const scratch = new Softness();
+const scratch = /* @__PURE__ */ new Softness();
 
 /**
  * Holds body B at a fixed position and angle relative to body A: rigid, or a spring in position
