@@ -221,6 +221,7 @@ export abstract class Joint<UserData = unknown> {
   get worldRef(): World | null {
     return this.worldValue;
   }
+  /** @internal */
   set worldRef(value: World | null) {
     this.worldValue = value;
     if (value === null && !this.store.local) this.store.release(this);
@@ -414,6 +415,7 @@ export abstract class Joint<UserData = unknown> {
   get invInertiaA(): number {
     return this.value(INV_I_A);
   }
+  /** @internal */
   set invInertiaA(value: number) {
     this.write(INV_I_A, value);
   }
@@ -421,6 +423,7 @@ export abstract class Joint<UserData = unknown> {
   get invInertiaB(): number {
     return this.value(INV_I_B);
   }
+  /** @internal */
   set invInertiaB(value: number) {
     this.write(INV_I_B, value);
   }
