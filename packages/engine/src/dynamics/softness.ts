@@ -28,6 +28,16 @@ export class Softness {
     return this.set(Math.min(base.hertz * Math.sqrt(ratio), 0.25 / base.h), base.zeta, base.h);
   }
 
+  /**
+   * Writes biasRate, massScale and impulseScale, in that order, at `at` in `out` (a joint's record
+   * keeps the softness of its springs there for its passes).
+   */
+  store(out: Float64Array, at: number): void {
+    out[at] = this.biasRate;
+    out[at + 1] = this.massScale;
+    out[at + 2] = this.impulseScale;
+  }
+
   set(hertz: number, zeta: number, h: number): this {
     this.hertz = hertz;
     this.zeta = zeta;

@@ -1,32 +1,41 @@
 import { PhysicalError, readOnly } from '../../core/errors.ts';
-import {
-  optionalBoolean,
-  requireBoolean,
-  requireNonNegative,
-  requireRange,
-} from '../../core/validate.ts';
-import type { Vec2, Vec2Like } from '../../math/vec2.ts';
+import { optionalBoolean, requireNonNegative, requireRange } from '../../core/validate.ts';
+import type { Vec2Like } from '../../math/vec2.ts';
+import { hypot } from '../../math/hypot.ts';
 import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import {
   Joint,
   checkCollideConnected,
+  jointLayout,
+  stateLayout,
+  type JointLayout,
   type JointOptions,
-  type JointState,
   type JointStateLayout,
   type JointStep,
-  importLocalAnchors,
   optionalNonNegative,
   requireBodies,
   requireOrdered,
   jointMax,
   requirePoint,
-  stateBoolean,
-  stateNumber,
-  worldAnchor,
 } from './joint.ts';
-import { hypot } from '../../math/hypot.ts';
+import {
+  DELTA_CENTER_X,
+  DELTA_CENTER_Y,
+  INV_I_A,
+  INV_I_B,
+  INV_MASS_A,
+  INV_MASS_B,
+  LOCAL_ANCHOR_AX,
+  LOCAL_ANCHOR_BX,
+  R_AX,
+  R_AY,
+  R_BX,
+  R_BY,
+  STEP_IMPULSE_X,
+  STEP_IMPULSE_Y,
+} from './joint-record.ts';
 
 /**
  * Options of a {@link DistanceJoint}: a rod between two points (rigid), or a spring of given
@@ -83,26 +92,58 @@ export function checkDistanceJointOptions(options: DistanceJointOptions<unknown>
   };
 }
 
-/** @internal What a world snapshot saves of a distance joint (see Joint.exportState). */
-export const DISTANCE_STATE: JointStateLayout = {
-  fields: {
-    localAnchorA: 'vector',
-    localAnchorB: 'vector',
-    length: 'nonNegative',
-    minLength: 'nonNegative',
-    maxLength: 'nonNegativeOrInfinity',
-    enableSpring: 'boolean',
-    hertz: 'nonNegative',
-    dampingRatio: 'nonNegative',
-    impulse: 'finite',
-    lowerImpulse: 'nonNegative',
-    upperImpulse: 'nonNegative',
-  },
-  ordered: [
-    ['minLength', 'length'],
-    ['length', 'maxLength'],
+// A distance joint's record: the head (joint-record.ts), then its own numbers. The joint has no
+// angular row: its step angular impulse stays 0, as prepareBodies cleared it.
+const REST = 25; // JOINT_HEAD; settings: rest length, shortest and longest length (m)
+const MIN_LENGTH = 26; // JOINT_HEAD + 1
+const MAX_LENGTH = 27; // JOINT_HEAD + 2
+const SPRING_ENABLED = 28; // JOINT_HEAD + 3; 1 or 0: a spring, else a rigid rod
+const HERTZ = 29; // JOINT_HEAD + 4
+const DAMPING_RATIO = 30; // JOINT_HEAD + 5
+const EXPLICIT_SPRING = 31; // JOINT_HEAD + 6; this step, 1 or 0: the spring acts as a force (see prepare)
+const SPRING_OMEGA = 32; // JOINT_HEAD + 7
+const LENGTH_ROW_ON = 33; // JOINT_HEAD + 8; 1 or 0: the rod, or the spring as a soft constraint
+const SPRING_BIAS_RATE = 34; // JOINT_HEAD + 9
+const SPRING_MASS_SCALE = 35; // JOINT_HEAD + 10
+const SPRING_IMPULSE_SCALE = 36; // JOINT_HEAD + 11
+const LOWER_ON = 37; // JOINT_HEAD + 12; 1 or 0: the minLength row
+const UPPER_ON = 38; // JOINT_HEAD + 13; 1 or 0: the maxLength row
+const IMPULSE = 39; // JOINT_HEAD + 14; accumulated impulses (warm-started)
+const LOWER_IMPULSE = 40; // JOINT_HEAD + 15
+const UPPER_IMPULSE = 41; // JOINT_HEAD + 16
+const SPRING_SUB_STEP_IMPULSE = 42; // JOINT_HEAD + 17; the explicit spring's impulse in the sub-step
+const STRIDE = 43; // JOINT_HEAD + 18
+
+/** Below this anchor distance (m) the joint has no direction and does nothing. */
+const LENGTH_EPSILON = 1e-9;
+
+const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
+  STRIDE,
+  [
+    {
+      localAnchorA: ['vector', LOCAL_ANCHOR_AX],
+      localAnchorB: ['vector', LOCAL_ANCHOR_BX],
+      length: ['nonNegative', REST],
+      minLength: ['nonNegative', MIN_LENGTH],
+      maxLength: ['nonNegativeOrInfinity', MAX_LENGTH],
+      enableSpring: ['boolean', SPRING_ENABLED],
+      hertz: ['nonNegative', HERTZ],
+      dampingRatio: ['nonNegative', DAMPING_RATIO],
+      impulse: ['finite', IMPULSE],
+      lowerImpulse: ['nonNegative', LOWER_IMPULSE],
+      upperImpulse: ['nonNegative', UPPER_IMPULSE],
+    },
   ],
-};
+  [[IMPULSE, LOWER_IMPULSE, UPPER_IMPULSE]],
+);
+
+/** @internal What a world snapshot saves of a distance joint (see Joint.exportState). */
+export const DISTANCE_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, [
+  ['minLength', 'length'],
+  ['length', 'maxLength'],
+]);
+
+const scratch = /* @__PURE__ */ new Softness();
 
 /**
  * Keeps two points at a distance, rigidly or as a damped spring, within an optional length range.
@@ -118,96 +159,53 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
   set type(_value: never) {
     readOnly('type', 'a joint keeps its kind');
   }
-  /** @internal Anchors in each body's frame (relative to the body origin, m). */
-  localAnchorAX = -0;
-  /** @internal */
-  localAnchorAY = -0;
-  /** @internal */
-  localAnchorBX = -0;
-  /** @internal */
-  localAnchorBY = -0;
-  private rest: number;
-  private min: number;
-  private max: number;
-  private springEnabled: boolean;
-  private springHertz: number;
-  private springDampingRatio: number;
-  private rAx = -0;
-  private rAy = -0;
-  private rBx = -0;
-  private rBy = -0;
-  private deltaCenterX = -0;
-  private deltaCenterY = -0;
-  private readonly springSoftness = new Softness();
-  private impulse = -0;
-  /**
-   * A spring slow enough for the sub-step (omega h <= 1) acts as a force, integrated by
-   * semi-implicit Euler like gravity: symplectic, so an undamped spring keeps its energy. A soft
-   * constraint (Box2D's spring) is implicit Euler and loses about 15 % of the amplitude per period
-   * at 1 Hz. Stiffer springs stay soft constraints, which are stable at any stiffness.
-   */
-  private explicitSpring = false;
-  private springOmega = -0;
-  /** The explicit spring's impulse in the current sub-step (N s), for the reaction force. */
-  private springSubStepImpulse = -0;
-  private lowerImpulse = -0;
-  private upperImpulse = -0;
 
   constructor(options: DistanceJointOptions<UserData>) {
     const checked = checkDistanceJointOptions(options);
-    const { anchorA, anchorB } = checked;
-    super(options, options.bodyA, options.bodyB);
-    const localA = this.bodyA.getLocalPoint(anchorA);
-    const localB = this.bodyB.getLocalPoint(anchorB);
-    this.localAnchorAX = localA.x;
-    this.localAnchorAY = localA.y;
-    this.localAnchorBX = localB.x;
-    this.localAnchorBY = localB.y;
-    this.rest = checked.length;
-    this.min = checked.minLength;
-    this.max = checked.maxLength;
-    this.springEnabled = checked.enableSpring;
-    this.springHertz = checked.hertz;
-    this.springDampingRatio = checked.dampingRatio;
+    super(options, options.bodyA, options.bodyB, STRIDE);
+    this.setAnchors(checked.anchorA, checked.anchorB);
+    this.write(REST, checked.length);
+    this.write(MIN_LENGTH, checked.minLength);
+    this.write(MAX_LENGTH, checked.maxLength);
+    this.write(SPRING_ENABLED, checked.enableSpring ? 1 : 0);
+    this.write(HERTZ, checked.hertz);
+    this.write(DAMPING_RATIO, checked.dampingRatio);
   }
 
   /** @internal */
-  protected writeAnchorA(out: Vec2): void {
-    worldAnchor(this.bodyA, this.localAnchorAX, this.localAnchorAY, out);
-  }
-
-  /** @internal */
-  protected writeAnchorB(out: Vec2): void {
-    worldAnchor(this.bodyB, this.localAnchorBX, this.localAnchorBY, out);
+  protected get layout(): JointLayout {
+    return LAYOUT;
   }
 
   /** Distance between the anchors now (m). */
   get currentLength(): number {
-    const a = this.bodyA.getWorldPoint({ x: this.localAnchorAX, y: this.localAnchorAY });
-    const b = this.bodyB.getWorldPoint({ x: this.localAnchorBX, y: this.localAnchorBY });
-    return hypot(b.x - a.x, b.y - a.y);
+    const a = this.anchorA;
+    const ax = a.x;
+    const ay = a.y;
+    const b = this.anchorB;
+    return hypot(b.x - ax, b.y - ay);
   }
 
   /** Rest length (m), within [minLength, maxLength]. Setting it wakes the bodies. */
   get length(): number {
-    return this.rest;
+    return this.value(REST);
   }
 
   set length(value: number) {
     requireNonNegative('length', value, jointMax('length'));
-    requireInRange(value, this.min, this.max);
-    this.rest = value;
+    requireInRange(value, this.value(MIN_LENGTH), this.value(MAX_LENGTH));
+    this.write(REST, value);
     this.wakeBodies();
   }
 
   /** Shortest length (m). */
   get minLength(): number {
-    return this.min;
+    return this.value(MIN_LENGTH);
   }
 
   /** Longest length (m); Infinity when there is none. */
   get maxLength(): number {
-    return this.max;
+    return this.value(MAX_LENGTH);
   }
 
   /** Sets the length range (m; maxLength may be Infinity for none); wakes the bodies. */
@@ -215,211 +213,90 @@ export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
     requireNonNegative('minLength', minLength, jointMax('minLength'));
     if (maxLength !== Infinity) requireNonNegative('maxLength', maxLength, jointMax('maxLength'));
     requireOrdered('minLength', minLength, 'maxLength', maxLength);
-    requireInRange(this.rest, minLength, maxLength);
-    this.min = minLength;
-    this.max = maxLength;
+    requireInRange(this.value(REST), minLength, maxLength);
+    this.write(MIN_LENGTH, minLength);
+    this.write(MAX_LENGTH, maxLength);
     this.wakeBodies();
   }
 
   /** Whether the joint is a spring (else a rigid rod). Changing it wakes the bodies. */
   get enableSpring(): boolean {
-    return this.springEnabled;
+    return this.flag(SPRING_ENABLED);
   }
 
   set enableSpring(value: boolean) {
-    requireBoolean('enableSpring', value);
-    if (value === this.springEnabled) return;
-    this.springEnabled = value;
-    this.impulse = 0;
-    this.wakeBodies();
+    this.setSwitch('enableSpring', SPRING_ENABLED, value, IMPULSE, 1);
   }
 
   /** Spring frequency (Hz). Setting it wakes the bodies. */
   get hertz(): number {
-    return this.springHertz;
+    return this.value(HERTZ);
   }
 
   set hertz(value: number) {
-    this.springHertz = requireNonNegative('hertz', value, jointMax('hertz'));
-    this.wakeBodies();
+    this.setNumber('hertz', HERTZ, value, 'nonNegative');
   }
 
   /** Spring damping ratio. Setting it wakes the bodies. */
   get dampingRatio(): number {
-    return this.springDampingRatio;
+    return this.value(DAMPING_RATIO);
   }
 
   set dampingRatio(value: number) {
-    this.springDampingRatio = requireNonNegative('dampingRatio', value, jointMax('dampingRatio'));
-    this.wakeBodies();
-  }
-
-  /** @internal */
-  protected exportOwnState(): JointState {
-    return {
-      localAnchorA: [this.localAnchorAX, this.localAnchorAY],
-      localAnchorB: [this.localAnchorBX, this.localAnchorBY],
-      length: this.rest,
-      minLength: this.min,
-      maxLength: this.max,
-      enableSpring: this.springEnabled,
-      hertz: this.springHertz,
-      dampingRatio: this.springDampingRatio,
-      impulse: this.impulse,
-      lowerImpulse: this.lowerImpulse,
-      upperImpulse: this.upperImpulse,
-    };
-  }
-
-  /** @internal */
-  protected importOwnState(state: JointState): void {
-    importLocalAnchors(state, this);
-    this.rest = stateNumber(state, 'length');
-    this.min = stateNumber(state, 'minLength');
-    this.max = stateNumber(state, 'maxLength');
-    this.springEnabled = stateBoolean(state, 'enableSpring');
-    this.springHertz = stateNumber(state, 'hertz');
-    this.springDampingRatio = stateNumber(state, 'dampingRatio');
-    this.impulse = stateNumber(state, 'impulse');
-    this.lowerImpulse = stateNumber(state, 'lowerImpulse');
-    this.upperImpulse = stateNumber(state, 'upperImpulse');
-  }
-
-  /** @internal */
-  resetImpulses(): void {
-    this.impulse = 0;
-    this.lowerImpulse = 0;
-    this.upperImpulse = 0;
+    this.setNumber('dampingRatio', DAMPING_RATIO, value, 'nonNegative');
   }
 
   /** @internal */
   prepare(step: JointStep): void {
-    this.prepareBodies(step);
-    const a = this.bodyA;
-    const b = this.bodyB;
-    const ta = a.transform;
-    const tb = b.transform;
-    const lAx = this.localAnchorAX - a.localCenterX;
-    const lAy = this.localAnchorAY - a.localCenterY;
-    const lBx = this.localAnchorBX - b.localCenterX;
-    const lBy = this.localAnchorBY - b.localCenterY;
-    this.rAx = ta.c * lAx - ta.s * lAy;
-    this.rAy = ta.s * lAx + ta.c * lAy;
-    this.rBx = tb.c * lBx - tb.s * lBy;
-    this.rBy = tb.s * lBx + tb.c * lBy;
-    this.deltaCenterX = b.centerX - a.centerX;
-    this.deltaCenterY = b.centerY - a.centerY;
-    this.springSoftness.set(this.springHertz, this.springDampingRatio, step.h);
-    if (this.springEnabled && this.springHertz === 0) this.impulse = 0;
-    this.springOmega = 2 * Math.PI * this.springHertz;
-    this.explicitSpring =
-      this.springEnabled && this.springHertz > 0 && this.springOmega * step.h <= 1;
+    this.prepareFrame(step);
+    const d = this.store.data;
+    const o = this.base;
+    const springEnabled = d[o + SPRING_ENABLED] === 1;
+    const hertz = d[o + HERTZ]!;
+    scratch.set(hertz, d[o + DAMPING_RATIO]!, step.h);
+    scratch.store(d, o + SPRING_BIAS_RATE);
+    if (springEnabled && hertz === 0) d[o + IMPULSE] = 0;
+    const omega = 2 * Math.PI * hertz;
+    d[o + SPRING_OMEGA] = omega;
+    // A spring slow enough for the sub-step (omega h <= 1) acts as a force, integrated by
+    // semi-implicit Euler like gravity: symplectic, so an undamped spring keeps its energy. A soft
+    // constraint (Box2D's spring) is implicit Euler and loses about 15 % of the amplitude per
+    // period at 1 Hz. Stiffer springs stay soft constraints, which are stable at any stiffness.
+    const explicit = springEnabled && hertz > 0 && omega * step.h <= 1;
+    d[o + EXPLICIT_SPRING] = explicit ? 1 : 0;
     // An explicit spring is a force of this sub-step, not a constraint impulse to warm start.
-    if (this.explicitSpring) this.impulse = 0;
-    this.springSubStepImpulse = 0;
-    if (this.min === 0) this.lowerImpulse = 0;
-    if (this.max === Infinity) this.upperImpulse = 0;
+    if (explicit) d[o + IMPULSE] = 0;
+    d[o + SPRING_SUB_STEP_IMPULSE] = 0;
+    const min = d[o + MIN_LENGTH]!;
+    const max = d[o + MAX_LENGTH]!;
+    if (min === 0) d[o + LOWER_IMPULSE] = 0;
+    if (max === Infinity) d[o + UPPER_IMPULSE] = 0;
+    d[o + LENGTH_ROW_ON] = !springEnabled || hertz > 0 ? 1 : 0;
+    d[o + LOWER_ON] = springEnabled && min > 0 ? 1 : 0;
+    d[o + UPPER_ON] = springEnabled && max !== Infinity ? 1 : 0;
   }
 
   /** @internal */
   override createBatch(): DistanceBatch {
     return new DistanceBatch();
   }
-
-  /** @internal Writes this step's solver numbers into a batch's slot at `o`. */
-  loadBatch(d: Float64Array, o: number): void {
-    d[o + R_AX] = this.rAx;
-    d[o + R_AY] = this.rAy;
-    d[o + R_BX] = this.rBx;
-    d[o + R_BY] = this.rBy;
-    d[o + DELTA_CENTER_X] = this.deltaCenterX;
-    d[o + DELTA_CENTER_Y] = this.deltaCenterY;
-    d[o + INV_MASS_A] = this.invMassA;
-    d[o + INV_I_A] = this.invInertiaA;
-    d[o + INV_MASS_B] = this.invMassB;
-    d[o + INV_I_B] = this.invInertiaB;
-    d[o + REST] = this.rest;
-    d[o + MIN_LENGTH] = this.min;
-    d[o + MAX_LENGTH] = this.max;
-    d[o + EXPLICIT_SPRING] = this.explicitSpring ? 1 : 0;
-    d[o + SPRING_OMEGA] = this.springOmega;
-    d[o + SPRING_DAMPING_RATIO] = this.springDampingRatio;
-    d[o + LENGTH_ROW_ON] = !this.springEnabled || this.springHertz > 0 ? 1 : 0;
-    d[o + SPRING_ON] = this.springEnabled ? 1 : 0;
-    d[o + SPRING_BIAS_RATE] = this.springSoftness.biasRate;
-    d[o + SPRING_MASS_SCALE] = this.springSoftness.massScale;
-    d[o + SPRING_IMPULSE_SCALE] = this.springSoftness.impulseScale;
-    d[o + LOWER_ON] = this.springEnabled && this.min > 0 ? 1 : 0;
-    d[o + UPPER_ON] = this.springEnabled && this.max !== Infinity ? 1 : 0;
-    d[o + IMPULSE] = this.impulse;
-    d[o + LOWER_IMPULSE] = this.lowerImpulse;
-    d[o + UPPER_IMPULSE] = this.upperImpulse;
-    d[o + SPRING_SUB_STEP_IMPULSE] = this.springSubStepImpulse;
-    d[o + STEP_IMPULSE_X] = this.stepImpulseX;
-    d[o + STEP_IMPULSE_Y] = this.stepImpulseY;
-  }
-
-  /** @internal Takes the step's impulses back from the batch's slot at `o`. */
-  storeBatch(d: Float64Array, o: number): void {
-    this.impulse = d[o + IMPULSE]!;
-    this.lowerImpulse = d[o + LOWER_IMPULSE]!;
-    this.upperImpulse = d[o + UPPER_IMPULSE]!;
-    this.springSubStepImpulse = d[o + SPRING_SUB_STEP_IMPULSE]!;
-    this.stepImpulseX = d[o + STEP_IMPULSE_X]!;
-    this.stepImpulseY = d[o + STEP_IMPULSE_Y]!;
-  }
 }
 
-/** Below this anchor distance (m) the joint has no direction and does nothing. */
-const LENGTH_EPSILON = 1e-9;
-
-// The distance joints of a step in flat arrays (DistanceBatch), doubles per joint. The joint has
-// no angular row: its stepAngularImpulse stays on the joint, as prepareBodies cleared it.
-const R_AX = 0; // levers from the centres to the anchors at the step's start (m)
-const R_AY = 1;
-const R_BX = 2;
-const R_BY = 3;
-const DELTA_CENTER_X = 4; // centre of B minus centre of A at the step's start (m)
-const DELTA_CENTER_Y = 5;
-const INV_MASS_A = 6;
-const INV_I_A = 7;
-const INV_MASS_B = 8;
-const INV_I_B = 9;
-const REST = 10; // rest length, shortest and longest length (m)
-const MIN_LENGTH = 11;
-const MAX_LENGTH = 12;
-const EXPLICIT_SPRING = 13; // 1 or 0: the spring acts as a force (see explicitSpring)
-const SPRING_OMEGA = 14;
-const SPRING_DAMPING_RATIO = 15;
-const LENGTH_ROW_ON = 16; // 1 or 0: the rod, or the spring as a soft constraint
-const SPRING_ON = 17; // 1 or 0: enableSpring
-const SPRING_BIAS_RATE = 18;
-const SPRING_MASS_SCALE = 19;
-const SPRING_IMPULSE_SCALE = 20;
-const LOWER_ON = 21; // 1 or 0: the minLength row
-const UPPER_ON = 22; // 1 or 0: the maxLength row
-const IMPULSE = 23; // accumulated impulses (warm-started)
-const LOWER_IMPULSE = 24;
-const UPPER_IMPULSE = 25;
-const SPRING_SUB_STEP_IMPULSE = 26; // the explicit spring's impulse in the current sub-step
-const STEP_IMPULSE_X = 27; // summed over the step's relax passes, for the reaction
-const STEP_IMPULSE_Y = 28;
-const STRIDE = 29;
-
 /**
- * @internal The distance joints of a step: their numbers in one Float64Array and their bodies'
- * state offsets in an Int32Array, solved in one loop per pass (see JointBatch).
+ * @internal The distance joints of a world: their records, and the step's active ones solved in
+ * one loop per pass (see JointBatch).
  */
-export class DistanceBatch extends FlatJointBatch<DistanceJoint> {
+export class DistanceBatch extends FlatJointBatch {
   constructor() {
     super(STRIDE);
   }
 
   warmStart(s: Float64Array): void {
     const d = this.data;
+    const offsets = this.offsets;
     const states = this.states;
-    for (let i = 0; i < this.count; i++) {
-      const o = i * STRIDE;
+    for (let i = 0; i < this.active; i++) {
+      const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
       const qAc = s[a + Q_C]!;
@@ -448,10 +325,11 @@ export class DistanceBatch extends FlatJointBatch<DistanceJoint> {
 
   solve(s: Float64Array, step: JointStep, useBias: boolean): void {
     const d = this.data;
+    const offsets = this.offsets;
     const states = this.states;
     const soft = step.softness;
-    for (let i = 0; i < this.count; i++) {
-      const o = i * STRIDE;
+    for (let i = 0; i < this.active; i++) {
+      const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
       const mA = d[o + INV_MASS_A]!;
@@ -490,7 +368,7 @@ export class DistanceBatch extends FlatJointBatch<DistanceJoint> {
             // Spring force -k C - c Cdot over the sub-step, with k and c for the effective mass;
             // the damping part implicit, so no damping ratio can reverse the motion.
             const omega = d[o + SPRING_OMEGA]!;
-            const damping = 2 * d[o + SPRING_DAMPING_RATIO]! * omega;
+            const damping = 2 * d[o + DAMPING_RATIO]! * omega;
             const cdot =
               (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
             const impulse =
@@ -510,7 +388,7 @@ export class DistanceBatch extends FlatJointBatch<DistanceJoint> {
           let bias = 0;
           let massScale = 1;
           let impulseScale = 0;
-          if (d[o + SPRING_ON] === 1) {
+          if (d[o + SPRING_ENABLED] === 1) {
             bias = d[o + SPRING_BIAS_RATE]! * (length - d[o + REST]!);
             massScale = d[o + SPRING_MASS_SCALE]!;
             impulseScale = d[o + SPRING_IMPULSE_SCALE]!;

@@ -68,12 +68,16 @@ export class JointSolver {
       if (count < active.length) active[count] = joint;
       else active.push(joint);
       count++;
-      joint.prepare(step);
-      if (this.batchOf[joint.type] === undefined) {
-        const batch = joint.createBatch();
+      let batch = this.batchOf[joint.type];
+      if (batch === undefined) {
+        batch = joint.createBatch();
         this.batchOf[joint.type] = batch;
         batches.push(batch);
       }
+      // The joint's record moves into its kind's store at its first step in this world (it
+      // leaves with the joint: see Joint.worldRef).
+      if (joint.store !== batch.store) batch.store.adopt(joint);
+      joint.prepare(step);
       // Made by the first joint kind that needs it, however the joint came in (added or
       // restored from a snapshot); apps without such joints never load it.
       this.chains ??= joint.createChains();
@@ -88,7 +92,7 @@ export class JointSolver {
   releaseReferences(): void {
     releaseFrom(this.active, 0);
     this.count = 0;
-    for (let i = 0; i < this.batches.length; i++) this.batches[i]!.release();
+    for (let i = 0; i < this.batches.length; i++) this.batches[i]!.clear();
     this.chains?.release();
   }
 
@@ -116,7 +120,6 @@ export class JointSolver {
   finish(): void {
     const dt = this.step.dt;
     const batches = this.batches;
-    for (let i = 0; i < batches.length; i++) batches[i]!.finish();
-    for (let i = 0; i < this.count; i++) this.active[i]!.finishStep(dt);
+    for (let i = 0; i < batches.length; i++) batches[i]!.finish(dt);
   }
 }

@@ -9,7 +9,9 @@ import {
   MAX_HERTZ,
   MAX_SPEED,
   optionalBoolean,
+  requireBoolean,
   requireNonNegative,
+  requirePositive,
   requireRange,
   requireVector,
 } from '../../core/validate.ts';
@@ -18,6 +20,34 @@ import type { World } from '../../world/world.ts';
 import type { Body } from '../body.ts';
 import { STATE_STRIDE } from '../body-state.ts';
 import type { Softness } from '../softness.ts';
+import {
+  DELTA_CENTER_X,
+  DELTA_CENTER_Y,
+  INV_I_A,
+  INV_I_B,
+  INV_MASS_A,
+  INV_MASS_B,
+  JOINT_ANGLE_0,
+  LOCAL_ANCHOR_AX,
+  LOCAL_ANCHOR_AY,
+  LOCAL_ANCHOR_BX,
+  LOCAL_ANCHOR_BY,
+  R_AX,
+  R_AY,
+  R_BX,
+  R_BY,
+  REACTION_ANGULAR,
+  REACTION_X,
+  REACTION_Y,
+  REFERENCE_ANGLE,
+  STATE_A,
+  STATE_B,
+  STEP_ANGULAR_IMPULSE,
+  STEP_IMPULSE_X,
+  STEP_IMPULSE_Y,
+  SUB_STEP_DURATION,
+} from './joint-record.ts';
+import { JointStore } from './joint-store.ts';
 import type { PinChains, PinJoint } from './pin-chains.ts';
 
 /** The kinds of joint. */
@@ -79,44 +109,63 @@ export interface JointStateLayout {
   readonly ordered: readonly (readonly [string, string])[];
 }
 
+/**
+ * @internal Where a saved value lives in a joint's record (joint-record.ts): its check and its
+ * offset (a vector: two numbers from there; a switch: 1 or 0).
+ */
+export type SavedFields = Readonly<Record<string, readonly [JointValueKind, number]>>;
+
+/** @internal A kind's record: its size, what a snapshot saves of it, its warm-started impulses. */
+export interface JointLayout {
+  readonly stride: number;
+  readonly saved: SavedFields;
+  /** Offsets of the accumulated impulses, cleared when the joint is moved by hand or created. */
+  readonly impulses: readonly number[];
+}
+
+/**
+ * @internal A kind's layout from its parts: saved fields in the order given, impulses likewise.
+ * (Built by a call, marked pure where a kind calls it, so a bundle that only checks joint options
+ * drops it: spreads at a module's top level would count as side effects.)
+ */
+export function jointLayout(
+  stride: number,
+  saved: readonly SavedFields[],
+  impulses: readonly (readonly number[])[],
+): JointLayout {
+  return { stride, saved: Object.assign({}, ...saved) as SavedFields, impulses: impulses.flat() };
+}
+
+/** @internal A snapshot's layout of a kind's saved values (its checks, from the one table). */
+export function stateLayout(
+  layout: Pick<JointLayout, 'saved'>,
+  ordered: readonly (readonly [string, string])[],
+): JointStateLayout {
+  const saved = layout.saved;
+  const fields: Record<string, JointValueKind> = {};
+  for (const key of Object.keys(saved)) fields[key] = saved[key]![0];
+  return { fields, ordered };
+}
+
 /** @internal Saved for every kind of joint: what the last step left (see {@link Joint.exportState}). */
-export const JOINT_STATE: JointStateLayout = {
-  fields: { reactionForce: 'vector', reactionTorque: 'finite', subStepDuration: 'positive' },
-  ordered: [],
+const JOINT_SAVED: SavedFields = {
+  reactionForce: ['vector', REACTION_X],
+  reactionTorque: ['finite', REACTION_ANGULAR],
+  subStepDuration: ['positive', SUB_STEP_DURATION],
 };
 
-/** @internal A checked number of a joint state. */
-export function stateNumber(state: JointState, key: string): number {
-  return state[key] as number;
-}
+/** @internal Saved for every kind of joint (see {@link Joint.exportState}). */
+export const JOINT_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(
+  { saved: JOINT_SAVED },
+  [],
+);
 
-/** @internal A checked switch of a joint state. */
-export function stateBoolean(state: JointState, key: string): boolean {
-  return state[key] as boolean;
-}
-
-/** @internal A checked vector of a joint state. */
-export function stateVector(state: JointState, key: string): readonly number[] {
-  return state[key] as readonly number[];
-}
-
-/** @internal The two body-frame anchors (m) that revolute, prismatic, distance and weld joints keep. */
-export interface LocalAnchors {
-  localAnchorAX: number;
-  localAnchorAY: number;
-  localAnchorBX: number;
-  localAnchorBY: number;
-}
-
-/** @internal Restores a joint's `localAnchorA` and `localAnchorB` from a saved state. */
-export function importLocalAnchors(state: JointState, joint: LocalAnchors): void {
-  const anchorA = stateVector(state, 'localAnchorA');
-  const anchorB = stateVector(state, 'localAnchorB');
-  joint.localAnchorAX = anchorA[0]!;
-  joint.localAnchorAY = anchorA[1]!;
-  joint.localAnchorBX = anchorB[0]!;
-  joint.localAnchorBY = anchorB[1]!;
-}
+/** @internal The two anchors and the reference angle, as revolute, prismatic and weld save them. */
+export const FRAME_SAVED: SavedFields = {
+  localAnchorA: ['vector', LOCAL_ANCHOR_AX],
+  localAnchorB: ['vector', LOCAL_ANCHOR_BX],
+  referenceAngle: ['finite', REFERENCE_ANGLE],
+};
 
 /**
  * A constraint between two bodies (or, for a {@link MouseJoint}, between a body and a point).
@@ -163,48 +212,43 @@ export abstract class Joint<UserData = unknown> {
   /** Anything the app keeps with the joint. */
   userData: UserData | undefined;
 
-  /** @internal The world holding the joint, or null. */
-  worldRef: World | null = null;
+  /** @internal Behind {@link worldRef}. */
+  private worldValue: World | null = null;
+  /**
+   * @internal The world holding the joint, or null. Set to null when the joint leaves its world:
+   * its record then moves out of the world's store into one of its own.
+   */
+  get worldRef(): World | null {
+    return this.worldValue;
+  }
+  /** @internal */
+  set worldRef(value: World | null) {
+    this.worldValue = value;
+    if (value === null && !this.store.local) this.store.release(this);
+  }
   /** @internal Index in the world's joint list. */
   worldIndex = -1;
   /** @internal A removal was requested during a step. */
   removalPending = false;
-  /** @internal State offsets (solverIndex * STATE_STRIDE) of the two bodies this step. */
-  stateA = 0;
+  /** @internal The store holding this joint's record (joint-record.ts), and the record's offset. */
+  store: JointStore;
   /** @internal */
-  stateB = 0;
-  /** @internal Inverse masses as the solver sees them (0 for static, sleeping, kinematic). */
-  invMassA = -0;
-  /** @internal */
-  invInertiaA = -0;
-  /** @internal */
-  invMassB = -0;
-  /** @internal */
-  invInertiaB = -0;
-  /** @internal Impulses on body B summed over the sub-steps of the step (N s, N m s). */
-  stepImpulseX = -0;
-  /** @internal */
-  stepImpulseY = -0;
-  /** @internal */
-  stepAngularImpulse = -0;
-  /** @internal Reaction of the last step (N, N m). */
-  reactionX = -0;
-  /** @internal */
-  reactionY = -0;
-  /** @internal */
-  reactionAngular = -0;
-  /** @internal Sub-step duration of the last step (s), to turn a sub-step impulse into a force. */
-  subStepDuration = 1 / 240;
+  base = 0;
   private readonly reactionView: Vec2 = { x: 0, y: 0 };
   private readonly anchorViewA: Vec2 = { x: 0, y: 0 };
   private readonly anchorViewB: Vec2 = { x: 0, y: 0 };
 
-  constructor(options: JointOptions<UserData>, bodyA: Body, bodyB: Body) {
+  constructor(options: JointOptions<UserData>, bodyA: Body, bodyB: Body, stride: number) {
     this.bodyAValue = bodyA;
     this.bodyBValue = bodyB;
     this.collideConnectedValue = checkCollideConnected(options);
     this.userData = options.userData;
+    this.store = JointStore.own(stride);
+    this.store.data[SUB_STEP_DURATION] = 1 / 240;
   }
+
+  /** @internal The kind's record layout. */
+  protected abstract get layout(): JointLayout;
 
   /** The world this joint is in, or null (null at once when its removal is queued in a listener). */
   get world(): World | null {
@@ -216,14 +260,14 @@ export abstract class Joint<UserData = unknown> {
    * felt the opposite. A reused view: read it, do not keep it. For a rope or rod this is its tension.
    */
   get reactionForce(): Readonly<Vec2> {
-    this.reactionView.x = this.reactionX;
-    this.reactionView.y = this.reactionY;
+    this.reactionView.x = this.value(REACTION_X);
+    this.reactionView.y = this.value(REACTION_Y);
     return this.reactionView;
   }
 
   /** Torque the joint exerted on body B (N m), averaged over the last step. */
   get reactionTorque(): number {
-    return this.reactionAngular;
+    return this.value(REACTION_ANGULAR);
   }
 
   /**
@@ -245,45 +289,206 @@ export abstract class Joint<UserData = unknown> {
     return this.anchorViewB;
   }
 
-  /** @internal Writes the world point of {@link anchorA} into `out`. */
-  protected abstract writeAnchorA(out: Vec2): void;
-  /** @internal Writes the world point of {@link anchorB} into `out`. */
-  protected abstract writeAnchorB(out: Vec2): void;
+  /** @internal Writes the world point of {@link anchorA} into `out` (A's local anchor). */
+  protected writeAnchorA(out: Vec2): void {
+    worldAnchor(this.bodyA, this.value(LOCAL_ANCHOR_AX), this.value(LOCAL_ANCHOR_AY), out);
+  }
+
+  /** @internal Writes the world point of {@link anchorB} into `out` (B's local anchor). */
+  protected writeAnchorB(out: Vec2): void {
+    worldAnchor(this.bodyB, this.value(LOCAL_ANCHOR_BX), this.value(LOCAL_ANCHOR_BY), out);
+  }
+
+  /** @internal Sets the local anchors of the world points `anchorA` and `anchorB` now. */
+  protected setAnchors(anchorA: Vec2Like, anchorB: Vec2Like): void {
+    const localA = this.bodyA.getLocalPoint(anchorA);
+    const localB = this.bodyB.getLocalPoint(anchorB);
+    const d = this.store.data;
+    const o = this.base;
+    d[o + LOCAL_ANCHOR_AX] = localA.x;
+    d[o + LOCAL_ANCHOR_AY] = localA.y;
+    d[o + LOCAL_ANCHOR_BX] = localB.x;
+    d[o + LOCAL_ANCHOR_BY] = localB.y;
+  }
+
+  // ---------------------------------------------------------------- the record, for the kinds
+
+  /** @internal A number of the record. */
+  protected value(offset: number): number {
+    return this.store.data[this.base + offset]!;
+  }
+
+  /** @internal A switch of the record (1 or 0). */
+  protected flag(offset: number): boolean {
+    return this.store.data[this.base + offset] === 1;
+  }
+
+  /** @internal Writes a number of the record (checked by the caller). */
+  protected write(offset: number, value: number): void {
+    this.store.data[this.base + offset] = value;
+  }
+
+  /**
+   * @internal The setter of a switch named `field`: a change clears the accumulated impulses of
+   * its rows (`count` numbers from `cleared`) and wakes the bodies.
+   */
+  protected setSwitch(
+    field: string,
+    offset: number,
+    value: boolean,
+    cleared: number,
+    count: number,
+  ): void {
+    requireBoolean(field, value);
+    if (value === this.flag(offset)) return;
+    const d = this.store.data;
+    d[this.base + offset] = value ? 1 : 0;
+    for (let i = 0; i < count; i++) d[this.base + cleared + i] = 0;
+    this.wakeBodies();
+  }
+
+  /**
+   * @internal The setter of a setting named `field`: checked against the setting's range
+   * ({@link jointMax}; `sign` says whether it may be negative or zero), then the bodies wake.
+   */
+  protected setNumber(
+    field: string,
+    offset: number,
+    value: number,
+    sign: 'any' | 'nonNegative' | 'positive',
+  ): void {
+    const max = jointMax(field);
+    this.store.data[this.base + offset] =
+      sign === 'any'
+        ? requireRange(field, value, -max, max)
+        : sign === 'positive'
+          ? requirePositive(field, value, max)
+          : requireNonNegative(field, value, max);
+    this.wakeBodies();
+  }
+
+  /**
+   * @internal Sets a limit's two ends (at `offset` and the next), named `lowerField` and
+   * `upperField`; an error names the end the user `changed`.
+   */
+  protected setRange(
+    lowerField: string,
+    upperField: string,
+    offset: number,
+    lower: number,
+    upper: number,
+    changed: 'lower' | 'upper',
+  ): void {
+    requireRange(lowerField, lower, -jointMax(lowerField), jointMax(lowerField));
+    requireRange(upperField, upper, -jointMax(upperField), jointMax(upperField));
+    requireOrdered(lowerField, lower, upperField, upper, changed);
+    this.write(offset, lower);
+    this.write(offset + 1, upper);
+    this.wakeBodies();
+  }
 
   /** Wakes both bodies (a setting changed). */
   protected wakeBodies(): void {
     this.bodyA.wake();
-    this.bodyB.wake();
+    if (this.bodyB !== this.bodyA) this.bodyB.wake();
+  }
+
+  // ---------------------------------------------------------------- the step
+
+  /** @internal State offsets (solverIndex * STATE_STRIDE) of the two bodies this step. */
+  get stateA(): number {
+    return this.value(STATE_A);
+  }
+  /** @internal */
+  get stateB(): number {
+    return this.value(STATE_B);
+  }
+  /** @internal Inverse masses as the solver sees them (0 for static, sleeping, kinematic). */
+  get invMassA(): number {
+    return this.value(INV_MASS_A);
+  }
+  /** @internal */
+  get invMassB(): number {
+    return this.value(INV_MASS_B);
+  }
+  /** @internal A chain may stiffen it for the step (see PinChains.stiffen). */
+  get invInertiaA(): number {
+    return this.value(INV_I_A);
+  }
+  /** @internal */
+  set invInertiaA(value: number) {
+    this.write(INV_I_A, value);
+  }
+  /** @internal */
+  get invInertiaB(): number {
+    return this.value(INV_I_B);
+  }
+  /** @internal */
+  set invInertiaB(value: number) {
+    this.write(INV_I_B, value);
+  }
+
+  /** @internal Sub-step duration of the last step (s), to turn a sub-step impulse into a force. */
+  get subStepDuration(): number {
+    return this.value(SUB_STEP_DURATION);
   }
 
   /** @internal Looks up the bodies' solver slots and masses for this step, clears the step's sums. */
   prepareBodies(step: JointStep): void {
-    this.subStepDuration = step.h;
+    const d = this.store.data;
+    const o = this.base;
+    d[o + SUB_STEP_DURATION] = step.h;
     const a = this.bodyA;
     const b = this.bodyB;
-    this.stateA = a.solverIndex * STATE_STRIDE;
-    this.stateB = b.solverIndex * STATE_STRIDE;
-    this.invMassA = a.solverIndex === 0 ? 0 : a.invMass;
-    this.invInertiaA = a.solverIndex === 0 ? 0 : a.invInertia;
-    this.invMassB = b.solverIndex === 0 ? 0 : b.invMass;
-    this.invInertiaB = b.solverIndex === 0 ? 0 : b.invInertia;
-    this.stepImpulseX = 0;
-    this.stepImpulseY = 0;
-    this.stepAngularImpulse = 0;
+    d[o + STATE_A] = a.solverIndex * STATE_STRIDE;
+    d[o + STATE_B] = b.solverIndex * STATE_STRIDE;
+    d[o + INV_MASS_A] = a.solverIndex === 0 ? 0 : a.invMass;
+    d[o + INV_I_A] = a.solverIndex === 0 ? 0 : a.invInertia;
+    d[o + INV_MASS_B] = b.solverIndex === 0 ? 0 : b.invMass;
+    d[o + INV_I_B] = b.solverIndex === 0 ? 0 : b.invInertia;
+    d[o + STEP_IMPULSE_X] = 0;
+    d[o + STEP_IMPULSE_Y] = 0;
+    d[o + STEP_ANGULAR_IMPULSE] = 0;
   }
 
-  /** @internal Turns the step's summed impulses into average forces. */
-  finishStep(dt: number): void {
-    this.reactionX = this.stepImpulseX / dt;
-    this.reactionY = this.stepImpulseY / dt;
-    this.reactionAngular = this.stepAngularImpulse / dt;
+  /**
+   * @internal The frame every two-body kind prepares alike: the bodies (see prepareBodies), the
+   * levers from the centres of mass to the anchors in world orientation at the step's start (the
+   * sub-steps turn them by each body's rotation since, state Q_C and Q_S), the centres' offset and
+   * the joint angle.
+   */
+  prepareFrame(step: JointStep): void {
+    this.prepareBodies(step);
+    const d = this.store.data;
+    const o = this.base;
+    const a = this.bodyA;
+    const b = this.bodyB;
+    const ta = a.transform;
+    const tb = b.transform;
+    const lAx = d[o + LOCAL_ANCHOR_AX]! - a.localCenterX;
+    const lAy = d[o + LOCAL_ANCHOR_AY]! - a.localCenterY;
+    const lBx = d[o + LOCAL_ANCHOR_BX]! - b.localCenterX;
+    const lBy = d[o + LOCAL_ANCHOR_BY]! - b.localCenterY;
+    d[o + R_AX] = ta.c * lAx - ta.s * lAy;
+    d[o + R_AY] = ta.s * lAx + ta.c * lAy;
+    d[o + R_BX] = tb.c * lBx - tb.s * lBy;
+    d[o + R_BY] = tb.s * lBx + tb.c * lBy;
+    d[o + DELTA_CENTER_X] = b.centerX - a.centerX;
+    d[o + DELTA_CENTER_Y] = b.centerY - a.centerY;
+    d[o + JOINT_ANGLE_0] = b.angleValue - a.angleValue - d[o + REFERENCE_ANGLE]!;
   }
 
   /** @internal Clears what the joint carries between steps (on leaving a world). */
   resetReaction(): void {
-    this.reactionX = 0;
-    this.reactionY = 0;
-    this.reactionAngular = 0;
+    this.write(REACTION_X, 0);
+    this.write(REACTION_Y, 0);
+    this.write(REACTION_ANGULAR, 0);
+  }
+
+  /** @internal Forgets accumulated impulses (the joint was moved by hand or just created). */
+  resetImpulses(): void {
+    const impulses = this.layout.impulses;
+    for (let i = 0; i < impulses.length; i++) this.write(impulses[i]!, 0);
   }
 
   /**
@@ -292,37 +497,50 @@ export abstract class Joint<UserData = unknown> {
    * impulses the next step warm-starts from. What prepare() recomputes every step is left out.
    */
   exportState(): JointState {
-    const state = this.exportOwnState();
-    state['reactionForce'] = [this.reactionX, this.reactionY];
-    state['reactionTorque'] = this.reactionAngular;
-    state['subStepDuration'] = this.subStepDuration;
+    const state: JointState = {};
+    this.exportFields(this.layout.saved, state);
+    this.exportFields(JOINT_SAVED, state);
     return state;
   }
 
   /** @internal Puts back what {@link exportState} saved; the values were checked by the loader. */
   importState(state: JointState): void {
-    this.importOwnState(state);
-    const reaction = stateVector(state, 'reactionForce');
-    this.reactionX = reaction[0]!;
-    this.reactionY = reaction[1]!;
-    this.reactionAngular = stateNumber(state, 'reactionTorque');
-    this.subStepDuration = stateNumber(state, 'subStepDuration');
+    this.importFields(this.layout.saved, state);
+    this.importFields(JOINT_SAVED, state);
   }
 
-  /** @internal The kind's own part of {@link exportState}. */
-  protected abstract exportOwnState(): JointState;
-  /** @internal The kind's own part of {@link importState}. */
-  protected abstract importOwnState(state: JointState): void;
+  private exportFields(saved: SavedFields, state: JointState): void {
+    for (const key of Object.keys(saved)) {
+      const [kind, offset] = saved[key]!;
+      state[key] =
+        kind === 'boolean'
+          ? this.flag(offset)
+          : kind === 'vector' || kind === 'unitVector'
+            ? [this.value(offset), this.value(offset + 1)]
+            : this.value(offset);
+    }
+  }
+
+  private importFields(saved: SavedFields, state: JointState): void {
+    for (const key of Object.keys(saved)) {
+      const offset = saved[key]![1];
+      const value = state[key]!;
+      if (typeof value === 'boolean') this.write(offset, value ? 1 : 0);
+      else if (typeof value === 'number') this.write(offset, value);
+      else {
+        this.write(offset, value[0]!);
+        this.write(offset + 1, value[1]!);
+      }
+    }
+  }
 
   /** @internal Anchors, effective masses and softness for this step. */
   abstract prepare(step: JointStep): void;
   /**
-   * @internal The kind's batch (its joints' solver numbers of a step in flat arrays, warm-started
-   * and solved in one loop per pass), made once per world by the first joint of the kind.
+   * @internal The kind's batch (its joints' records and the step's active ones, warm-started and
+   * solved in one loop per pass), made once per world by the first joint of the kind.
    */
   abstract createBatch(): JointBatch;
-  /** @internal Forgets accumulated impulses (the joint was moved by hand or just created). */
-  abstract resetImpulses(): void;
 
   /** @internal This joint as a pin for the exact chain solve (pin-chains.ts), if it is one. */
   pinJoint(): PinJoint | null {

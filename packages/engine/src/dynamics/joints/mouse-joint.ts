@@ -1,10 +1,5 @@
 import { PhysicalError, readOnly } from '../../core/errors.ts';
-import {
-  describeValue,
-  requireNonNegative,
-  requirePositive,
-  requireVector,
-} from '../../core/validate.ts';
+import { describeValue, requirePositive, requireVector } from '../../core/validate.ts';
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import type { Body } from '../body.ts';
 import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
@@ -12,17 +7,32 @@ import { Softness } from '../softness.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import {
   Joint,
-  type JointState,
+  jointLayout,
+  stateLayout,
+  type JointLayout,
   type JointStateLayout,
   type JointStep,
   optionalNonNegative,
   requireBody,
   jointMax,
   requirePoint,
-  stateNumber,
-  stateVector,
-  worldAnchor,
 } from './joint.ts';
+import {
+  DELTA_CENTER_X,
+  DELTA_CENTER_Y,
+  INV_I_A,
+  INV_I_B,
+  INV_MASS_A,
+  INV_MASS_B,
+  LOCAL_ANCHOR_BX,
+  LOCAL_ANCHOR_BY,
+  R_BX,
+  R_BY,
+  STATE_A,
+  STEP_ANGULAR_IMPULSE,
+  STEP_IMPULSE_X,
+  STEP_IMPULSE_Y,
+} from './joint-record.ts';
 
 /** Options of a {@link MouseJoint}: what dragging a body with a finger or the mouse needs. */
 export interface MouseJointOptions<UserData = unknown> {
@@ -42,11 +52,6 @@ export interface MouseJointOptions<UserData = unknown> {
   /** Anything the app wants to keep with the joint. */
   readonly userData?: UserData;
 }
-
-// Box2D v3 also damps the dragged body's spin a little (0.5 Hz, ratio 0.1), so a body grabbed
-// off-centre settles instead of swinging round the finger for ever.
-const ANGULAR_HERTZ = 0.5;
-const ANGULAR_DAMPING_RATIO = 0.1;
 
 /**
  * @internal A mouse joint's options checked (a PhysicalError naming the first bad one), in the
@@ -73,19 +78,45 @@ export function checkMouseJointOptions(options: MouseJointOptions<unknown>) {
   };
 }
 
+// A mouse joint's record: the head (joint-record.ts; the grabbed point is B's local anchor, the
+// "A" side is the fixed target, so of A's numbers only zeros), then its own numbers. The spin brake
+// has no target angle: of its softness only the mass and impulse scales are used.
+const TARGET_X = 25; // JOINT_HEAD; settings
+const TARGET_Y = 26; // JOINT_HEAD + 1
+const MAX_FORCE = 27; // JOINT_HEAD + 2
+const HERTZ = 28; // JOINT_HEAD + 3
+const DAMPING_RATIO = 29; // JOINT_HEAD + 4
+const LINEAR_BIAS_RATE = 30; // JOINT_HEAD + 5; the pull's softness this step
+const LINEAR_MASS_SCALE = 31; // JOINT_HEAD + 6
+const LINEAR_IMPULSE_SCALE = 32; // JOINT_HEAD + 7
+const ANGULAR_BIAS_RATE = 33; // JOINT_HEAD + 8; the spin brake's softness this step
+const ANGULAR_MASS_SCALE = 34; // JOINT_HEAD + 9
+const ANGULAR_IMPULSE_SCALE = 35; // JOINT_HEAD + 10
+const LINEAR_IMPULSE_X = 36; // JOINT_HEAD + 11; accumulated impulses (warm-started)
+const LINEAR_IMPULSE_Y = 37; // JOINT_HEAD + 12
+const ANGULAR_IMPULSE = 38; // JOINT_HEAD + 13
+const STRIDE = 39; // JOINT_HEAD + 14
+
+const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
+  STRIDE,
+  [
+    {
+      localAnchor: ['vector', LOCAL_ANCHOR_BX],
+      target: ['vector', TARGET_X],
+      maxForce: ['nonNegative', MAX_FORCE],
+      hertz: ['positive', HERTZ],
+      dampingRatio: ['nonNegative', DAMPING_RATIO],
+      linearImpulse: ['vector', LINEAR_IMPULSE_X],
+      angularImpulse: ['finite', ANGULAR_IMPULSE],
+    },
+  ],
+  [[LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y, ANGULAR_IMPULSE]],
+);
+
 /** @internal What a world snapshot saves of a mouse joint (see Joint.exportState). */
-export const MOUSE_STATE: JointStateLayout = {
-  fields: {
-    localAnchor: 'vector',
-    target: 'vector',
-    maxForce: 'nonNegative',
-    hertz: 'positive',
-    dampingRatio: 'nonNegative',
-    linearImpulse: 'vector',
-    angularImpulse: 'finite',
-  },
-  ordered: [],
-};
+export const MOUSE_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, []);
+
+const scratch = /* @__PURE__ */ new Softness();
 
 /**
  * Pulls a point of one body toward a target with a damped spring of bounded force (Box2D v3's
@@ -100,25 +131,7 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
   set type(_value: never) {
     readOnly('type', 'a joint keeps its kind');
   }
-  /** @internal Grabbed point in the body's frame (relative to the origin, m). */
-  localAnchorX = -0;
-  /** @internal */
-  localAnchorY = -0;
-  private targetX: number;
-  private targetY: number;
-  private force: number;
-  private springHertz: number;
-  private springDampingRatio: number;
   private readonly targetView: Vec2 = { x: 0, y: 0 };
-  private rBx = -0;
-  private rBy = -0;
-  private deltaCenterX = -0;
-  private deltaCenterY = -0;
-  private readonly linearSoftness = new Softness();
-  private readonly angularSoftness = new Softness();
-  private linearImpulseX = -0;
-  private linearImpulseY = -0;
-  private angularImpulse = -0;
 
   constructor(options: MouseJointOptions<UserData>) {
     const checked = checkMouseJointOptions(options);
@@ -127,26 +140,27 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
       { bodyA: options.body, bodyB: options.body, ...optionalUserData(options) },
       options.body,
       options.body,
+      STRIDE,
     );
-    this.targetX = target.x;
-    this.targetY = target.y;
+    this.write(TARGET_X, target.x);
+    this.write(TARGET_Y, target.y);
     const local = this.bodyB.getLocalPoint(target);
-    this.localAnchorX = local.x;
-    this.localAnchorY = local.y;
-    this.force = checked.maxForce;
-    this.springHertz = checked.hertz;
-    this.springDampingRatio = checked.dampingRatio;
+    this.write(LOCAL_ANCHOR_BX, local.x);
+    this.write(LOCAL_ANCHOR_BY, local.y);
+    this.write(MAX_FORCE, checked.maxForce);
+    this.write(HERTZ, checked.hertz);
+    this.write(DAMPING_RATIO, checked.dampingRatio);
+  }
+
+  /** @internal */
+  protected get layout(): JointLayout {
+    return LAYOUT;
   }
 
   /** @internal The target. */
-  protected writeAnchorA(out: Vec2): void {
-    out.x = this.targetX;
-    out.y = this.targetY;
-  }
-
-  /** @internal The pulled point of the body. */
-  protected writeAnchorB(out: Vec2): void {
-    worldAnchor(this.bodyB, this.localAnchorX, this.localAnchorY, out);
+  protected override writeAnchorA(out: Vec2): void {
+    out.x = this.value(TARGET_X);
+    out.y = this.value(TARGET_Y);
   }
 
   /** The dragged body. */
@@ -156,179 +170,88 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
 
   /** Where the body is pulled (world point, m); a reused view. Setting it wakes the body. */
   get target(): Readonly<Vec2> {
-    this.targetView.x = this.targetX;
-    this.targetView.y = this.targetY;
+    this.writeAnchorA(this.targetView);
     return this.targetView;
   }
 
   set target(value: Vec2Like) {
     requireVector('target', value);
-    this.targetX = value.x;
-    this.targetY = value.y;
+    this.write(TARGET_X, value.x);
+    this.write(TARGET_Y, value.y);
     this.bodyB.wake();
   }
 
   /** Strongest pull (N). Setting it wakes the body. */
   get maxForce(): number {
-    return this.force;
+    return this.value(MAX_FORCE);
   }
 
   set maxForce(value: number) {
-    this.force = requireNonNegative('maxForce', value, jointMax('maxForce'));
-    this.bodyB.wake();
+    this.setNumber('maxForce', MAX_FORCE, value, 'nonNegative');
   }
 
   /** Stiffness of the pull (Hz, > 0). */
   get hertz(): number {
-    return this.springHertz;
+    return this.value(HERTZ);
   }
 
   set hertz(value: number) {
-    this.springHertz = requirePositive('hertz', value, jointMax('hertz'));
-    this.bodyB.wake();
+    this.setNumber('hertz', HERTZ, value, 'positive');
   }
 
   /** Damping ratio of the pull. */
   get dampingRatio(): number {
-    return this.springDampingRatio;
+    return this.value(DAMPING_RATIO);
   }
 
   set dampingRatio(value: number) {
-    this.springDampingRatio = requireNonNegative('dampingRatio', value, jointMax('dampingRatio'));
-    this.bodyB.wake();
-  }
-
-  /** @internal */
-  protected exportOwnState(): JointState {
-    return {
-      localAnchor: [this.localAnchorX, this.localAnchorY],
-      target: [this.targetX, this.targetY],
-      maxForce: this.force,
-      hertz: this.springHertz,
-      dampingRatio: this.springDampingRatio,
-      linearImpulse: [this.linearImpulseX, this.linearImpulseY],
-      angularImpulse: this.angularImpulse,
-    };
-  }
-
-  /** @internal */
-  protected importOwnState(state: JointState): void {
-    const anchor = stateVector(state, 'localAnchor');
-    const target = stateVector(state, 'target');
-    const impulse = stateVector(state, 'linearImpulse');
-    this.localAnchorX = anchor[0]!;
-    this.localAnchorY = anchor[1]!;
-    this.targetX = target[0]!;
-    this.targetY = target[1]!;
-    this.force = stateNumber(state, 'maxForce');
-    this.springHertz = stateNumber(state, 'hertz');
-    this.springDampingRatio = stateNumber(state, 'dampingRatio');
-    this.linearImpulseX = impulse[0]!;
-    this.linearImpulseY = impulse[1]!;
-    this.angularImpulse = stateNumber(state, 'angularImpulse');
-  }
-
-  /** @internal */
-  resetImpulses(): void {
-    this.linearImpulseX = 0;
-    this.linearImpulseY = 0;
-    this.angularImpulse = 0;
+    this.setNumber('dampingRatio', DAMPING_RATIO, value, 'nonNegative');
   }
 
   /** @internal */
   prepare(step: JointStep): void {
     this.prepareBodies(step);
+    const d = this.store.data;
+    const o = this.base;
     // One body: the "A" side is the fixed target.
-    this.stateA = 0;
-    this.invMassA = 0;
-    this.invInertiaA = 0;
+    d[o + STATE_A] = 0;
+    d[o + INV_MASS_A] = 0;
+    d[o + INV_I_A] = 0;
     const b = this.bodyB;
     const t = b.transform;
-    const lx = this.localAnchorX - b.localCenterX;
-    const ly = this.localAnchorY - b.localCenterY;
-    this.rBx = t.c * lx - t.s * ly;
-    this.rBy = t.s * lx + t.c * ly;
-    this.deltaCenterX = b.centerX - this.targetX;
-    this.deltaCenterY = b.centerY - this.targetY;
-    this.linearSoftness.set(this.springHertz, this.springDampingRatio, step.h);
-    this.angularSoftness.set(ANGULAR_HERTZ, ANGULAR_DAMPING_RATIO, step.h);
+    const lx = d[o + LOCAL_ANCHOR_BX]! - b.localCenterX;
+    const ly = d[o + LOCAL_ANCHOR_BY]! - b.localCenterY;
+    d[o + R_BX] = t.c * lx - t.s * ly;
+    d[o + R_BY] = t.s * lx + t.c * ly;
+    d[o + DELTA_CENTER_X] = b.centerX - d[o + TARGET_X]!;
+    d[o + DELTA_CENTER_Y] = b.centerY - d[o + TARGET_Y]!;
+    scratch.set(d[o + HERTZ]!, d[o + DAMPING_RATIO]!, step.h).store(d, o + LINEAR_BIAS_RATE);
+    // Box2D v3 also damps the dragged body's spin a little (0.5 Hz, ratio 0.1), so a body grabbed
+    // off-centre settles instead of swinging round the finger for ever.
+    scratch.set(0.5, 0.1, step.h).store(d, o + ANGULAR_BIAS_RATE);
   }
 
   /** @internal */
   override createBatch(): MouseBatch {
     return new MouseBatch();
   }
-
-  /** @internal Writes this step's solver numbers into a batch's slot at `o`. */
-  loadBatch(d: Float64Array, o: number): void {
-    d[o + R_BX] = this.rBx;
-    d[o + R_BY] = this.rBy;
-    d[o + DELTA_CENTER_X] = this.deltaCenterX;
-    d[o + DELTA_CENTER_Y] = this.deltaCenterY;
-    d[o + INV_MASS_B] = this.invMassB;
-    d[o + INV_I_B] = this.invInertiaB;
-    d[o + MAX_FORCE] = this.force;
-    d[o + LINEAR_BIAS_RATE] = this.linearSoftness.biasRate;
-    d[o + LINEAR_MASS_SCALE] = this.linearSoftness.massScale;
-    d[o + LINEAR_IMPULSE_SCALE] = this.linearSoftness.impulseScale;
-    d[o + ANGULAR_MASS_SCALE] = this.angularSoftness.massScale;
-    d[o + ANGULAR_IMPULSE_SCALE] = this.angularSoftness.impulseScale;
-    d[o + LINEAR_IMPULSE_X] = this.linearImpulseX;
-    d[o + LINEAR_IMPULSE_Y] = this.linearImpulseY;
-    d[o + ANGULAR_IMPULSE] = this.angularImpulse;
-    d[o + STEP_IMPULSE_X] = this.stepImpulseX;
-    d[o + STEP_IMPULSE_Y] = this.stepImpulseY;
-    d[o + STEP_ANGULAR_IMPULSE] = this.stepAngularImpulse;
-  }
-
-  /** @internal Takes the step's impulses back from the batch's slot at `o`. */
-  storeBatch(d: Float64Array, o: number): void {
-    this.linearImpulseX = d[o + LINEAR_IMPULSE_X]!;
-    this.linearImpulseY = d[o + LINEAR_IMPULSE_Y]!;
-    this.angularImpulse = d[o + ANGULAR_IMPULSE]!;
-    this.stepImpulseX = d[o + STEP_IMPULSE_X]!;
-    this.stepImpulseY = d[o + STEP_IMPULSE_Y]!;
-    this.stepAngularImpulse = d[o + STEP_ANGULAR_IMPULSE]!;
-  }
 }
 
-// The mouse joints of a step in flat arrays (MouseBatch), doubles per joint. The "A" side is the
-// fixed target, so only the dragged body's numbers are kept. The spin brake has no target angle:
-// of its softness only massScale and impulseScale are used.
-const R_BX = 0; // lever from the centre to the grabbed point at the step's start (m)
-const R_BY = 1;
-const DELTA_CENTER_X = 2; // centre of the body minus the target at the step's start (m)
-const DELTA_CENTER_Y = 3;
-const INV_MASS_B = 4;
-const INV_I_B = 5;
-const MAX_FORCE = 6;
-const LINEAR_BIAS_RATE = 7;
-const LINEAR_MASS_SCALE = 8;
-const LINEAR_IMPULSE_SCALE = 9;
-const ANGULAR_MASS_SCALE = 10;
-const ANGULAR_IMPULSE_SCALE = 11;
-const LINEAR_IMPULSE_X = 12; // accumulated impulses (warm-started)
-const LINEAR_IMPULSE_Y = 13;
-const ANGULAR_IMPULSE = 14;
-const STEP_IMPULSE_X = 15; // summed over the step's relax passes, for the reaction
-const STEP_IMPULSE_Y = 16;
-const STEP_ANGULAR_IMPULSE = 17;
-const STRIDE = 18;
-
 /**
- * @internal The mouse joints of a step: their numbers in one Float64Array and their bodies' state
- * offsets in an Int32Array, solved in one loop per pass (see JointBatch).
+ * @internal The mouse joints of a world: their records, and the step's active ones solved in one
+ * loop per pass (see JointBatch).
  */
-export class MouseBatch extends FlatJointBatch<MouseJoint> {
+export class MouseBatch extends FlatJointBatch {
   constructor() {
     super(STRIDE);
   }
 
   warmStart(s: Float64Array): void {
     const d = this.data;
+    const offsets = this.offsets;
     const states = this.states;
-    for (let i = 0; i < this.count; i++) {
-      const o = i * STRIDE;
+    for (let i = 0; i < this.active; i++) {
+      const o = offsets[i]!;
       const b = states[2 * i + 1]!;
       const mB = d[o + INV_MASS_B]!;
       const iB = d[o + INV_I_B]!;
@@ -344,9 +267,10 @@ export class MouseBatch extends FlatJointBatch<MouseJoint> {
 
   solve(s: Float64Array, step: JointStep, useBias: boolean): void {
     const d = this.data;
+    const offsets = this.offsets;
     const states = this.states;
-    for (let i = 0; i < this.count; i++) {
-      const o = i * STRIDE;
+    for (let i = 0; i < this.active; i++) {
+      const o = offsets[i]!;
       const b = states[2 * i + 1]!;
       const mB = d[o + INV_MASS_B]!;
       const iB = d[o + INV_I_B]!;

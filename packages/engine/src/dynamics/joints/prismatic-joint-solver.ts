@@ -1,57 +1,65 @@
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import type { JointStep } from './joint.ts';
-import type { PrismaticJoint } from './prismatic-joint.ts';
+import {
+  DELTA_CENTER_X,
+  DELTA_CENTER_Y,
+  INV_I_A,
+  INV_I_B,
+  INV_MASS_A,
+  INV_MASS_B,
+  JOINT_ANGLE_0,
+  R_AX,
+  R_AY,
+  R_BX,
+  R_BY,
+  STEP_ANGULAR_IMPULSE,
+  STEP_IMPULSE_X,
+  STEP_IMPULSE_Y,
+} from './joint-record.ts';
+import {
+  LIMIT_ON,
+  LOWER,
+  LOWER_IMPULSE,
+  MAX_MOTOR,
+  MOTOR_IMPULSE,
+  MOTOR_ON,
+  MOTOR_SPEED,
+  SPRING_BIAS_RATE,
+  SPRING_IMPULSE,
+  SPRING_IMPULSE_SCALE,
+  SPRING_MASS_SCALE,
+  SPRING_ON,
+  UPPER,
+  UPPER_IMPULSE,
+} from './spring-motor-limit.ts';
 
-// The prismatic joints of a step in flat arrays (PrismaticBatch), doubles per joint:
-export const R_AX = 0; // levers from the centres to the anchors at the step's start (m)
-export const R_AY = 1;
-export const R_BX = 2;
-export const R_BY = 3;
-export const AXIS_X = 4; // the axis in world orientation at the step's start
-export const AXIS_Y = 5;
-export const DELTA_CENTER_X = 6; // centre of B minus centre of A at the step's start (m)
-export const DELTA_CENTER_Y = 7;
-export const JOINT_ANGLE_0 = 8; // angle of B minus angle of A minus the reference, at the step's start
-export const INV_MASS_A = 9;
-export const INV_I_A = 10;
-export const INV_MASS_B = 11;
-export const INV_I_B = 12;
-export const SPRING_ON = 13; // 1 or 0
-export const SPRING_BIAS_RATE = 14;
-export const SPRING_MASS_SCALE = 15;
-export const SPRING_IMPULSE_SCALE = 16;
-export const MOTOR_ON = 17;
-export const MOTOR_SPEED = 18;
-export const MAX_MOTOR_FORCE = 19;
-export const LIMIT_ON = 20;
-export const LOWER = 21;
-export const UPPER = 22;
-export const PERPENDICULAR_IMPULSE = 23; // accumulated impulses (warm-started)
-export const ANGULAR_IMPULSE = 24;
-export const SPRING_IMPULSE = 25;
-export const MOTOR_IMPULSE = 26;
-export const LOWER_IMPULSE = 27;
-export const UPPER_IMPULSE = 28;
-export const STEP_IMPULSE_X = 29; // summed over the step's relax passes, for the reaction
-export const STEP_IMPULSE_Y = 30;
-export const STEP_ANGULAR_IMPULSE = 31;
-export const STRIDE = 32;
+// A prismatic joint's record: the head (joint-record.ts), the spring, motor and limit on its
+// translation (spring-motor-limit.ts), then these (literals, as the passes read them best;
+// joint-layouts.test.ts checks they follow on and do not overlap):
+export const LOCAL_AXIS_X = 42; // SPRING_MOTOR_LIMIT_END; the slide's direction in A's frame (unit)
+export const LOCAL_AXIS_Y = 43; // SPRING_MOTOR_LIMIT_END + 1
+export const AXIS_X = 44; // SPRING_MOTOR_LIMIT_END + 2; the axis in world orientation at the step's start
+export const AXIS_Y = 45; // SPRING_MOTOR_LIMIT_END + 3
+export const PERPENDICULAR_IMPULSE = 46; // SPRING_MOTOR_LIMIT_END + 4; accumulated (warm-started)
+export const ANGULAR_IMPULSE = 47; // SPRING_MOTOR_LIMIT_END + 5
+export const STRIDE = 48; // SPRING_MOTOR_LIMIT_END + 6
 
 /**
- * @internal The prismatic joints of a step: their numbers in one Float64Array and their bodies'
- * state offsets in an Int32Array, solved in one loop per pass (see JointBatch).
+ * @internal The prismatic joints of a world: their records, and the step's active ones solved in
+ * one loop per pass (see JointBatch).
  */
-export class PrismaticBatch extends FlatJointBatch<PrismaticJoint> {
+export class PrismaticBatch extends FlatJointBatch {
   constructor() {
     super(STRIDE);
   }
 
   warmStart(s: Float64Array): void {
     const d = this.data;
+    const offsets = this.offsets;
     const states = this.states;
-    for (let i = 0; i < this.count; i++) {
-      const o = i * STRIDE;
+    for (let i = 0; i < this.active; i++) {
+      const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
       const qAc = s[a + Q_C]!;
@@ -95,10 +103,11 @@ export class PrismaticBatch extends FlatJointBatch<PrismaticJoint> {
 
   solve(s: Float64Array, step: JointStep, useBias: boolean): void {
     const d = this.data;
+    const offsets = this.offsets;
     const states = this.states;
     const soft = step.softness;
-    for (let i = 0; i < this.count; i++) {
-      const o = i * STRIDE;
+    for (let i = 0; i < this.active; i++) {
+      const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
       const mA = d[o + INV_MASS_A]!;
@@ -147,7 +156,7 @@ export class PrismaticBatch extends FlatJointBatch<PrismaticJoint> {
         const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
         const impulse = axialMass * (d[o + MOTOR_SPEED]! - cdot);
         const old = d[o + MOTOR_IMPULSE]!;
-        const maxImpulse = step.h * d[o + MAX_MOTOR_FORCE]!;
+        const maxImpulse = step.h * d[o + MAX_MOTOR]!;
         const accumulated = Math.max(-maxImpulse, Math.min(old + impulse, maxImpulse));
         d[o + MOTOR_IMPULSE] = accumulated;
         const applied = accumulated - old;
@@ -160,9 +169,10 @@ export class PrismaticBatch extends FlatJointBatch<PrismaticJoint> {
       }
 
       if (d[o + LIMIT_ON] === 1) {
-        // Lower: translation - lower >= 0.
-        {
-          const c = translation - d[o + LOWER]!;
+        // Lower: translation - lower >= 0; upper: upper - translation >= 0, the same row with the
+        // sign turned. Speculative like contacts: a gap may close within the sub-step.
+        for (let side = 1; side >= -1; side -= 2) {
+          const c = side === 1 ? translation - d[o + LOWER]! : d[o + UPPER]! - translation;
           let bias = 0;
           let massScale = 1;
           let impulseScale = 0;
@@ -172,43 +182,31 @@ export class PrismaticBatch extends FlatJointBatch<PrismaticJoint> {
             massScale = soft.massScale;
             impulseScale = soft.impulseScale;
           }
-          const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
-          const old = d[o + LOWER_IMPULSE]!;
+          const cdot =
+            side === 1
+              ? ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA
+              : ax * (vAx - vBx) + ay * (vAy - vBy) + a1 * wA - a2 * wB;
+          const at = side === 1 ? LOWER_IMPULSE : UPPER_IMPULSE;
+          const old = d[o + at]!;
           const impulse = -axialMass * massScale * (cdot + bias) - impulseScale * old;
           const accumulated = Math.max(old + impulse, 0);
           const applied = accumulated - old;
-          d[o + LOWER_IMPULSE] = accumulated;
-          vAx -= mA * applied * ax;
-          vAy -= mA * applied * ay;
-          wA -= iA * applied * a1;
-          vBx += mB * applied * ax;
-          vBy += mB * applied * ay;
-          wB += iB * applied * a2;
-        }
-        // Upper: upper - translation >= 0, the same row with the sign turned.
-        {
-          const c = d[o + UPPER]! - translation;
-          let bias = 0;
-          let massScale = 1;
-          let impulseScale = 0;
-          if (c > 0) bias = c * step.inverseH;
-          else if (useBias) {
-            bias = soft.biasRate * c;
-            massScale = soft.massScale;
-            impulseScale = soft.impulseScale;
+          d[o + at] = accumulated;
+          if (side === 1) {
+            vAx -= mA * applied * ax;
+            vAy -= mA * applied * ay;
+            wA -= iA * applied * a1;
+            vBx += mB * applied * ax;
+            vBy += mB * applied * ay;
+            wB += iB * applied * a2;
+          } else {
+            vAx += mA * applied * ax;
+            vAy += mA * applied * ay;
+            wA += iA * applied * a1;
+            vBx -= mB * applied * ax;
+            vBy -= mB * applied * ay;
+            wB -= iB * applied * a2;
           }
-          const cdot = ax * (vAx - vBx) + ay * (vAy - vBy) + a1 * wA - a2 * wB;
-          const old = d[o + UPPER_IMPULSE]!;
-          const impulse = -axialMass * massScale * (cdot + bias) - impulseScale * old;
-          const accumulated = Math.max(old + impulse, 0);
-          const applied = accumulated - old;
-          d[o + UPPER_IMPULSE] = accumulated;
-          vAx += mA * applied * ax;
-          vAy += mA * applied * ay;
-          wA += iA * applied * a1;
-          vBx -= mB * applied * ax;
-          vBy -= mB * applied * ay;
-          wB -= iB * applied * a2;
         }
       }
 

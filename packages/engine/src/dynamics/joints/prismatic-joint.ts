@@ -1,67 +1,49 @@
 import { PhysicalError, readOnly } from '../../core/errors.ts';
+import type { Vec2Like } from '../../math/vec2.ts';
+import { hypot } from '../../math/hypot.ts';
 import {
-  optionalBoolean,
-  requireBoolean,
-  requireNonNegative,
-  requireRange,
-} from '../../core/validate.ts';
-import type { Vec2, Vec2Like } from '../../math/vec2.ts';
-import { Softness } from '../softness.ts';
-import {
-  R_AX,
-  R_AY,
-  R_BX,
-  R_BY,
   AXIS_X,
   AXIS_Y,
-  DELTA_CENTER_X,
-  DELTA_CENTER_Y,
-  JOINT_ANGLE_0,
-  INV_MASS_A,
-  INV_I_A,
-  INV_MASS_B,
-  INV_I_B,
-  SPRING_ON,
-  SPRING_BIAS_RATE,
-  SPRING_MASS_SCALE,
-  SPRING_IMPULSE_SCALE,
-  MOTOR_ON,
-  MOTOR_SPEED,
-  MAX_MOTOR_FORCE,
-  LIMIT_ON,
-  LOWER,
-  UPPER,
-  PERPENDICULAR_IMPULSE,
   ANGULAR_IMPULSE,
-  SPRING_IMPULSE,
-  MOTOR_IMPULSE,
-  LOWER_IMPULSE,
-  UPPER_IMPULSE,
-  STEP_IMPULSE_X,
-  STEP_IMPULSE_Y,
-  STEP_ANGULAR_IMPULSE,
+  LOCAL_AXIS_X,
+  LOCAL_AXIS_Y,
+  PERPENDICULAR_IMPULSE,
   PrismaticBatch,
+  STRIDE,
 } from './prismatic-joint-solver.ts';
 import {
   Joint,
   checkCollideConnected,
-  type JointOptions,
-  type JointState,
+  jointLayout,
+  stateLayout,
+  type JointLayout,
   type JointStateLayout,
   type JointStep,
-  importLocalAnchors,
-  optionalFinite,
-  optionalNonNegative,
   requireBodies,
-  requireOrdered,
-  jointMax,
   requirePoint,
-  stateBoolean,
-  stateNumber,
-  stateVector,
-  worldAnchor,
 } from './joint.ts';
-import { hypot } from '../../math/hypot.ts';
+import type { JointOptions } from './joint.ts';
+import { LOCAL_ANCHOR_AX, LOCAL_ANCHOR_BX, REFERENCE_ANGLE } from './joint-record.ts';
+import {
+  checkSpringMotorLimit,
+  DAMPING_RATIO,
+  HERTZ,
+  LIMIT_ON,
+  LOWER,
+  LOWER_IMPULSE,
+  MAX_MOTOR,
+  MOTOR_IMPULSE,
+  MOTOR_ON,
+  MOTOR_SPEED,
+  prepareSpringMotorLimit,
+  SPRING_ENABLED,
+  SPRING_IMPULSE,
+  SPRING_MOTOR_LIMIT_IMPULSES,
+  SPRING_MOTOR_LIMIT_IMPULSES_SAVED,
+  springMotorLimitSaved,
+  UPPER,
+  writeSpringMotorLimit,
+} from './spring-motor-limit.ts';
 
 /** Options of a {@link PrismaticJoint}: a slider along an axis. */
 export interface PrismaticJointOptions<UserData = unknown> extends JointOptions<UserData> {
@@ -89,6 +71,8 @@ export interface PrismaticJointOptions<UserData = unknown> extends JointOptions<
   readonly dampingRatio?: number;
 }
 
+const NAMES = { lower: 'lower', upper: 'upper', maxMotor: 'maxMotorForce' } as const;
+
 /**
  * @internal A prismatic joint's options checked (a PhysicalError naming the first bad one), in the
  * order its constructor reads them, with defaults: the one check, also run where no joint is built
@@ -100,50 +84,39 @@ export function checkPrismaticJointOptions(options: PrismaticJointOptions<unknow
   const axis = requirePoint('axis', options.axis);
   if (!(hypot(axis.x, axis.y) > 0)) throw new PhysicalError('axis', 'must not be the zero vector.');
   checkCollideConnected(options);
-  const enableLimit = optionalBoolean('enableLimit', options.enableLimit, false);
-  const lower = optionalFinite('lower', options.lower, 0);
-  const upper = optionalFinite('upper', options.upper, 0);
-  requireOrdered('lower', lower, 'upper', upper);
-  return {
-    anchor,
-    axis,
-    enableLimit,
-    lower,
-    upper,
-    enableMotor: optionalBoolean('enableMotor', options.enableMotor, false),
-    motorSpeed: optionalFinite('motorSpeed', options.motorSpeed, 0),
-    maxMotorForce: optionalNonNegative('maxMotorForce', options.maxMotorForce, 0),
-    enableSpring: optionalBoolean('enableSpring', options.enableSpring, false),
-    hertz: optionalNonNegative('hertz', options.hertz, 0),
-    dampingRatio: optionalNonNegative('dampingRatio', options.dampingRatio, 0),
-  };
+  const settings = checkSpringMotorLimit(
+    options,
+    NAMES,
+    options.lower,
+    options.upper,
+    options.maxMotorForce,
+  );
+  return { anchor, axis, settings };
 }
 
+const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
+  STRIDE,
+  [
+    {
+      localAnchorA: ['vector', LOCAL_ANCHOR_AX],
+      localAnchorB: ['vector', LOCAL_ANCHOR_BX],
+      localAxis: ['unitVector', LOCAL_AXIS_X],
+      referenceAngle: ['finite', REFERENCE_ANGLE],
+    },
+    /* @__PURE__ */ springMotorLimitSaved(NAMES),
+    {
+      perpendicularImpulse: ['finite', PERPENDICULAR_IMPULSE],
+      angularImpulse: ['finite', ANGULAR_IMPULSE],
+    },
+    SPRING_MOTOR_LIMIT_IMPULSES_SAVED,
+  ],
+  [[PERPENDICULAR_IMPULSE, ANGULAR_IMPULSE], SPRING_MOTOR_LIMIT_IMPULSES],
+);
+
 /** @internal What a world snapshot saves of a prismatic joint (see Joint.exportState). */
-export const PRISMATIC_STATE: JointStateLayout = {
-  fields: {
-    localAnchorA: 'vector',
-    localAnchorB: 'vector',
-    localAxis: 'unitVector',
-    referenceAngle: 'finite',
-    enableLimit: 'boolean',
-    lower: 'finite',
-    upper: 'finite',
-    enableMotor: 'boolean',
-    motorSpeed: 'finite',
-    maxMotorForce: 'nonNegative',
-    enableSpring: 'boolean',
-    hertz: 'nonNegative',
-    dampingRatio: 'nonNegative',
-    perpendicularImpulse: 'finite',
-    angularImpulse: 'finite',
-    springImpulse: 'finite',
-    motorImpulse: 'finite',
-    lowerImpulse: 'nonNegative',
-    upperImpulse: 'nonNegative',
-  },
-  ordered: [['lower', 'upper']],
-};
+export const PRISMATIC_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, [
+  ['lower', 'upper'],
+]);
 
 /**
  * A slider: body B moves along an axis fixed in body A and cannot turn relative to it; optional
@@ -158,351 +131,144 @@ export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
   set type(_value: never) {
     readOnly('type', 'a joint keeps its kind');
   }
-  /** @internal Anchors in each body's frame (relative to the body origin, m) and A's axis. */
-  localAnchorAX = -0;
-  /** @internal */
-  localAnchorAY = -0;
-  /** @internal */
-  localAnchorBX = -0;
-  /** @internal */
-  localAnchorBY = -0;
-  /** @internal */
-  localAxisX = 1;
-  /** @internal */
-  localAxisY = -0;
-  /** @internal angleB - angleA at creation (rad). */
-  referenceAngle = -0;
-  private limitEnabled: boolean;
-  private lowerLimit: number;
-  private upperLimit: number;
-  private motorEnabled: boolean;
-  private speed: number;
-  private maxForce: number;
-  private springEnabled: boolean;
-  private springHertz: number;
-  private springDampingRatio: number;
-  private rAx = -0;
-  private rAy = -0;
-  private rBx = -0;
-  private rBy = -0;
-  private axisX = 1;
-  private axisY = -0;
-  private deltaCenterX = -0;
-  private deltaCenterY = -0;
-  private deltaAngle = -0;
-  private readonly springSoftness = new Softness();
-  private perpendicularImpulse = -0;
-  private angularImpulse = -0;
-  private springImpulse = -0;
-  private motorImpulse = -0;
-  private lowerImpulse = -0;
-  private upperImpulse = -0;
 
   constructor(options: PrismaticJointOptions<UserData>) {
-    const checked = checkPrismaticJointOptions(options);
-    const { anchor, axis } = checked;
+    const { anchor, axis, settings } = checkPrismaticJointOptions(options);
     const axisLength = hypot(axis.x, axis.y);
-    super(options, options.bodyA, options.bodyB);
-    const localA = this.bodyA.getLocalPoint(anchor);
-    const localB = this.bodyB.getLocalPoint(anchor);
-    this.localAnchorAX = localA.x;
-    this.localAnchorAY = localA.y;
-    this.localAnchorBX = localB.x;
-    this.localAnchorBY = localB.y;
+    super(options, options.bodyA, options.bodyB, STRIDE);
+    this.setAnchors(anchor, anchor);
     const { c, s } = this.bodyA.transform;
     const ux = axis.x / axisLength;
     const uy = axis.y / axisLength;
-    this.localAxisX = c * ux + s * uy;
-    this.localAxisY = -s * ux + c * uy;
-    this.referenceAngle = this.bodyB.angle - this.bodyA.angle;
-    this.limitEnabled = checked.enableLimit;
-    this.lowerLimit = checked.lower;
-    this.upperLimit = checked.upper;
-    this.motorEnabled = checked.enableMotor;
-    this.speed = checked.motorSpeed;
-    this.maxForce = checked.maxMotorForce;
-    this.springEnabled = checked.enableSpring;
-    this.springHertz = checked.hertz;
-    this.springDampingRatio = checked.dampingRatio;
+    this.write(LOCAL_AXIS_X, c * ux + s * uy);
+    this.write(LOCAL_AXIS_Y, -s * ux + c * uy);
+    this.write(REFERENCE_ANGLE, this.bodyB.angle - this.bodyA.angle);
+    writeSpringMotorLimit(this.store.data, this.base, settings);
   }
 
   /** @internal */
-  protected writeAnchorA(out: Vec2): void {
-    worldAnchor(this.bodyA, this.localAnchorAX, this.localAnchorAY, out);
-  }
-
-  /** @internal */
-  protected writeAnchorB(out: Vec2): void {
-    worldAnchor(this.bodyB, this.localAnchorBX, this.localAnchorBY, out);
+  protected get layout(): JointLayout {
+    return LAYOUT;
   }
 
   /** Translation of B's anchor from A's along the axis (m). */
   get translation(): number {
-    const a = this.bodyA.getWorldPoint({ x: this.localAnchorAX, y: this.localAnchorAY });
-    const b = this.bodyB.getWorldPoint({ x: this.localAnchorBX, y: this.localAnchorBY });
+    const a = this.anchorA;
+    const ax0 = a.x;
+    const ay0 = a.y;
+    const b = this.anchorB;
     const { c, s } = this.bodyA.transform;
-    const ax = c * this.localAxisX - s * this.localAxisY;
-    const ay = s * this.localAxisX + c * this.localAxisY;
-    return (b.x - a.x) * ax + (b.y - a.y) * ay;
+    const localX = this.value(LOCAL_AXIS_X);
+    const localY = this.value(LOCAL_AXIS_Y);
+    const ax = c * localX - s * localY;
+    const ay = s * localX + c * localY;
+    return (b.x - ax0) * ax + (b.y - ay0) * ay;
   }
 
   /** Whether the translation limits hold. Changing it wakes the bodies. */
   get enableLimit(): boolean {
-    return this.limitEnabled;
+    return this.flag(LIMIT_ON);
   }
 
   set enableLimit(value: boolean) {
-    requireBoolean('enableLimit', value);
-    if (value === this.limitEnabled) return;
-    this.limitEnabled = value;
-    this.lowerImpulse = 0;
-    this.upperImpulse = 0;
-    this.wakeBodies();
+    this.setSwitch('enableLimit', LIMIT_ON, value, LOWER_IMPULSE, 2);
   }
 
   /** Lowest translation (m); must not exceed upper (use setLimits to move both). */
   get lower(): number {
-    return this.lowerLimit;
+    return this.value(LOWER);
   }
 
   set lower(value: number) {
-    this.applyLimits(value, this.upperLimit, 'lower');
+    this.setRange(NAMES.lower, NAMES.upper, LOWER, value, this.value(UPPER), 'lower');
   }
 
   /** Highest translation (m). */
   get upper(): number {
-    return this.upperLimit;
+    return this.value(UPPER);
   }
 
   set upper(value: number) {
-    this.applyLimits(this.lowerLimit, value, 'upper');
+    this.setRange(NAMES.lower, NAMES.upper, LOWER, this.value(LOWER), value, 'upper');
   }
 
   /** Sets both translation limits (m); wakes the bodies. */
   setLimits(lower: number, upper: number): void {
-    this.applyLimits(lower, upper, 'lower');
-  }
-
-  private applyLimits(lower: number, upper: number, changed: 'lower' | 'upper'): void {
-    requireRange('lower', lower, -jointMax('lower'), jointMax('lower'));
-    requireRange('upper', upper, -jointMax('upper'), jointMax('upper'));
-    requireOrdered('lower', lower, 'upper', upper, changed);
-    this.lowerLimit = lower;
-    this.upperLimit = upper;
-    this.wakeBodies();
+    this.setRange(NAMES.lower, NAMES.upper, LOWER, lower, upper, 'lower');
   }
 
   /** Whether the motor drives the joint. Changing it wakes the bodies. */
   get enableMotor(): boolean {
-    return this.motorEnabled;
+    return this.flag(MOTOR_ON);
   }
 
   set enableMotor(value: boolean) {
-    requireBoolean('enableMotor', value);
-    if (value === this.motorEnabled) return;
-    this.motorEnabled = value;
-    this.motorImpulse = 0;
-    this.wakeBodies();
+    this.setSwitch('enableMotor', MOTOR_ON, value, MOTOR_IMPULSE, 1);
   }
 
   /** Target speed along the axis (m/s). Setting it wakes the bodies. */
   get motorSpeed(): number {
-    return this.speed;
+    return this.value(MOTOR_SPEED);
   }
 
   set motorSpeed(value: number) {
-    this.speed = requireRange('motorSpeed', value, -jointMax('motorSpeed'), jointMax('motorSpeed'));
-    this.wakeBodies();
+    this.setNumber('motorSpeed', MOTOR_SPEED, value, 'any');
   }
 
   /** Strongest motor force (N). Setting it wakes the bodies. */
   get maxMotorForce(): number {
-    return this.maxForce;
+    return this.value(MAX_MOTOR);
   }
 
   set maxMotorForce(value: number) {
-    this.maxForce = requireNonNegative('maxMotorForce', value, jointMax('maxMotorForce'));
-    this.wakeBodies();
+    this.setNumber(NAMES.maxMotor, MAX_MOTOR, value, 'nonNegative');
   }
 
   /** Force the motor applied in the last sub-step (N). */
   get motorForce(): number {
-    return this.motorImpulse / this.subStepDuration;
+    return this.value(MOTOR_IMPULSE) / this.subStepDuration;
   }
 
   /** Whether the spring acts. Changing it wakes the bodies. */
   get enableSpring(): boolean {
-    return this.springEnabled;
+    return this.flag(SPRING_ENABLED);
   }
 
   set enableSpring(value: boolean) {
-    requireBoolean('enableSpring', value);
-    if (value === this.springEnabled) return;
-    this.springEnabled = value;
-    this.springImpulse = 0;
-    this.wakeBodies();
+    this.setSwitch('enableSpring', SPRING_ENABLED, value, SPRING_IMPULSE, 1);
   }
 
   /** Spring frequency (Hz). Setting it wakes the bodies. */
   get hertz(): number {
-    return this.springHertz;
+    return this.value(HERTZ);
   }
 
   set hertz(value: number) {
-    this.springHertz = requireNonNegative('hertz', value, jointMax('hertz'));
-    this.wakeBodies();
+    this.setNumber('hertz', HERTZ, value, 'nonNegative');
   }
 
   /** Spring damping ratio. Setting it wakes the bodies. */
   get dampingRatio(): number {
-    return this.springDampingRatio;
+    return this.value(DAMPING_RATIO);
   }
 
   set dampingRatio(value: number) {
-    this.springDampingRatio = requireNonNegative('dampingRatio', value, jointMax('dampingRatio'));
-    this.wakeBodies();
-  }
-
-  /** @internal */
-  protected exportOwnState(): JointState {
-    return {
-      localAnchorA: [this.localAnchorAX, this.localAnchorAY],
-      localAnchorB: [this.localAnchorBX, this.localAnchorBY],
-      localAxis: [this.localAxisX, this.localAxisY],
-      referenceAngle: this.referenceAngle,
-      enableLimit: this.limitEnabled,
-      lower: this.lowerLimit,
-      upper: this.upperLimit,
-      enableMotor: this.motorEnabled,
-      motorSpeed: this.speed,
-      maxMotorForce: this.maxForce,
-      enableSpring: this.springEnabled,
-      hertz: this.springHertz,
-      dampingRatio: this.springDampingRatio,
-      perpendicularImpulse: this.perpendicularImpulse,
-      angularImpulse: this.angularImpulse,
-      springImpulse: this.springImpulse,
-      motorImpulse: this.motorImpulse,
-      lowerImpulse: this.lowerImpulse,
-      upperImpulse: this.upperImpulse,
-    };
-  }
-
-  /** @internal */
-  protected importOwnState(state: JointState): void {
-    importLocalAnchors(state, this);
-    const axis = stateVector(state, 'localAxis');
-    this.localAxisX = axis[0]!;
-    this.localAxisY = axis[1]!;
-    this.referenceAngle = stateNumber(state, 'referenceAngle');
-    this.limitEnabled = stateBoolean(state, 'enableLimit');
-    this.lowerLimit = stateNumber(state, 'lower');
-    this.upperLimit = stateNumber(state, 'upper');
-    this.motorEnabled = stateBoolean(state, 'enableMotor');
-    this.speed = stateNumber(state, 'motorSpeed');
-    this.maxForce = stateNumber(state, 'maxMotorForce');
-    this.springEnabled = stateBoolean(state, 'enableSpring');
-    this.springHertz = stateNumber(state, 'hertz');
-    this.springDampingRatio = stateNumber(state, 'dampingRatio');
-    this.perpendicularImpulse = stateNumber(state, 'perpendicularImpulse');
-    this.angularImpulse = stateNumber(state, 'angularImpulse');
-    this.springImpulse = stateNumber(state, 'springImpulse');
-    this.motorImpulse = stateNumber(state, 'motorImpulse');
-    this.lowerImpulse = stateNumber(state, 'lowerImpulse');
-    this.upperImpulse = stateNumber(state, 'upperImpulse');
-  }
-
-  /** @internal */
-  resetImpulses(): void {
-    this.perpendicularImpulse = 0;
-    this.angularImpulse = 0;
-    this.springImpulse = 0;
-    this.motorImpulse = 0;
-    this.lowerImpulse = 0;
-    this.upperImpulse = 0;
+    this.setNumber('dampingRatio', DAMPING_RATIO, value, 'nonNegative');
   }
 
   /** @internal */
   prepare(step: JointStep): void {
-    this.prepareBodies(step);
-    const a = this.bodyA;
-    const b = this.bodyB;
-    const ta = a.transform;
-    const tb = b.transform;
-    const lAx = this.localAnchorAX - a.localCenterX;
-    const lAy = this.localAnchorAY - a.localCenterY;
-    const lBx = this.localAnchorBX - b.localCenterX;
-    const lBy = this.localAnchorBY - b.localCenterY;
-    this.rAx = ta.c * lAx - ta.s * lAy;
-    this.rAy = ta.s * lAx + ta.c * lAy;
-    this.rBx = tb.c * lBx - tb.s * lBy;
-    this.rBy = tb.s * lBx + tb.c * lBy;
-    this.axisX = ta.c * this.localAxisX - ta.s * this.localAxisY;
-    this.axisY = ta.s * this.localAxisX + ta.c * this.localAxisY;
-    this.deltaCenterX = b.centerX - a.centerX;
-    this.deltaCenterY = b.centerY - a.centerY;
-    this.deltaAngle = b.angleValue - a.angleValue - this.referenceAngle;
-    this.springSoftness.set(this.springHertz, this.springDampingRatio, step.h);
-    if (!this.springEnabled || this.springHertz === 0) this.springImpulse = 0;
-    if (!this.motorEnabled) this.motorImpulse = 0;
-    if (!this.limitEnabled) {
-      this.lowerImpulse = 0;
-      this.upperImpulse = 0;
-    }
+    this.prepareFrame(step);
+    const d = this.store.data;
+    const o = this.base;
+    const ta = this.bodyA.transform;
+    d[o + AXIS_X] = ta.c * d[o + LOCAL_AXIS_X]! - ta.s * d[o + LOCAL_AXIS_Y]!;
+    d[o + AXIS_Y] = ta.s * d[o + LOCAL_AXIS_X]! + ta.c * d[o + LOCAL_AXIS_Y]!;
+    prepareSpringMotorLimit(d, o, step);
   }
 
   /** @internal */
   override createBatch(): PrismaticBatch {
     return new PrismaticBatch();
-  }
-
-  /** @internal Writes this step's solver numbers into a batch's slot at `o`. */
-  loadBatch(d: Float64Array, o: number): void {
-    d[o + R_AX] = this.rAx;
-    d[o + R_AY] = this.rAy;
-    d[o + R_BX] = this.rBx;
-    d[o + R_BY] = this.rBy;
-    d[o + AXIS_X] = this.axisX;
-    d[o + AXIS_Y] = this.axisY;
-    d[o + DELTA_CENTER_X] = this.deltaCenterX;
-    d[o + DELTA_CENTER_Y] = this.deltaCenterY;
-    d[o + JOINT_ANGLE_0] = this.deltaAngle;
-    d[o + INV_MASS_A] = this.invMassA;
-    d[o + INV_I_A] = this.invInertiaA;
-    d[o + INV_MASS_B] = this.invMassB;
-    d[o + INV_I_B] = this.invInertiaB;
-    // A spring of 0 Hz exerts nothing (Box2D's soft constraint of 0 Hz would lock the motion).
-    d[o + SPRING_ON] = this.springEnabled && this.springHertz > 0 ? 1 : 0;
-    d[o + SPRING_BIAS_RATE] = this.springSoftness.biasRate;
-    d[o + SPRING_MASS_SCALE] = this.springSoftness.massScale;
-    d[o + SPRING_IMPULSE_SCALE] = this.springSoftness.impulseScale;
-    d[o + MOTOR_ON] = this.motorEnabled ? 1 : 0;
-    d[o + MOTOR_SPEED] = this.speed;
-    d[o + MAX_MOTOR_FORCE] = this.maxForce;
-    d[o + LIMIT_ON] = this.limitEnabled ? 1 : 0;
-    d[o + LOWER] = this.lowerLimit;
-    d[o + UPPER] = this.upperLimit;
-    d[o + PERPENDICULAR_IMPULSE] = this.perpendicularImpulse;
-    d[o + ANGULAR_IMPULSE] = this.angularImpulse;
-    d[o + SPRING_IMPULSE] = this.springImpulse;
-    d[o + MOTOR_IMPULSE] = this.motorImpulse;
-    d[o + LOWER_IMPULSE] = this.lowerImpulse;
-    d[o + UPPER_IMPULSE] = this.upperImpulse;
-    d[o + STEP_IMPULSE_X] = this.stepImpulseX;
-    d[o + STEP_IMPULSE_Y] = this.stepImpulseY;
-    d[o + STEP_ANGULAR_IMPULSE] = this.stepAngularImpulse;
-  }
-
-  /** @internal Takes the step's impulses back from the batch's slot at `o`. */
-  storeBatch(d: Float64Array, o: number): void {
-    this.perpendicularImpulse = d[o + PERPENDICULAR_IMPULSE]!;
-    this.angularImpulse = d[o + ANGULAR_IMPULSE]!;
-    this.springImpulse = d[o + SPRING_IMPULSE]!;
-    this.motorImpulse = d[o + MOTOR_IMPULSE]!;
-    this.lowerImpulse = d[o + LOWER_IMPULSE]!;
-    this.upperImpulse = d[o + UPPER_IMPULSE]!;
-    this.stepImpulseX = d[o + STEP_IMPULSE_X]!;
-    this.stepImpulseY = d[o + STEP_IMPULSE_Y]!;
-    this.stepAngularImpulse = d[o + STEP_ANGULAR_IMPULSE]!;
   }
 }

@@ -1,69 +1,61 @@
 import { readOnly } from '../../core/errors.ts';
-import {
-  optionalBoolean,
-  requireBoolean,
-  requireNonNegative,
-  requireRange,
-} from '../../core/validate.ts';
-import type { Vec2, Vec2Like } from '../../math/vec2.ts';
+import type { Vec2Like } from '../../math/vec2.ts';
 import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
-import { Softness } from '../softness.ts';
 import { PinChains, type PinJoint } from './pin-chains.ts';
 import {
+  AXIAL_MASS,
+  LINEAR_IMPULSE_X,
+  LINEAR_IMPULSE_Y,
+  MAX_BIAS_SPEED,
+  RevoluteBatch,
+  STRIDE,
+} from './revolute-joint-solver.ts';
+import {
+  FRAME_SAVED,
+  Joint,
+  checkCollideConnected,
+  jointLayout,
+  stateLayout,
+  type JointLayout,
+  type JointOptions,
+  type JointStateLayout,
+  type JointStep,
+  requireBodies,
+  requirePoint,
+} from './joint.ts';
+import {
+  DELTA_CENTER_X,
+  DELTA_CENTER_Y,
+  INV_I_A,
+  INV_I_B,
   R_AX,
   R_AY,
   R_BX,
   R_BY,
-  DELTA_CENTER_X,
-  DELTA_CENTER_Y,
-  JOINT_ANGLE_0,
-  AXIAL_MASS,
-  INV_MASS_A,
-  INV_I_A,
-  INV_MASS_B,
-  INV_I_B,
-  SPRING_ON,
-  SPRING_BIAS_RATE,
-  SPRING_MASS_SCALE,
-  SPRING_IMPULSE_SCALE,
-  MOTOR_ON,
-  MOTOR_SPEED,
-  MAX_MOTOR_TORQUE,
-  LIMIT_ON,
-  LOWER,
-  UPPER,
-  LINEAR_IMPULSE_X,
-  LINEAR_IMPULSE_Y,
-  SPRING_IMPULSE,
-  MOTOR_IMPULSE,
-  LOWER_IMPULSE,
-  UPPER_IMPULSE,
+  REFERENCE_ANGLE,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
-  STEP_ANGULAR_IMPULSE,
-  STRIDE,
-  RevoluteBatch,
-} from './revolute-joint-solver.ts';
-import type { BatchedJoint, FlatJointBatch } from './joint-batch.ts';
+} from './joint-record.ts';
 import {
-  Joint,
-  checkCollideConnected,
-  type JointOptions,
-  type JointState,
-  type JointStateLayout,
-  type JointStep,
-  importLocalAnchors,
-  optionalFinite,
-  optionalNonNegative,
-  requireBodies,
-  requireOrdered,
-  jointMax,
-  requirePoint,
-  stateBoolean,
-  stateNumber,
-  stateVector,
-  worldAnchor,
-} from './joint.ts';
+  checkSpringMotorLimit,
+  DAMPING_RATIO,
+  HERTZ,
+  LIMIT_ON,
+  LOWER,
+  LOWER_IMPULSE,
+  MAX_MOTOR,
+  MOTOR_IMPULSE,
+  MOTOR_ON,
+  MOTOR_SPEED,
+  prepareSpringMotorLimit,
+  SPRING_ENABLED,
+  SPRING_IMPULSE,
+  SPRING_MOTOR_LIMIT_IMPULSES,
+  SPRING_MOTOR_LIMIT_IMPULSES_SAVED,
+  springMotorLimitSaved,
+  UPPER,
+  writeSpringMotorLimit,
+} from './spring-motor-limit.ts';
 
 /** Options of a {@link RevoluteJoint}: a hinge (a pin) through one world point. */
 export interface RevoluteJointOptions<UserData = unknown> extends JointOptions<UserData> {
@@ -89,6 +81,8 @@ export interface RevoluteJointOptions<UserData = unknown> extends JointOptions<U
   readonly dampingRatio?: number;
 }
 
+const NAMES = { lower: 'lowerAngle', upper: 'upperAngle', maxMotor: 'maxMotorTorque' } as const;
+
 /**
  * @internal A revolute joint's options checked (a PhysicalError naming the first bad one), in the
  * order its constructor reads them, with defaults: the one check, also run where no joint is built
@@ -98,47 +92,31 @@ export function checkRevoluteJointOptions(options: RevoluteJointOptions<unknown>
   requireBodies(options);
   const anchor = requirePoint('anchor', options.anchor);
   checkCollideConnected(options);
-  const enableLimit = optionalBoolean('enableLimit', options.enableLimit, false);
-  const lowerAngle = optionalFinite('lowerAngle', options.lowerAngle, 0);
-  const upperAngle = optionalFinite('upperAngle', options.upperAngle, 0);
-  requireOrdered('lowerAngle', lowerAngle, 'upperAngle', upperAngle);
-  return {
-    anchor,
-    enableLimit,
-    lowerAngle,
-    upperAngle,
-    enableMotor: optionalBoolean('enableMotor', options.enableMotor, false),
-    motorSpeed: optionalFinite('motorSpeed', options.motorSpeed, 0),
-    maxMotorTorque: optionalNonNegative('maxMotorTorque', options.maxMotorTorque, 0),
-    enableSpring: optionalBoolean('enableSpring', options.enableSpring, false),
-    hertz: optionalNonNegative('hertz', options.hertz, 0),
-    dampingRatio: optionalNonNegative('dampingRatio', options.dampingRatio, 0),
-  };
+  const settings = checkSpringMotorLimit(
+    options,
+    NAMES,
+    options.lowerAngle,
+    options.upperAngle,
+    options.maxMotorTorque,
+  );
+  return { anchor, settings };
 }
 
+const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
+  STRIDE,
+  [
+    FRAME_SAVED,
+    /* @__PURE__ */ springMotorLimitSaved(NAMES),
+    { linearImpulse: ['vector', LINEAR_IMPULSE_X] },
+    SPRING_MOTOR_LIMIT_IMPULSES_SAVED,
+  ],
+  [[LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y], SPRING_MOTOR_LIMIT_IMPULSES],
+);
+
 /** @internal What a world snapshot saves of a revolute joint (see Joint.exportState). */
-export const REVOLUTE_STATE: JointStateLayout = {
-  fields: {
-    localAnchorA: 'vector',
-    localAnchorB: 'vector',
-    referenceAngle: 'finite',
-    enableLimit: 'boolean',
-    lowerAngle: 'finite',
-    upperAngle: 'finite',
-    enableMotor: 'boolean',
-    motorSpeed: 'finite',
-    maxMotorTorque: 'nonNegative',
-    enableSpring: 'boolean',
-    hertz: 'nonNegative',
-    dampingRatio: 'nonNegative',
-    linearImpulse: 'vector',
-    springImpulse: 'finite',
-    motorImpulse: 'finite',
-    lowerImpulse: 'nonNegative',
-    upperImpulse: 'nonNegative',
-  },
-  ordered: [['lowerAngle', 'upperAngle']],
-};
+export const REVOLUTE_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, [
+  ['lowerAngle', 'upperAngle'],
+]);
 
 /**
  * A hinge: body B turns about a point fixed on both bodies, optionally within angle limits, driven
@@ -154,83 +132,23 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
   set type(_value: never) {
     readOnly('type', 'a joint keeps its kind');
   }
-  /** @internal Anchor in each body's frame (relative to the body origin, m). */
-  localAnchorAX = -0;
-  /** @internal */
-  localAnchorAY = -0;
-  /** @internal */
-  localAnchorBX = -0;
-  /** @internal */
-  localAnchorBY = -0;
-  /** @internal angleB - angleA at creation (rad). */
-  referenceAngle = -0;
-  private limitEnabled: boolean;
-  private lower: number;
-  private upper: number;
-  private motorEnabled: boolean;
-  private speed: number;
-  private maxTorque: number;
-  private springEnabled: boolean;
-  private springHertz: number;
-  private springDampingRatio: number;
-  // Solver state of the step.
-  private rAx = -0;
-  private rAy = -0;
-  private rBx = -0;
-  private rBy = -0;
-  private deltaCenterX = -0;
-  private deltaCenterY = -0;
-  /** JointStep.maxBiasSpeed, for the chains' pinError. */
-  private maxBiasSpeed = -0;
-  private deltaAngle = -0;
-  private axialMass = -0;
-  private readonly springSoftness = new Softness();
-  // Accumulated impulses (warm-started).
-  private linearImpulseX = -0;
-  private linearImpulseY = -0;
-  private springImpulse = -0;
-  private motorImpulse = -0;
-  private lowerImpulse = -0;
-  private upperImpulse = -0;
-  /** The batch holding the joint's numbers during a step, and its slot there. */
-  private batch: FlatJointBatch<BatchedJoint> | null = null;
-  private slot = 0;
 
   constructor(options: RevoluteJointOptions<UserData>) {
-    const checked = checkRevoluteJointOptions(options);
-    const anchor = checked.anchor;
-    super(options, options.bodyA, options.bodyB);
-    const localA = this.bodyA.getLocalPoint(anchor);
-    const localB = this.bodyB.getLocalPoint(anchor);
-    this.localAnchorAX = localA.x;
-    this.localAnchorAY = localA.y;
-    this.localAnchorBX = localB.x;
-    this.localAnchorBY = localB.y;
-    this.referenceAngle = this.bodyB.angle - this.bodyA.angle;
-    this.limitEnabled = checked.enableLimit;
-    this.lower = checked.lowerAngle;
-    this.upper = checked.upperAngle;
-    this.motorEnabled = checked.enableMotor;
-    this.speed = checked.motorSpeed;
-    this.maxTorque = checked.maxMotorTorque;
-    this.springEnabled = checked.enableSpring;
-    this.springHertz = checked.hertz;
-    this.springDampingRatio = checked.dampingRatio;
+    const { anchor, settings } = checkRevoluteJointOptions(options);
+    super(options, options.bodyA, options.bodyB, STRIDE);
+    this.setAnchors(anchor, anchor);
+    this.write(REFERENCE_ANGLE, this.bodyB.angle - this.bodyA.angle);
+    writeSpringMotorLimit(this.store.data, this.base, settings);
   }
 
   /** @internal */
-  protected writeAnchorA(out: Vec2): void {
-    worldAnchor(this.bodyA, this.localAnchorAX, this.localAnchorAY, out);
-  }
-
-  /** @internal */
-  protected writeAnchorB(out: Vec2): void {
-    worldAnchor(this.bodyB, this.localAnchorBX, this.localAnchorBY, out);
+  protected get layout(): JointLayout {
+    return LAYOUT;
   }
 
   /** Current joint angle (rad): angle of B minus angle of A, minus that difference at creation. */
   get angle(): number {
-    return this.bodyB.angle - this.bodyA.angle - this.referenceAngle;
+    return this.bodyB.angle - this.bodyA.angle - this.value(REFERENCE_ANGLE);
   }
 
   /** Relative angular velocity of B to A (rad/s). */
@@ -240,263 +158,109 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
 
   /** Whether the angle limits hold. Changing it wakes the bodies. */
   get enableLimit(): boolean {
-    return this.limitEnabled;
+    return this.flag(LIMIT_ON);
   }
 
   set enableLimit(value: boolean) {
-    requireBoolean('enableLimit', value);
-    if (value === this.limitEnabled) return;
-    this.limitEnabled = value;
-    this.lowerImpulse = 0;
-    this.upperImpulse = 0;
-    this.wakeBodies();
+    this.setSwitch('enableLimit', LIMIT_ON, value, LOWER_IMPULSE, 2);
   }
 
   /** Lowest joint angle (rad); must not exceed upperAngle (use setLimits to move both). */
   get lowerAngle(): number {
-    return this.lower;
+    return this.value(LOWER);
   }
 
   set lowerAngle(value: number) {
-    this.applyLimits(value, this.upper, 'lower');
+    this.setRange(NAMES.lower, NAMES.upper, LOWER, value, this.value(UPPER), 'lower');
   }
 
   /** Highest joint angle (rad). */
   get upperAngle(): number {
-    return this.upper;
+    return this.value(UPPER);
   }
 
   set upperAngle(value: number) {
-    this.applyLimits(this.lower, value, 'upper');
+    this.setRange(NAMES.lower, NAMES.upper, LOWER, this.value(LOWER), value, 'upper');
   }
 
   /** Sets both angle limits (rad) at once; wakes the bodies. */
   setLimits(lowerAngle: number, upperAngle: number): void {
-    this.applyLimits(lowerAngle, upperAngle, 'lower');
-  }
-
-  private applyLimits(lowerAngle: number, upperAngle: number, changed: 'lower' | 'upper'): void {
-    requireRange('lowerAngle', lowerAngle, -jointMax('lowerAngle'), jointMax('lowerAngle'));
-    requireRange('upperAngle', upperAngle, -jointMax('upperAngle'), jointMax('upperAngle'));
-    requireOrdered('lowerAngle', lowerAngle, 'upperAngle', upperAngle, changed);
-    this.lower = lowerAngle;
-    this.upper = upperAngle;
-    this.wakeBodies();
+    this.setRange(NAMES.lower, NAMES.upper, LOWER, lowerAngle, upperAngle, 'lower');
   }
 
   /** Whether the motor drives the joint. Changing it wakes the bodies. */
   get enableMotor(): boolean {
-    return this.motorEnabled;
+    return this.flag(MOTOR_ON);
   }
 
   set enableMotor(value: boolean) {
-    requireBoolean('enableMotor', value);
-    if (value === this.motorEnabled) return;
-    this.motorEnabled = value;
-    this.motorImpulse = 0;
-    this.wakeBodies();
+    this.setSwitch('enableMotor', MOTOR_ON, value, MOTOR_IMPULSE, 1);
   }
 
   /** Target relative angular velocity (rad/s). Setting it wakes the bodies. */
   get motorSpeed(): number {
-    return this.speed;
+    return this.value(MOTOR_SPEED);
   }
 
   set motorSpeed(value: number) {
-    this.speed = requireRange('motorSpeed', value, -jointMax('motorSpeed'), jointMax('motorSpeed'));
-    this.wakeBodies();
+    this.setNumber('motorSpeed', MOTOR_SPEED, value, 'any');
   }
 
   /** Strongest motor torque (N m). Setting it wakes the bodies. */
   get maxMotorTorque(): number {
-    return this.maxTorque;
+    return this.value(MAX_MOTOR);
   }
 
   set maxMotorTorque(value: number) {
-    this.maxTorque = requireNonNegative('maxMotorTorque', value, jointMax('maxMotorTorque'));
-    this.wakeBodies();
+    this.setNumber(NAMES.maxMotor, MAX_MOTOR, value, 'nonNegative');
   }
 
   /** Torque the motor applied in the last sub-step (N m). */
   get motorTorque(): number {
-    return this.motorImpulse / this.subStepDuration;
+    return this.value(MOTOR_IMPULSE) / this.subStepDuration;
   }
 
   /** Whether the torsion spring acts. Changing it wakes the bodies. */
   get enableSpring(): boolean {
-    return this.springEnabled;
+    return this.flag(SPRING_ENABLED);
   }
 
   set enableSpring(value: boolean) {
-    requireBoolean('enableSpring', value);
-    if (value === this.springEnabled) return;
-    this.springEnabled = value;
-    this.springImpulse = 0;
-    this.wakeBodies();
+    this.setSwitch('enableSpring', SPRING_ENABLED, value, SPRING_IMPULSE, 1);
   }
 
   /** Spring frequency (Hz). Setting it wakes the bodies. */
   get hertz(): number {
-    return this.springHertz;
+    return this.value(HERTZ);
   }
 
   set hertz(value: number) {
-    this.springHertz = requireNonNegative('hertz', value, jointMax('hertz'));
-    this.wakeBodies();
+    this.setNumber('hertz', HERTZ, value, 'nonNegative');
   }
 
   /** Spring damping ratio. Setting it wakes the bodies. */
   get dampingRatio(): number {
-    return this.springDampingRatio;
+    return this.value(DAMPING_RATIO);
   }
 
   set dampingRatio(value: number) {
-    this.springDampingRatio = requireNonNegative('dampingRatio', value, jointMax('dampingRatio'));
-    this.wakeBodies();
-  }
-
-  /** @internal */
-  protected exportOwnState(): JointState {
-    return {
-      localAnchorA: [this.localAnchorAX, this.localAnchorAY],
-      localAnchorB: [this.localAnchorBX, this.localAnchorBY],
-      referenceAngle: this.referenceAngle,
-      enableLimit: this.limitEnabled,
-      lowerAngle: this.lower,
-      upperAngle: this.upper,
-      enableMotor: this.motorEnabled,
-      motorSpeed: this.speed,
-      maxMotorTorque: this.maxTorque,
-      enableSpring: this.springEnabled,
-      hertz: this.springHertz,
-      dampingRatio: this.springDampingRatio,
-      linearImpulse: [this.linearImpulseX, this.linearImpulseY],
-      springImpulse: this.springImpulse,
-      motorImpulse: this.motorImpulse,
-      lowerImpulse: this.lowerImpulse,
-      upperImpulse: this.upperImpulse,
-    };
-  }
-
-  /** @internal */
-  protected importOwnState(state: JointState): void {
-    importLocalAnchors(state, this);
-    const impulse = stateVector(state, 'linearImpulse');
-    this.referenceAngle = stateNumber(state, 'referenceAngle');
-    this.limitEnabled = stateBoolean(state, 'enableLimit');
-    this.lower = stateNumber(state, 'lowerAngle');
-    this.upper = stateNumber(state, 'upperAngle');
-    this.motorEnabled = stateBoolean(state, 'enableMotor');
-    this.speed = stateNumber(state, 'motorSpeed');
-    this.maxTorque = stateNumber(state, 'maxMotorTorque');
-    this.springEnabled = stateBoolean(state, 'enableSpring');
-    this.springHertz = stateNumber(state, 'hertz');
-    this.springDampingRatio = stateNumber(state, 'dampingRatio');
-    this.linearImpulseX = impulse[0]!;
-    this.linearImpulseY = impulse[1]!;
-    this.springImpulse = stateNumber(state, 'springImpulse');
-    this.motorImpulse = stateNumber(state, 'motorImpulse');
-    this.lowerImpulse = stateNumber(state, 'lowerImpulse');
-    this.upperImpulse = stateNumber(state, 'upperImpulse');
-  }
-
-  /** @internal */
-  resetImpulses(): void {
-    this.linearImpulseX = 0;
-    this.linearImpulseY = 0;
-    this.springImpulse = 0;
-    this.motorImpulse = 0;
-    this.lowerImpulse = 0;
-    this.upperImpulse = 0;
+    this.setNumber('dampingRatio', DAMPING_RATIO, value, 'nonNegative');
   }
 
   /** @internal */
   prepare(step: JointStep): void {
-    this.prepareBodies(step);
-    this.maxBiasSpeed = step.maxBiasSpeed;
-    const a = this.bodyA;
-    const b = this.bodyB;
-    const ta = a.transform;
-    const tb = b.transform;
-    // Lever arms from the centres of mass, in world orientation at the step's start; the sub-steps
-    // turn them by each body's rotation since (state Q_C, Q_S).
-    const lAx = this.localAnchorAX - a.localCenterX;
-    const lAy = this.localAnchorAY - a.localCenterY;
-    const lBx = this.localAnchorBX - b.localCenterX;
-    const lBy = this.localAnchorBY - b.localCenterY;
-    this.rAx = ta.c * lAx - ta.s * lAy;
-    this.rAy = ta.s * lAx + ta.c * lAy;
-    this.rBx = tb.c * lBx - tb.s * lBy;
-    this.rBy = tb.s * lBx + tb.c * lBy;
-    this.deltaCenterX = b.centerX - a.centerX;
-    this.deltaCenterY = b.centerY - a.centerY;
-    this.deltaAngle = b.angleValue - a.angleValue - this.referenceAngle;
-    const k = this.invInertiaA + this.invInertiaB;
-    this.axialMass = k > 0 ? 1 / k : 0;
-    this.springSoftness.set(this.springHertz, this.springDampingRatio, step.h);
-    if (!this.springEnabled || this.springHertz === 0) this.springImpulse = 0;
-    if (!this.motorEnabled) this.motorImpulse = 0;
-    if (!this.limitEnabled) {
-      this.lowerImpulse = 0;
-      this.upperImpulse = 0;
-    }
+    this.prepareFrame(step);
+    const d = this.store.data;
+    const o = this.base;
+    d[o + MAX_BIAS_SPEED] = step.maxBiasSpeed;
+    const k = d[o + INV_I_A]! + d[o + INV_I_B]!;
+    d[o + AXIAL_MASS] = k > 0 ? 1 / k : 0;
+    prepareSpringMotorLimit(d, o, step);
   }
 
   /** @internal */
   override createBatch(): RevoluteBatch {
     return new RevoluteBatch();
-  }
-
-  /** @internal Writes this step's solver numbers into a batch's slot at `o`. */
-  loadBatch(d: Float64Array, o: number, slot: number, batch: FlatJointBatch<BatchedJoint>): void {
-    this.batch = batch;
-    this.slot = slot;
-    d[o + R_AX] = this.rAx;
-    d[o + R_AY] = this.rAy;
-    d[o + R_BX] = this.rBx;
-    d[o + R_BY] = this.rBy;
-    d[o + DELTA_CENTER_X] = this.deltaCenterX;
-    d[o + DELTA_CENTER_Y] = this.deltaCenterY;
-    d[o + JOINT_ANGLE_0] = this.deltaAngle;
-    d[o + AXIAL_MASS] = this.axialMass;
-    d[o + INV_MASS_A] = this.invMassA;
-    d[o + INV_I_A] = this.invInertiaA;
-    d[o + INV_MASS_B] = this.invMassB;
-    d[o + INV_I_B] = this.invInertiaB;
-    // A spring of 0 Hz exerts nothing (Box2D's soft constraint of 0 Hz would lock the motion).
-    d[o + SPRING_ON] = this.springEnabled && this.springHertz > 0 ? 1 : 0;
-    d[o + SPRING_BIAS_RATE] = this.springSoftness.biasRate;
-    d[o + SPRING_MASS_SCALE] = this.springSoftness.massScale;
-    d[o + SPRING_IMPULSE_SCALE] = this.springSoftness.impulseScale;
-    d[o + MOTOR_ON] = this.motorEnabled ? 1 : 0;
-    d[o + MOTOR_SPEED] = this.speed;
-    d[o + MAX_MOTOR_TORQUE] = this.maxTorque;
-    d[o + LIMIT_ON] = this.limitEnabled ? 1 : 0;
-    d[o + LOWER] = this.lower;
-    d[o + UPPER] = this.upper;
-    d[o + LINEAR_IMPULSE_X] = this.linearImpulseX;
-    d[o + LINEAR_IMPULSE_Y] = this.linearImpulseY;
-    d[o + SPRING_IMPULSE] = this.springImpulse;
-    d[o + MOTOR_IMPULSE] = this.motorImpulse;
-    d[o + LOWER_IMPULSE] = this.lowerImpulse;
-    d[o + UPPER_IMPULSE] = this.upperImpulse;
-    d[o + STEP_IMPULSE_X] = this.stepImpulseX;
-    d[o + STEP_IMPULSE_Y] = this.stepImpulseY;
-    d[o + STEP_ANGULAR_IMPULSE] = this.stepAngularImpulse;
-  }
-
-  /** @internal Takes the step's impulses back from the batch's slot at `o`. */
-  storeBatch(d: Float64Array, o: number): void {
-    this.batch = null;
-    this.linearImpulseX = d[o + LINEAR_IMPULSE_X]!;
-    this.linearImpulseY = d[o + LINEAR_IMPULSE_Y]!;
-    this.springImpulse = d[o + SPRING_IMPULSE]!;
-    this.motorImpulse = d[o + MOTOR_IMPULSE]!;
-    this.lowerImpulse = d[o + LOWER_IMPULSE]!;
-    this.upperImpulse = d[o + UPPER_IMPULSE]!;
-    this.stepImpulseX = d[o + STEP_IMPULSE_X]!;
-    this.stepImpulseY = d[o + STEP_IMPULSE_Y]!;
-    this.stepAngularImpulse = d[o + STEP_ANGULAR_IMPULSE]!;
   }
 
   /** @internal */
@@ -511,16 +275,18 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
 
   /** @internal */
   pinLevers(s: Float64Array, out: Float64Array, offset: number): void {
+    const d = this.store.data;
+    const o = this.base;
     const a = this.stateA;
     const b = this.stateB;
     const qAc = s[a + Q_C]!;
     const qAs = s[a + Q_S]!;
     const qBc = s[b + Q_C]!;
     const qBs = s[b + Q_S]!;
-    out[offset] = qAc * this.rAx - qAs * this.rAy;
-    out[offset + 1] = qAs * this.rAx + qAc * this.rAy;
-    out[offset + 2] = qBc * this.rBx - qBs * this.rBy;
-    out[offset + 3] = qBs * this.rBx + qBc * this.rBy;
+    out[offset] = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
+    out[offset + 1] = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
+    out[offset + 2] = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
+    out[offset + 3] = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
   }
 
   /** @internal */
@@ -538,8 +304,8 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
     const rAy = out[offset + 1]!;
     const rBx = out[offset + 2]!;
     const rBy = out[offset + 3]!;
-    const gapX = s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + this.deltaCenterX;
-    const gapY = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + this.deltaCenterY;
+    const gapX = s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + this.value(DELTA_CENTER_X);
+    const gapY = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + this.value(DELTA_CENTER_Y);
     if (positions) {
       out[offset] = gapX;
       out[offset + 1] = gapY;
@@ -549,9 +315,9 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
     const wB = s[b + W]!;
     let biasX = biasRate * gapX;
     let biasY = biasRate * gapY;
-    // At most maxBiasSpeed, as in the batch's solve (see JointStep.maxBiasSpeed).
+    // At most maxBiasSpeed, as in the point constraint (see JointStep.maxBiasSpeed).
     const biasSquared = biasX * biasX + biasY * biasY;
-    const maxBias = this.maxBiasSpeed;
+    const maxBias = this.value(MAX_BIAS_SPEED);
     if (biasSquared > maxBias * maxBias) {
       const ratio = maxBias / Math.sqrt(biasSquared);
       biasX *= ratio;
@@ -563,22 +329,18 @@ export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
 
   /** @internal */
   pinLoad(out: Float64Array, offset: number): void {
-    // The chains read it while they prepare, before the joint joins its batch.
-    const batch = this.batch;
-    const px =
-      batch === null ? this.linearImpulseX : batch.data[this.slot * STRIDE + LINEAR_IMPULSE_X]!;
-    const py =
-      batch === null ? this.linearImpulseY : batch.data[this.slot * STRIDE + LINEAR_IMPULSE_Y]!;
-    out[offset] = Math.abs(px * this.rAx + py * this.rAy);
-    out[offset + 1] = Math.abs(px * this.rBx + py * this.rBy);
+    const px = this.value(LINEAR_IMPULSE_X);
+    const py = this.value(LINEAR_IMPULSE_Y);
+    out[offset] = Math.abs(px * this.value(R_AX) + py * this.value(R_AY));
+    out[offset + 1] = Math.abs(px * this.value(R_BX) + py * this.value(R_BY));
   }
 
   /** @internal */
   addPinImpulse(t: Float64Array, offset: number, relax: boolean): void {
     const px = t[offset + 15]!;
     const py = t[offset + 5]!;
-    const d = this.batch!.data;
-    const o = this.slot * STRIDE;
+    const d = this.store.data;
+    const o = this.base;
     d[o + LINEAR_IMPULSE_X] += px;
     d[o + LINEAR_IMPULSE_Y] += py;
     if (relax) {
