@@ -74,6 +74,8 @@ export const STRIDE: number = POINTS + 2 * POINT_STRIDE;
  * number k of its point j element constraintBase(i) + 2 (POINTS + j POINT_STRIDE + k). So
  * constraints 2m and 2m + 1 have each number side by side, and the WebAssembly kernel's lanes
  * load both with one v128.load (Box2D v3's b2ContactConstraintSIMD is laid out the same way).
+ * The last constraint of an odd count still takes a pair's room: the region holds an even number
+ * of constraints (its capacity is a power of two from 256, solver-memory.ts).
  */
 export function constraintBase(i: number): number {
   return (i >> 1) * 2 * STRIDE + (i & 1);
