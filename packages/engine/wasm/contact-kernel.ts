@@ -129,6 +129,31 @@ function st(p: usize, k: i32, v: f64): void {
   store<f64>(p + ((<usize>k) << 3), v);
 }
 
+// The constraints are stored in pairs, their numbers interleaved: number k of constraint i is at
+// double (i >> 1) * 2 * STRIDE + 2 * k + (i & 1) of the constraint region, so constraints 2m and
+// 2m + 1 have each number side by side, and the lanes (below) fetch both with one v128.load
+// (Box2D v3 stores its SIMD constraints the same way, b2ContactConstraintSIMD). A scalar pass
+// reads number k of a constraint or point at pointer + 16 k: lc and sc.
+
+/** Where constraint i starts (its number 0; number k is 16 k bytes on). */
+function constraintAt(cPtr: usize, i: i32): usize {
+  return cPtr + ((<usize>(((i >> 1) * STRIDE) << 1)) << 3) + ((<usize>(i & 1)) << 3);
+}
+
+/** Where point j of the constraint at `c` starts. */
+function pointAt(c: usize, j: i32): usize {
+  return c + ((<usize>(POINTS + j * POINT_STRIDE)) << 4);
+}
+
+/** Number k of the constraint or point at `p`. */
+function lc(p: usize, k: i32): f64 {
+  return load<f64>(p + ((<usize>k) << 4));
+}
+
+function sc(p: usize, k: i32, v: f64): void {
+  store<f64>(p + ((<usize>k) << 4), v);
+}
+
 /** The impact mark and sub-step velocity change of the body at state offset `a` (body-state.ts). */
 function markOf(marksPtr: usize, a: i32): usize {
   return marksPtr + ((<usize>((a / STATE_STRIDE) * MARK_STRIDE)) << 3);
@@ -172,13 +197,13 @@ function kickNormal(kA: usize, kB: usize, nx: f64, ny: f64, leverA: f64, leverB:
  * the scalar pass and the lanes, so they cannot drift apart.
  */
 function dropOneOffImpulse(p: usize): void {
-  const impact = ld(p, IMPACT);
+  const impact = lc(p, IMPACT);
   if (impact == 2) {
-    st(p, IMPACT, 3);
-    st(p, NORMAL_IMPULSE, 0);
+    sc(p, IMPACT, 3);
+    sc(p, NORMAL_IMPULSE, 0);
   } else if (impact == 6) {
-    st(p, IMPACT, 0);
-    st(p, NORMAL_IMPULSE, 0);
+    sc(p, IMPACT, 0);
+    sc(p, NORMAL_IMPULSE, 0);
   }
 }
 
@@ -197,24 +222,30 @@ function advancePose(k: usize, dx: f64, dy: f64, angle: f64): void {
   }
 }
 
-// Contacts in lanes (WebAssembly build only, LANES): two neighbours of the visiting order that
-// share no moving body (found as they come: the order is not changed for them, see
-// src/dynamics/README.md, "Contacts in lanes") are solved side by side in the two lanes of an
-// f64x2 (Box2D v3 solves graph colours in SIMD lanes, b2ContactConstraintSIMD). Each lane does the scalar pass's f64 operations in
-// the same order, and f64x2 operations round exactly as f64 ones, so a pair gives the bits of the
-// two constraints solved one after the other, which is what the JavaScript build (LANES false,
-// wasm2js cannot translate SIMD) does with the same order. Pairs take the common path only (equal
-// point counts; in the solve pass no restitution and equal block flags, and a block case both
-// lanes accept); any other pair goes through the scalar pass one constraint at a time.
+// Contacts in lanes (WebAssembly build only, LANES): constraints 2m and 2m + 1, when visited one
+// after the other and sharing no moving body, are solved side by side in the two lanes of an
+// f64x2 (Box2D v3 solves graph colours in SIMD lanes, b2ContactConstraintSIMD). The solver pairs
+// them before the step (src/dynamics/contact-pairing.ts) and stores their numbers interleaved
+// (constraintAt above), so each number of both is one v128.load. Each lane does the scalar pass's
+// f64 operations in the same order, and f64x2 operations round exactly as f64 ones, so a pair
+// gives the bits of the two constraints solved one after the other, which is what the JavaScript
+// build (LANES false, wasm2js cannot translate SIMD) does with the same order. Pairs take the
+// common path only (equal point counts; in the solve pass no restitution and equal block flags,
+// and a block case both lanes accept); any other pair goes through the scalar pass one
+// constraint at a time.
 
-/** Number k of two constraints (or points, or states) as the lanes of an f64x2. */
+/** Number k of two states as the lanes of an f64x2 (two loads: states are not paired). */
 function lanes(p1: usize, p2: usize, k: i32): v128 {
   return f64x2.replace_lane(f64x2.splat(ld(p1, k)), 1, ld(p2, k));
 }
 
-function stLanes(p1: usize, p2: usize, k: i32, v: v128): void {
-  st(p1, k, f64x2.extract_lane(v, 0));
-  st(p2, k, f64x2.extract_lane(v, 1));
+/** Number k of the pair of constraints (or points) whose first is at `p`, one load for both. */
+function lanesOf(p: usize, k: i32): v128 {
+  return v128.load(p + ((<usize>k) << 4));
+}
+
+function stLanesOf(p: usize, k: i32, v: v128): void {
+  v128.store(p + ((<usize>k) << 4), v);
 }
 
 /** A state's velocity, unless it is slot 0 (immovable: the shared identity state). */
@@ -239,12 +270,13 @@ function independent(bodiesPtr: usize, i1: i32, i2: i32): bool {
   return (a1 == 0 || (a1 != a2 && a1 != b2)) && (b1 == 0 || (b1 != a2 && b1 != b2));
 }
 
-/** The warm start of independent constraints i1 and i2 in lanes; false (nothing done) off the common path. */
-function warmStartPair(cPtr: usize, bodiesPtr: usize, sPtr: usize, i1: i32, i2: i32): bool {
-  const c1 = cPtr + ((<usize>(i1 * STRIDE)) << 3);
-  const c2 = cPtr + ((<usize>(i2 * STRIDE)) << 3);
-  const pointCount = <i32>ld(c1, POINT_COUNT);
-  if (<i32>ld(c2, POINT_COUNT) != pointCount) return false;
+/** The warm start of independent constraints i1 and i1 + 1 in lanes; false (nothing done) off the common path. */
+function warmStartPair(cPtr: usize, bodiesPtr: usize, sPtr: usize, i1: i32): bool {
+  const i2 = i1 + 1;
+  const c1 = constraintAt(cPtr, i1);
+  const c2 = c1 + 8;
+  const pointCount = <i32>lc(c1, POINT_COUNT);
+  if (<i32>lc(c2, POINT_COUNT) != pointCount) return false;
   const a1 = load<i32>(bodiesPtr + ((<usize>i1) << 3));
   const b1 = load<i32>(bodiesPtr + ((<usize>i1) << 3), 4);
   const a2 = load<i32>(bodiesPtr + ((<usize>i2) << 3));
@@ -253,12 +285,12 @@ function warmStartPair(cPtr: usize, bodiesPtr: usize, sPtr: usize, i1: i32, i2: 
   const sb1 = sPtr + ((<usize>b1) << 3);
   const sa2 = sPtr + ((<usize>a2) << 3);
   const sb2 = sPtr + ((<usize>b2) << 3);
-  const mA = lanes(c1, c2, INV_MASS_A);
-  const iA = lanes(c1, c2, INV_I_A);
-  const mB = lanes(c1, c2, INV_MASS_B);
-  const iB = lanes(c1, c2, INV_I_B);
-  const nx = lanes(c1, c2, NORMAL_X);
-  const ny = lanes(c1, c2, NORMAL_Y);
+  const mA = lanesOf(c1, INV_MASS_A);
+  const iA = lanesOf(c1, INV_I_A);
+  const mB = lanesOf(c1, INV_MASS_B);
+  const iB = lanesOf(c1, INV_I_B);
+  const nx = lanesOf(c1, NORMAL_X);
+  const ny = lanesOf(c1, NORMAL_Y);
   const tx = ny;
   const ty = f64x2.neg(nx);
   let vAx = lanes(sa1, sa2, V_X);
@@ -267,12 +299,12 @@ function warmStartPair(cPtr: usize, bodiesPtr: usize, sPtr: usize, i1: i32, i2: 
   let vBx = lanes(sb1, sb2, V_X);
   let vBy = lanes(sb1, sb2, V_Y);
   let wB = lanes(sb1, sb2, W);
-  const shiftA = lanes(c1, c2, SHIFT_WEIGHT_A);
-  const shiftB = lanes(c1, c2, SHIFT_WEIGHT_B);
-  const eAx = f64x2.sub(lanes(sa1, sa2, DP_X), lanes(c1, c2, REF_DP_AX));
-  const eAy = f64x2.sub(lanes(sa1, sa2, DP_Y), lanes(c1, c2, REF_DP_AY));
-  const eBx = f64x2.sub(lanes(sb1, sb2, DP_X), lanes(c1, c2, REF_DP_BX));
-  const eBy = f64x2.sub(lanes(sb1, sb2, DP_Y), lanes(c1, c2, REF_DP_BY));
+  const shiftA = lanesOf(c1, SHIFT_WEIGHT_A);
+  const shiftB = lanesOf(c1, SHIFT_WEIGHT_B);
+  const eAx = f64x2.sub(lanes(sa1, sa2, DP_X), lanesOf(c1, REF_DP_AX));
+  const eAy = f64x2.sub(lanes(sa1, sa2, DP_Y), lanesOf(c1, REF_DP_AY));
+  const eBx = f64x2.sub(lanes(sb1, sb2, DP_X), lanesOf(c1, REF_DP_BX));
+  const eBy = f64x2.sub(lanes(sb1, sb2, DP_Y), lanesOf(c1, REF_DP_BY));
   const shiftX = f64x2.add(f64x2.mul(shiftA, eAx), f64x2.mul(shiftB, eBx));
   const shiftY = f64x2.add(f64x2.mul(shiftA, eAy), f64x2.mul(shiftB, eBy));
   const sAx = f64x2.sub(shiftX, eAx);
@@ -284,27 +316,27 @@ function warmStartPair(cPtr: usize, bodiesPtr: usize, sPtr: usize, i1: i32, i2: 
   const dtA = f64x2.neg(f64x2.add(f64x2.mul(sAx, nx), f64x2.mul(sAy, ny)));
   const dtB = f64x2.neg(f64x2.add(f64x2.mul(sBx, nx), f64x2.mul(sBy, ny)));
   for (let j = 0; j < pointCount; j++) {
-    const p1 = c1 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
-    const p2 = c2 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+    const p1 = pointAt(c1, j);
+    const p2 = pointAt(c2, j);
     dropOneOffImpulse(p1);
     dropOneOffImpulse(p2);
-    const pn = lanes(p1, p2, NORMAL_IMPULSE);
-    const pt = lanes(p1, p2, TANGENT_IMPULSE);
+    const pn = lanesOf(p1, NORMAL_IMPULSE);
+    const pt = lanesOf(p1, TANGENT_IMPULSE);
     const px = f64x2.add(f64x2.mul(pn, nx), f64x2.mul(pt, tx));
     const py = f64x2.add(f64x2.mul(pn, ny), f64x2.mul(pt, ty));
     const rtA = f64x2.sub(
       dtA,
-      f64x2.add(f64x2.mul(lanes(p1, p2, R_AX), nx), f64x2.mul(lanes(p1, p2, R_AY), ny)),
+      f64x2.add(f64x2.mul(lanesOf(p1, R_AX), nx), f64x2.mul(lanesOf(p1, R_AY), ny)),
     );
     const rtB = f64x2.sub(
       dtB,
-      f64x2.add(f64x2.mul(lanes(p1, p2, R_BX), nx), f64x2.mul(lanes(p1, p2, R_BY), ny)),
+      f64x2.add(f64x2.mul(lanesOf(p1, R_BX), nx), f64x2.mul(lanesOf(p1, R_BY), ny)),
     );
     wA = f64x2.sub(
       wA,
       f64x2.mul(
         iA,
-        f64x2.add(f64x2.mul(pn, f64x2.add(lanes(p1, p2, RN_A), dnA)), f64x2.mul(pt, rtA)),
+        f64x2.add(f64x2.mul(pn, f64x2.add(lanesOf(p1, RN_A), dnA)), f64x2.mul(pt, rtA)),
       ),
     );
     vAx = f64x2.sub(vAx, f64x2.mul(mA, px));
@@ -313,7 +345,7 @@ function warmStartPair(cPtr: usize, bodiesPtr: usize, sPtr: usize, i1: i32, i2: 
       wB,
       f64x2.mul(
         iB,
-        f64x2.add(f64x2.mul(pn, f64x2.add(lanes(p1, p2, RN_B), dnB)), f64x2.mul(pt, rtB)),
+        f64x2.add(f64x2.mul(pn, f64x2.add(lanesOf(p1, RN_B), dnB)), f64x2.mul(pt, rtB)),
       ),
     );
     vBx = f64x2.add(vBx, f64x2.mul(mB, px));
@@ -327,35 +359,24 @@ function warmStartPair(cPtr: usize, bodiesPtr: usize, sPtr: usize, i1: i32, i2: 
 }
 
 /** The separation of point p1/p2 now (see solve). */
-function separationLanes(
-  p1: usize,
-  p2: usize,
-  dpn: v128,
-  nAx: v128,
-  nAy: v128,
-  nBx: v128,
-  nBy: v128,
-): v128 {
+function separationLanes(p: usize, dpn: v128, nAx: v128, nAy: v128, nBx: v128, nBy: v128): v128 {
   return f64x2.add(
     f64x2.sub(
-      f64x2.add(
-        dpn,
-        f64x2.add(f64x2.mul(lanes(p1, p2, R_BX), nBx), f64x2.mul(lanes(p1, p2, R_BY), nBy)),
-      ),
-      f64x2.add(f64x2.mul(lanes(p1, p2, R_AX), nAx), f64x2.mul(lanes(p1, p2, R_AY), nAy)),
+      f64x2.add(dpn, f64x2.add(f64x2.mul(lanesOf(p, R_BX), nBx), f64x2.mul(lanesOf(p, R_BY), nBy))),
+      f64x2.add(f64x2.mul(lanesOf(p, R_AX), nAx), f64x2.mul(lanesOf(p, R_AY), nAy)),
     ),
-    lanes(p1, p2, BASE_SEPARATION),
+    lanesOf(p, BASE_SEPARATION),
   );
 }
 
-/** Stores the larger of v and number k, lane by lane (the scalar pass's `if (v > old) st(v)`). */
-function stMaxLanes(p1: usize, p2: usize, k: i32, v: v128): void {
-  const old = lanes(p1, p2, k);
-  stLanes(p1, p2, k, v128.bitselect(v, old, f64x2.gt(v, old)));
+/** Stores the larger of v and number k, lane by lane (the scalar pass's `if (v > old) sc(v)`). */
+function stMaxLanes(p: usize, k: i32, v: v128): void {
+  const old = lanesOf(p, k);
+  stLanesOf(p, k, v128.bitselect(v, old, f64x2.gt(v, old)));
 }
 
 /**
- * One solve (useBias) or relax pass of independent constraints i1 and i2 in lanes; false, with
+ * One solve (useBias) or relax pass of independent constraints i1 and i1 + 1 in lanes; false, with
  * nothing written, off the common path (see above).
  */
 function solvePair(
@@ -363,20 +384,20 @@ function solvePair(
   bodiesPtr: usize,
   sPtr: usize,
   i1: i32,
-  i2: i32,
   inverseH: f64,
   maxPushSpeed: f64,
   useBias: bool,
 ): bool {
-  const c1 = cPtr + ((<usize>(i1 * STRIDE)) << 3);
-  const c2 = cPtr + ((<usize>(i2 * STRIDE)) << 3);
-  const pointCount = <i32>ld(c1, POINT_COUNT);
-  const block = ld(c1, BLOCK) == 1;
+  const i2 = i1 + 1;
+  const c1 = constraintAt(cPtr, i1);
+  const c2 = c1 + 8;
+  const pointCount = <i32>lc(c1, POINT_COUNT);
+  const block = lc(c1, BLOCK) == 1;
   if (
-    <i32>ld(c2, POINT_COUNT) != pointCount ||
-    (ld(c2, BLOCK) == 1) != block ||
-    ld(c1, RESTITUTION) > 0 ||
-    ld(c2, RESTITUTION) > 0
+    <i32>lc(c2, POINT_COUNT) != pointCount ||
+    (lc(c2, BLOCK) == 1) != block ||
+    lc(c1, RESTITUTION) > 0 ||
+    lc(c2, RESTITUTION) > 0
   ) {
     return false;
   }
@@ -392,13 +413,13 @@ function solvePair(
   const one = f64x2.splat(1);
   const rate = f64x2.splat(inverseH);
   const floor = f64x2.splat(-maxPushSpeed);
-  const mA = lanes(c1, c2, INV_MASS_A);
-  const iA = lanes(c1, c2, INV_I_A);
-  const mB = lanes(c1, c2, INV_MASS_B);
-  const iB = lanes(c1, c2, INV_I_B);
-  const nx = lanes(c1, c2, NORMAL_X);
-  const ny = lanes(c1, c2, NORMAL_Y);
-  const biasRate = lanes(c1, c2, BIAS_RATE);
+  const mA = lanesOf(c1, INV_MASS_A);
+  const iA = lanesOf(c1, INV_I_A);
+  const mB = lanesOf(c1, INV_MASS_B);
+  const iB = lanesOf(c1, INV_I_B);
+  const nx = lanesOf(c1, NORMAL_X);
+  const ny = lanesOf(c1, NORMAL_Y);
+  const biasRate = lanesOf(c1, BIAS_RATE);
   let vAx = lanes(sa1, sa2, V_X);
   let vAy = lanes(sa1, sa2, V_Y);
   let wA = lanes(sa1, sa2, W);
@@ -409,12 +430,12 @@ function solvePair(
   const dpAy = lanes(sa1, sa2, DP_Y);
   const dpBx = lanes(sb1, sb2, DP_X);
   const dpBy = lanes(sb1, sb2, DP_Y);
-  const shiftA = lanes(c1, c2, SHIFT_WEIGHT_A);
-  const shiftB = lanes(c1, c2, SHIFT_WEIGHT_B);
-  const eAx = f64x2.sub(dpAx, lanes(c1, c2, REF_DP_AX));
-  const eAy = f64x2.sub(dpAy, lanes(c1, c2, REF_DP_AY));
-  const eBx = f64x2.sub(dpBx, lanes(c1, c2, REF_DP_BX));
-  const eBy = f64x2.sub(dpBy, lanes(c1, c2, REF_DP_BY));
+  const shiftA = lanesOf(c1, SHIFT_WEIGHT_A);
+  const shiftB = lanesOf(c1, SHIFT_WEIGHT_B);
+  const eAx = f64x2.sub(dpAx, lanesOf(c1, REF_DP_AX));
+  const eAy = f64x2.sub(dpAy, lanesOf(c1, REF_DP_AY));
+  const eBx = f64x2.sub(dpBx, lanesOf(c1, REF_DP_BX));
+  const eBy = f64x2.sub(dpBy, lanesOf(c1, REF_DP_BY));
   const shiftX = f64x2.add(f64x2.mul(shiftA, eAx), f64x2.mul(shiftB, eBx));
   const shiftY = f64x2.add(f64x2.mul(shiftA, eAy), f64x2.mul(shiftB, eBy));
   const sAx = f64x2.sub(shiftX, eAx);
@@ -433,25 +454,23 @@ function solvePair(
   const nBy = f64x2.sub(f64x2.mul(qBc, ny), f64x2.mul(qBs, nx));
   const dpn = f64x2.add(f64x2.mul(f64x2.sub(dpBx, dpAx), nx), f64x2.mul(f64x2.sub(dpBy, dpAy), ny));
   // The soft step's numbers of a touching point (the scalar pass's `else if (useBias)`).
-  const massScaleSoft = useBias ? lanes(c1, c2, MASS_SCALE) : one;
-  const impulseScaleSoft = useBias ? lanes(c1, c2, IMPULSE_SCALE) : zero;
+  const massScaleSoft = useBias ? lanesOf(c1, MASS_SCALE) : one;
+  const impulseScaleSoft = useBias ? lanesOf(c1, IMPULSE_SCALE) : zero;
 
   let firstSequential = 0;
   if (block) {
-    const p1 = c1 + ((<usize>POINTS) << 3);
-    const p2 = p1 + ((<usize>POINT_STRIDE) << 3);
-    const q1 = c2 + ((<usize>POINTS) << 3);
-    const q2 = q1 + ((<usize>POINT_STRIDE) << 3);
-    // Lanes: (constraint 1, constraint 2); p1/q1 their first points, p2/q2 their second.
-    const separation1 = separationLanes(p1, q1, dpn, nAx, nAy, nBx, nBy);
-    const separation2 = separationLanes(p2, q2, dpn, nAx, nAy, nBx, nBy);
-    const n1A = f64x2.add(lanes(p1, q1, RN_A), dnA);
-    const n1B = f64x2.add(lanes(p1, q1, RN_B), dnB);
-    const n2A = f64x2.add(lanes(p2, q2, RN_A), dnA);
-    const n2B = f64x2.add(lanes(p2, q2, RN_B), dnB);
-    const k11 = lanes(c1, c2, BLOCK_K11);
-    const k12 = lanes(c1, c2, BLOCK_K12);
-    const k22 = lanes(c1, c2, BLOCK_K22);
+    const p1 = pointAt(c1, 0);
+    const p2 = p1 + ((<usize>POINT_STRIDE) << 4);
+    // Lanes: (constraint 1, constraint 2); p1 their first points, p2 their second.
+    const separation1 = separationLanes(p1, dpn, nAx, nAy, nBx, nBy);
+    const separation2 = separationLanes(p2, dpn, nAx, nAy, nBx, nBy);
+    const n1A = f64x2.add(lanesOf(p1, RN_A), dnA);
+    const n1B = f64x2.add(lanesOf(p1, RN_B), dnB);
+    const n2A = f64x2.add(lanesOf(p2, RN_A), dnA);
+    const n2B = f64x2.add(lanesOf(p2, RN_B), dnB);
+    const k11 = lanesOf(c1, BLOCK_K11);
+    const k12 = lanesOf(c1, BLOCK_K12);
+    const k22 = lanesOf(c1, BLOCK_K22);
     const speculative1 = f64x2.gt(separation1, zero);
     const speculative2 = f64x2.gt(separation2, zero);
     let bias1 = f64x2.mul(separation1, rate);
@@ -459,7 +478,7 @@ function solvePair(
     let gamma1 = zero;
     let gamma2 = zero;
     if (useBias) {
-      const scale = lanes(c1, c2, IMPULSE_SCALE);
+      const scale = lanesOf(c1, IMPULSE_SCALE);
       bias1 = v128.bitselect(
         bias1,
         f64x2.max(f64x2.mul(biasRate, separation1), floor),
@@ -479,8 +498,8 @@ function solvePair(
     const dvn = f64x2.add(f64x2.mul(f64x2.sub(vBx, vAx), nx), f64x2.mul(f64x2.sub(vBy, vAy), ny));
     const vn1 = f64x2.sub(f64x2.add(dvn, f64x2.mul(wB, n1B)), f64x2.mul(wA, n1A));
     const vn2 = f64x2.sub(f64x2.add(dvn, f64x2.mul(wB, n2B)), f64x2.mul(wA, n2A));
-    const accumulated1 = lanes(p1, q1, NORMAL_IMPULSE);
-    const accumulated2 = lanes(p2, q2, NORMAL_IMPULSE);
+    const accumulated1 = lanesOf(p1, NORMAL_IMPULSE);
+    const accumulated2 = lanesOf(p2, NORMAL_IMPULSE);
     const a11 = f64x2.add(k11, gamma1);
     const a22 = f64x2.add(k22, gamma2);
     const r1 = f64x2.sub(
@@ -514,14 +533,14 @@ function solvePair(
     firstSequential = 2;
     const dx1 = f64x2.sub(x1, accumulated1);
     const dx2 = f64x2.sub(x2, accumulated2);
-    stLanes(p1, q1, NORMAL_IMPULSE, x1);
-    stLanes(p2, q2, NORMAL_IMPULSE, x2);
+    stLanesOf(p1, NORMAL_IMPULSE, x1);
+    stLanesOf(p2, NORMAL_IMPULSE, x2);
     if (!useBias) {
-      stLanes(p1, q1, TOTAL_NORMAL_IMPULSE, f64x2.add(lanes(p1, q1, TOTAL_NORMAL_IMPULSE), x1));
-      stLanes(p2, q2, TOTAL_NORMAL_IMPULSE, f64x2.add(lanes(p2, q2, TOTAL_NORMAL_IMPULSE), x2));
+      stLanesOf(p1, TOTAL_NORMAL_IMPULSE, f64x2.add(lanesOf(p1, TOTAL_NORMAL_IMPULSE), x1));
+      stLanesOf(p2, TOTAL_NORMAL_IMPULSE, f64x2.add(lanesOf(p2, TOTAL_NORMAL_IMPULSE), x2));
     }
-    stMaxLanes(p1, q1, MAX_NORMAL_IMPULSE, dx1);
-    stMaxLanes(p2, q2, MAX_NORMAL_IMPULSE, dx2);
+    stMaxLanes(p1, MAX_NORMAL_IMPULSE, dx1);
+    stMaxLanes(p2, MAX_NORMAL_IMPULSE, dx2);
     const sum = f64x2.add(dx1, dx2);
     vAx = f64x2.sub(vAx, f64x2.mul(f64x2.mul(mA, sum), nx));
     vAy = f64x2.sub(vAy, f64x2.mul(f64x2.mul(mA, sum), ny));
@@ -532,11 +551,10 @@ function solvePair(
   }
 
   for (let j = firstSequential; j < pointCount; j++) {
-    const p1 = c1 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
-    const p2 = c2 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
-    const separation = separationLanes(p1, p2, dpn, nAx, nAy, nBx, nBy);
-    const leverA = f64x2.add(lanes(p1, p2, RN_A), dnA);
-    const leverB = f64x2.add(lanes(p1, p2, RN_B), dnB);
+    const p1 = pointAt(c1, j);
+    const separation = separationLanes(p1, dpn, nAx, nAy, nBx, nBy);
+    const leverA = f64x2.add(lanesOf(p1, RN_A), dnA);
+    const leverB = f64x2.add(lanesOf(p1, RN_B), dnB);
     const speculative = f64x2.gt(separation, zero);
     const bias = v128.bitselect(
       f64x2.mul(separation, rate),
@@ -552,28 +570,23 @@ function solvePair(
       ),
       f64x2.mul(wA, leverA),
     );
-    const accumulated = lanes(p1, p2, NORMAL_IMPULSE);
+    const accumulated = lanesOf(p1, NORMAL_IMPULSE);
     const newImpulse = f64x2.max(
       f64x2.sub(
         f64x2.sub(
           accumulated,
-          f64x2.mul(f64x2.mul(lanes(p1, p2, NORMAL_MASS), massScale), f64x2.add(vn, bias)),
+          f64x2.mul(f64x2.mul(lanesOf(p1, NORMAL_MASS), massScale), f64x2.add(vn, bias)),
         ),
         f64x2.mul(impulseScale, accumulated),
       ),
       zero,
     );
     const impulse = f64x2.sub(newImpulse, accumulated);
-    stLanes(p1, p2, NORMAL_IMPULSE, newImpulse);
+    stLanesOf(p1, NORMAL_IMPULSE, newImpulse);
     if (!useBias) {
-      stLanes(
-        p1,
-        p2,
-        TOTAL_NORMAL_IMPULSE,
-        f64x2.add(lanes(p1, p2, TOTAL_NORMAL_IMPULSE), newImpulse),
-      );
+      stLanesOf(p1, TOTAL_NORMAL_IMPULSE, f64x2.add(lanesOf(p1, TOTAL_NORMAL_IMPULSE), newImpulse));
     }
-    stMaxLanes(p1, p2, MAX_NORMAL_IMPULSE, impulse);
+    stMaxLanes(p1, MAX_NORMAL_IMPULSE, impulse);
     vAx = f64x2.sub(vAx, f64x2.mul(f64x2.mul(mA, impulse), nx));
     vAy = f64x2.sub(vAy, f64x2.mul(f64x2.mul(mA, impulse), ny));
     wA = f64x2.sub(wA, f64x2.mul(f64x2.mul(iA, leverA), impulse));
@@ -584,17 +597,16 @@ function solvePair(
 
   const dtA = f64x2.neg(f64x2.add(f64x2.mul(sAx, nx), f64x2.mul(sAy, ny)));
   const dtB = f64x2.neg(f64x2.add(f64x2.mul(sBx, nx), f64x2.mul(sBy, ny)));
-  const friction = lanes(c1, c2, FRICTION);
+  const friction = lanesOf(c1, FRICTION);
   for (let j = 0; j < pointCount; j++) {
-    const p1 = c1 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
-    const p2 = c2 + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+    const p1 = pointAt(c1, j);
     const leverA = f64x2.sub(
       dtA,
-      f64x2.add(f64x2.mul(lanes(p1, p2, R_AX), nx), f64x2.mul(lanes(p1, p2, R_AY), ny)),
+      f64x2.add(f64x2.mul(lanesOf(p1, R_AX), nx), f64x2.mul(lanesOf(p1, R_AY), ny)),
     );
     const leverB = f64x2.sub(
       dtB,
-      f64x2.add(f64x2.mul(lanes(p1, p2, R_BX), nx), f64x2.mul(lanes(p1, p2, R_BY), ny)),
+      f64x2.add(f64x2.mul(lanesOf(p1, R_BX), nx), f64x2.mul(lanesOf(p1, R_BY), ny)),
     );
     const vt = f64x2.sub(
       f64x2.add(
@@ -603,21 +615,20 @@ function solvePair(
       ),
       f64x2.mul(wA, leverA),
     );
-    const accumulated = lanes(p1, p2, TANGENT_IMPULSE);
-    const maxFriction = f64x2.mul(friction, lanes(p1, p2, NORMAL_IMPULSE));
+    const accumulated = lanesOf(p1, TANGENT_IMPULSE);
+    const maxFriction = f64x2.mul(friction, lanesOf(p1, NORMAL_IMPULSE));
     const minFriction = f64x2.neg(maxFriction);
-    const free = f64x2.sub(accumulated, f64x2.mul(lanes(p1, p2, TANGENT_MASS), vt));
+    const free = f64x2.sub(accumulated, f64x2.mul(lanesOf(p1, TANGENT_MASS), vt));
     const above = f64x2.gt(free, maxFriction);
     const below = v128.andnot(f64x2.lt(free, minFriction), above);
     const newImpulse = v128.bitselect(minFriction, v128.bitselect(maxFriction, free, above), below);
     const impulse = f64x2.sub(newImpulse, accumulated);
-    stLanes(p1, p2, TANGENT_IMPULSE, newImpulse);
+    stLanesOf(p1, TANGENT_IMPULSE, newImpulse);
     if (!useBias) {
-      stLanes(
+      stLanesOf(
         p1,
-        p2,
         TOTAL_TANGENT_IMPULSE,
-        f64x2.add(lanes(p1, p2, TOTAL_TANGENT_IMPULSE), newImpulse),
+        f64x2.add(lanesOf(p1, TOTAL_TANGENT_IMPULSE), newImpulse),
       );
     }
     vAx = f64x2.sub(vAx, f64x2.mul(f64x2.mul(mA, impulse), ny));
@@ -648,24 +659,24 @@ export function warmStart(
 ): void {
   for (let n = 0; n < count; n++) {
     const i = load<i32>(orderPtr + ((<usize>n) << 2));
-    if (LANES && n + 1 < count) {
+    if (LANES && (i & 1) == 0 && n + 1 < count) {
       const i2 = load<i32>(orderPtr + ((<usize>(n + 1)) << 2));
-      if (independent(bodiesPtr, i, i2) && warmStartPair(cPtr, bodiesPtr, sPtr, i, i2)) {
+      if (i2 == i + 1 && independent(bodiesPtr, i, i2) && warmStartPair(cPtr, bodiesPtr, sPtr, i)) {
         n++;
         continue;
       }
     }
-    const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
+    const cb = constraintAt(cPtr, i);
     const a = load<i32>(bodiesPtr + ((<usize>i) << 3));
     const b = load<i32>(bodiesPtr + ((<usize>i) << 3), 4);
     const sa = sPtr + ((<usize>a) << 3);
     const sb = sPtr + ((<usize>b) << 3);
-    const mA = ld(cb, INV_MASS_A);
-    const iA = ld(cb, INV_I_A);
-    const mB = ld(cb, INV_MASS_B);
-    const iB = ld(cb, INV_I_B);
-    const nx = ld(cb, NORMAL_X);
-    const ny = ld(cb, NORMAL_Y);
+    const mA = lc(cb, INV_MASS_A);
+    const iA = lc(cb, INV_I_A);
+    const mB = lc(cb, INV_MASS_B);
+    const iB = lc(cb, INV_I_B);
+    const nx = lc(cb, NORMAL_X);
+    const ny = lc(cb, NORMAL_Y);
     const tx = ny;
     const ty = -nx;
     let vAx = ld(sa, V_X);
@@ -674,19 +685,19 @@ export function warmStart(
     let vBx = ld(sb, V_X);
     let vBy = ld(sb, V_Y);
     let wB = ld(sb, W);
-    const pointCount = <i32>ld(cb, POINT_COUNT);
+    const pointCount = <i32>lc(cb, POINT_COUNT);
     // Lever arms to the common point of application (see Preparation.fill).
-    const shiftA = ld(cb, SHIFT_WEIGHT_A);
-    const shiftB = ld(cb, SHIFT_WEIGHT_B);
+    const shiftA = lc(cb, SHIFT_WEIGHT_A);
+    const shiftB = lc(cb, SHIFT_WEIGHT_B);
     const dpAx = ld(sa, DP_X);
     const dpAy = ld(sa, DP_Y);
     const dpBx = ld(sb, DP_X);
     const dpBy = ld(sb, DP_Y);
     // Motion since the lever arms were set: the step's start, or a circle pair's refresh.
-    const eAx = dpAx - ld(cb, REF_DP_AX);
-    const eAy = dpAy - ld(cb, REF_DP_AY);
-    const eBx = dpBx - ld(cb, REF_DP_BX);
-    const eBy = dpBy - ld(cb, REF_DP_BY);
+    const eAx = dpAx - lc(cb, REF_DP_AX);
+    const eAy = dpAy - lc(cb, REF_DP_AY);
+    const eBx = dpBx - lc(cb, REF_DP_BX);
+    const eBy = dpBy - lc(cb, REF_DP_BY);
     const shiftX = shiftA * eAx + shiftB * eBx;
     const shiftY = shiftA * eAy + shiftB * eBy;
     // The shift as cross products with n and t (see RN_A).
@@ -699,18 +710,18 @@ export function warmStart(
     const dtA = -(sAx * nx + sAy * ny);
     const dtB = -(sBx * nx + sBy * ny);
     for (let j = 0; j < pointCount; j++) {
-      const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+      const p = pointAt(cb, j);
       dropOneOffImpulse(p);
-      const pn = ld(p, NORMAL_IMPULSE);
-      const pt = ld(p, TANGENT_IMPULSE);
+      const pn = lc(p, NORMAL_IMPULSE);
+      const pt = lc(p, TANGENT_IMPULSE);
       const px = pn * nx + pt * tx;
       const py = pn * ny + pt * ty;
-      const rtA = dtA - (ld(p, R_AX) * nx + ld(p, R_AY) * ny);
-      const rtB = dtB - (ld(p, R_BX) * nx + ld(p, R_BY) * ny);
-      wA -= iA * (pn * (ld(p, RN_A) + dnA) + pt * rtA);
+      const rtA = dtA - (lc(p, R_AX) * nx + lc(p, R_AY) * ny);
+      const rtB = dtB - (lc(p, R_BX) * nx + lc(p, R_BY) * ny);
+      wA -= iA * (pn * (lc(p, RN_A) + dnA) + pt * rtA);
       vAx -= mA * px;
       vAy -= mA * py;
-      wB += iB * (pn * (ld(p, RN_B) + dnB) + pt * rtB);
+      wB += iB * (pn * (lc(p, RN_B) + dnB) + pt * rtB);
       vBx += mB * px;
       vBy += mB * py;
     }
@@ -754,29 +765,30 @@ export function solve(
   let bounces: i32 = 0;
   for (let n = 0; n < count; n++) {
     const i = load<i32>(orderPtr + ((<usize>n) << 2));
-    if (LANES && n + 1 < count) {
+    if (LANES && (i & 1) == 0 && n + 1 < count) {
       const i2 = load<i32>(orderPtr + ((<usize>(n + 1)) << 2));
       if (
+        i2 == i + 1 &&
         independent(bodiesPtr, i, i2) &&
-        solvePair(cPtr, bodiesPtr, sPtr, i, i2, inverseH, maxPushSpeed, useBias)
+        solvePair(cPtr, bodiesPtr, sPtr, i, inverseH, maxPushSpeed, useBias)
       ) {
         n++;
         continue;
       }
     }
-    const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
+    const cb = constraintAt(cPtr, i);
     const a = load<i32>(bodiesPtr + ((<usize>i) << 3));
     const b = load<i32>(bodiesPtr + ((<usize>i) << 3), 4);
     const sa = sPtr + ((<usize>a) << 3);
     const sb = sPtr + ((<usize>b) << 3);
-    const mA = ld(cb, INV_MASS_A);
-    const iA = ld(cb, INV_I_A);
-    const mB = ld(cb, INV_MASS_B);
-    const iB = ld(cb, INV_I_B);
-    const nx = ld(cb, NORMAL_X);
-    const ny = ld(cb, NORMAL_Y);
-    const restitution = ld(cb, RESTITUTION);
-    const biasRate = ld(cb, BIAS_RATE);
+    const mA = lc(cb, INV_MASS_A);
+    const iA = lc(cb, INV_I_A);
+    const mB = lc(cb, INV_MASS_B);
+    const iB = lc(cb, INV_I_B);
+    const nx = lc(cb, NORMAL_X);
+    const ny = lc(cb, NORMAL_Y);
+    const restitution = lc(cb, RESTITUTION);
+    const biasRate = lc(cb, BIAS_RATE);
     // Received: an impact of this sub-step may push this bouncy contact (see above).
     const receives =
       !useBias &&
@@ -795,12 +807,12 @@ export function solve(
     // Lever arms to the common point of application (see Preparation.fill), as cross products
     // with n and t (see RN_A): the prepared ones plus the shift of the common point since the
     // arms were set (the step's start, or a circle pair's refresh).
-    const shiftA = ld(cb, SHIFT_WEIGHT_A);
-    const shiftB = ld(cb, SHIFT_WEIGHT_B);
-    const eAx = dpAx - ld(cb, REF_DP_AX);
-    const eAy = dpAy - ld(cb, REF_DP_AY);
-    const eBx = dpBx - ld(cb, REF_DP_BX);
-    const eBy = dpBy - ld(cb, REF_DP_BY);
+    const shiftA = lc(cb, SHIFT_WEIGHT_A);
+    const shiftB = lc(cb, SHIFT_WEIGHT_B);
+    const eAx = dpAx - lc(cb, REF_DP_AX);
+    const eAy = dpAy - lc(cb, REF_DP_AY);
+    const eBx = dpBx - lc(cb, REF_DP_BX);
+    const eBy = dpBy - lc(cb, REF_DP_BY);
     const shiftX = shiftA * eAx + shiftB * eBx;
     const shiftY = shiftA * eAy + shiftB * eBy;
     let sAx = shiftX - eAx;
@@ -821,58 +833,58 @@ export function solve(
     const nBx = qBc * nx + qBs * ny;
     const nBy = qBc * ny - qBs * nx;
     const dpn = (dpBx - dpAx) * nx + (dpBy - dpAy) * ny;
-    const pointCount = <i32>ld(cb, POINT_COUNT);
+    const pointCount = <i32>lc(cb, POINT_COUNT);
 
     // Two-point manifolds are solved as one block when both points are plain contacts, or both
     // bounce now; otherwise (one point waits for its impact, or K is ill-conditioned, see
     // Preparation.fill) the points go one after the other below.
     let firstSequential = 0;
-    if (ld(cb, BLOCK) == 1) {
-      const p1 = cb + ((<usize>POINTS) << 3);
-      const p2 = p1 + ((<usize>POINT_STRIDE) << 3);
+    if (lc(cb, BLOCK) == 1) {
+      const p1 = pointAt(cb, 0);
+      const p2 = p1 + ((<usize>POINT_STRIDE) << 4);
       const separation1 =
         dpn +
-        (ld(p1, R_BX) * nBx + ld(p1, R_BY) * nBy) -
-        (ld(p1, R_AX) * nAx + ld(p1, R_AY) * nAy) +
-        ld(p1, BASE_SEPARATION);
+        (lc(p1, R_BX) * nBx + lc(p1, R_BY) * nBy) -
+        (lc(p1, R_AX) * nAx + lc(p1, R_AY) * nAy) +
+        lc(p1, BASE_SEPARATION);
       const separation2 =
         dpn +
-        (ld(p2, R_BX) * nBx + ld(p2, R_BY) * nBy) -
-        (ld(p2, R_AX) * nAx + ld(p2, R_AY) * nAy) +
-        ld(p2, BASE_SEPARATION);
-      const n1A = ld(p1, RN_A) + dnA;
-      const n1B = ld(p1, RN_B) + dnB;
-      const n2A = ld(p2, RN_A) + dnA;
-      const n2B = ld(p2, RN_B) + dnB;
-      const k11 = ld(cb, BLOCK_K11);
-      const k12 = ld(cb, BLOCK_K12);
-      const k22 = ld(cb, BLOCK_K22);
+        (lc(p2, R_BX) * nBx + lc(p2, R_BY) * nBy) -
+        (lc(p2, R_AX) * nAx + lc(p2, R_AY) * nAy) +
+        lc(p2, BASE_SEPARATION);
+      const n1A = lc(p1, RN_A) + dnA;
+      const n1B = lc(p1, RN_B) + dnB;
+      const n2A = lc(p2, RN_A) + dnA;
+      const n2B = lc(p2, RN_B) + dnB;
+      const k11 = lc(cb, BLOCK_K11);
+      const k12 = lc(cb, BLOCK_K12);
+      const k22 = lc(cb, BLOCK_K22);
       // Each point's target as in the sequential pass below: bias, and the softness gamma.
       let bias1: f64 = 0;
       let gamma1: f64 = 0;
       if (separation1 > 0) bias1 = separation1 * inverseH;
       else if (useBias) {
         bias1 = max<f64>(biasRate * separation1, -maxPushSpeed);
-        gamma1 = (k11 * ld(cb, IMPULSE_SCALE)) / ld(cb, MASS_SCALE);
+        gamma1 = (k11 * lc(cb, IMPULSE_SCALE)) / lc(cb, MASS_SCALE);
       }
       let bias2: f64 = 0;
       let gamma2: f64 = 0;
       if (separation2 > 0) bias2 = separation2 * inverseH;
       else if (useBias) {
         bias2 = max<f64>(biasRate * separation2, -maxPushSpeed);
-        gamma2 = (k22 * ld(cb, IMPULSE_SCALE)) / ld(cb, MASS_SCALE);
+        gamma2 = (k22 * lc(cb, IMPULSE_SCALE)) / lc(cb, MASS_SCALE);
       }
       const dvn = (vBx - vAx) * nx + (vBy - vAy) * ny;
       const vn1 = dvn + wB * n1B - wA * n1A;
       const vn2 = dvn + wB * n2B - wA * n2A;
-      const accumulated1 = ld(p1, NORMAL_IMPULSE);
-      const accumulated2 = ld(p2, NORMAL_IMPULSE);
+      const accumulated1 = lc(p1, NORMAL_IMPULSE);
+      const accumulated2 = lc(p2, NORMAL_IMPULSE);
       // The impact test of the sequential pass (see there), on the velocities before the pass.
       let isImpact1 = false;
       let isImpact2 = false;
       if (restitution > 0) {
-        const impact1 = ld(p1, IMPACT);
-        const impact2 = ld(p2, IMPACT);
+        const impact1 = lc(p1, IMPACT);
+        const impact2 = lc(p2, IMPACT);
         isImpact1 =
           accumulated1 == 0 &&
           (impact1 < 2 || impact1 == 3 || (impact1 == 4 && vn1 < -maxPushSpeed)) &&
@@ -889,8 +901,8 @@ export function solve(
         !isImpact1 &&
         !isImpact2 &&
         (vn1 < -loadSpeed || vn2 < -loadSpeed) &&
-        (ld(p1, IMPACT) != 4 || vn1 < -maxPushSpeed) &&
-        (ld(p2, IMPACT) != 4 || vn2 < -maxPushSpeed)
+        (lc(p1, IMPACT) != 4 || vn1 < -maxPushSpeed) &&
+        (lc(p2, IMPACT) != 4 || vn2 < -maxPushSpeed)
       ) {
         firstSequential = 2;
       } else if (!isImpact1 && !isImpact2) {
@@ -940,19 +952,19 @@ export function solve(
         if (x1 >= 0 && x2 >= 0) {
           firstSequential = 2;
           if (restitution > 0) {
-            if (ld(p1, IMPACT) == 1) st(p1, IMPACT, 0);
-            if (ld(p2, IMPACT) == 1) st(p2, IMPACT, 0);
+            if (lc(p1, IMPACT) == 1) sc(p1, IMPACT, 0);
+            if (lc(p2, IMPACT) == 1) sc(p2, IMPACT, 0);
           }
           const dx1 = x1 - accumulated1;
           const dx2 = x2 - accumulated2;
-          st(p1, NORMAL_IMPULSE, x1);
-          st(p2, NORMAL_IMPULSE, x2);
+          sc(p1, NORMAL_IMPULSE, x1);
+          sc(p2, NORMAL_IMPULSE, x2);
           if (!useBias) {
-            st(p1, TOTAL_NORMAL_IMPULSE, ld(p1, TOTAL_NORMAL_IMPULSE) + x1);
-            st(p2, TOTAL_NORMAL_IMPULSE, ld(p2, TOTAL_NORMAL_IMPULSE) + x2);
+            sc(p1, TOTAL_NORMAL_IMPULSE, lc(p1, TOTAL_NORMAL_IMPULSE) + x1);
+            sc(p2, TOTAL_NORMAL_IMPULSE, lc(p2, TOTAL_NORMAL_IMPULSE) + x2);
           }
-          if (dx1 > ld(p1, MAX_NORMAL_IMPULSE)) st(p1, MAX_NORMAL_IMPULSE, dx1);
-          if (dx2 > ld(p2, MAX_NORMAL_IMPULSE)) st(p2, MAX_NORMAL_IMPULSE, dx2);
+          if (dx1 > lc(p1, MAX_NORMAL_IMPULSE)) sc(p1, MAX_NORMAL_IMPULSE, dx1);
+          if (dx2 > lc(p2, MAX_NORMAL_IMPULSE)) sc(p2, MAX_NORMAL_IMPULSE, dx2);
           const sum = dx1 + dx2;
           vAx -= mA * sum * nx;
           vAy -= mA * sum * ny;
@@ -971,20 +983,20 @@ export function solve(
         const tBx = dpBx - vBx * back;
         const tBy = dpBy - vBy * back;
         // The common point of application, where it was at that moment.
-        const eAx = tAx - ld(cb, REF_DP_AX);
-        const eAy = tAy - ld(cb, REF_DP_AY);
-        const eBx = tBx - ld(cb, REF_DP_BX);
-        const eBy = tBy - ld(cb, REF_DP_BY);
+        const eAx = tAx - lc(cb, REF_DP_AX);
+        const eAy = tAy - lc(cb, REF_DP_AY);
+        const eBx = tBx - lc(cb, REF_DP_BX);
+        const eBy = tBy - lc(cb, REF_DP_BY);
         const sx = shiftA * eAx + shiftB * eBx;
         const sy = shiftA * eAy + shiftB * eBy;
-        const b1Ax = ld(p1, R_AX) + sx - eAx;
-        const b1Ay = ld(p1, R_AY) + sy - eAy;
-        const b1Bx = ld(p1, R_BX) + sx - eBx;
-        const b1By = ld(p1, R_BY) + sy - eBy;
-        const b2Ax = ld(p2, R_AX) + sx - eAx;
-        const b2Ay = ld(p2, R_AY) + sy - eAy;
-        const b2Bx = ld(p2, R_BX) + sx - eBx;
-        const b2By = ld(p2, R_BY) + sy - eBy;
+        const b1Ax = lc(p1, R_AX) + sx - eAx;
+        const b1Ay = lc(p1, R_AY) + sy - eAy;
+        const b1Bx = lc(p1, R_BX) + sx - eBx;
+        const b1By = lc(p1, R_BY) + sy - eBy;
+        const b2Ax = lc(p2, R_AX) + sx - eAx;
+        const b2Ay = lc(p2, R_AY) + sy - eAy;
+        const b2Bx = lc(p2, R_BX) + sx - eBx;
+        const b2By = lc(p2, R_BY) + sy - eBy;
         // The approaches at that moment (see the single-point case below).
         const kA = markOf(marksPtr, a);
         const kB = markOf(marksPtr, b);
@@ -1029,16 +1041,16 @@ export function solve(
         }
         if (x1 >= 0 && x2 >= 0) {
           firstSequential = 2;
-          st(p1, NORMAL_IMPULSE, x1);
-          st(p2, NORMAL_IMPULSE, x2);
-          st(p1, TOTAL_NORMAL_IMPULSE, ld(p1, TOTAL_NORMAL_IMPULSE) + x1);
-          st(p2, TOTAL_NORMAL_IMPULSE, ld(p2, TOTAL_NORMAL_IMPULSE) + x2);
-          st(p1, RELATIVE_VELOCITY, approach1);
-          st(p2, RELATIVE_VELOCITY, approach2);
-          st(p1, IMPACT, 2);
-          st(p2, IMPACT, 2);
-          if (x1 > ld(p1, MAX_NORMAL_IMPULSE)) st(p1, MAX_NORMAL_IMPULSE, x1);
-          if (x2 > ld(p2, MAX_NORMAL_IMPULSE)) st(p2, MAX_NORMAL_IMPULSE, x2);
+          sc(p1, NORMAL_IMPULSE, x1);
+          sc(p2, NORMAL_IMPULSE, x2);
+          sc(p1, TOTAL_NORMAL_IMPULSE, lc(p1, TOTAL_NORMAL_IMPULSE) + x1);
+          sc(p2, TOTAL_NORMAL_IMPULSE, lc(p2, TOTAL_NORMAL_IMPULSE) + x2);
+          sc(p1, RELATIVE_VELOCITY, approach1);
+          sc(p2, RELATIVE_VELOCITY, approach2);
+          sc(p1, IMPACT, 2);
+          sc(p2, IMPACT, 2);
+          if (x1 > lc(p1, MAX_NORMAL_IMPULSE)) sc(p1, MAX_NORMAL_IMPULSE, x1);
+          if (x2 > lc(p2, MAX_NORMAL_IMPULSE)) sc(p2, MAX_NORMAL_IMPULSE, x2);
           const px = (x1 + x2) * nx;
           const py = (x1 + x2) * ny;
           const dvAx = -mA * px;
@@ -1062,15 +1074,15 @@ export function solve(
     }
 
     for (let j = firstSequential; j < pointCount; j++) {
-      const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+      const p = pointAt(cb, j);
       // Current separation: the anchors moved with their bodies since the step began.
       const separation =
         dpn +
-        (ld(p, R_BX) * nBx + ld(p, R_BY) * nBy) -
-        (ld(p, R_AX) * nAx + ld(p, R_AY) * nAy) +
-        ld(p, BASE_SEPARATION);
-      const leverA = ld(p, RN_A) + dnA;
-      const leverB = ld(p, RN_B) + dnB;
+        (lc(p, R_BX) * nBx + lc(p, R_BY) * nBy) -
+        (lc(p, R_AX) * nAx + lc(p, R_AY) * nAy) +
+        lc(p, BASE_SEPARATION);
+      const leverA = lc(p, RN_A) + dnA;
+      const leverB = lc(p, RN_B) + dnB;
       let bias: f64 = 0;
       let massScale: f64 = 1;
       let impulseScale: f64 = 0;
@@ -1079,11 +1091,11 @@ export function solve(
         bias = separation * inverseH;
       } else if (useBias) {
         bias = max<f64>(biasRate * separation, -maxPushSpeed);
-        massScale = ld(cb, MASS_SCALE);
-        impulseScale = ld(cb, IMPULSE_SCALE);
+        massScale = lc(cb, MASS_SCALE);
+        impulseScale = lc(cb, IMPULSE_SCALE);
       }
       const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * leverB - wA * leverA;
-      const accumulated = ld(p, NORMAL_IMPULSE);
+      const accumulated = lc(p, NORMAL_IMPULSE);
       // Restitution (Newton's law) at the moment of impact. An impact is an approach faster than
       // the threshold on a point not already pushing, and not pressed unless it approaches faster
       // than a load presses (an impact that travelled to it, see impacts) (a resting contact is
@@ -1095,7 +1107,7 @@ export function solve(
       // the sub-steps (Box2D v3) comes after the normal of sliding particles has turned and after
       // gravity has changed the approach, and cannot bounce a particle twice in one step.
       if (restitution > 0) {
-        const impactState = ld(p, IMPACT);
+        const impactState = lc(p, IMPACT);
         if (
           accumulated == 0 &&
           (impactState < 2 || impactState == 3 || (impactState == 4 && vn < -maxPushSpeed)) &&
@@ -1104,7 +1116,7 @@ export function solve(
         ) {
           if (useBias || separation > 0) {
             // Not touching yet: the impact happens when the positions get there.
-            st(p, IMPACT, useBias ? 1 : 0);
+            sc(p, IMPACT, useBias ? 1 : 0);
             continue;
           }
           // Back to the moment of contact: the overlap divided by the approach speed ago.
@@ -1119,12 +1131,12 @@ export function solve(
           let bAy: f64;
           let bBx: f64;
           let bBy: f64;
-          const radiusA = ld(cb, RADIUS_A);
-          const radiusB = ld(cb, RADIUS_B);
+          const radiusA = lc(cb, RADIUS_A);
+          const radiusB = lc(cb, RADIUS_B);
           if (radiusA > 0 && radiusB > 0) {
             // Two particles meet along the line through their centres at that moment.
-            const cx = ld(cb, CENTER_DX) + tBx - tAx;
-            const cy = ld(cb, CENTER_DY) + tBy - tAy;
+            const cx = lc(cb, CENTER_DX) + tBx - tAx;
+            const cy = lc(cb, CENTER_DY) + tBy - tAy;
             const length = Math.sqrt(cx * cx + cy * cy);
             if (length > 1e-12) {
               bnx = cx / length;
@@ -1135,16 +1147,16 @@ export function solve(
             bBx = -bnx * radiusB;
             bBy = -bny * radiusB;
           } else {
-            const eAx = tAx - ld(cb, REF_DP_AX);
-            const eAy = tAy - ld(cb, REF_DP_AY);
-            const eBx = tBx - ld(cb, REF_DP_BX);
-            const eBy = tBy - ld(cb, REF_DP_BY);
+            const eAx = tAx - lc(cb, REF_DP_AX);
+            const eAy = tAy - lc(cb, REF_DP_AY);
+            const eBx = tBx - lc(cb, REF_DP_BX);
+            const eBy = tBy - lc(cb, REF_DP_BY);
             const sx = shiftA * eAx + shiftB * eBx;
             const sy = shiftA * eAy + shiftB * eBy;
-            bAx = ld(p, R_AX) + sx - eAx;
-            bAy = ld(p, R_AY) + sy - eAy;
-            bBx = ld(p, R_BX) + sx - eBx;
-            bBy = ld(p, R_BY) + sy - eBy;
+            bAx = lc(p, R_AX) + sx - eAx;
+            bAy = lc(p, R_AY) + sy - eAy;
+            bBx = lc(p, R_BX) + sx - eBx;
+            bBy = lc(p, R_BY) + sy - eBy;
           }
           // The approach at that moment. The sub-step's velocity is its average (semi-implicit
           // Euler: positions move by h v); gravity and forces changed it by the integration's
@@ -1163,11 +1175,11 @@ export function solve(
           const rnB = bBx * bny - bBy * bnx;
           const k = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
           const bounce: f64 = approach < 0 && k > 0 ? (-(1 + restitution) * approach) / k : 0;
-          st(p, NORMAL_IMPULSE, bounce);
-          st(p, TOTAL_NORMAL_IMPULSE, ld(p, TOTAL_NORMAL_IMPULSE) + bounce);
-          st(p, RELATIVE_VELOCITY, approach);
-          st(p, IMPACT, 2);
-          if (bounce > ld(p, MAX_NORMAL_IMPULSE)) st(p, MAX_NORMAL_IMPULSE, bounce);
+          sc(p, NORMAL_IMPULSE, bounce);
+          sc(p, TOTAL_NORMAL_IMPULSE, lc(p, TOTAL_NORMAL_IMPULSE) + bounce);
+          sc(p, RELATIVE_VELOCITY, approach);
+          sc(p, IMPACT, 2);
+          if (bounce > lc(p, MAX_NORMAL_IMPULSE)) sc(p, MAX_NORMAL_IMPULSE, bounce);
           const px = bounce * bnx;
           const py = bounce * bny;
           const dvAx = -mA * px;
@@ -1187,7 +1199,7 @@ export function solve(
           bounced = true;
           continue;
         }
-        if (impactState == 1) st(p, IMPACT, 0);
+        if (impactState == 1) sc(p, IMPACT, 0);
         // A pressed point that overlaps (impact state 4) is pushed out, not bounced, unless it
         // approaches faster than any push-out moves it: then an impact reached it.
         if (
@@ -1199,14 +1211,14 @@ export function solve(
         }
       }
       const newImpulse = max<f64>(
-        accumulated - ld(p, NORMAL_MASS) * massScale * (vn + bias) - impulseScale * accumulated,
+        accumulated - lc(p, NORMAL_MASS) * massScale * (vn + bias) - impulseScale * accumulated,
         0,
       );
       const impulse = newImpulse - accumulated;
-      st(p, NORMAL_IMPULSE, newImpulse);
+      sc(p, NORMAL_IMPULSE, newImpulse);
       // The relax pass ends the sub-step: the accumulated impulse is what acted in it.
-      if (!useBias) st(p, TOTAL_NORMAL_IMPULSE, ld(p, TOTAL_NORMAL_IMPULSE) + newImpulse);
-      if (impulse > ld(p, MAX_NORMAL_IMPULSE)) st(p, MAX_NORMAL_IMPULSE, impulse);
+      if (!useBias) sc(p, TOTAL_NORMAL_IMPULSE, lc(p, TOTAL_NORMAL_IMPULSE) + newImpulse);
+      if (impulse > lc(p, MAX_NORMAL_IMPULSE)) sc(p, MAX_NORMAL_IMPULSE, impulse);
       vAx -= mA * impulse * nx;
       vAy -= mA * impulse * ny;
       wA -= iA * leverA * impulse;
@@ -1220,10 +1232,10 @@ export function solve(
       if (a != 0) st(markOf(marksPtr, a), MARK, 1);
       if (b != 0) st(markOf(marksPtr, b), MARK, 1);
       // The bounce moved the bodies on: friction acts at the common point where it is now.
-      const eAx = ld(sa, DP_X) - ld(cb, REF_DP_AX);
-      const eAy = ld(sa, DP_Y) - ld(cb, REF_DP_AY);
-      const eBx = ld(sb, DP_X) - ld(cb, REF_DP_BX);
-      const eBy = ld(sb, DP_Y) - ld(cb, REF_DP_BY);
+      const eAx = ld(sa, DP_X) - lc(cb, REF_DP_AX);
+      const eAy = ld(sa, DP_Y) - lc(cb, REF_DP_AY);
+      const eBx = ld(sb, DP_X) - lc(cb, REF_DP_BX);
+      const eBy = ld(sb, DP_Y) - lc(cb, REF_DP_BY);
       const sx = shiftA * eAx + shiftB * eBx;
       const sy = shiftA * eAy + shiftB * eBy;
       sAx = sx - eAx;
@@ -1233,21 +1245,21 @@ export function solve(
     }
     const dtA = -(sAx * nx + sAy * ny);
     const dtB = -(sBx * nx + sBy * ny);
-    const friction = ld(cb, FRICTION);
+    const friction = lc(cb, FRICTION);
     for (let j = 0; j < pointCount; j++) {
-      const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
-      const leverA = dtA - (ld(p, R_AX) * nx + ld(p, R_AY) * ny);
-      const leverB = dtB - (ld(p, R_BX) * nx + ld(p, R_BY) * ny);
+      const p = pointAt(cb, j);
+      const leverA = dtA - (lc(p, R_AX) * nx + lc(p, R_AY) * ny);
+      const leverB = dtB - (lc(p, R_BX) * nx + lc(p, R_BY) * ny);
       // Slip along t = (ny, -nx).
       const vt = (vBx - vAx) * ny - (vBy - vAy) * nx + wB * leverB - wA * leverA;
-      const accumulated = ld(p, TANGENT_IMPULSE);
-      const maxFriction = friction * ld(p, NORMAL_IMPULSE);
-      let newImpulse = accumulated - ld(p, TANGENT_MASS) * vt;
+      const accumulated = lc(p, TANGENT_IMPULSE);
+      const maxFriction = friction * lc(p, NORMAL_IMPULSE);
+      let newImpulse = accumulated - lc(p, TANGENT_MASS) * vt;
       if (newImpulse > maxFriction) newImpulse = maxFriction;
       else if (newImpulse < -maxFriction) newImpulse = -maxFriction;
       const impulse = newImpulse - accumulated;
-      st(p, TANGENT_IMPULSE, newImpulse);
-      if (!useBias) st(p, TOTAL_TANGENT_IMPULSE, ld(p, TOTAL_TANGENT_IMPULSE) + newImpulse);
+      sc(p, TANGENT_IMPULSE, newImpulse);
+      if (!useBias) sc(p, TOTAL_TANGENT_IMPULSE, lc(p, TOTAL_TANGENT_IMPULSE) + newImpulse);
       vAx -= mA * impulse * ny;
       vAy += mA * impulse * nx;
       wA -= iA * leverA * impulse;
@@ -1318,15 +1330,15 @@ export function impacts(
   let started: i32 = 0;
   for (let n = 0; n < count; n++) {
     const i = load<i32>(orderPtr + ((<usize>n) << 2));
-    const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
-    const pointCount = <i32>ld(cb, POINT_COUNT);
+    const cb = constraintAt(cPtr, i);
+    const pointCount = <i32>lc(cb, POINT_COUNT);
     if (mode == IMPACT_OPEN || mode == IMPACT_CLOSE || mode == IMPACT_ROUND) {
       const from2: f64 = mode == IMPACT_OPEN ? 2 : 5;
       const to2: f64 = mode == IMPACT_OPEN ? 5 : 6;
       for (let j = 0; j < pointCount; j++) {
-        const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
-        if (ld(p, IMPACT) == from2) {
-          st(p, IMPACT, to2);
+        const p = pointAt(cb, j);
+        if (lc(p, IMPACT) == from2) {
+          sc(p, IMPACT, to2);
           if (mode == IMPACT_OPEN) started++;
         }
       }
@@ -1344,11 +1356,11 @@ export function impacts(
     if (mode == IMPACT_ROUND && load<f64>(markA) + load<f64>(markB) == 0) continue;
     const sa = sPtr + ((<usize>a) << 3);
     const sb = sPtr + ((<usize>b) << 3);
-    const mA = ld(cb, INV_MASS_A);
-    const iA = ld(cb, INV_I_A);
-    const mB = ld(cb, INV_MASS_B);
-    const iB = ld(cb, INV_I_B);
-    const restitution = ld(cb, RESTITUTION);
+    const mA = lc(cb, INV_MASS_A);
+    const iA = lc(cb, INV_I_A);
+    const mB = lc(cb, INV_MASS_B);
+    const iB = lc(cb, INV_I_B);
+    const restitution = lc(cb, RESTITUTION);
     let vAx = ld(sa, V_X);
     let vAy = ld(sa, V_Y);
     let wA = ld(sa, W);
@@ -1363,15 +1375,15 @@ export function impacts(
     // this sub-step moved them on since the normal was set), with no lever: the impulses act on
     // one line (momentum and angular momentum kept) through both centres (no spin), as the
     // relax pass's bounce does at the moment of contact (see solve).
-    const radiusA = ld(cb, RADIUS_A);
-    const radiusB = ld(cb, RADIUS_B);
-    let nx = ld(cb, NORMAL_X);
-    let ny = ld(cb, NORMAL_Y);
+    const radiusA = lc(cb, RADIUS_A);
+    const radiusB = lc(cb, RADIUS_B);
+    let nx = lc(cb, NORMAL_X);
+    let ny = lc(cb, NORMAL_Y);
     let gap: f64 = 0;
     const particles = radiusA > 0 && radiusB > 0;
     if (particles) {
-      const cx = ld(cb, CENTER_DX) + dpBx - dpAx;
-      const cy = ld(cb, CENTER_DY) + dpBy - dpAy;
+      const cx = lc(cb, CENTER_DX) + dpBx - dpAx;
+      const cy = lc(cb, CENTER_DY) + dpBy - dpAy;
       const length = Math.sqrt(cx * cx + cy * cy);
       if (length > 1e-12) {
         nx = cx / length;
@@ -1379,12 +1391,12 @@ export function impacts(
       }
       gap = length - radiusA - radiusB;
     }
-    const shiftA = ld(cb, SHIFT_WEIGHT_A);
-    const shiftB = ld(cb, SHIFT_WEIGHT_B);
-    const eAx = dpAx - ld(cb, REF_DP_AX);
-    const eAy = dpAy - ld(cb, REF_DP_AY);
-    const eBx = dpBx - ld(cb, REF_DP_BX);
-    const eBy = dpBy - ld(cb, REF_DP_BY);
+    const shiftA = lc(cb, SHIFT_WEIGHT_A);
+    const shiftB = lc(cb, SHIFT_WEIGHT_B);
+    const eAx = dpAx - lc(cb, REF_DP_AX);
+    const eAy = dpAy - lc(cb, REF_DP_AY);
+    const eBx = dpBx - lc(cb, REF_DP_BX);
+    const eBy = dpBy - lc(cb, REF_DP_BY);
     const shiftX = shiftA * eAx + shiftB * eBx;
     const shiftY = shiftA * eAy + shiftB * eBy;
     const dnA: f64 = particles ? 0 : (shiftX - eAx) * ny - (shiftY - eAy) * nx;
@@ -1399,37 +1411,37 @@ export function impacts(
     const nBy = qBc * ny - qBs * nx;
     const dpn = (dpBx - dpAx) * nx + (dpBy - dpAy) * ny;
     let firstSequential = 0;
-    if (mode == IMPACT_ROUND && ld(cb, BLOCK) == 1) {
-      const p1 = cb + ((<usize>POINTS) << 3);
-      const p2 = p1 + ((<usize>POINT_STRIDE) << 3);
+    if (mode == IMPACT_ROUND && lc(cb, BLOCK) == 1) {
+      const p1 = pointAt(cb, 0);
+      const p2 = p1 + ((<usize>POINT_STRIDE) << 4);
       const separation1 =
         dpn +
-        (ld(p1, R_BX) * nBx + ld(p1, R_BY) * nBy) -
-        (ld(p1, R_AX) * nAx + ld(p1, R_AY) * nAy) +
-        ld(p1, BASE_SEPARATION);
+        (lc(p1, R_BX) * nBx + lc(p1, R_BY) * nBy) -
+        (lc(p1, R_AX) * nAx + lc(p1, R_AY) * nAy) +
+        lc(p1, BASE_SEPARATION);
       const separation2 =
         dpn +
-        (ld(p2, R_BX) * nBx + ld(p2, R_BY) * nBy) -
-        (ld(p2, R_AX) * nAx + ld(p2, R_AY) * nAy) +
-        ld(p2, BASE_SEPARATION);
-      const n1A = ld(p1, RN_A) + dnA;
-      const n1B = ld(p1, RN_B) + dnB;
-      const n2A = ld(p2, RN_A) + dnA;
-      const n2B = ld(p2, RN_B) + dnB;
+        (lc(p2, R_BX) * nBx + lc(p2, R_BY) * nBy) -
+        (lc(p2, R_AX) * nAx + lc(p2, R_AY) * nAy) +
+        lc(p2, BASE_SEPARATION);
+      const n1A = lc(p1, RN_A) + dnA;
+      const n1B = lc(p1, RN_B) + dnB;
+      const n2A = lc(p2, RN_A) + dnA;
+      const n2B = lc(p2, RN_B) + dnB;
       const dvn = (vBx - vAx) * nx + (vBy - vAy) * ny;
       const vn1 = dvn + wB * n1B - wA * n1A;
       const vn2 = dvn + wB * n2B - wA * n2A;
       const speed1: f64 =
-        ld(p1, NORMAL_IMPULSE) > 0 && ld(p1, IMPACT) != 2 ? loadSpeed : impactSpeed;
+        lc(p1, NORMAL_IMPULSE) > 0 && lc(p1, IMPACT) != 2 ? loadSpeed : impactSpeed;
       const speed2: f64 =
-        ld(p2, NORMAL_IMPULSE) > 0 && ld(p2, IMPACT) != 2 ? loadSpeed : impactSpeed;
+        lc(p2, NORMAL_IMPULSE) > 0 && lc(p2, IMPACT) != 2 ? loadSpeed : impactSpeed;
       if (
         separation1 < LINEAR_SLOP &&
         separation2 < LINEAR_SLOP &&
         vn1 < -speed1 &&
         vn2 < -speed2 &&
-        (ld(p1, IMPACT) != 4 || vn1 < -pushSpeed) &&
-        (ld(p2, IMPACT) != 4 || vn2 < -pushSpeed)
+        (lc(p1, IMPACT) != 4 || vn1 < -pushSpeed) &&
+        (lc(p2, IMPACT) != 4 || vn2 < -pushSpeed)
       ) {
         const mAB = mA + mB;
         const k11 = mAB + iA * n1A * n1A + iB * n1B * n1B;
@@ -1459,16 +1471,16 @@ export function impacts(
         if (x1 >= 0 && x2 >= 0) {
           firstSequential = 2;
           started++;
-          st(p1, NORMAL_IMPULSE, ld(p1, NORMAL_IMPULSE) + x1);
-          st(p2, NORMAL_IMPULSE, ld(p2, NORMAL_IMPULSE) + x2);
-          st(p1, TOTAL_NORMAL_IMPULSE, ld(p1, TOTAL_NORMAL_IMPULSE) + x1);
-          st(p2, TOTAL_NORMAL_IMPULSE, ld(p2, TOTAL_NORMAL_IMPULSE) + x2);
-          if (x1 > ld(p1, MAX_NORMAL_IMPULSE)) st(p1, MAX_NORMAL_IMPULSE, x1);
-          if (x2 > ld(p2, MAX_NORMAL_IMPULSE)) st(p2, MAX_NORMAL_IMPULSE, x2);
-          st(p1, RELATIVE_VELOCITY, u1);
-          st(p2, RELATIVE_VELOCITY, u2);
-          st(p1, IMPACT, 5);
-          st(p2, IMPACT, 5);
+          sc(p1, NORMAL_IMPULSE, lc(p1, NORMAL_IMPULSE) + x1);
+          sc(p2, NORMAL_IMPULSE, lc(p2, NORMAL_IMPULSE) + x2);
+          sc(p1, TOTAL_NORMAL_IMPULSE, lc(p1, TOTAL_NORMAL_IMPULSE) + x1);
+          sc(p2, TOTAL_NORMAL_IMPULSE, lc(p2, TOTAL_NORMAL_IMPULSE) + x2);
+          if (x1 > lc(p1, MAX_NORMAL_IMPULSE)) sc(p1, MAX_NORMAL_IMPULSE, x1);
+          if (x2 > lc(p2, MAX_NORMAL_IMPULSE)) sc(p2, MAX_NORMAL_IMPULSE, x2);
+          sc(p1, RELATIVE_VELOCITY, u1);
+          sc(p2, RELATIVE_VELOCITY, u2);
+          sc(p1, IMPACT, 5);
+          sc(p2, IMPACT, 5);
           const sum = x1 + x2;
           vAx -= mA * sum * nx;
           vAy -= mA * sum * ny;
@@ -1481,40 +1493,40 @@ export function impacts(
     }
     let changed = firstSequential == 2;
     for (let j = firstSequential; j < pointCount; j++) {
-      const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
-      const impact = ld(p, IMPACT);
+      const p = pointAt(cb, j);
+      const impact = lc(p, IMPACT);
       if (mode == IMPACT_CONTINUE ? impact != 5 : impact == 5) continue;
-      const leverA = ld(p, RN_A) + dnA;
-      const leverB = ld(p, RN_B) + dnB;
+      const leverA = lc(p, RN_A) + dnA;
+      const leverB = lc(p, RN_B) + dnB;
       const vn = (vBx - vAx) * nx + (vBy - vAy) * ny + wB * leverB - wA * leverA;
       // A pressed, overlapping point (4) only when faster than a push-out (see solve).
       if (mode != IMPACT_CONTINUE && impact == 4 && vn >= -pushSpeed) continue;
       // The approach at the sub-step's end (see above).
       const u = vn + 0.5 * kickNormal(markA, markB, nx, ny, leverA, leverB);
-      const accumulated = ld(p, NORMAL_IMPULSE);
+      const accumulated = lc(p, NORMAL_IMPULSE);
       const k = mA + mB + iA * leverA * leverA + iB * leverB * leverB;
       if (!(k > 0)) continue;
       let impulse: f64;
       if (mode == IMPACT_CONTINUE) {
-        const target = -restitution * ld(p, RELATIVE_VELOCITY);
+        const target = -restitution * lc(p, RELATIVE_VELOCITY);
         impulse = max<f64>((target - u) / k, -accumulated);
       } else {
         if (vn >= -(accumulated > 0 && impact != 2 ? loadSpeed : impactSpeed)) continue;
         const separation = particles
           ? gap
           : dpn +
-            (ld(p, R_BX) * nBx + ld(p, R_BY) * nBy) -
-            (ld(p, R_AX) * nAx + ld(p, R_AY) * nAy) +
-            ld(p, BASE_SEPARATION);
+            (lc(p, R_BX) * nBx + lc(p, R_BY) * nBy) -
+            (lc(p, R_AX) * nAx + lc(p, R_AY) * nAy) +
+            lc(p, BASE_SEPARATION);
         if (separation >= LINEAR_SLOP) continue;
         impulse = (-(1 + restitution) * u) / k;
         started++;
-        st(p, RELATIVE_VELOCITY, u);
-        st(p, IMPACT, 5);
-        if (impulse > ld(p, MAX_NORMAL_IMPULSE)) st(p, MAX_NORMAL_IMPULSE, impulse);
+        sc(p, RELATIVE_VELOCITY, u);
+        sc(p, IMPACT, 5);
+        if (impulse > lc(p, MAX_NORMAL_IMPULSE)) sc(p, MAX_NORMAL_IMPULSE, impulse);
       }
-      st(p, NORMAL_IMPULSE, accumulated + impulse);
-      st(p, TOTAL_NORMAL_IMPULSE, ld(p, TOTAL_NORMAL_IMPULSE) + impulse);
+      sc(p, NORMAL_IMPULSE, accumulated + impulse);
+      sc(p, TOTAL_NORMAL_IMPULSE, lc(p, TOTAL_NORMAL_IMPULSE) + impulse);
       vAx -= mA * impulse * nx;
       vAy -= mA * impulse * ny;
       wA -= iA * leverA * impulse;
@@ -1622,24 +1634,24 @@ class Preparation {
     const mB = ld(tB, TABLE_INV_MASS);
     const iA = ld(tA, TABLE_INV_I);
     const iB = ld(tB, TABLE_INV_I);
-    const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
+    const cb = constraintAt(cPtr, i);
     const a = load<i32>(bodiesPtr + ((<usize>i) << 3));
     const b = load<i32>(bodiesPtr + ((<usize>i) << 3), 4);
     // Stiffer against immovable bodies: nothing on the other side gives way.
     const immovable = mA == 0 || mB == 0;
     const nx = ld(m, C_NORMAL_X);
     const ny = ld(m, C_NORMAL_Y);
-    st(cb, NORMAL_X, nx);
-    st(cb, NORMAL_Y, ny);
-    st(cb, FRICTION, ld(m, C_FRICTION));
-    st(cb, RESTITUTION, ld(m, C_RESTITUTION));
-    st(cb, INV_MASS_A, mA);
-    st(cb, INV_I_A, iA);
-    st(cb, INV_MASS_B, mB);
-    st(cb, INV_I_B, iB);
-    st(cb, BIAS_RATE, immovable ? staticBiasRate : contactBiasRate);
-    st(cb, MASS_SCALE, immovable ? staticMassScale : contactMassScale);
-    st(cb, IMPULSE_SCALE, immovable ? staticImpulseScale : contactImpulseScale);
+    sc(cb, NORMAL_X, nx);
+    sc(cb, NORMAL_Y, ny);
+    sc(cb, FRICTION, ld(m, C_FRICTION));
+    sc(cb, RESTITUTION, ld(m, C_RESTITUTION));
+    sc(cb, INV_MASS_A, mA);
+    sc(cb, INV_I_A, iA);
+    sc(cb, INV_MASS_B, mB);
+    sc(cb, INV_I_B, iB);
+    sc(cb, BIAS_RATE, immovable ? staticBiasRate : contactBiasRate);
+    sc(cb, MASS_SCALE, immovable ? staticMassScale : contactMassScale);
+    sc(cb, IMPULSE_SCALE, immovable ? staticImpulseScale : contactImpulseScale);
     // Heavy on light: the soft contact's stiffness follows the heavier body's mass (softness.ts).
     if (!immovable) {
       const ratio = mA > mB ? mA / mB : mB / mA;
@@ -1649,19 +1661,19 @@ class Preparation {
         const omega = 2 * Math.PI * hertz;
         const a1 = 2 * zeta + h * omega;
         if (hertz == 0 || a1 == 0) {
-          st(cb, BIAS_RATE, 0);
-          st(cb, MASS_SCALE, 1);
-          st(cb, IMPULSE_SCALE, 0);
+          sc(cb, BIAS_RATE, 0);
+          sc(cb, MASS_SCALE, 1);
+          sc(cb, IMPULSE_SCALE, 0);
         } else {
           const a2 = h * omega * a1;
           const a3 = 1 / (1 + a2);
-          st(cb, BIAS_RATE, omega / a1);
-          st(cb, MASS_SCALE, a2 * a3);
-          st(cb, IMPULSE_SCALE, a3);
+          sc(cb, BIAS_RATE, omega / a1);
+          sc(cb, MASS_SCALE, a2 * a3);
+          sc(cb, IMPULSE_SCALE, a3);
         }
       }
     }
-    st(cb, POINT_COUNT, pointCount);
+    sc(cb, POINT_COUNT, pointCount);
     const pressed = ld(m, C_BOUNCING_STEPS) >= PRESSED_AFTER_BOUNCING_STEPS;
     const radiusA = ld(m, C_RADIUS_A);
     const radiusB = ld(m, C_RADIUS_B);
@@ -1669,22 +1681,22 @@ class Preparation {
     const centerAY = ld(tA, TABLE_CENTER_Y);
     const centerBX = ld(tB, TABLE_CENTER_X);
     const centerBY = ld(tB, TABLE_CENTER_Y);
-    st(cb, RADIUS_A, radiusA);
-    st(cb, RADIUS_B, radiusB);
-    st(cb, CENTER_DX, centerBX - centerAX);
-    st(cb, CENTER_DY, centerBY - centerAY);
-    st(cb, REF_DP_AX, 0);
-    st(cb, REF_DP_AY, 0);
-    st(cb, REF_DP_BX, 0);
-    st(cb, REF_DP_BY, 0);
+    sc(cb, RADIUS_A, radiusA);
+    sc(cb, RADIUS_B, radiusB);
+    sc(cb, CENTER_DX, centerBX - centerAX);
+    sc(cb, CENTER_DY, centerBY - centerAY);
+    sc(cb, REF_DP_AX, 0);
+    sc(cb, REF_DP_AY, 0);
+    sc(cb, REF_DP_BX, 0);
+    sc(cb, REF_DP_BY, 0);
     if (radiusB > 0 && radiusA == 0) {
       // On the circle's line of centres, so the circle gets no torque from a normal impulse.
-      st(cb, SHIFT_WEIGHT_A, 0);
-      st(cb, SHIFT_WEIGHT_B, 1);
+      sc(cb, SHIFT_WEIGHT_A, 0);
+      sc(cb, SHIFT_WEIGHT_B, 1);
     } else {
       const total = mA + mB;
-      st(cb, SHIFT_WEIGHT_A, mA / total);
-      st(cb, SHIFT_WEIGHT_B, mB / total);
+      sc(cb, SHIFT_WEIGHT_A, mA / total);
+      sc(cb, SHIFT_WEIGHT_B, mB / total);
     }
     const tx = ny;
     const ty = -nx;
@@ -1699,68 +1711,68 @@ class Preparation {
     const count = <i32>pointCount;
     for (let j: i32 = 0; j < count; j++) {
       const mp = m + ((<usize>(C_POINTS + j * C_POINT_STRIDE)) << 3);
-      const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+      const p = pointAt(cb, j);
       const x = ld(mp, C_X);
       const y = ld(mp, C_Y);
       const rAx = x - centerAX;
       const rAy = y - centerAY;
       const rBx = x - centerBX;
       const rBy = y - centerBY;
-      st(p, R_AX, rAx);
-      st(p, R_AY, rAy);
-      st(p, R_BX, rBx);
+      sc(p, R_AX, rAx);
+      sc(p, R_AY, rAy);
+      sc(p, R_BX, rBx);
       // Separation later = baseline + (change of the anchors' world positions) . n.
-      st(p, R_BY, rBy);
-      st(p, BASE_SEPARATION, ld(mp, C_SEPARATION) - ((rBx - rAx) * nx + (rBy - rAy) * ny));
-      st(p, NORMAL_IMPULSE, ld(mp, C_NORMAL_IMPULSE));
-      st(p, TANGENT_IMPULSE, ld(mp, C_TANGENT_IMPULSE));
-      st(p, MAX_NORMAL_IMPULSE, 0);
-      st(p, TOTAL_NORMAL_IMPULSE, 0);
-      st(p, TOTAL_TANGENT_IMPULSE, 0);
-      st(p, IMPACT, 0);
+      sc(p, R_BY, rBy);
+      sc(p, BASE_SEPARATION, ld(mp, C_SEPARATION) - ((rBx - rAx) * nx + (rBy - rAy) * ny));
+      sc(p, NORMAL_IMPULSE, ld(mp, C_NORMAL_IMPULSE));
+      sc(p, TANGENT_IMPULSE, ld(mp, C_TANGENT_IMPULSE));
+      sc(p, MAX_NORMAL_IMPULSE, 0);
+      sc(p, TOTAL_NORMAL_IMPULSE, 0);
+      sc(p, TOTAL_TANGENT_IMPULSE, 0);
+      sc(p, IMPACT, 0);
       const rnA = rAx * ny - rAy * nx;
       const rnB = rBx * ny - rBy * nx;
-      st(p, RN_A, rnA);
-      st(p, RN_B, rnB);
+      sc(p, RN_A, rnA);
+      sc(p, RN_B, rnB);
       const kNormal = mA + mB + iA * rnA * rnA + iB * rnB * rnB;
-      st(p, NORMAL_MASS, kNormal > 0 ? 1 / kNormal : 0);
+      sc(p, NORMAL_MASS, kNormal > 0 ? 1 / kNormal : 0);
       const rtA = rAx * ty - rAy * tx;
       const rtB = rBx * ty - rBy * tx;
       const kTangent = mA + mB + iA * rtA * rtA + iB * rtB * rtB;
-      st(p, TANGENT_MASS, kTangent > 0 ? 1 / kTangent : 0);
+      sc(p, TANGENT_MASS, kTangent > 0 ? 1 / kTangent : 0);
       // Normal approach velocity before the step, for restitution; replaced by the velocity at the
       // first push of the step (see solve).
       const dvx = vBx - wB * rBy - (vAx - wA * rAy);
       const dvy = vBy + wB * rBx - (vAy + wA * rAx);
       const approach = dvx * nx + dvy * ny;
-      st(p, RELATIVE_VELOCITY, approach);
+      sc(p, RELATIVE_VELOCITY, approach);
       // A pressed point (see PRESSED_AFTER_BOUNCING_STEPS) overlapping deeper than this step's
       // approach explains is a contact for this step, not an impact.
       const separation = ld(mp, C_SEPARATION);
-      if (pressed && separation < Math.min(approach * dt, 0) - LINEAR_SLOP) st(p, IMPACT, 4);
+      if (pressed && separation < Math.min(approach * dt, 0) - LINEAR_SLOP) sc(p, IMPACT, 4);
     }
-    st(cb, BLOCK, 0);
+    sc(cb, BLOCK, 0);
     if (count == 2) {
       // The normal block K (the inverse mass seen by the two points together): K_jj = 1 / normal
       // mass, K_12 couples them through the bodies' rotation.
-      const p1 = cb + ((<usize>POINTS) << 3);
-      const p2 = p1 + ((<usize>POINT_STRIDE) << 3);
-      const rn1A = ld(p1, R_AX) * ny - ld(p1, R_AY) * nx;
-      const rn1B = ld(p1, R_BX) * ny - ld(p1, R_BY) * nx;
-      const rn2A = ld(p2, R_AX) * ny - ld(p2, R_AY) * nx;
-      const rn2B = ld(p2, R_BX) * ny - ld(p2, R_BY) * nx;
+      const p1 = pointAt(cb, 0);
+      const p2 = p1 + ((<usize>POINT_STRIDE) << 4);
+      const rn1A = lc(p1, R_AX) * ny - lc(p1, R_AY) * nx;
+      const rn1B = lc(p1, R_BX) * ny - lc(p1, R_BY) * nx;
+      const rn2A = lc(p2, R_AX) * ny - lc(p2, R_AY) * nx;
+      const rn2B = lc(p2, R_BX) * ny - lc(p2, R_BY) * nx;
       const k11 = mA + mB + iA * rn1A * rn1A + iB * rn1B * rn1B;
       const k22 = mA + mB + iA * rn2A * rn2A + iB * rn2B * rn2B;
       const k12 = mA + mB + iA * rn1A * rn2A + iB * rn1B * rn2B;
-      st(cb, BLOCK_K11, k11);
-      st(cb, BLOCK_K12, k12);
-      st(cb, BLOCK_K22, k22);
+      sc(cb, BLOCK_K11, k11);
+      sc(cb, BLOCK_K12, k12);
+      sc(cb, BLOCK_K22, k22);
       // Condition number check (Box2D v2's b2ContactSolver, k_maxConditionNumber): two points
       // almost on top of each other make K nearly singular, and its inverse would trade huge
       // opposite impulses; those manifolds stay sequential, which is well-defined for any K.
       const kMax = Math.max(k11, k22);
       if (kMax > 0 && kMax * kMax < MAX_CONDITION_NUMBER * (k11 * k22 - k12 * k12)) {
-        st(cb, BLOCK, 1);
+        sc(cb, BLOCK, 1);
       }
     }
   }
@@ -1935,21 +1947,21 @@ export function storeImpulses(
 ): void {
   for (let n: i32 = 0; n < count; n++) {
     const i = load<i32>(orderPtr + ((<usize>n) << 2));
-    const cb = cPtr + ((<usize>(i * STRIDE)) << 3);
+    const cb = constraintAt(cPtr, i);
     const m = dataPtr + ((<usize>(load<i32>(slotsPtr + ((<usize>i) << 2)) * CONTACT_STRIDE)) << 3);
-    const pointCount = <i32>ld(cb, POINT_COUNT);
+    const pointCount = <i32>lc(cb, POINT_COUNT);
     let bounced = 0;
     for (let j: i32 = 0; j < pointCount; j++) {
-      const p = cb + ((<usize>(POINTS + j * POINT_STRIDE)) << 3);
+      const p = pointAt(cb, j);
       const mp = m + ((<usize>(C_POINTS + j * C_POINT_STRIDE)) << 3);
-      const impact = ld(p, IMPACT);
+      const impact = lc(p, IMPACT);
       if (impact == 2 || impact == 3) bounced = 1;
-      st(mp, C_NORMAL_IMPULSE, impact == 2 || impact == 6 ? 0 : ld(p, NORMAL_IMPULSE));
-      st(mp, C_TANGENT_IMPULSE, ld(p, TANGENT_IMPULSE));
-      st(mp, C_MAX_NORMAL_IMPULSE, ld(p, MAX_NORMAL_IMPULSE));
-      st(mp, C_RELATIVE_VELOCITY, ld(p, RELATIVE_VELOCITY));
-      st(mp, C_STEP_NORMAL_IMPULSE, ld(p, TOTAL_NORMAL_IMPULSE));
-      st(mp, C_STEP_TANGENT_IMPULSE, ld(p, TOTAL_TANGENT_IMPULSE));
+      st(mp, C_NORMAL_IMPULSE, impact == 2 || impact == 6 ? 0 : lc(p, NORMAL_IMPULSE));
+      st(mp, C_TANGENT_IMPULSE, lc(p, TANGENT_IMPULSE));
+      st(mp, C_MAX_NORMAL_IMPULSE, lc(p, MAX_NORMAL_IMPULSE));
+      st(mp, C_RELATIVE_VELOCITY, lc(p, RELATIVE_VELOCITY));
+      st(mp, C_STEP_NORMAL_IMPULSE, lc(p, TOTAL_NORMAL_IMPULSE));
+      st(mp, C_STEP_TANGENT_IMPULSE, lc(p, TOTAL_TANGENT_IMPULSE));
     }
     st(m, C_BOUNCING_STEPS, bounced == 1 ? ld(m, C_BOUNCING_STEPS) + 1 : 0);
   }

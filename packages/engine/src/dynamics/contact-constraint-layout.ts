@@ -68,6 +68,18 @@ export const RN_A = 13;
 export const RN_B = 14;
 export const POINT_STRIDE = 16;
 export const STRIDE: number = POINTS + 2 * POINT_STRIDE;
+/**
+ * Where constraint `i` starts in the constraint region (in doubles). Constraints are stored in
+ * pairs, their numbers interleaved: number k of constraint i is element constraintBase(i) + 2 k,
+ * number k of its point j element constraintBase(i) + 2 (POINTS + j POINT_STRIDE + k). So
+ * constraints 2m and 2m + 1 have each number side by side, and the WebAssembly kernel's lanes
+ * load both with one v128.load (Box2D v3's b2ContactConstraintSIMD is laid out the same way).
+ * The last constraint of an odd count still takes a pair's room: the region holds an even number
+ * of constraints (its capacity is a power of two from 256, solver-memory.ts).
+ */
+export function constraintBase(i: number): number {
+  return (i >> 1) * 2 * STRIDE + (i & 1);
+}
 // A contact that bounced in each of its last three steps and still overlaps is pressed together
 // by a load (a pile on a bouncy particle), not colliding. Bouncing it again would skip its push-out
 // each sub-step (an impact is not pushed out, see solveContacts), so its overlap would grow and the

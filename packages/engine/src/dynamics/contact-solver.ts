@@ -46,6 +46,7 @@ import {
   RN_A,
   RN_B,
   STRIDE,
+  constraintBase,
   TANGENT_IMPULSE,
   TANGENT_MASS,
 } from './contact-constraint-layout.ts';
@@ -113,21 +114,21 @@ export function refreshCirclePairs(constraints: ContactConstraints, s: Float64Ar
   const list = constraints.circlePairs;
   for (let k = 0; k < constraints.circlePairCount; k++) {
     const i = list[k]!;
-    const base = i * STRIDE;
+    const base = constraintBase(i);
     const a = indices[2 * i]!;
     const b = indices[2 * i + 1]!;
     const dpAx = s[a + DP_X]!;
     const dpAy = s[a + DP_Y]!;
     const dpBx = s[b + DP_X]!;
     const dpBy = s[b + DP_Y]!;
-    const dx = c[base + CENTER_DX]! + dpBx - dpAx;
-    const dy = c[base + CENTER_DY]! + dpBy - dpAy;
+    const dx = c[base + 2 * CENTER_DX]! + dpBx - dpAx;
+    const dy = c[base + 2 * CENTER_DY]! + dpBy - dpAy;
     const length = Math.sqrt(dx * dx + dy * dy);
     if (!(length > 1e-12)) continue; // coincident centres: keep the last normal
     const nx = dx / length;
     const ny = dy / length;
-    const radiusA = c[base + RADIUS_A]!;
-    const radiusB = c[base + RADIUS_B]!;
+    const radiusA = c[base + 2 * RADIUS_A]!;
+    const radiusB = c[base + 2 * RADIUS_B]!;
     // Both arms end at the same point, midway across the gap (or overlap), so that a friction
     // impulse too acts on one line for both particles.
     const halfGap = 0.5 * (length - radiusA - radiusB);
@@ -137,20 +138,20 @@ export function refreshCirclePairs(constraints: ContactConstraints, s: Float64Ar
     const rAy = ny * armA;
     const rBx = -nx * armB;
     const rBy = -ny * armB;
-    c[base + NORMAL_X] = nx;
-    c[base + NORMAL_Y] = ny;
-    c[base + REF_DP_AX] = dpAx;
-    c[base + REF_DP_AY] = dpAy;
-    c[base + REF_DP_BX] = dpBx;
-    c[base + REF_DP_BY] = dpBy;
-    const p = base + POINTS;
-    c[p + R_AX] = rAx;
-    c[p + R_AY] = rAy;
-    c[p + R_BX] = rBx;
-    c[p + R_BY] = rBy;
+    c[base + 2 * NORMAL_X] = nx;
+    c[base + 2 * NORMAL_Y] = ny;
+    c[base + 2 * REF_DP_AX] = dpAx;
+    c[base + 2 * REF_DP_AY] = dpAy;
+    c[base + 2 * REF_DP_BX] = dpBx;
+    c[base + 2 * REF_DP_BY] = dpBy;
+    const p = base + 2 * POINTS;
+    c[p + 2 * R_AX] = rAx;
+    c[p + 2 * R_AY] = rAy;
+    c[p + 2 * R_BX] = rBx;
+    c[p + 2 * R_BY] = rBy;
     // Along the line of centres: no arm across n.
-    c[p + RN_A] = 0;
-    c[p + RN_B] = 0;
+    c[p + 2 * RN_A] = 0;
+    c[p + 2 * RN_B] = 0;
     // Baseline such that the solver's separation formula gives the exact gap now.
     const qAc = s[a + Q_C]!;
     const qAs = s[a + Q_S]!;
@@ -158,13 +159,14 @@ export function refreshCirclePairs(constraints: ContactConstraints, s: Float64Ar
     const qBs = s[b + Q_S]!;
     const gx = dpBx - dpAx + (qBc * rBx - qBs * rBy) - (qAc * rAx - qAs * rAy);
     const gy = dpBy - dpAy + (qBs * rBx + qBc * rBy) - (qAs * rAx + qAc * rAy);
-    c[p + BASE_SEPARATION] = length - radiusA - radiusB - (gx * nx + gy * ny);
-    const mA = c[base + INV_MASS_A]!;
-    const mB = c[base + INV_MASS_B]!;
+    c[p + 2 * BASE_SEPARATION] = length - radiusA - radiusB - (gx * nx + gy * ny);
+    const mA = c[base + 2 * INV_MASS_A]!;
+    const mB = c[base + 2 * INV_MASS_B]!;
     const kNormal = mA + mB;
-    c[p + NORMAL_MASS] = kNormal > 0 ? 1 / kNormal : 0;
-    const kTangent = kNormal + c[base + INV_I_A]! * armA * armA + c[base + INV_I_B]! * armB * armB;
-    c[p + TANGENT_MASS] = kTangent > 0 ? 1 / kTangent : 0;
+    c[p + 2 * NORMAL_MASS] = kNormal > 0 ? 1 / kNormal : 0;
+    const kTangent =
+      kNormal + c[base + 2 * INV_I_A]! * armA * armA + c[base + 2 * INV_I_B]! * armB * armB;
+    c[p + 2 * TANGENT_MASS] = kTangent > 0 ? 1 / kTangent : 0;
   }
 }
 
@@ -263,9 +265,9 @@ export class ShockPropagation {
     // (pushing since last step): only they hold a body up.
     let edgeCount = 0;
     for (let i = 0; i < count; i++) {
-      const base = i * STRIDE;
-      ends[2 * i] = c[base + INV_MASS_A] === 0 ? 0 : indices[2 * i]! / STATE_STRIDE;
-      ends[2 * i + 1] = c[base + INV_MASS_B] === 0 ? 0 : indices[2 * i + 1]! / STATE_STRIDE;
+      const base = constraintBase(i);
+      ends[2 * i] = c[base + 2 * INV_MASS_A] === 0 ? 0 : indices[2 * i]! / STATE_STRIDE;
+      ends[2 * i + 1] = c[base + 2 * INV_MASS_B] === 0 ? 0 : indices[2 * i + 1]! / STATE_STRIDE;
       if (this.resting(c, i)) edges[edgeCount++] = i;
     }
     // Levels: resting contacts from the ground (slot 0), relaxed until no level shrinks (a stack
@@ -309,13 +311,14 @@ export class ShockPropagation {
         const aLower = level[ends[2 * i]!]! < level[ends[2 * i + 1]!]!;
         const lower = ends[2 * i + (aLower ? 0 : 1)]!;
         const upper = ends[2 * i + (aLower ? 1 : 0)]!;
-        const base = i * STRIDE;
-        const mLower = c[base + (aLower ? INV_MASS_A : INV_MASS_B)]!;
-        const mUpper = c[base + (aLower ? INV_MASS_B : INV_MASS_A)]!;
+        const base = constraintBase(i);
+        const mLower = c[base + 2 * (aLower ? INV_MASS_A : INV_MASS_B)]!;
+        const mUpper = c[base + 2 * (aLower ? INV_MASS_B : INV_MASS_A)]!;
         // Heavy on light: the lower body more than twice lighter, the normal within 60 degrees of
         // up (a body beside another is not resting on it).
         const up =
-          (aLower ? -1 : 1) * (c[base + NORMAL_X]! * gravityX + c[base + NORMAL_Y]! * gravityY);
+          (aLower ? -1 : 1) *
+          (c[base + 2 * NORMAL_X]! * gravityX + c[base + 2 * NORMAL_Y]! * gravityY);
         // And the light body resting there: not moving along the normal (as fast as a load
         // presses, see Solver's MIN_LOADED_IMPACT_SPEED). The sweep's bounce treats it as held
         // still by what is under it; a light ball sliding fast along the floor into a heavy one
@@ -328,7 +331,7 @@ export class ShockPropagation {
           mLower > 2 * mUpper &&
           up >= 0.5 * gravity &&
           Math.abs(
-            s[vLower + V_X]! * c[base + NORMAL_X]! + s[vLower + V_Y]! * c[base + NORMAL_Y]!,
+            s[vLower + V_X]! * c[base + 2 * NORMAL_X]! + s[vLower + V_Y]! * c[base + 2 * NORMAL_Y]!,
           ) < restSpeed;
         if (heavyOnLight || (supports[upper] === 1 && level[upper] === k && this.resting(c, i))) {
           swept[i] = 1;
@@ -340,13 +343,13 @@ export class ShockPropagation {
           // touch (a resting one does not approach: the last relax pass stopped it). A heavy
           // body bounces off the light one here, not in the contact solver: there, its bounce
           // would send the light body into the ground, again each sub-step.
-          this.restitution[this.count++] = c[base + RESTITUTION]!;
-          if (heavyOnLight) c[base + RESTITUTION] = 0;
+          this.restitution[this.count++] = c[base + 2 * RESTITUTION]!;
+          if (heavyOnLight) c[base + 2 * RESTITUTION] = 0;
           // Rigid in the ordinary passes: a soft contact lets its impulse leak each pass, so the
           // weight above would not reach the ground.
-          c[base + BIAS_RATE] = biasRate;
-          c[base + MASS_SCALE] = 1;
-          c[base + IMPULSE_SCALE] = 0;
+          c[base + 2 * BIAS_RATE] = biasRate;
+          c[base + 2 * MASS_SCALE] = 1;
+          c[base + 2 * IMPULSE_SCALE] = 0;
         }
       }
     }
@@ -384,17 +387,17 @@ export class ShockPropagation {
       const bounce = restitution > 0;
       let wait = false;
       const i = this.order[n]!;
-      const base = i * STRIDE;
+      const base = constraintBase(i);
       const a = indices[2 * i]!;
       const b = indices[2 * i + 1]!;
       const aLower = this.lowerIsA[n] === 1;
       // The upper body takes the whole impulse, along +n if it is B and -n if it is A.
       const u = aLower ? b : a;
       const sign = aLower ? 1 : -1;
-      const mU = c[base + (aLower ? INV_MASS_B : INV_MASS_A)]!;
-      const iU = c[base + (aLower ? INV_I_B : INV_I_A)]!;
-      const nx = c[base + NORMAL_X]!;
-      const ny = c[base + NORMAL_Y]!;
+      const mU = c[base + 2 * (aLower ? INV_MASS_B : INV_MASS_A)]!;
+      const iU = c[base + 2 * (aLower ? INV_I_B : INV_I_A)]!;
+      const nx = c[base + 2 * NORMAL_X]!;
+      const ny = c[base + 2 * NORMAL_Y]!;
       const vAx = s[a + V_X]!;
       const vAy = s[a + V_Y]!;
       const wA = s[a + W]!;
@@ -407,7 +410,7 @@ export class ShockPropagation {
       const qAs = s[a + Q_S]!;
       const qBc = s[b + Q_C]!;
       const qBs = s[b + Q_S]!;
-      const pointCount = c[base + POINT_COUNT]!;
+      const pointCount = c[base + 2 * POINT_COUNT]!;
       // The upper body's velocity change by this sub-step's integration (gravity, forces): the
       // lower body is held, so only the upper one's adds to the approach.
       const kick = marks + (u / STATE_STRIDE) * MARK_STRIDE;
@@ -428,17 +431,17 @@ export class ShockPropagation {
       let lBx = 0;
       let lBy = 0;
       for (let j = 0; j < pointCount; j++) {
-        const p = base + POINTS + j * POINT_STRIDE;
-        const rAx = c[p + R_AX]!;
-        const rAy = c[p + R_AY]!;
-        const rBx = c[p + R_BX]!;
-        const rBy = c[p + R_BY]!;
+        const p = base + 2 * (POINTS + j * POINT_STRIDE);
+        const rAx = c[p + 2 * R_AX]!;
+        const rAy = c[p + 2 * R_AY]!;
+        const rBx = c[p + 2 * R_BX]!;
+        const rBy = c[p + 2 * R_BY]!;
         const dx = dpx + (qBc * rBx - qBs * rBy) - (qAc * rAx - qAs * rAy);
         const dy = dpy + (qBs * rBx + qBc * rBy) - (qAs * rAx + qAc * rAy);
-        const separation = dx * nx + dy * ny + c[p + BASE_SEPARATION]!;
+        const separation = dx * nx + dy * ny + c[p + 2 * BASE_SEPARATION]!;
         let bias = 0;
         const rn = aLower ? rBx * ny - rBy * nx : rAx * ny - rAy * nx;
-        const approach = c[p + RELATIVE_VELOCITY]!;
+        const approach = c[p + 2 * RELATIVE_VELOCITY]!;
         const due = bounce && approach < -restitutionThreshold;
         if (separation > 0) {
           // A bounce is due when it touches: not slowed before, as the contact solver waits too.
@@ -450,7 +453,10 @@ export class ShockPropagation {
             // Bounded: a large torque's kicks on a light lever would otherwise add up without
             // limit while it waits (a torqued hinge chain on the floor overflowed to NaN).
             if (useBias) {
-              c[p + RELATIVE_VELOCITY] = Math.max(approach + kickN + kickW * rn, -this.maxApproach);
+              c[p + 2 * RELATIVE_VELOCITY] = Math.max(
+                approach + kickN + kickW * rn,
+                -this.maxApproach,
+              );
             }
           }
           bias = separation * inverseH;
@@ -465,7 +471,7 @@ export class ShockPropagation {
             // A bounce is a one-off impulse, not a force to warm-start (contact-solver.ts does
             // the same): the contact solver's share of this impact is dropped, or undoing it
             // next sub-step would throw the light body up.
-            c[p + NORMAL_IMPULSE] = 0;
+            c[p + 2 * NORMAL_IMPULSE] = 0;
           }
           this.restitution[n] = 0;
         }
@@ -474,13 +480,13 @@ export class ShockPropagation {
         if (j === 0) {
           q1 = vn + bias;
           rn1 = rn;
-          n1 = c[p + NORMAL_IMPULSE]!;
+          n1 = c[p + 2 * NORMAL_IMPULSE]!;
         } else {
           q2 = vn + bias;
           rn2 = rn;
-          n2 = c[p + NORMAL_IMPULSE]!;
+          n2 = c[p + 2 * NORMAL_IMPULSE]!;
         }
-        applied += c[p + TANGENT_IMPULSE]!;
+        applied += c[p + 2 * TANGENT_IMPULSE]!;
         lAx += rAx / pointCount;
         lAy += rAy / pointCount;
         lBx += rBx / pointCount;
@@ -527,7 +533,7 @@ export class ShockPropagation {
       // sweep's) less the friction the passes already applied. Sequential friction moves a heavy
       // body on a light one as little as the normal impulses do: a 100:1 stack slid 3 m down a
       // 10 degree slope with friction 0.6 (tan 10 degrees is 0.18).
-      const limit = c[base + FRICTION]! * (x1 + x2 + n1 + n2);
+      const limit = c[base + 2 * FRICTION]! * (x1 + x2 + n1 + n2);
       if (limit <= 0) continue;
       // The slip there (B relative to A along t = (ny, -nx), as the contact solver measures it)
       // and the upper body's lever across t.
@@ -551,9 +557,9 @@ export class ShockPropagation {
 
   /** True when constraint i was pushing at the end of last step (a resting contact). */
   private resting(c: Float64Array, i: number): boolean {
-    const base = i * STRIDE;
-    for (let j = 0; j < c[base + POINT_COUNT]!; j++) {
-      if (c[base + POINTS + j * POINT_STRIDE + NORMAL_IMPULSE]! > 0) return true;
+    const base = constraintBase(i);
+    for (let j = 0; j < c[base + 2 * POINT_COUNT]!; j++) {
+      if (c[base + 2 * (POINTS + j * POINT_STRIDE + NORMAL_IMPULSE)]! > 0) return true;
     }
     return false;
   }

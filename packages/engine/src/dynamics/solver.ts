@@ -81,6 +81,7 @@ import {
 } from './solver-memory.ts';
 import { Softness } from './softness.ts';
 import { SolverBatches } from './solver-batches.ts';
+import { ContactPairing } from './contact-pairing.ts';
 
 /** World settings the solver reads each step. */
 export interface SolverSettings {
@@ -143,6 +144,8 @@ export class Solver {
   private readonly shock = new ShockPropagation();
   /** Batches of islands for a step whose constraints outgrow the cache (solver-batches.ts). */
   private readonly batches = new SolverBatches();
+  /** Pairs for the kernel's lanes and the constraints' numbering (contact-pairing.ts). */
+  private readonly pairing = new ContactPairing();
   /** The slowest approach of a loaded contact the impact rounds count as an impact (m/s). */
   private loadSpeed = -0;
   /** The most a push-out moves a contact (m/s): a pressed point approaching faster is an impact. */
@@ -289,49 +292,27 @@ export class Solver {
     joints.prepare(dt, subSteps, contactHertz, this.awakeCount, settings.maxLinearSpeed);
     const batches = this.batches;
     const batchable = joints.activeCount === 0 && batches.wants(contactCount);
-    // With batches in view, contacts are only classified here and each batch fills its
-    // constraints just before its sub-steps, while they stay in cache.
-    let filled = true;
+    // Contacts are classified here and filled once their visiting order and numbering are
+    // known (below); with batches, each batch fills its constraints just before its sub-steps,
+    // while they stay in cache.
+    let filled = false;
     const o = memory.offsets;
-    if (batchable) {
-      constraints.count = kernel.classify(
-        o[CONTACT_DATA]!,
-        o[CONTACT_BODIES]!,
-        o[BODY_TABLE]!,
-        o[CONSTRAINT_BODIES]!,
-        o[CONSTRAINT_SLOTS]!,
-        o[CIRCLE_PAIRS]!,
-        contactCount,
-      );
-      filled = false;
-    } else {
-      const soft = this.contactSoftness;
-      const hard = this.staticSoftness;
-      constraints.count = kernel.prepare(
-        o[CONTACT_DATA]!,
-        o[CONTACT_BODIES]!,
-        o[BODY_TABLE]!,
-        o[STATES]!,
-        o[CONSTRAINT_DATA]!,
-        o[CONSTRAINT_BODIES]!,
-        o[CONSTRAINT_SLOTS]!,
-        o[CIRCLE_PAIRS]!,
-        contactCount,
-        soft.biasRate,
-        soft.massScale,
-        soft.impulseScale,
-        hard.biasRate,
-        hard.massScale,
-        hard.impulseScale,
-        soft.hertz,
-        soft.zeta,
-        soft.h,
-        dt,
-      );
-    }
+    constraints.count = kernel.classify(
+      o[CONTACT_DATA]!,
+      o[CONTACT_BODIES]!,
+      o[BODY_TABLE]!,
+      o[CONSTRAINT_BODIES]!,
+      o[CONSTRAINT_SLOTS]!,
+      o[CIRCLE_PAIRS]!,
+      contactCount,
+    );
     constraints.circlePairCount = kernel.circlePairCount.value;
     constraints.heavyOnLightCount = kernel.heavyOnLightCount.value;
     scrambleOrder(constraints.order, constraints.count);
+    // Pairs for the WebAssembly kernel's lanes, in both builds (the same order, the same bits).
+    const pairing = this.pairing;
+    pairing.pair(constraints.order, constraints.count, constraints.bodies, SCRAMBLE_RUN);
+    this.storeInOrder();
     const shock = this.shock;
     // The heavy-on-light sweep reads the prepared constraints.
     if (!filled && constraints.heavyOnLightCount > 0) {
@@ -360,6 +341,8 @@ export class Solver {
     ) {
       const orderStart = batches.orderStart;
       const bodyStart = batches.bodyStart;
+      // The batches visit island by island: constraint n is again the n-th visited.
+      if (!filled) this.storeInOrder();
       for (let k = 0; k < batches.count; k++) {
         if (!filled) this.fill(orderStart[k]!, orderStart[k + 1]!, dt);
         this.subSteps(
@@ -377,6 +360,19 @@ export class Solver {
       this.subSteps(settings, h, 0, constraints.count, null, 0, this.awakeCount);
     }
     joints.finish();
+  }
+
+  /** Renumbers the classified, unfilled constraints in their visiting order (contact-pairing.ts). */
+  private storeInOrder(): void {
+    const c = this.constraints;
+    this.pairing.storeInOrder(
+      c.order,
+      c.count,
+      c.bodies,
+      c.slots,
+      c.circlePairs,
+      c.circlePairCount,
+    );
   }
 
   /**
