@@ -22,10 +22,14 @@ import {
 // PageJoint copies). The contact kernel's JavaScript build left the engine's figure for an entry
 // of its own (61.3 -> 54.7 KB), and the canvas's collision arrows and debug overlays for a chunk
 // loaded when first shown (canvas 13.7 -> 12.5 KB, worker page 33.6 -> 32.4 KB); the ceilings are
-// those figures plus a tenth of a kilobyte. Lower a ceiling whenever a change makes room.
-const ENGINE_CEILING_BYTES = 54.8 * 1024;
-const CANVAS_CEILING_BYTES = 12.6 * 1024;
-const WORKER_PAGE_CEILING_BYTES = 32.5 * 1024;
+// those figures plus a tenth of a kilobyte. Then the SIMD lanes' pairs grew the kernel's module
+// (engine 55.2 KB), and joints as handles over their records put the shared accessors in the
+// Joint base class that the canvas's drag (a mouse joint) brings (canvas 13.3 KB, worker page
+// 33.4 KB); the ceilings are those figures plus a tenth of a kilobyte. Lower a ceiling whenever a
+// change makes room.
+const ENGINE_CEILING_BYTES = 55.3 * 1024;
+const CANVAS_CEILING_BYTES = 13.4 * 1024;
+const WORKER_PAGE_CEILING_BYTES = 33.5 * 1024;
 
 /** Modules of the step a worker world's page must not ship: the worker runs them. */
 const SOLVER_MODULES = [
@@ -76,11 +80,13 @@ describe('front-end weight', () => {
     for (const module of SOLVER_MODULES) expect(library.modules).toContain(module);
     expect(engine.modules).toContain('engine/src/world/world.ts');
     for (const module of SOLVER_MODULES) expect(workerPage.modules).not.toContain(module);
-    // A joint file's check is a small part of it: under a fifth of what the library bundles.
+    // A joint file's check is a small part of it: under a fifth of what the library bundles (each
+    // joint file is over 2 KB there, since the shared joint code moved to joint-record.ts,
+    // soft-point.ts and spring-motor-limit.ts).
     const bytesOf = (report: typeof library, module: string): number =>
       report.costs.find((cost) => cost.path === module)?.bytes ?? 0;
     for (const module of JOINT_CLASS_MODULES) {
-      expect(bytesOf(library, module)).toBeGreaterThan(3000);
+      expect(bytesOf(library, module)).toBeGreaterThan(2000);
       expect(bytesOf(workerPage, module)).toBeLessThan(bytesOf(library, module) / 5);
     }
   }, 60_000);
