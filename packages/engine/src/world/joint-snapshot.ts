@@ -3,13 +3,13 @@ import type { Body } from '../dynamics/body.ts';
 import { DistanceJoint, DISTANCE_STATE } from '../dynamics/joints/distance-joint.ts';
 import {
   JOINT_MAX,
-  JOINT_STATE,
   type Joint,
   type JointState,
   type JointStateLayout,
   type JointType,
   type JointValueKind,
 } from '../dynamics/joints/joint.ts';
+import { exportJointState, importJointState, JOINT_STATE } from '../dynamics/joints/joint-state.ts';
 import { MouseJoint, MOUSE_STATE } from '../dynamics/joints/mouse-joint.ts';
 import { PrismaticJoint, PRISMATIC_STATE } from '../dynamics/joints/prismatic-joint.ts';
 import { RevoluteJoint, REVOLUTE_STATE } from '../dynamics/joints/revolute-joint.ts';
@@ -69,7 +69,7 @@ export function saveJoint(joint: Joint): Record<string, SnapshotValue> {
     out['bodyB'] = joint.bodyB.worldIndex;
     out['collideConnected'] = joint.collideConnected;
   }
-  const state = joint.exportState();
+  const state = exportJointState(joint);
   const fields = fieldsOf(joint.type);
   if (Object.keys(state).length !== fields.length) {
     // A joint kind saves a value its layout does not list: a bug here, not bad input.
@@ -191,7 +191,7 @@ export function readJoint(path: string, entry: unknown, bodies: readonly Body[])
 export function buildJoint(plan: JointPlan, bodies: readonly Body[]): Joint {
   const bodyA = bodies[plan.bodyA]!;
   const bodyB = bodies[plan.bodyB]!;
-  // The constructors need world points; any will do, importState then writes the saved frames.
+  // The constructors need world points; any will do, importJointState then writes the saved frames.
   const origin = { x: 0, y: 0 };
   const common = { bodyA, bodyB, collideConnected: plan.collideConnected };
   let joint: Joint;
@@ -212,6 +212,6 @@ export function buildJoint(plan: JointPlan, bodies: readonly Body[]): Joint {
       joint = new MouseJoint({ body: bodyB, target: origin });
       break;
   }
-  joint.importState(plan.state);
+  importJointState(joint, plan.state);
   return joint;
 }

@@ -137,7 +137,7 @@ const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
   [[IMPULSE, LOWER_IMPULSE, UPPER_IMPULSE]],
 );
 
-/** @internal What a world snapshot saves of a distance joint (see Joint.exportState). */
+/** @internal What a world snapshot saves of a distance joint (see exportJointState). */
 export const DISTANCE_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, [
   ['minLength', 'length'],
   ['length', 'maxLength'],

@@ -147,19 +147,6 @@ export function stateLayout(
   return { fields, ordered };
 }
 
-/** @internal Saved for every kind of joint: what the last step left (see {@link Joint.exportState}). */
-const JOINT_SAVED: SavedFields = {
-  reactionForce: ['vector', REACTION_X],
-  reactionTorque: ['finite', REACTION_ANGULAR],
-  subStepDuration: ['positive', SUB_STEP_DURATION],
-};
-
-/** @internal Saved for every kind of joint (see {@link Joint.exportState}). */
-export const JOINT_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(
-  { saved: JOINT_SAVED },
-  [],
-);
-
 /** @internal The two anchors and the reference angle, as revolute, prismatic and weld save them. */
 export const FRAME_SAVED: SavedFields = {
   localAnchorA: ['vector', LOCAL_ANCHOR_AX],
@@ -491,47 +478,9 @@ export abstract class Joint<UserData = unknown> {
     for (let i = 0; i < impulses.length; i++) this.write(impulses[i]!, 0);
   }
 
-  /**
-   * @internal Everything about the joint that decides later steps, by the names of its kind's
-   * layout plus {@link JOINT_STATE} (world snapshots): frames, settings, and the accumulated
-   * impulses the next step warm-starts from. What prepare() recomputes every step is left out.
-   */
-  exportState(): JointState {
-    const state: JointState = {};
-    this.exportFields(this.layout.saved, state);
-    this.exportFields(JOINT_SAVED, state);
-    return state;
-  }
-
-  /** @internal Puts back what {@link exportState} saved; the values were checked by the loader. */
-  importState(state: JointState): void {
-    this.importFields(this.layout.saved, state);
-    this.importFields(JOINT_SAVED, state);
-  }
-
-  private exportFields(saved: SavedFields, state: JointState): void {
-    for (const key of Object.keys(saved)) {
-      const [kind, offset] = saved[key]!;
-      state[key] =
-        kind === 'boolean'
-          ? this.flag(offset)
-          : kind === 'vector' || kind === 'unitVector'
-            ? [this.value(offset), this.value(offset + 1)]
-            : this.value(offset);
-    }
-  }
-
-  private importFields(saved: SavedFields, state: JointState): void {
-    for (const key of Object.keys(saved)) {
-      const offset = saved[key]![1];
-      const value = state[key]!;
-      if (typeof value === 'boolean') this.write(offset, value ? 1 : 0);
-      else if (typeof value === 'number') this.write(offset, value);
-      else {
-        this.write(offset, value[0]!);
-        this.write(offset + 1, value[1]!);
-      }
-    }
+  /** @internal Where a snapshot's values of this kind live in the record (joint-state.ts). */
+  get savedFields(): SavedFields {
+    return this.layout.saved;
   }
 
   /** @internal Anchors, effective masses and softness for this step. */

@@ -113,7 +113,7 @@ const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
   [[LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y, ANGULAR_IMPULSE]],
 );
 
-/** @internal What a world snapshot saves of a mouse joint (see Joint.exportState). */
+/** @internal What a world snapshot saves of a mouse joint (see exportJointState). */
 export const MOUSE_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, []);
 
 const scratch = /* @__PURE__ */ new Softness();

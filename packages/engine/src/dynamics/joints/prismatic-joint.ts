@@ -113,7 +113,7 @@ const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
   [[PERPENDICULAR_IMPULSE, ANGULAR_IMPULSE], SPRING_MOTOR_LIMIT_IMPULSES],
 );
 
-/** @internal What a world snapshot saves of a prismatic joint (see Joint.exportState). */
+/** @internal What a world snapshot saves of a prismatic joint (see exportJointState). */
 export const PRISMATIC_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, [
   ['lower', 'upper'],
 ]);

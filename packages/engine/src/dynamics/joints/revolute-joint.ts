@@ -113,7 +113,7 @@ const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
   [[LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y], SPRING_MOTOR_LIMIT_IMPULSES],
 );
 
-/** @internal What a world snapshot saves of a revolute joint (see Joint.exportState). */
+/** @internal What a world snapshot saves of a revolute joint (see exportJointState). */
 export const REVOLUTE_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, [
   ['lowerAngle', 'upperAngle'],
 ]);

@@ -96,7 +96,7 @@ const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
   [[LINEAR_IMPULSE_X, LINEAR_IMPULSE_Y, ANGULAR_IMPULSE]],
 );
 
-/** @internal What a world snapshot saves of a weld joint (see Joint.exportState). */
+/** @internal What a world snapshot saves of a weld joint (see exportJointState). */
 export const WELD_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYOUT, []);
 
 const scratch = /* @__PURE__ */ new Softness();
