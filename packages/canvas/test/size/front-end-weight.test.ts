@@ -119,6 +119,24 @@ describe('front-end weight', () => {
   }, 60_000);
 });
 
+describe("<physical-canvas>'s drag", () => {
+  it("bundles the mouse joint and Joint, without the two-body kinds' base or snapshot state", async () => {
+    const { engineWithCanvas, workerPage } = await measureFrontEnd();
+    const library = await appSize(`export * from '@physical/engine';`);
+    // Both files are real: the whole library (joint kinds, snapshots) bundles them.
+    const apart = [
+      'engine/src/dynamics/joints/two-body-joint.ts',
+      'engine/src/dynamics/joints/joint-state.ts',
+    ];
+    for (const module of apart) expect(library.modules).toContain(module);
+    for (const report of [engineWithCanvas, workerPage]) {
+      expect(report.modules).toContain('engine/src/dynamics/joints/mouse-joint.ts');
+      expect(report.modules).toContain('engine/src/dynamics/joints/joint.ts');
+      for (const module of apart) expect(report.modules).not.toContain(module);
+    }
+  }, 60_000);
+});
+
 describe("<physical-canvas>'s overlays", () => {
   it('load apart, when first shown: collision arrows and debug overlays are not in the first load', async () => {
     const { engineWithCanvas } = await measureFrontEnd();

@@ -41,6 +41,8 @@ const PUBLIC_MEMBERS: Record<string, string> = {
   PhysicalError: 'field constructor',
   // Body's base: the accessors of its numbers in the body memory, every one internal.
   BodyNumbers: '',
+  // The base of the two-body joints (two-body-joint.ts): setters and the frame, every one internal.
+  TwoBodyJoint: '',
 };
 
 /** Public (not private, not protected) member names of every class the declarations hold. */

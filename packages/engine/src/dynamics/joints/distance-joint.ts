@@ -6,7 +6,6 @@ import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import {
-  Joint,
   checkCollideConnected,
   jointLayout,
   stateLayout,
@@ -20,6 +19,7 @@ import {
   jointMax,
   requirePoint,
 } from './joint.ts';
+import { TwoBodyJoint } from './two-body-joint.ts';
 import {
   DELTA_CENTER_X,
   DELTA_CENTER_Y,
@@ -151,7 +151,7 @@ const scratch = /* @__PURE__ */ new Softness();
  * pass from the current anchors; the rigid row softened by the joint softness, the spring by its
  * own, the range limits one-sided and speculative like contacts.
  */
-export class DistanceJoint<UserData = unknown> extends Joint<UserData> {
+export class DistanceJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
   get type(): 'distance' {
     return 'distance';
   }

@@ -12,7 +12,6 @@ import {
   STRIDE,
 } from './prismatic-joint-solver.ts';
 import {
-  Joint,
   checkCollideConnected,
   jointLayout,
   stateLayout,
@@ -22,6 +21,7 @@ import {
   requireBodies,
   requirePoint,
 } from './joint.ts';
+import { TwoBodyJoint } from './two-body-joint.ts';
 import type { JointOptions } from './joint.ts';
 import { LOCAL_ANCHOR_AX, LOCAL_ANCHOR_BX, REFERENCE_ANGLE } from './joint-record.ts';
 import {
@@ -123,7 +123,7 @@ export const PRISMATIC_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAY
  * translation limits, motor and spring. Box2D v3's prismatic joint (Catto): the axial rows (spring,
  * motor, limits) first, then a 2x2 block for the perpendicular offset and the relative angle.
  */
-export class PrismaticJoint<UserData = unknown> extends Joint<UserData> {
+export class PrismaticJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
   get type(): 'prismatic' {
     return 'prismatic';
   }

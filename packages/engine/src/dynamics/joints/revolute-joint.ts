@@ -12,7 +12,6 @@ import {
 } from './revolute-joint-solver.ts';
 import {
   FRAME_SAVED,
-  Joint,
   checkCollideConnected,
   jointLayout,
   stateLayout,
@@ -23,6 +22,7 @@ import {
   requireBodies,
   requirePoint,
 } from './joint.ts';
+import { TwoBodyJoint } from './two-body-joint.ts';
 import {
   DELTA_CENTER_X,
   DELTA_CENTER_Y,
@@ -124,7 +124,7 @@ export const REVOLUTE_STATE: JointStateLayout = /* @__PURE__ */ stateLayout(LAYO
  * point constraint, plus one angular row each for the spring, the motor and the two limits, the
  * limits speculative (they allow closing the gap within a sub-step) like contacts.
  */
-export class RevoluteJoint<UserData = unknown> extends Joint<UserData> {
+export class RevoluteJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
   get type(): 'revolute' {
     return 'revolute';
   }

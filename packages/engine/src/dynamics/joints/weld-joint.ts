@@ -5,7 +5,6 @@ import { Softness } from '../softness.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import {
   FRAME_SAVED,
-  Joint,
   checkCollideConnected,
   jointLayout,
   stateLayout,
@@ -17,6 +16,7 @@ import {
   requireBodies,
   requirePoint,
 } from './joint.ts';
+import { TwoBodyJoint } from './two-body-joint.ts';
 import {
   INV_I_A,
   INV_I_B,
@@ -107,7 +107,7 @@ const scratch = /* @__PURE__ */ new Softness();
  * angular row, then a 2x2 point block; a rigid part corrects its error with the joint softness in
  * the biased pass only, a soft part with its own softness in both passes.
  */
-export class WeldJoint<UserData = unknown> extends Joint<UserData> {
+export class WeldJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
   get type(): 'weld' {
     return 'weld';
   }
