@@ -120,7 +120,7 @@ test('newton: keyboard only, and a navigation rail on a wide screen', async ({ b
   try {
     assert.equal(await page.locator('nav [data-nav]').count(), 3);
     assert.equal(
-      await page.locator('.MuiBottomNavigation-root').count(),
+      await page.locator('nav.app-nav--bar').count(),
       0,
       'rail, not bottom bar',
     );
