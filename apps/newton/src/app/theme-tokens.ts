@@ -29,8 +29,9 @@ export const TOKENS = {
     primaryBorder: 'rgba(130, 177, 255, 0.5)',
     /** The hint's light bulb. */
     hint: '#ffd54f',
-    /** The ruler's body. */
+    /** The ruler's body, and its ticks and numbers. */
     ruler: 'rgba(255, 224, 130, 0.85)',
+    rulerInk: '#000000',
     switchThumb: '#e0e0e0',
     switchTrack: 'rgba(255, 255, 255, 0.3)',
   },
@@ -42,6 +43,11 @@ export const TOKENS = {
     body1: '1rem',
     title: '1.15rem',
     titleNarrow: '1.05rem',
+  },
+  shadow: {
+    /** Material's elevation 1, under a switch's thumb. */
+    thumb:
+      '0 2px 1px -1px rgba(0, 0, 0, 0.2), 0 1px 1px 0 rgba(0, 0, 0, 0.14), 0 1px 3px 0 rgba(0, 0, 0, 0.12)',
   },
   size: {
     /** Material's grid unit (MUI's `spacing(1)`). */

@@ -125,7 +125,7 @@ export function Ruler({ canvas, version }: RulerProps) {
         width: `${width}px`,
         height: `${RULER_HEIGHT}px`,
         // A tick every 10 cm, at the canvas' scale.
-        backgroundImage: `repeating-linear-gradient(to right, #000 0 1px, transparent 1px ${TICK * scale}px)`,
+        backgroundImage: `repeating-linear-gradient(to right, var(--color-ruler-ink) 0 1px, transparent 1px ${TICK * scale}px)`,
       }}
     >
       {marks.map((mark) => (
