@@ -242,7 +242,6 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   const [chosen, setChosen] = useState<readonly Body[]>([]);
   const chosenRef = useRef(chosen);
   chosenRef.current = chosen;
-  const [tilt, setTiltState] = useState<Tilt>({ x: 0, y: 0 });
   const [sensorOn, setSensorOn] = useState(false);
   const [needsPermission] = useState(tiltButtonUseful);
   const [tab, setTab] = useState<PanelTab>(initialPreset !== null ? 'setup' : 'tray');
@@ -403,7 +402,6 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       arrows.clear();
       clearRewind();
       setSelected(null);
-      setTiltState({ x: 0, y: 0 });
       const created = createReactionsScene(size.width, size.height, next.elasticity);
       setWallsOn(created, next.wallsOn);
       setTiltOn(created, next.tiltOn);
@@ -490,10 +488,16 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     if (sim.paused) describe();
   }, [sim.paused, describe, chosen, version]);
 
+  /**
+   * Leans the tray. `render`: false for the sensor's readings, which come with every frame on a
+   * phone in the hand: a render of the screen for each (MUI's tree, a few milliseconds on a slow
+   * phone) came on top of the frame's work; the tray's acceleration readout reads the scene's
+   * tilt on its own (LiveText). A key or a tap re-renders at once.
+   */
   const changeTilt = useCallback(
-    (next: Tilt) => {
+    (next: Tilt, render = true) => {
       const current = sceneRef.current;
-      setTiltState(next);
+      if (render) rerender();
       if (current !== null) {
         const { x, y } = current.world.gravity;
         setTilt(current, next);
@@ -512,7 +516,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     if (!active) return;
     return watchDeviceTilt((value) => {
       setSensorOn(true);
-      changeTilt(value);
+      changeTilt(value, false);
     });
   }, [active, changeTilt]);
 
@@ -782,8 +786,18 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   };
 
   const info = selected === null ? undefined : scene?.particles.get(selected);
-  const push = settings.tiltOn ? trayAcceleration(tilt) : { x: 0, y: 0 };
-  const pushSize = Math.hypot(push.x, push.y);
+  /** The tray's acceleration g sin θ and its direction, from the scene's tilt now. */
+  const pushText = (): string => {
+    const current = sceneRef.current;
+    const push =
+      current !== null && settingsRef.current.tiltOn
+        ? trayAcceleration(current.tilt)
+        : { x: 0, y: 0 };
+    const size = Math.hypot(push.x, push.y);
+    return size < 1e-6
+      ? unit(0, 'm/s²')
+      : `${unit(size, 'm/s²', 2)}, ${number(screenAngle(push), 0)}°`;
+  };
   const viewBox =
     scene === null
       ? null
@@ -1005,9 +1019,10 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                       </Tooltip>
                     </Box>
                     <TiltPad
-                      onNudge={(dx, dy) =>
-                        changeTilt({ x: clampTilt(tilt.x + dx), y: clampTilt(tilt.y + dy) })
-                      }
+                      onNudge={(dx, dy) => {
+                        const now = sceneRef.current?.tilt ?? { x: 0, y: 0 };
+                        changeTilt({ x: clampTilt(now.x + dx), y: clampTilt(now.y + dy) });
+                      }}
                       onLevel={() => changeTilt({ x: 0, y: 0 })}
                     />
                     <Box
@@ -1022,11 +1037,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                       <Readout
                         name="push"
                         label={t('reactions.trayAcceleration')}
-                        value={
-                          pushSize < 1e-6
-                            ? unit(0, 'm/s²')
-                            : `${unit(pushSize, 'm/s²', 2)}, ${number(screenAngle(push), 0)}°`
-                        }
+                        value={<LiveText active={active} ms={100} text={pushText} />}
                       />
                       <Readout
                         name="count"
