@@ -4,6 +4,7 @@ import { fileURLToPath } from 'node:url';
 import react from '@vitejs/plugin-react';
 import { defineConfig, type Plugin } from 'vite';
 import type { OutputBundle, OutputChunk } from 'rolldown';
+import { tokenCss } from './src/app/theme-tokens.ts';
 import { teacherPagesPlugin } from './scripts/teacher-pages.ts';
 
 const source = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
@@ -49,6 +50,25 @@ function precacheManifest(): Plugin {
         source: `self.__PRECACHE = ${JSON.stringify({ version, files: [...new Set(files)] })};\n`,
       });
     },
+  };
+}
+
+/**
+ * Puts the design tokens (src/app/theme-tokens.ts) into the page as CSS custom properties, first
+ * in its head: the shell painted from the HTML and the first screen's stylesheets read them, and
+ * the MUI theme of the later parts is made from the same file.
+ */
+function themeTokens(): Plugin {
+  return {
+    name: 'newton-theme-tokens',
+    transformIndexHtml: () => [
+      {
+        tag: 'style',
+        attrs: { 'data-tokens': '' },
+        children: tokenCss(),
+        injectTo: 'head-prepend',
+      },
+    ],
   };
 }
 
@@ -100,7 +120,7 @@ function firstScreenPreload(): Plugin {
 export default defineConfig({
   base: './',
   root: source('.'),
-  plugins: [react(), teacherPagesPlugin(), precacheManifest(), firstScreenPreload()],
+  plugins: [react(), themeTokens(), teacherPagesPlugin(), precacheManifest(), firstScreenPreload()],
   resolve: {
     alias: {
       '@physical/engine': source('../../packages/engine/src/index.ts'),

@@ -119,11 +119,7 @@ test('newton: keyboard only, and a navigation rail on a wide screen', async ({ b
   const { page } = app;
   try {
     assert.equal(await page.locator('nav [data-nav]').count(), 3);
-    assert.equal(
-      await page.locator('.MuiBottomNavigation-root').count(),
-      0,
-      'rail, not bottom bar',
-    );
+    assert.equal(await page.locator('nav.app-nav--bar').count(), 0, 'rail, not bottom bar');
     // Arrow keys tilt (the desktop's stand-in for the phone): two presses of sin θ = 0.25 lean
     // the tray to sin θ = 0.5, which gives every particle the acceleration g sin θ along it.
     await page.locator('body').press('ArrowRight');

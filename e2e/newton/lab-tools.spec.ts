@@ -27,7 +27,7 @@ test('newton: lab tools at 375x667, step back and scrub to the start, and the sa
     const t1 = await shownTime(page);
     assert.ok(t0 - t1 > 0.005 && t0 - t1 < 0.03, `one step back: ${t0} -> ${t1}`);
     // Scrub to the oldest saved moment: the start, before the collision.
-    const thumb = page.locator('#reactions [data-control="rewind"] .MuiSlider-thumb input');
+    const thumb = page.locator('#reactions [data-control="rewind"] input');
     await thumb.focus();
     await page.keyboard.press('Home');
     assert.equal(await shownTime(page), 0);

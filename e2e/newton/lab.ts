@@ -42,7 +42,7 @@ export async function labValue(page: Page, field: string): Promise<number> {
 
 /** Sets the elasticity slider (Options tab open) to 0 % (Home) or 100 % (End) by keyboard. */
 export async function setElasticity(page: Page, key: 'Home' | 'End'): Promise<void> {
-  const thumb = page.locator('#reactions [data-control="elasticity"] .MuiSlider-thumb input');
+  const thumb = page.locator('#reactions [data-control="elasticity"] input');
   await thumb.focus();
   await page.keyboard.press(key);
 }

@@ -47,16 +47,16 @@ test('newton: sound is off by default, the toggle turns event tones on, and the 
 test('newton: with prefers-reduced-motion, controls have no transitions; without it they do', async ({
   browser,
 }) => {
-  // The elasticity slider's thumb animates its moves (Material's transitions) unless the learner
-  // asked for less motion.
+  // The elasticity slider (a native range input) animates its states (Material's transitions)
+  // unless the learner asked for less motion.
   const durations: Record<string, string> = {};
   for (const reducedMotion of ['no-preference', 'reduce'] as const) {
     const app = await openApp(browser, '#reactions', { ...PHONE, reducedMotion });
     try {
       await app.page.locator('#reactions [data-tab="options"]').click();
       durations[reducedMotion] = await app.page
-        .locator('#reactions [data-control="elasticity"] .MuiSlider-thumb')
-        .evaluate((thumb) => getComputedStyle(thumb).transitionDuration);
+        .locator('#reactions [data-control="elasticity"] input')
+        .evaluate((slider) => getComputedStyle(slider).transitionDuration);
       assertQuiet(app);
     } finally {
       await closeApp(app);

@@ -34,7 +34,7 @@ export function timeOf(shown: Record<string, string>): number {
  * after it.
  */
 export async function scrubTo(page: Page, screen: string, steps: number): Promise<void> {
-  const thumb = page.locator(`#${screen} [data-control="rewind"] .MuiSlider-thumb input`);
+  const thumb = page.locator(`#${screen} [data-control="rewind"] input`);
   await thumb.focus();
   await page.keyboard.press('Home');
   for (let i = 0; i < Math.floor(steps / 10); i++) await page.keyboard.press('PageUp');

@@ -1,4 +1,3 @@
-import { Box } from '@mui/material';
 import { useCallback, useEffect, useMemo, useRef, useState, type ReactElement } from 'react';
 import { playEventTone } from './sound.ts';
 
@@ -105,27 +104,17 @@ function AnnouncerRegion({ name, state }: { name: string; state: RegionState }) 
     state.lastAt = performance.now();
     state.pending = false;
   }, [text, state]);
+  // Visually hidden, one pixel in size (app.css): a region as tall and wide as the window made
+  // the whole page scroll.
   return (
-    <Box
+    <div
       role="status"
       aria-live="polite"
       aria-atomic="true"
       data-announcer={name}
-      // Visually hidden, one pixel in size: MUI reads the number 1 in `width` and `height` as
-      // 100 %, and a region as tall and wide as the window made the whole page scroll.
-      sx={{
-        position: 'absolute',
-        width: '1px',
-        height: '1px',
-        margin: '-1px',
-        padding: 0,
-        border: 0,
-        overflow: 'hidden',
-        clip: 'rect(0 0 0 0)',
-        whiteSpace: 'nowrap',
-      }}
+      className="visually-hidden"
     >
       {text}
-    </Box>
+    </div>
   );
 }

@@ -1,29 +1,14 @@
-import {
-  AppBar,
-  Box,
-  Button,
-  CssBaseline,
-  Dialog,
-  DialogActions,
-  DialogContent,
-  DialogContentText,
-  DialogTitle,
-  IconButton,
-  ThemeProvider,
-  ToggleButton,
-  ToggleButtonGroup,
-  Toolbar,
-  Tooltip,
-  Typography,
-  useMediaQuery,
-} from '@mui/material';
 import { Suspense, lazy, useEffect, useState } from 'react';
 import { I18nProvider, LOCALES, preferredLocale, useI18n, type Locale } from '../i18n/i18n.tsx';
+import { IconButton } from '../ui/IconButton.tsx';
+import { ToggleButtons } from '../ui/ToggleButtons.tsx';
 import { HintIcon, SoundOffIcon, SoundOnIcon } from './icons.tsx';
 import { onSoundChange, setSoundEnabled, soundEnabled } from './sound.ts';
 import { BottomNav, NavRail } from './Navigation.tsx';
 import { SCREENS, screenFromHash, type ScreenId } from './screens.ts';
-import { theme } from './theme.ts';
+import { useMediaQuery } from './use-media-query.ts';
+import '../ui/ui.css';
+import './app.css';
 
 const LOCALE_KEY = 'newton.locale';
 /** The other screens' code is fetched this long after the start if nothing was tapped (ms). */
@@ -40,6 +25,10 @@ const ForcesScreen = lazy(() =>
   import('../screens/forces/ForcesScreen.tsx').then((module) => ({
     default: module.ForcesScreen,
   })),
+);
+// The hint's dialog is MUI's: it loads with MUI the first time it is asked for.
+const HintDialog = lazy(() =>
+  import('./HintDialog.tsx').then((module) => ({ default: module.HintDialog })),
 );
 const ReactionsScreen = lazy(() =>
   import('../screens/reactions/ReactionsScreen.tsx').then((module) => ({
@@ -69,12 +58,9 @@ export function App() {
     }
   }, [locale]);
   return (
-    <ThemeProvider theme={theme}>
-      <CssBaseline />
-      <I18nProvider locale={locale}>
-        <Shell locale={locale} onLocale={setLocale} />
-      </I18nProvider>
-    </ThemeProvider>
+    <I18nProvider locale={locale}>
+      <Shell locale={locale} onLocale={setLocale} />
+    </I18nProvider>
   );
 }
 
@@ -82,9 +68,11 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
   const { t } = useI18n();
   // The rail on the side when there is room beside the screen: a tablet, or a phone turned
   // sideways (a bar below would take a fifth of its height).
-  const wide = useMediaQuery('(min-width: 600px), (orientation: landscape)', { noSsr: true });
+  const wide = useMediaQuery('(min-width: 600px), (orientation: landscape)');
   const [screen, setScreen] = useState<ScreenId>(() => screenFromHash(location.hash));
   const [hintOpen, setHintOpen] = useState(false);
+  // The hint's dialog (and MUI with it) loads the first time it is opened.
+  const [hintShown, setHintShown] = useState(false);
   // Screens stay mounted once shown (their worlds keep their state), hidden when not current.
   const [visited, setVisited] = useState<ReadonlySet<ScreenId>>(() => new Set([screen]));
   useEffect(() => {
@@ -102,6 +90,8 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
         void import('../screens/inertia/InertiaScreen.tsx');
         void import('../screens/forces/ForcesScreen.tsx');
         void import('../screens/reactions/ReactionsScreen.tsx');
+        void import('./HintDialog.tsx');
+        void import('../screens/inertia/ForceDialog.tsx');
       };
       if (typeof requestIdleCallback === 'function')
         idle = requestIdleCallback(load, { timeout: 3000 });
@@ -136,83 +126,58 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
   };
 
   return (
-    <Box sx={{ height: '100dvh', display: 'flex', flexDirection: 'column', overflow: 'hidden' }}>
-      <AppBar position="static" elevation={0} color="transparent" sx={{ bgcolor: '#1e1e1e' }}>
-        <Toolbar variant="dense" sx={{ gap: 0.5, minHeight: 52, px: { xs: 1.5, sm: 2 } }}>
-          <Typography
-            variant="h6"
-            component="h1"
-            sx={{ flex: 1, minWidth: 0, fontSize: wide ? '1.15rem' : '1.05rem' }}
-            noWrap
-          >
-            <Box
-              component="span"
-              sx={{ color: 'text.secondary', fontWeight: 400, display: wide ? 'inline' : 'none' }}
-            >
-              {t('app.title')} ·{' '}
-            </Box>
-            {t(current.label)}
-          </Typography>
-          <Tooltip title={t('app.hint')}>
-            <IconButton
-              aria-label={t('app.hint')}
-              onClick={() => setHintOpen(true)}
-              data-action="hint"
-              sx={{ width: 48, height: 48 }}
-            >
-              <HintIcon sx={{ color: '#ffd54f' }} />
-            </IconButton>
-          </Tooltip>
-          <SoundToggle />
-          <ToggleButtonGroup
-            value={locale}
-            exclusive
-            size="small"
-            aria-label={t('app.language')}
-            onChange={(_event, value: Locale | null) => value !== null && onLocale(value)}
-          >
-            {LOCALES.map((item) => (
-              <ToggleButton
-                key={item}
-                value={item}
-                lang={item}
-                sx={{ minWidth: 48, minHeight: 48, px: 1.25, py: 0.25 }}
-                data-locale={item}
-              >
-                {item.toUpperCase()}
-              </ToggleButton>
-            ))}
-          </ToggleButtonGroup>
-        </Toolbar>
-      </AppBar>
-      <Box sx={{ flex: 1, minHeight: 0, display: 'flex' }}>
+    <div className="app">
+      <header className="app-bar">
+        <h1 className={wide ? 'app-bar__title' : 'app-bar__title app-bar__title--narrow'}>
+          {wide && <span className="app-bar__app">{t('app.title')} · </span>}
+          {t(current.label)}
+        </h1>
+        <IconButton
+          aria-label={t('app.hint')}
+          tip={t('app.hint')}
+          onClick={() => {
+            setHintOpen(true);
+            setHintShown(true);
+          }}
+          data-action="hint"
+        >
+          <HintIcon color="var(--color-hint)" />
+        </IconButton>
+        <SoundToggle />
+        <ToggleButtons
+          label={t('app.language')}
+          value={locale}
+          onChange={onLocale}
+          className="app-bar__locales"
+          choices={LOCALES.map((item) => ({
+            value: item,
+            label: item.toUpperCase(),
+            attributes: { lang: item, 'data-locale': item },
+          }))}
+        />
+      </header>
+      <div className="app-body">
         {wide && <NavRail current={screen} onChange={go} />}
-        <Box component="main" sx={{ flex: 1, minWidth: 0, minHeight: 0 }}>
+        <main className="app-main">
           <Suspense fallback={<ScreenLoading />}>
             {visited.has('inertia') && <InertiaScreen active={screen === 'inertia'} />}
             {visited.has('forces') && <ForcesScreen active={screen === 'forces'} />}
             {visited.has('reactions') && <ReactionsScreen active={screen === 'reactions'} />}
           </Suspense>
-        </Box>
-      </Box>
+        </main>
+      </div>
       {!wide && <BottomNav current={screen} onChange={go} />}
-      <Dialog open={hintOpen} onClose={() => setHintOpen(false)} aria-labelledby="hint-title">
-        <DialogTitle id="hint-title">
-          {t('app.hint')}: {t(current.label)}
-        </DialogTitle>
-        <DialogContent>
-          <DialogContentText>{t(current.hint)}</DialogContentText>
-          <DialogContentText sx={{ mt: 2 }}>
-            <a href={t('app.teacherPage')} style={{ color: '#82b1ff' }} data-action="teacher">
-              {t('app.teacher')}
-            </a>
-          </DialogContentText>
-        </DialogContent>
-        <DialogActions>
-          <Button onClick={() => setHintOpen(false)}>{t('app.close')}</Button>
-        </DialogActions>
-      </Dialog>
-    </Box>
+      {hintShown && (
+        <Suspense fallback={null}>
+          <HintDialog
+            open={hintOpen}
+            onClose={() => setHintOpen(false)}
+            label={current.label}
+            hint={current.hint}
+          />
+        </Suspense>
+      )}
+    </div>
   );
 }
 
@@ -220,14 +185,9 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
 function ScreenLoading() {
   const { t } = useI18n();
   return (
-    <Box
-      role="progressbar"
-      aria-label={t('app.loading')}
-      aria-busy="true"
-      sx={{ height: '100%', display: 'grid', placeItems: 'center', color: 'text.secondary' }}
-    >
+    <div role="progressbar" aria-label={t('app.loading')} aria-busy="true" className="app-loading">
       …
-    </Box>
+    </div>
   );
 }
 
@@ -238,16 +198,14 @@ function SoundToggle() {
   useEffect(() => onSoundChange(() => setOn(soundEnabled())), []);
   const label = on ? t('app.soundOff') : t('app.soundOn');
   return (
-    <Tooltip title={label}>
-      <IconButton
-        aria-label={t('app.sound')}
-        aria-pressed={on}
-        onClick={() => setSoundEnabled(!on)}
-        data-action="sound"
-        sx={{ width: 48, height: 48 }}
-      >
-        {on ? <SoundOnIcon /> : <SoundOffIcon />}
-      </IconButton>
-    </Tooltip>
+    <IconButton
+      aria-label={t('app.sound')}
+      tip={label}
+      aria-pressed={on}
+      onClick={() => setSoundEnabled(!on)}
+      data-action="sound"
+    >
+      {on ? <SoundOnIcon /> : <SoundOffIcon />}
+    </IconButton>
   );
 }

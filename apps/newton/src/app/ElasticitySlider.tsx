@@ -1,5 +1,5 @@
-import { Box, Slider, Typography } from '@mui/material';
 import { useI18n } from '../i18n/i18n.tsx';
+import { Slider } from '../ui/Slider.tsx';
 
 /** Props of {@link ElasticitySlider}. */
 export interface ElasticitySliderProps {
@@ -20,21 +20,20 @@ export interface ElasticitySliderProps {
 export function ElasticitySlider({ id, label, value, onChange }: ElasticitySliderProps) {
   const { number } = useI18n();
   return (
-    <Box sx={{ flex: '1 1 140px', minWidth: 0, px: 1 }}>
-      <Typography id={id} variant="caption" component="div">
+    <div className="elasticity">
+      <div id={id} className="ui-caption">
         {label}: {number(value * 100, 0)} %
-      </Typography>
+      </div>
       <Slider
         value={Math.round(value * 100)}
         min={0}
         max={100}
         step={5}
-        onChange={(_event, percent) => onChange((percent as number) / 100)}
+        onChange={(percent) => onChange(percent / 100)}
         aria-labelledby={id}
-        getAriaValueText={(percent) => `${percent} %`}
-        data-control="elasticity"
-        sx={{ py: 1.5 }}
+        valueText={(percent) => `${percent} %`}
+        control="elasticity"
       />
-    </Box>
+    </div>
   );
 }

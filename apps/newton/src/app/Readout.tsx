@@ -1,4 +1,3 @@
-import { Box, Typography } from '@mui/material';
 import type { ReactNode } from 'react';
 
 /**
@@ -7,22 +6,11 @@ import type { ReactNode } from 'react';
  */
 export function Readout({ label, value, name }: { label: string; value: ReactNode; name: string }) {
   return (
-    <Box sx={{ minWidth: 0 }}>
-      <Typography
-        variant="caption"
-        component="div"
-        sx={{ color: 'text.secondary', lineHeight: 1.2 }}
-      >
-        {label}
-      </Typography>
-      <Typography
-        variant="body2"
-        component="div"
-        data-readout={name}
-        sx={{ fontVariantNumeric: 'tabular-nums', fontWeight: 500, whiteSpace: 'nowrap' }}
-      >
+    <div className="readout">
+      <div className="ui-caption ui-secondary readout__label">{label}</div>
+      <div className="ui-body2 ui-numbers readout__value" data-readout={name}>
         {value}
-      </Typography>
-    </Box>
+      </div>
+    </div>
   );
 }

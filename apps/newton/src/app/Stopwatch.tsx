@@ -1,6 +1,6 @@
-import { Box, Button, Typography } from '@mui/material';
 import { useEffect, useReducer, useRef, useState } from 'react';
 import { useI18n } from '../i18n/i18n.tsx';
+import { Button } from '../ui/Button.tsx';
 
 /** Props of {@link Stopwatch}. */
 export interface StopwatchProps {
@@ -77,41 +77,27 @@ export function Stopwatch({ time, visible, paused, timeScale, announce }: Stopwa
   };
 
   return (
-    <Box
-      role="group"
-      aria-label={t('stopwatch.title')}
-      sx={{ display: 'flex', gap: 1, alignItems: 'center', px: 0.5 }}
-    >
-      <Typography variant="caption" component="div" sx={{ color: 'text.secondary' }}>
-        {t('stopwatch.title')}
-      </Typography>
-      <Typography
-        variant="body2"
-        component="div"
+    <div role="group" aria-label={t('stopwatch.title')} className="stopwatch">
+      <div className="ui-caption ui-secondary">{t('stopwatch.title')}</div>
+      <div
+        className="ui-body2 ui-numbers stopwatch__value"
         data-readout="stopwatch"
         aria-live="off"
-        sx={{ fontVariantNumeric: 'tabular-nums', fontWeight: 500, minWidth: '5.5em' }}
       >
         {unit(elapsed, 's', 2, 2)}
-      </Typography>
+      </div>
       <Button
         variant="outlined"
-        size="small"
         onClick={toggle}
         aria-pressed={running}
         data-action="stopwatch"
-        sx={{ minHeight: 48, minWidth: 72 }}
+        className="stopwatch__toggle"
       >
         {running ? t('stopwatch.stop') : t('stopwatch.start')}
       </Button>
-      <Button
-        size="small"
-        onClick={reset}
-        data-action="stopwatch-reset"
-        sx={{ minHeight: 48, minWidth: 64 }}
-      >
+      <Button onClick={reset} data-action="stopwatch-reset">
         {t('stopwatch.reset')}
       </Button>
-    </Box>
+    </div>
   );
 }

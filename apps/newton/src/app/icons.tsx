@@ -1,15 +1,7 @@
-import { SvgIcon, type SvgIconProps } from '@mui/material';
+import { icon } from '../ui/Icon.tsx';
 
-// Material Design icon paths (Apache 2.0), inlined: no icon package, a few hundred bytes.
-const icon = (path: string) =>
-  function Icon(props: SvgIconProps) {
-    return (
-      <SvgIcon {...props}>
-        <path d={path} />
-      </SvgIcon>
-    );
-  };
-
+// Material Design icon paths (Apache 2.0), inlined as plain SVG (`ui/Icon.tsx`): no icon
+// package, no styling engine.
 export const PlayIcon = icon('M8 5v14l11-7z');
 export const PauseIcon = icon('M6 19h4V5H6v14zm8-14v14h4V5h-4z');
 export const StepIcon = icon('M6 18l8.5-6L6 6v12zM16 6v12h2V6h-2z');

@@ -1,4 +1,3 @@
-import { Box, Typography } from '@mui/material';
 import { useEffect, useRef } from 'react';
 import { useI18n } from '../i18n/i18n.tsx';
 import { niceStep, type TimeSeries } from './time-series.ts';
@@ -184,35 +183,23 @@ export function TimeSeriesGraph({
     .join(', ');
 
   return (
-    <Box component="figure" sx={{ m: 0, minWidth: 0, flex: 1 }}>
-      <Box
-        component="figcaption"
-        sx={{ display: 'flex', columnGap: 1, alignItems: 'center', flexWrap: 'wrap', px: 0.5 }}
-      >
-        <Typography variant="caption" sx={{ color: 'text.secondary', mr: 'auto' }}>
-          {title}
-        </Typography>
+    <figure className="graph">
+      <figcaption className="graph__caption">
+        <span className="ui-caption ui-secondary graph__title">{title}</span>
         {lines.length > 1 &&
           lines.map((line) => (
-            <Typography
-              key={line.label}
-              variant="caption"
-              sx={{ display: 'inline-flex', alignItems: 'center', gap: 0.5 }}
-            >
-              <Box
-                component="span"
-                sx={{ width: 12, height: 3, borderRadius: 1, bgcolor: line.color }}
-              />
+            <span key={line.label} className="ui-caption graph__key">
+              <span className="graph__swatch" style={{ background: line.color }} />
               {line.label}
-            </Typography>
+            </span>
           ))}
-      </Box>
+      </figcaption>
       <canvas
         ref={canvasRef}
         role="img"
         aria-label={`${title}. ${summary}`}
         style={{ display: 'block', width: '100%', height }}
       />
-    </Box>
+    </figure>
   );
 }

@@ -1,5 +1,5 @@
-import { Box, Button } from '@mui/material';
 import { useI18n } from '../i18n/i18n.tsx';
+import { Button } from '../ui/Button.tsx';
 import { CopyIcon, DownloadIcon } from './lab-icons.tsx';
 
 /** Props of {@link CsvExport}. */
@@ -30,11 +30,10 @@ export function downloadText(text: string, fileName: string, type = 'text/csv'):
 export function CsvExport({ csv, fileName, onDone }: CsvExportProps) {
   const { t } = useI18n();
   return (
-    <Box sx={{ display: 'flex', gap: 1, flexWrap: 'wrap' }}>
+    <div className="csv-export">
       <Button
         variant="outlined"
         startIcon={<CopyIcon />}
-        sx={{ minHeight: 48 }}
         data-action="copy-csv"
         onClick={() => {
           const text = csv();
@@ -49,7 +48,6 @@ export function CsvExport({ csv, fileName, onDone }: CsvExportProps) {
       <Button
         variant="outlined"
         startIcon={<DownloadIcon />}
-        sx={{ minHeight: 48 }}
         data-action="download-csv"
         onClick={() => {
           downloadText(csv(), fileName);
@@ -58,6 +56,6 @@ export function CsvExport({ csv, fileName, onDone }: CsvExportProps) {
       >
         {t('lab.downloadCsv')}
       </Button>
-    </Box>
+    </div>
   );
 }

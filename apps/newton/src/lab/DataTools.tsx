@@ -1,4 +1,3 @@
-import { Box, Typography } from '@mui/material';
 import { useState } from 'react';
 import { Live } from '../app/Live.tsx';
 import { useI18n, type MessageKey } from '../i18n/i18n.tsx';
@@ -32,10 +31,8 @@ export function DataTools({ rewind, fileName, live, announce }: DataToolsProps) 
   const { t } = useI18n();
   const [status, setStatus] = useState('');
   return (
-    <Box data-lab="data" sx={{ display: 'flex', flexDirection: 'column', gap: 0.5, px: 0.5 }}>
-      <Typography variant="caption" component="p" sx={{ color: 'text.secondary', m: 0 }}>
-        {t('lab.data')}
-      </Typography>
+    <div data-lab="data" className="data-tools">
+      <p className="ui-caption ui-secondary">{t('lab.data')}</p>
       <Live active={live} watch={rewind.key}>
         {() => (
           <RewindBar
@@ -56,10 +53,10 @@ export function DataTools({ rewind, fileName, live, announce }: DataToolsProps) 
         }}
       />
       {status !== '' && (
-        <Typography variant="caption" data-readout="csv-status">
+        <span className="ui-caption" data-readout="csv-status">
           {status}
-        </Typography>
+        </span>
       )}
-    </Box>
+    </div>
   );
 }

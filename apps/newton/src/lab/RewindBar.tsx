@@ -1,5 +1,6 @@
-import { Box, IconButton, Slider, Tooltip } from '@mui/material';
 import { useI18n } from '../i18n/i18n.tsx';
+import { IconButton } from '../ui/IconButton.tsx';
+import { Slider } from '../ui/Slider.tsx';
 import { StepBackIcon } from './lab-icons.tsx';
 
 /** Props of {@link RewindBar}. */
@@ -23,33 +24,28 @@ export function RewindBar({ length, index, timeAt, onSeek }: RewindBarProps) {
   const last = Math.max(0, length - 1);
   const label = t('lab.stepBack');
   return (
-    <Box sx={{ display: 'flex', alignItems: 'center', gap: 1, minWidth: 0 }}>
-      <Tooltip title={label}>
-        <span>
-          <IconButton
-            aria-label={label}
-            onClick={() => onSeek(index - 1)}
-            disabled={index <= 0}
-            size="large"
-            data-action="step-back"
-          >
-            <StepBackIcon />
-          </IconButton>
-        </span>
-      </Tooltip>
+    <div className="rewind">
+      <IconButton
+        aria-label={label}
+        tip={label}
+        onClick={() => onSeek(index - 1)}
+        disabled={index <= 0}
+        data-action="step-back"
+      >
+        <StepBackIcon />
+      </IconButton>
       <Slider
         value={Math.min(index, last)}
         min={0}
         max={Math.max(1, last)}
         step={1}
         disabled={length < 2}
-        onChange={(_event, value) => onSeek(value as number)}
+        onChange={onSeek}
         aria-label={t('lab.rewind')}
-        getAriaValueText={(value) => t('controls.time', { value: unit(timeAt(value), 's', 2, 2) })}
-        valueLabelDisplay="off"
-        data-control="rewind"
-        sx={{ flex: 1, mx: 1.5, py: 1.5 }}
+        valueText={(value) => t('controls.time', { value: unit(timeAt(value), 's', 2, 2) })}
+        control="rewind"
+        className="rewind__slider"
       />
-    </Box>
+    </div>
   );
 }

@@ -1,4 +1,3 @@
-import { Box } from '@mui/material';
 import type { PhysicalCanvasElement } from '@physical/canvas';
 import { useEffect, useRef, useState, type KeyboardEvent, type PointerEvent } from 'react';
 import { useI18n } from '../i18n/i18n.tsx';
@@ -106,7 +105,7 @@ export function Ruler({ canvas, version }: RulerProps) {
   const marks: number[] = [];
   for (let i = 0; i * NUMBERED <= RULER_LENGTH + 1e-9; i++) marks.push(i * NUMBERED);
   return (
-    <Box
+    <div
       ref={ref}
       tabIndex={0}
       role="group"
@@ -119,53 +118,28 @@ export function Ruler({ canvas, version }: RulerProps) {
       onPointerUp={onPointerUp}
       onPointerCancel={onPointerUp}
       onKeyDown={onKeyDown}
-      sx={{
-        position: 'absolute',
-        left: 0,
-        top: 0,
+      className="ruler"
+      style={{
         transform: place === null ? undefined : `translate(${place.x}px, ${place.y}px)`,
         visibility: place === null || scale === 0 ? 'hidden' : 'visible',
         width: `${width}px`,
         height: `${RULER_HEIGHT}px`,
-        touchAction: 'none',
-        cursor: 'grab',
-        zIndex: 1,
-        bgcolor: 'rgba(255, 224, 130, 0.85)',
-        color: '#000',
-        borderRadius: '2px',
         // A tick every 10 cm, at the canvas' scale.
-        backgroundImage: `repeating-linear-gradient(to right, #000 0 1px, transparent 1px ${TICK * scale}px)`,
-        backgroundSize: `100% 30%`,
-        backgroundRepeat: 'no-repeat',
-        '&:focus-visible': { outline: '3px solid #82b1ff', outlineOffset: 2 },
+        backgroundImage: `repeating-linear-gradient(to right, var(--color-ruler-ink) 0 1px, transparent 1px ${TICK * scale}px)`,
       }}
     >
       {marks.map((mark) => (
-        <Box
+        <span
           key={mark}
-          component="span"
           aria-hidden="true"
           data-mark={mark}
-          sx={{
-            position: 'absolute',
-            left: `${mark * scale}px`,
-            top: '30%',
-            height: '25%',
-            borderLeft: '1px solid #000',
-            // The number beside its mark, kept inside the ruler at both ends.
-            '& > span': {
-              position: 'absolute',
-              top: '100%',
-              left: mark === RULER_LENGTH ? undefined : 2,
-              right: mark === RULER_LENGTH ? 2 : undefined,
-              font: '600 11px/1 system-ui, sans-serif',
-              whiteSpace: 'nowrap',
-            },
-          }}
+          className={mark === RULER_LENGTH ? 'ruler__mark ruler__mark--end' : 'ruler__mark'}
+          style={{ left: `${mark * scale}px` }}
         >
+          {/* The number beside its mark, kept inside the ruler at both ends. */}
           <span>{mark === RULER_LENGTH ? `${number(mark, 1)} m` : number(mark, 1)}</span>
-        </Box>
+        </span>
       ))}
-    </Box>
+    </div>
   );
 }

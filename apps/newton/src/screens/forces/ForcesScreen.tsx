@@ -4,6 +4,7 @@ import type { Force, World } from '@physical/engine';
 import { useCallback, useMemo, useReducer, useRef, useState } from 'react';
 import { useAnnouncer } from '../../app/Announcer.tsx';
 import { forcesPreset, presetFor } from '../../app/presets.ts';
+import { MuiTheme } from '../../app/MuiTheme.tsx';
 import { ScreenLayout } from '../../app/ScreenLayout.tsx';
 import { SQUARE_COLORS } from '../../app/theme.ts';
 import { simulatedTime, useSimulation } from '../../app/use-simulation.ts';
@@ -241,150 +242,152 @@ export function ForcesScreen({ active }: { active: boolean }) {
   );
 
   return (
-    <ScreenLayout
-      id="forces"
-      active={active}
-      law={t('forces.law')}
-      stage={
-        <>
-          <Box sx={{ flex: 1, display: 'flex', flexDirection: 'column', gap: 0.5, minWidth: 0 }}>
-            {tracks.map((track, index) => (
-              <TrackView
-                key={index}
-                ref={(element) => {
-                  canvases.current[index] = element;
-                }}
-                name={NAMES[index]!}
-                track={track}
-                color={SQUARE_COLORS[index]!}
-                // The clock starts with the motion: the tracks do not step before Start.
-                paused={sim.paused || !started}
-                timeScale={sim.timeScale}
-                position={series[index]!.position}
-                velocity={series[index]!.velocity}
-                acceleration={series[index]!.acceleration}
-                force={series[index]!.force}
-                hiddenMass={index === 1 && mysteryMass !== null && !mysteryFound}
-                onEdit={() => {
-                  // B's mass is the mystery: only A's force can be set.
-                  if (index === 1 && mysteryMass !== null) announce(t('forces.mysteryLocked'));
-                  else setEditing(index);
-                }}
-                onPauseChange={sim.setPaused}
-                forceOn={started && track.finishedAt === null}
-              />
-            ))}
-          </Box>
-          {ruler && <Ruler canvas={rulerCanvas} version={tracks} />}
-        </>
-      }
-      panel={
-        <>
-          {region}
-          {graphs}
-          <Box sx={{ px: 0.5 }}>
-            <FormControlLabel
-              sx={{ minHeight: 48, mr: 0 }}
-              control={
-                <Switch
-                  checked={sameForce || mysteryMass !== null}
-                  disabled={mysteryMass !== null}
-                  onChange={(_event, value) => {
-                    setSameForce(value);
-                    rebuild(settings, value, mysteryMass);
+    <MuiTheme>
+      <ScreenLayout
+        id="forces"
+        active={active}
+        law={t('forces.law')}
+        stage={
+          <>
+            <Box sx={{ flex: 1, display: 'flex', flexDirection: 'column', gap: 0.5, minWidth: 0 }}>
+              {tracks.map((track, index) => (
+                <TrackView
+                  key={index}
+                  ref={(element) => {
+                    canvases.current[index] = element;
                   }}
-                  slotProps={{ input: { 'data-control': 'same-force' } as object }}
+                  name={NAMES[index]!}
+                  track={track}
+                  color={SQUARE_COLORS[index]!}
+                  // The clock starts with the motion: the tracks do not step before Start.
+                  paused={sim.paused || !started}
+                  timeScale={sim.timeScale}
+                  position={series[index]!.position}
+                  velocity={series[index]!.velocity}
+                  acceleration={series[index]!.acceleration}
+                  force={series[index]!.force}
+                  hiddenMass={index === 1 && mysteryMass !== null && !mysteryFound}
+                  onEdit={() => {
+                    // B's mass is the mystery: only A's force can be set.
+                    if (index === 1 && mysteryMass !== null) announce(t('forces.mysteryLocked'));
+                    else setEditing(index);
+                  }}
+                  onPauseChange={sim.setPaused}
+                  forceOn={started && track.finishedAt === null}
                 />
-              }
-              label={<Typography variant="body2">{t('forces.sameForce')}</Typography>}
+              ))}
+            </Box>
+            {ruler && <Ruler canvas={rulerCanvas} version={tracks} />}
+          </>
+        }
+        panel={
+          <>
+            {region}
+            {graphs}
+            <Box sx={{ px: 0.5 }}>
+              <FormControlLabel
+                sx={{ minHeight: 48, mr: 0 }}
+                control={
+                  <Switch
+                    checked={sameForce || mysteryMass !== null}
+                    disabled={mysteryMass !== null}
+                    onChange={(_event, value) => {
+                      setSameForce(value);
+                      rebuild(settings, value, mysteryMass);
+                    }}
+                    slotProps={{ input: { 'data-control': 'same-force' } as object }}
+                  />
+                }
+                label={<Typography variant="body2">{t('forces.sameForce')}</Typography>}
+              />
+              <FormControlLabel
+                sx={{ minHeight: 48, mr: 0 }}
+                control={
+                  <Switch
+                    checked={ruler}
+                    onChange={(_event, value) => setRuler(value)}
+                    slotProps={{ input: { 'data-control': 'show-ruler' } as object }}
+                  />
+                }
+                label={<Typography variant="body2">{t('lab.showRuler')}</Typography>}
+              />
+            </Box>
+            <DataTools
+              rewind={rewind}
+              fileName="newton-forces.csv"
+              live={active && started && !sim.paused}
+              announce={announce}
             />
-            <FormControlLabel
-              sx={{ minHeight: 48, mr: 0 }}
-              control={
-                <Switch
-                  checked={ruler}
-                  onChange={(_event, value) => setRuler(value)}
-                  slotProps={{ input: { 'data-control': 'show-ruler' } as object }}
-                />
-              }
-              label={<Typography variant="body2">{t('lab.showRuler')}</Typography>}
+            <MysteryMass
+              mass={mysteryMass}
+              found={mysteryFound}
+              onToggle={(on) => {
+                const mass = on ? drawMysteryMass() : null;
+                setMysteryMass(mass);
+                setMysteryFound(false);
+                rebuild(settings, sameForce, mass);
+                announce(t(on ? 'forces.mysteryOn' : 'forces.mysteryOff'));
+              }}
+              onGuess={(guess) => {
+                if (mysteryMass === null) return;
+                const found = isMysteryFound(guess, mysteryMass);
+                if (found) setMysteryFound(true);
+                announce(
+                  found
+                    ? t('forces.mysteryRight', { mass: unit(mysteryMass, 'kg', 1) })
+                    : t('forces.mysteryWrong', { guess: unit(guess, 'kg', 2) }),
+                );
+              }}
             />
-          </Box>
-          <DataTools
-            rewind={rewind}
-            fileName="newton-forces.csv"
-            live={active && started && !sim.paused}
-            announce={announce}
-          />
-          <MysteryMass
-            mass={mysteryMass}
-            found={mysteryFound}
-            onToggle={(on) => {
-              const mass = on ? drawMysteryMass() : null;
-              setMysteryMass(mass);
-              setMysteryFound(false);
-              rebuild(settings, sameForce, mass);
-              announce(t(on ? 'forces.mysteryOn' : 'forces.mysteryOff'));
-            }}
-            onGuess={(guess) => {
-              if (mysteryMass === null) return;
-              const found = isMysteryFound(guess, mysteryMass);
-              if (found) setMysteryFound(true);
-              announce(
-                found
-                  ? t('forces.mysteryRight', { mass: unit(mysteryMass, 'kg', 1) })
-                  : t('forces.mysteryWrong', { guess: unit(guess, 'kg', 2) }),
-              );
-            }}
-          />
-          <Typography variant="body2" sx={{ color: 'text.secondary', px: 0.5 }}>
-            {t('forces.edit')}
-          </Typography>
-          <SquareDialog
-            open={editing !== null}
-            name={editing === null ? '' : NAMES[editing]!}
-            settings={settings[editing ?? 0]!}
-            onClose={() => setEditing(null)}
-            onConfirm={confirm}
-          />
-        </>
-      }
-      actions={
-        <Button
-          variant="contained"
-          onClick={start}
-          disabled={started}
-          sx={{ minHeight: 48, flex: 1 }}
-          data-action="start"
-        >
-          {allFinished ? t('forces.finished') : started ? t('forces.running') : t('forces.start')}
-        </Button>
-      }
-      controls={{
-        paused: sim.paused,
-        slow: sim.slow,
-        time,
-        onTogglePlay: sim.togglePlay,
-        onToggleSlow: sim.toggleSlow,
-        onStep: () => {
-          if (!started) return;
-          sim.step(
-            tracks.map((track, index) => ({
-              world: track.world,
-              canvas: canvases.current[index] ?? null,
-            })),
-          );
-        },
-        onReset: () => rebuild(settings, sameForce, mysteryMass),
-        onResetAll: () => {
-          setRuler(false);
-          setSettings(DEFAULTS);
-          setSameForce(false);
-          setMysteryMass(null);
-          setMysteryFound(false);
-          rebuild(DEFAULTS, false, null);
-        },
-      }}
-    />
+            <Typography variant="body2" sx={{ color: 'text.secondary', px: 0.5 }}>
+              {t('forces.edit')}
+            </Typography>
+            <SquareDialog
+              open={editing !== null}
+              name={editing === null ? '' : NAMES[editing]!}
+              settings={settings[editing ?? 0]!}
+              onClose={() => setEditing(null)}
+              onConfirm={confirm}
+            />
+          </>
+        }
+        actions={
+          <Button
+            variant="contained"
+            onClick={start}
+            disabled={started}
+            sx={{ minHeight: 48, flex: 1 }}
+            data-action="start"
+          >
+            {allFinished ? t('forces.finished') : started ? t('forces.running') : t('forces.start')}
+          </Button>
+        }
+        controls={{
+          paused: sim.paused,
+          slow: sim.slow,
+          time,
+          onTogglePlay: sim.togglePlay,
+          onToggleSlow: sim.toggleSlow,
+          onStep: () => {
+            if (!started) return;
+            sim.step(
+              tracks.map((track, index) => ({
+                world: track.world,
+                canvas: canvases.current[index] ?? null,
+              })),
+            );
+          },
+          onReset: () => rebuild(settings, sameForce, mysteryMass),
+          onResetAll: () => {
+            setRuler(false);
+            setSettings(DEFAULTS);
+            setSameForce(false);
+            setMysteryMass(null);
+            setMysteryFound(false);
+            rebuild(DEFAULTS, false, null);
+          },
+        }}
+      />
+    </MuiTheme>
   );
 }

@@ -180,7 +180,7 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
               <span data-readout={`mass-${name}`}>{massText}</span> · F ={' '}
               <b data-readout={`force-${name}`}>{forceText}</b>
             </span>
-            <EditIcon sx={{ fontSize: 18 }} />
+            <EditIcon size={18} />
           </ButtonBase>
           <Typography
             variant="body2"

@@ -1,13 +1,4 @@
 import { listenToCanvasDrags } from '../../app/canvas-drag.ts';
-import {
-  Box,
-  Button,
-  FormControlLabel,
-  Switch,
-  ToggleButton,
-  ToggleButtonGroup,
-  Typography,
-} from '@mui/material';
 import { CANVAS_PIXEL_RATIO } from '../../app/theme.ts';
 import {
   ARROW_COLORS,
@@ -17,7 +8,16 @@ import {
 } from '@physical/canvas';
 import type { Force, World } from '@physical/engine';
 import { PhysicalCanvas } from '@physical/react';
-import { useCallback, useEffect, useLayoutEffect, useMemo, useRef, useState } from 'react';
+import {
+  Suspense,
+  lazy,
+  useCallback,
+  useEffect,
+  useLayoutEffect,
+  useMemo,
+  useRef,
+  useState,
+} from 'react';
 import { useAnnouncer } from '../../app/Announcer.tsx';
 import { presetFor, presetNumber } from '../../app/presets.ts';
 import { useOrientationRebuild } from '../../app/use-orientation-rebuild.ts';
@@ -34,9 +34,11 @@ import { useI18n } from '../../i18n/i18n.tsx';
 import { DataTools } from '../../lab/DataTools.tsx';
 import { Ruler } from '../../lab/Ruler.tsx';
 import { useRewind, type Measured } from '../../lab/use-rewind.ts';
+import { Button } from '../../ui/Button.tsx';
+import { Switch } from '../../ui/Switch.tsx';
+import { ToggleButtons } from '../../ui/ToggleButtons.tsx';
 import { PUSH_KEYS, pushFromDrag, pushFromKeys, startsPush } from './body-push.ts';
 import { directionName } from './direction-name.ts';
-import { ForceDialog } from './ForceDialog.tsx';
 import {
   REST_SPEED,
   WALL_NAMES,
@@ -54,6 +56,11 @@ import {
   type InertiaScene,
   type Surface,
 } from './inertia-scene.ts';
+
+// The force dialog is MUI's: it loads (with MUI) the first time it opens.
+const ForceDialog = lazy(() =>
+  import('./ForceDialog.tsx').then((module) => ({ default: module.ForceDialog })),
+);
 
 /** Metres of arrow per newton, and seconds of motion a velocity arrow shows. */
 const FORCE_ARROW_SCALE = 0.4;
@@ -124,6 +131,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
   const pushRef = useRef<Force | null>(null);
   const [push, setPushState] = useState<{ x: number; y: number } | null>(null);
   const [dialogOpen, setDialogOpen] = useState(false);
+  const [dialogShown, setDialogShown] = useState(false);
   const [elasticity, setElasticityState] = useState(() => presetNumber(preset, 'e', 1));
   const [surface, setSurfaceState] = useState<Surface>(() =>
     preset['surface'] === 'wood' ? 'wood' : 'ice',
@@ -585,11 +593,8 @@ export function InertiaScreen({ active }: { active: boolean }) {
       law={t('inertia.law')}
       stage={
         <>
-          <Box
-            ref={hostRef}
-            // The finger pushes the body: the browser must not take the drag for a pan.
-            sx={{ flex: 1, minWidth: 0, display: 'flex', touchAction: 'none' }}
-          >
+          {/* The finger pushes the body: the browser must not take the drag for a pan. */}
+          <div ref={hostRef} className="inertia-host">
             <PhysicalCanvas
               drag={false}
               maxPixelRatio={CANVAS_PIXEL_RATIO}
@@ -604,22 +609,14 @@ export function InertiaScreen({ active }: { active: boolean }) {
               aria-label={description}
               style={{ flex: 1, height: 'auto', minHeight: 0 }}
             />
-          </Box>
+          </div>
           {show.ruler && <Ruler canvas={rulerCanvas} version={scene} />}
         </>
       }
       panel={
         <>
           {region}
-          <Box
-            sx={{
-              display: 'grid',
-              gridTemplateColumns: 'repeat(auto-fill, minmax(84px, 1fr))',
-              columnGap: 1.5,
-              rowGap: 0.5,
-              px: 0.5,
-            }}
-          >
+          <div className="readouts">
             <Readout
               name="speed"
               label={t('inertia.speed')}
@@ -659,7 +656,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
               label={t('inertia.y')}
               value={scene === null ? '–' : unit(labMotion(scene).y, 'm', 2, 2)}
             />
-          </Box>
+          </div>
           <TimeSeriesGraph
             title={t('inertia.graph')}
             unit="m/s"
@@ -673,7 +670,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
             timeScale={sim.timeScale}
             announce={announce}
           />
-          <Box sx={{ display: 'flex', flexWrap: 'wrap', gap: 1.5, alignItems: 'center', px: 0.5 }}>
+          <div className="panel-row">
             <ElasticitySlider
               id="inertia-elasticity-label"
               label={t('inertia.elasticity')}
@@ -684,12 +681,10 @@ export function InertiaScreen({ active }: { active: boolean }) {
                 worldChanged();
               }}
             />
-            <ToggleButtonGroup
-              exclusive
+            <ToggleButtons
+              label={t('inertia.surface')}
               value={surface}
-              aria-label={t('inertia.surface')}
-              onChange={(_event, value: Surface | null) => {
-                if (value === null) return;
+              onChange={(value: Surface) => {
                 setSurfaceState(value);
                 if (scene !== null) {
                   setSurface(scene, value);
@@ -698,55 +693,53 @@ export function InertiaScreen({ active }: { active: boolean }) {
                 }
                 announce(t(value === 'ice' ? 'inertia.onIce' : 'inertia.onWood'));
               }}
-            >
-              <ToggleButton value="ice" data-surface="ice" sx={{ minHeight: 48, minWidth: 56 }}>
-                {t('inertia.ice')}
-              </ToggleButton>
-              <ToggleButton value="wood" data-surface="wood" sx={{ minHeight: 48, minWidth: 56 }}>
-                {t('inertia.wood')}
-              </ToggleButton>
-            </ToggleButtonGroup>
-          </Box>
-          <Box sx={{ display: 'flex', flexWrap: 'wrap', columnGap: 1, px: 0.5 }}>
+              choices={(['ice', 'wood'] as const).map((value) => ({
+                value,
+                label: t(value === 'ice' ? 'inertia.ice' : 'inertia.wood'),
+                attributes: { 'data-surface': value },
+              }))}
+            />
+          </div>
+          <div className="switches">
             {(['vectors', 'values', 'ruler'] as const).map((name) => (
-              <FormControlLabel
+              <Switch
                 key={name}
-                sx={{ minHeight: 48, mr: 0 }}
-                control={
-                  <Switch
-                    checked={show[name]}
-                    onChange={(_event, value) => {
-                      setShow((old) => ({ ...old, [name]: value }));
-                    }}
-                    slotProps={{ input: { 'data-control': `show-${name}` } as object }}
-                  />
-                }
-                label={<Typography variant="body2">{t(`inertia.show.${name}`)}</Typography>}
+                checked={show[name]}
+                onChange={(value) => setShow((old) => ({ ...old, [name]: value }))}
+                control={`show-${name}`}
+                label={t(`inertia.show.${name}`)}
               />
             ))}
-          </Box>
+          </div>
           <DataTools
             rewind={rewind}
             fileName="newton-inertia.csv"
             live={active && !sim.paused}
             announce={announce}
           />
-          <ForceDialog
-            open={dialogOpen}
-            angle={angle}
-            magnitude={magnitude}
-            sides={scene?.sides ?? 6}
-            onClose={() => setDialogOpen(false)}
-            onConfirm={confirmForce}
-          />
+          {dialogShown && (
+            <Suspense fallback={null}>
+              <ForceDialog
+                open={dialogOpen}
+                angle={angle}
+                magnitude={magnitude}
+                sides={scene?.sides ?? 6}
+                onClose={() => setDialogOpen(false)}
+                onConfirm={confirmForce}
+              />
+            </Suspense>
+          )}
         </>
       }
       actions={
         <>
           <Button
             variant="outlined"
-            onClick={() => setDialogOpen(true)}
-            sx={{ flex: 1, minHeight: 48 }}
+            grow
+            onClick={() => {
+              setDialogOpen(true);
+              setDialogShown(true);
+            }}
             data-action="change-force"
           >
             {t('inertia.changeForce')}
@@ -755,7 +748,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
             variant="contained"
             color={applied ? 'secondary' : 'primary'}
             onClick={toggleForce}
-            sx={{ flex: 1, minHeight: 48 }}
+            grow
             data-action="toggle-force"
             aria-pressed={applied}
           >
@@ -764,7 +757,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
           <Button
             variant="outlined"
             onClick={returnObject}
-            sx={{ minHeight: 48, minWidth: 48 }}
+            className="ui-button--compact"
             data-action="return"
           >
             {t('inertia.return')}

@@ -38,6 +38,7 @@ import { AddIcon, DeleteIcon, PhoneTiltIcon } from '../../app/icons.tsx';
 import { useOrientationRebuild } from '../../app/use-orientation-rebuild.ts';
 import { presetFor } from '../../app/presets.ts';
 import { Readout } from '../../app/Readout.tsx';
+import { MuiTheme } from '../../app/MuiTheme.tsx';
 import { SIDE_BY_SIDE, ScreenLayout } from '../../app/ScreenLayout.tsx';
 import { STEP, simulatedTime, useSimulation } from '../../app/use-simulation.ts';
 import { Live } from '../../app/Live.tsx';
@@ -241,7 +242,6 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   const [chosen, setChosen] = useState<readonly Body[]>([]);
   const chosenRef = useRef(chosen);
   chosenRef.current = chosen;
-  const [tilt, setTiltState] = useState<Tilt>({ x: 0, y: 0 });
   const [sensorOn, setSensorOn] = useState(false);
   const [needsPermission] = useState(tiltButtonUseful);
   const [tab, setTab] = useState<PanelTab>(initialPreset !== null ? 'setup' : 'tray');
@@ -402,7 +402,6 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       arrows.clear();
       clearRewind();
       setSelected(null);
-      setTiltState({ x: 0, y: 0 });
       const created = createReactionsScene(size.width, size.height, next.elasticity);
       setWallsOn(created, next.wallsOn);
       setTiltOn(created, next.tiltOn);
@@ -489,10 +488,16 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     if (sim.paused) describe();
   }, [sim.paused, describe, chosen, version]);
 
+  /**
+   * Leans the tray. `render`: false for the sensor's readings, which come with every frame on a
+   * phone in the hand: a render of the screen for each (MUI's tree, a few milliseconds on a slow
+   * phone) came on top of the frame's work; the tray's acceleration readout reads the scene's
+   * tilt on its own (LiveText). A key or a tap re-renders at once.
+   */
   const changeTilt = useCallback(
-    (next: Tilt) => {
+    (next: Tilt, render = true) => {
       const current = sceneRef.current;
-      setTiltState(next);
+      if (render) rerender();
       if (current !== null) {
         const { x, y } = current.world.gravity;
         setTilt(current, next);
@@ -511,7 +516,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     if (!active) return;
     return watchDeviceTilt((value) => {
       setSensorOn(true);
-      changeTilt(value);
+      changeTilt(value, false);
     });
   }, [active, changeTilt]);
 
@@ -781,8 +786,18 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   };
 
   const info = selected === null ? undefined : scene?.particles.get(selected);
-  const push = settings.tiltOn ? trayAcceleration(tilt) : { x: 0, y: 0 };
-  const pushSize = Math.hypot(push.x, push.y);
+  /** The tray's acceleration g sin θ and its direction, from the scene's tilt now. */
+  const pushText = (): string => {
+    const current = sceneRef.current;
+    const push =
+      current !== null && settingsRef.current.tiltOn
+        ? trayAcceleration(current.tilt)
+        : { x: 0, y: 0 };
+    const size = Math.hypot(push.x, push.y);
+    return size < 1e-6
+      ? unit(0, 'm/s²')
+      : `${unit(size, 'm/s²', 2)}, ${number(screenAngle(push), 0)}°`;
+  };
   const viewBox =
     scene === null
       ? null
@@ -808,430 +823,435 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   };
 
   return (
-    <ScreenLayout
-      id="reactions"
-      active={active}
-      law={t('reactions.law')}
-      stage={
-        <Box ref={hostRef} data-arrows="0" sx={{ flex: 1, minWidth: 0, display: 'flex' }}>
-          <PhysicalCanvas
-            maxPixelRatio={pixelRatio}
-            ref={canvasRef}
-            paused={sim.paused}
-            world={scene?.world ?? null}
-            fit="contain"
-            viewBox={viewBox}
-            timeScale={sim.timeScale}
-            drawOverlay={drawOverlay}
-            onBodyTap={({ body, point }) => onTap(point, body)}
-            onBackgroundTap={({ point }) => onTap(point, null)}
-            onPauseChange={({ paused }) => sim.setPaused(paused)}
-            aria-label={t('reactions.canvas')}
-            style={{ flex: 1, height: 'auto' }}
-          />
-        </Box>
-      }
-      panel={
-        <>
-          {region}
-          <Box
-            id="reactions-description"
-            aria-live="polite"
-            data-description="reactions"
-            sx={{
-              position: 'absolute',
-              width: '1px',
-              height: '1px',
-              overflow: 'hidden',
-              clip: 'rect(0 0 0 0)',
-              whiteSpace: 'nowrap',
-            }}
-          >
-            {description}
+    <MuiTheme>
+      <ScreenLayout
+        id="reactions"
+        active={active}
+        law={t('reactions.law')}
+        stage={
+          <Box ref={hostRef} data-arrows="0" sx={{ flex: 1, minWidth: 0, display: 'flex' }}>
+            <PhysicalCanvas
+              maxPixelRatio={pixelRatio}
+              ref={canvasRef}
+              paused={sim.paused}
+              world={scene?.world ?? null}
+              fit="contain"
+              viewBox={viewBox}
+              timeScale={sim.timeScale}
+              drawOverlay={drawOverlay}
+              onBodyTap={({ body, point }) => onTap(point, body)}
+              onBackgroundTap={({ point }) => onTap(point, null)}
+              onPauseChange={({ paused }) => sim.setPaused(paused)}
+              aria-label={t('reactions.canvas')}
+              style={{ flex: 1, height: 'auto' }}
+            />
           </Box>
-          <Tabs
-            value={tab}
-            onChange={(_event, value: PanelTab) => setTab(value)}
-            // Five whole labels: they share the row where it is wide enough, and where it is
-            // not (a 375x667 phone in landscape gives the panel 220 px) the row scrolls sideways
-            // rather than cut "Results" and "Ergebnis" to a few letters.
-            variant="scrollable"
-            scrollButtons={false}
-            aria-label={t('reactions.panel')}
-            sx={{
-              minHeight: 48,
-              '& .MuiTab-root': {
-                minHeight: 48,
-                minWidth: 0,
-                flex: '1 0 auto',
-                px: 1,
-                fontSize: '0.8125rem',
-                letterSpacing: 0,
+        }
+        panel={
+          <>
+            {region}
+            <Box
+              id="reactions-description"
+              aria-live="polite"
+              data-description="reactions"
+              sx={{
+                position: 'absolute',
+                width: '1px',
+                height: '1px',
+                overflow: 'hidden',
+                clip: 'rect(0 0 0 0)',
                 whiteSpace: 'nowrap',
-              },
-            }}
-          >
-            {PANEL_TABS.map((id) => (
-              <Tab
-                key={id}
-                value={id}
-                label={t(TAB_LABELS[id])}
-                id={`reactions-tab-${id}`}
-                aria-controls={`reactions-tabpanel-${id}`}
-                data-tab={id}
-              />
-            ))}
-          </Tabs>
-          <Box
-            role="tabpanel"
-            id={`reactions-tabpanel-${tab}`}
-            aria-labelledby={`reactions-tab-${tab}`}
-            sx={{
-              display: 'flex',
-              flexDirection: 'column',
-              gap: 0.5,
-              minHeight: 0,
-              // A phone held upright: the panel keeps its height whatever the tab, so the tray
-              // does not jump; what does not fit scrolls inside it. Short phones give it less:
-              // the bars, the law, the tabs and the tray's least height take about 480 px.
-              height: 'clamp(88px, calc(100dvh - 480px), 196px)',
-              overflowY: 'auto',
-              [`@media ${SIDE_BY_SIDE}`]: { height: 'auto', overflowY: 'visible' },
-            }}
-          >
-            {tab === 'tray' && (
-              <>
-                <Box
-                  sx={{ minHeight: 40, px: 0.5, display: 'flex', alignItems: 'center' }}
-                  data-readout="particle-info"
-                >
-                  {selected !== null && info !== undefined ? (
+              }}
+            >
+              {description}
+            </Box>
+            <Tabs
+              value={tab}
+              onChange={(_event, value: PanelTab) => setTab(value)}
+              // Five whole labels: they share the row where it is wide enough, and where it is
+              // not (a 375x667 phone in landscape gives the panel 220 px) the row scrolls sideways
+              // rather than cut "Results" and "Ergebnis" to a few letters.
+              variant="scrollable"
+              scrollButtons={false}
+              aria-label={t('reactions.panel')}
+              sx={{
+                minHeight: 48,
+                '& .MuiTab-root': {
+                  minHeight: 48,
+                  minWidth: 0,
+                  flex: '1 0 auto',
+                  px: 1,
+                  fontSize: '0.8125rem',
+                  letterSpacing: 0,
+                  whiteSpace: 'nowrap',
+                },
+              }}
+            >
+              {PANEL_TABS.map((id) => (
+                <Tab
+                  key={id}
+                  value={id}
+                  label={t(TAB_LABELS[id])}
+                  id={`reactions-tab-${id}`}
+                  aria-controls={`reactions-tabpanel-${id}`}
+                  data-tab={id}
+                />
+              ))}
+            </Tabs>
+            <Box
+              role="tabpanel"
+              id={`reactions-tabpanel-${tab}`}
+              aria-labelledby={`reactions-tab-${tab}`}
+              sx={{
+                display: 'flex',
+                flexDirection: 'column',
+                gap: 0.5,
+                minHeight: 0,
+                // A phone held upright: the panel keeps its height whatever the tab, so the tray
+                // does not jump; what does not fit scrolls inside it. Short phones give it less:
+                // the bars, the law, the tabs and the tray's least height take about 480 px.
+                height: 'clamp(88px, calc(100dvh - 480px), 196px)',
+                overflowY: 'auto',
+                [`@media ${SIDE_BY_SIDE}`]: { height: 'auto', overflowY: 'visible' },
+              }}
+            >
+              {tab === 'tray' && (
+                <>
+                  <Box
+                    sx={{ minHeight: 40, px: 0.5, display: 'flex', alignItems: 'center' }}
+                    data-readout="particle-info"
+                  >
+                    {selected !== null && info !== undefined ? (
+                      <Box
+                        sx={{
+                          display: 'grid',
+                          gridTemplateColumns: 'repeat(4, auto)',
+                          gap: 1,
+                          flex: 1,
+                        }}
+                      >
+                        <Readout
+                          name="particle-mass"
+                          label={`${t('reactions.mass')} ${info.label}`}
+                          value={unit(selected.mass, 'kg', 3)}
+                        />
+                        <Readout
+                          name="particle-speed"
+                          label={t('reactions.speed')}
+                          value={
+                            <LiveText
+                              active={active}
+                              text={() =>
+                                unit(
+                                  Math.hypot(selected.linearVelocity.x, selected.linearVelocity.y),
+                                  'm/s',
+                                  2,
+                                  2,
+                                )
+                              }
+                            />
+                          }
+                        />
+                        <Readout
+                          name="particle-impulse"
+                          label={t('reactions.impulse')}
+                          value={
+                            <LiveText
+                              active={active}
+                              text={() =>
+                                info.lastImpulse === null
+                                  ? t('reactions.none')
+                                  : unit(info.lastImpulse, 'N·s', 3)
+                              }
+                            />
+                          }
+                        />
+                        <Readout
+                          name="particle-position"
+                          label={t('reactions.position')}
+                          value={
+                            <LiveText
+                              active={active}
+                              text={() =>
+                                `${number(selected.position.x, 2, 2)}, ${number(selected.position.y, 2, 2)} m`
+                              }
+                            />
+                          }
+                        />
+                      </Box>
+                    ) : (
+                      <Typography variant="body2" sx={{ color: 'text.secondary' }}>
+                        {t('reactions.tapToInspect')}
+                      </Typography>
+                    )}
+                  </Box>
+                  {/* The readouts keep their text's width and go below the pad when it lacks room. */}
+                  <Box sx={{ display: 'flex', flexWrap: 'wrap', alignItems: 'center', gap: 1 }}>
+                    <Box sx={{ display: 'flex', flexDirection: 'column', gap: 0.5 }}>
+                      <Tooltip title={t('reactions.add')}>
+                        <IconButton
+                          aria-label={t('reactions.add')}
+                          onClick={addAnywhere}
+                          data-action="add"
+                          color="primary"
+                          sx={{ width: 48, height: 48 }}
+                        >
+                          <AddIcon />
+                        </IconButton>
+                      </Tooltip>
+                      <Tooltip title={t('reactions.clear')}>
+                        <IconButton
+                          aria-label={t('reactions.clear')}
+                          onClick={() => {
+                            if (scene === null) return;
+                            setSelected(null);
+                            clearParticles(scene);
+                            worldChanged();
+                            choosePair([], scene);
+                            arrows.clear();
+                            rerender();
+                          }}
+                          data-action="clear"
+                          sx={{ width: 48, height: 48 }}
+                        >
+                          <DeleteIcon />
+                        </IconButton>
+                      </Tooltip>
+                    </Box>
+                    <TiltPad
+                      onNudge={(dx, dy) => {
+                        const now = sceneRef.current?.tilt ?? { x: 0, y: 0 };
+                        changeTilt({ x: clampTilt(now.x + dx), y: clampTilt(now.y + dy) });
+                      }}
+                      onLevel={() => changeTilt({ x: 0, y: 0 })}
+                    />
                     <Box
                       sx={{
-                        display: 'grid',
-                        gridTemplateColumns: 'repeat(4, auto)',
+                        display: 'flex',
+                        flexDirection: 'column',
                         gap: 1,
                         flex: 1,
+                        minWidth: 'auto',
                       }}
                     >
                       <Readout
-                        name="particle-mass"
-                        label={`${t('reactions.mass')} ${info.label}`}
-                        value={unit(selected.mass, 'kg', 3)}
+                        name="push"
+                        label={t('reactions.trayAcceleration')}
+                        value={<LiveText active={active} ms={100} text={pushText} />}
                       />
                       <Readout
-                        name="particle-speed"
-                        label={t('reactions.speed')}
+                        name="count"
+                        label={t('reactions.count')}
                         value={
-                          <LiveText
-                            active={active}
-                            text={() =>
-                              unit(
-                                Math.hypot(selected.linearVelocity.x, selected.linearVelocity.y),
-                                'm/s',
-                                2,
-                                2,
-                              )
-                            }
-                          />
+                          scene !== null && isFull(scene)
+                            ? t('reactions.countFull', { count: scene.particles.size })
+                            : String(scene?.particles.size ?? 0)
                         }
                       />
                       <Readout
-                        name="particle-impulse"
-                        label={t('reactions.impulse')}
+                        name="momentum"
+                        label={t('reactions.momentumCollision')}
                         value={
                           <LiveText
                             active={active}
                             text={() =>
-                              info.lastImpulse === null
-                                ? t('reactions.none')
-                                : unit(info.lastImpulse, 'N·s', 3)
-                            }
-                          />
-                        }
-                      />
-                      <Readout
-                        name="particle-position"
-                        label={t('reactions.position')}
-                        value={
-                          <LiveText
-                            active={active}
-                            text={() =>
-                              `${number(selected.position.x, 2, 2)}, ${number(selected.position.y, 2, 2)} m`
+                              recorder.record === null
+                                ? '–'
+                                : `${recordTotal('before')} → ${recordTotal('after')}`
                             }
                           />
                         }
                       />
                     </Box>
-                  ) : (
-                    <Typography variant="body2" sx={{ color: 'text.secondary' }}>
-                      {t('reactions.tapToInspect')}
-                    </Typography>
-                  )}
-                </Box>
-                {/* The readouts keep their text's width and go below the pad when it lacks room. */}
-                <Box sx={{ display: 'flex', flexWrap: 'wrap', alignItems: 'center', gap: 1 }}>
-                  <Box sx={{ display: 'flex', flexDirection: 'column', gap: 0.5 }}>
-                    <Tooltip title={t('reactions.add')}>
-                      <IconButton
-                        aria-label={t('reactions.add')}
-                        onClick={addAnywhere}
-                        data-action="add"
-                        color="primary"
-                        sx={{ width: 48, height: 48 }}
-                      >
-                        <AddIcon />
-                      </IconButton>
-                    </Tooltip>
-                    <Tooltip title={t('reactions.clear')}>
-                      <IconButton
-                        aria-label={t('reactions.clear')}
-                        onClick={() => {
-                          if (scene === null) return;
-                          setSelected(null);
-                          clearParticles(scene);
-                          worldChanged();
-                          choosePair([], scene);
-                          arrows.clear();
-                          rerender();
-                        }}
-                        data-action="clear"
-                        sx={{ width: 48, height: 48 }}
-                      >
-                        <DeleteIcon />
-                      </IconButton>
-                    </Tooltip>
                   </Box>
-                  <TiltPad
-                    onNudge={(dx, dy) =>
-                      changeTilt({ x: clampTilt(tilt.x + dx), y: clampTilt(tilt.y + dy) })
-                    }
-                    onLevel={() => changeTilt({ x: 0, y: 0 })}
-                  />
-                  <Box
-                    sx={{
-                      display: 'flex',
-                      flexDirection: 'column',
-                      gap: 1,
-                      flex: 1,
-                      minWidth: 'auto',
-                    }}
-                  >
-                    <Readout
-                      name="push"
-                      label={t('reactions.trayAcceleration')}
-                      value={
-                        pushSize < 1e-6
-                          ? unit(0, 'm/s²')
-                          : `${unit(pushSize, 'm/s²', 2)}, ${number(screenAngle(push), 0)}°`
-                      }
-                    />
-                    <Readout
-                      name="count"
-                      label={t('reactions.count')}
-                      value={
-                        scene !== null && isFull(scene)
-                          ? t('reactions.countFull', { count: scene.particles.size })
-                          : String(scene?.particles.size ?? 0)
-                      }
-                    />
-                    <Readout
-                      name="momentum"
-                      label={t('reactions.momentumCollision')}
-                      value={
-                        <LiveText
-                          active={active}
-                          text={() =>
-                            recorder.record === null
-                              ? '–'
-                              : `${recordTotal('before')} → ${recordTotal('after')}`
-                          }
-                        />
-                      }
-                    />
-                  </Box>
-                </Box>
-              </>
-            )}
-            {tab === 'setup' && (
-              <>
-                <Box sx={{ display: 'flex', gap: 1 }}>
-                  <Button
-                    variant="contained"
-                    sx={{ minHeight: 48, flex: 1 }}
-                    data-action="lab-setup"
-                    onClick={() => {
-                      const next = {
-                        ...settingsRef.current,
-                        lab: settingsRef.current.lab ?? DEFAULT_LAB,
-                      };
-                      setSettings(next);
-                      build(next);
-                    }}
-                  >
-                    {t('lab.twoParticles')}
-                  </Button>
-                  <Button
-                    variant="outlined"
-                    sx={{ minHeight: 48, flex: 1 }}
-                    data-action="choose"
-                    onClick={chooseNext}
-                    disabled={scene === null || scene.particles.size === 0}
-                  >
-                    {t('lab.chooseNext')}
-                  </Button>
-                </Box>
-                <LabSetup rows={labRows} version={version} onChange={changeLab} />
-              </>
-            )}
-            {tab === 'results' && (
-              <Live active={live} watch={() => recordKey(recorder.record)}>
-                {() => <LabResults record={recorder.record} />}
-              </Live>
-            )}
-            {tab === 'options' && (
-              <>
-                <Box sx={{ display: 'flex', flexWrap: 'wrap', columnGap: 1, px: 0.5 }}>
-                  <FormControlLabel
-                    control={
-                      <Switch
-                        checked={settings.wallsOn}
-                        onChange={(event) => changeSettings({ wallsOn: event.target.checked })}
-                        slotProps={{ input: { 'data-control': 'walls' } as object }}
-                      />
-                    }
-                    label={t('reactions.walls')}
-                    sx={{ minHeight: 48, mr: 0 }}
-                  />
-                  <FormControlLabel
-                    control={
-                      <Switch
-                        checked={settings.tiltOn}
-                        onChange={(event) => changeSettings({ tiltOn: event.target.checked })}
-                        slotProps={{ input: { 'data-control': 'tilt' } as object }}
-                      />
-                    }
-                    label={t('reactions.tiltSwitch')}
-                    sx={{ minHeight: 48, mr: 0 }}
-                  />
-                  {needsPermission && !sensorOn && (
+                </>
+              )}
+              {tab === 'setup' && (
+                <>
+                  <Box sx={{ display: 'flex', gap: 1 }}>
                     <Button
-                      variant="outlined"
-                      sx={{ minHeight: 48 }}
-                      startIcon={<PhoneTiltIcon />}
-                      onClick={() => void requestTiltPermission()}
-                    >
-                      {t('reactions.enableTilt')}
-                    </Button>
-                  )}
-                </Box>
-                <Box sx={{ px: 0.5 }}>
-                  <ElasticitySlider
-                    id="reactions-elasticity-label"
-                    label={t('reactions.elasticity')}
-                    value={settings.elasticity}
-                    onChange={(next) => changeSettings({ elasticity: next })}
-                  />
-                </Box>
-                <Box sx={{ display: 'flex', gap: 1, alignItems: 'center', flexWrap: 'wrap' }}>
-                  <ToggleButtonGroup
-                    exclusive
-                    size="small"
-                    value={settings.measure}
-                    aria-label={t('reactions.arrowsShow')}
-                    onChange={(_event, value: ArrowMeasure | null) =>
-                      value !== null && changeSettings({ measure: value })
-                    }
-                  >
-                    <ToggleButton
-                      value="impulse"
-                      sx={{ minHeight: 48 }}
-                      data-control="measure-impulse"
-                    >
-                      {t('reactions.showImpulse')}
-                    </ToggleButton>
-                    <ToggleButton value="force" sx={{ minHeight: 48 }} data-control="measure-force">
-                      {t('reactions.showForce')}
-                    </ToggleButton>
-                  </ToggleButtonGroup>
-                  {settings.measure === 'force' && (
-                    <TextField
-                      select
-                      size="small"
-                      label={t('reactions.contactTime')}
-                      value={settings.contactTime}
-                      onChange={(event) =>
-                        changeSettings({ contactTime: Number(event.target.value) })
-                      }
-                      sx={{ minWidth: 110 }}
-                      slotProps={{
-                        select: {
-                          SelectDisplayProps: { 'data-control': 'contact-time' } as object,
-                        },
+                      variant="contained"
+                      sx={{ minHeight: 48, flex: 1 }}
+                      data-action="lab-setup"
+                      onClick={() => {
+                        const next = {
+                          ...settingsRef.current,
+                          lab: settingsRef.current.lab ?? DEFAULT_LAB,
+                        };
+                        setSettings(next);
+                        build(next);
                       }}
                     >
-                      {CONTACT_TIMES.map((time) => (
-                        <MenuItem key={time} value={time} sx={{ minHeight: 48 }}>
-                          {unit(time, 's', 3)}
-                        </MenuItem>
-                      ))}
-                    </TextField>
-                  )}
-                </Box>
-                <Typography
-                  variant="caption"
-                  component="p"
-                  sx={{ px: 0.5, m: 0 }}
-                  data-legend="arrows"
-                >
-                  <Box component="span" sx={{ color: ARROW_COLORS.force, fontWeight: 700 }}>
-                    →
+                      {t('lab.twoParticles')}
+                    </Button>
+                    <Button
+                      variant="outlined"
+                      sx={{ minHeight: 48, flex: 1 }}
+                      data-action="choose"
+                      onClick={chooseNext}
+                      disabled={scene === null || scene.particles.size === 0}
+                    >
+                      {t('lab.chooseNext')}
+                    </Button>
                   </Box>
-                  <Box component="span" sx={{ color: ARROW_COLORS.impulse, fontWeight: 700 }}>
-                    ←
-                  </Box>{' '}
-                  {settings.measure === 'impulse'
-                    ? t('reactions.legendImpulse')
-                    : t('reactions.legendForce', { time: unit(settings.contactTime, 's', 3) })}{' '}
-                  <Box component="span" sx={{ color: ARROW_COLORS.velocity, fontWeight: 700 }}>
-                    →
-                  </Box>{' '}
-                  {t('reactions.legendMomentum')}{' '}
-                  <Box component="span" sx={{ color: HANDLE_COLOR, fontWeight: 700 }}>
-                    →●
-                  </Box>{' '}
-                  {t('reactions.legendVelocity')}
-                </Typography>
-              </>
-            )}
-            {tab === 'data' && (
-              <DataTools
-                rewind={rewind}
-                fileName="newton-reactions.csv"
-                live={live}
-                announce={announce}
-              />
-            )}
-          </Box>
-        </>
-      }
-      controls={{
-        paused: sim.paused,
-        slow: sim.slow,
-        time: () => (sceneRef.current === null ? 0 : simulatedTime(sceneRef.current.world)),
-        onTogglePlay: sim.togglePlay,
-        onToggleSlow: sim.toggleSlow,
-        onStep: () =>
-          scene !== null && sim.step([{ world: scene.world, canvas: canvasRef.current }]),
-        onReset: () => build(),
-        onResetAll: () => {
-          setSettings(DEFAULT_SETTINGS);
-          settingsRef.current = DEFAULT_SETTINGS;
-          setTab('tray');
-          sim.setPaused(false);
-          build(DEFAULT_SETTINGS);
-        },
-      }}
-    />
+                  <LabSetup rows={labRows} version={version} onChange={changeLab} />
+                </>
+              )}
+              {tab === 'results' && (
+                <Live active={live} watch={() => recordKey(recorder.record)}>
+                  {() => <LabResults record={recorder.record} />}
+                </Live>
+              )}
+              {tab === 'options' && (
+                <>
+                  <Box sx={{ display: 'flex', flexWrap: 'wrap', columnGap: 1, px: 0.5 }}>
+                    <FormControlLabel
+                      control={
+                        <Switch
+                          checked={settings.wallsOn}
+                          onChange={(event) => changeSettings({ wallsOn: event.target.checked })}
+                          slotProps={{ input: { 'data-control': 'walls' } as object }}
+                        />
+                      }
+                      label={t('reactions.walls')}
+                      sx={{ minHeight: 48, mr: 0 }}
+                    />
+                    <FormControlLabel
+                      control={
+                        <Switch
+                          checked={settings.tiltOn}
+                          onChange={(event) => changeSettings({ tiltOn: event.target.checked })}
+                          slotProps={{ input: { 'data-control': 'tilt' } as object }}
+                        />
+                      }
+                      label={t('reactions.tiltSwitch')}
+                      sx={{ minHeight: 48, mr: 0 }}
+                    />
+                    {needsPermission && !sensorOn && (
+                      <Button
+                        variant="outlined"
+                        sx={{ minHeight: 48 }}
+                        startIcon={<PhoneTiltIcon />}
+                        onClick={() => void requestTiltPermission()}
+                      >
+                        {t('reactions.enableTilt')}
+                      </Button>
+                    )}
+                  </Box>
+                  <Box sx={{ px: 0.5 }}>
+                    <ElasticitySlider
+                      id="reactions-elasticity-label"
+                      label={t('reactions.elasticity')}
+                      value={settings.elasticity}
+                      onChange={(next) => changeSettings({ elasticity: next })}
+                    />
+                  </Box>
+                  <Box sx={{ display: 'flex', gap: 1, alignItems: 'center', flexWrap: 'wrap' }}>
+                    <ToggleButtonGroup
+                      exclusive
+                      size="small"
+                      value={settings.measure}
+                      aria-label={t('reactions.arrowsShow')}
+                      onChange={(_event, value: ArrowMeasure | null) =>
+                        value !== null && changeSettings({ measure: value })
+                      }
+                    >
+                      <ToggleButton
+                        value="impulse"
+                        sx={{ minHeight: 48 }}
+                        data-control="measure-impulse"
+                      >
+                        {t('reactions.showImpulse')}
+                      </ToggleButton>
+                      <ToggleButton
+                        value="force"
+                        sx={{ minHeight: 48 }}
+                        data-control="measure-force"
+                      >
+                        {t('reactions.showForce')}
+                      </ToggleButton>
+                    </ToggleButtonGroup>
+                    {settings.measure === 'force' && (
+                      <TextField
+                        select
+                        size="small"
+                        label={t('reactions.contactTime')}
+                        value={settings.contactTime}
+                        onChange={(event) =>
+                          changeSettings({ contactTime: Number(event.target.value) })
+                        }
+                        sx={{ minWidth: 110 }}
+                        slotProps={{
+                          select: {
+                            SelectDisplayProps: { 'data-control': 'contact-time' } as object,
+                          },
+                        }}
+                      >
+                        {CONTACT_TIMES.map((time) => (
+                          <MenuItem key={time} value={time} sx={{ minHeight: 48 }}>
+                            {unit(time, 's', 3)}
+                          </MenuItem>
+                        ))}
+                      </TextField>
+                    )}
+                  </Box>
+                  <Typography
+                    variant="caption"
+                    component="p"
+                    sx={{ px: 0.5, m: 0 }}
+                    data-legend="arrows"
+                  >
+                    <Box component="span" sx={{ color: ARROW_COLORS.force, fontWeight: 700 }}>
+                      →
+                    </Box>
+                    <Box component="span" sx={{ color: ARROW_COLORS.impulse, fontWeight: 700 }}>
+                      ←
+                    </Box>{' '}
+                    {settings.measure === 'impulse'
+                      ? t('reactions.legendImpulse')
+                      : t('reactions.legendForce', {
+                          time: unit(settings.contactTime, 's', 3),
+                        })}{' '}
+                    <Box component="span" sx={{ color: ARROW_COLORS.velocity, fontWeight: 700 }}>
+                      →
+                    </Box>{' '}
+                    {t('reactions.legendMomentum')}{' '}
+                    <Box component="span" sx={{ color: HANDLE_COLOR, fontWeight: 700 }}>
+                      →●
+                    </Box>{' '}
+                    {t('reactions.legendVelocity')}
+                  </Typography>
+                </>
+              )}
+              {tab === 'data' && (
+                <DataTools
+                  rewind={rewind}
+                  fileName="newton-reactions.csv"
+                  live={live}
+                  announce={announce}
+                />
+              )}
+            </Box>
+          </>
+        }
+        controls={{
+          paused: sim.paused,
+          slow: sim.slow,
+          time: () => (sceneRef.current === null ? 0 : simulatedTime(sceneRef.current.world)),
+          onTogglePlay: sim.togglePlay,
+          onToggleSlow: sim.toggleSlow,
+          onStep: () =>
+            scene !== null && sim.step([{ world: scene.world, canvas: canvasRef.current }]),
+          onReset: () => build(),
+          onResetAll: () => {
+            setSettings(DEFAULT_SETTINGS);
+            settingsRef.current = DEFAULT_SETTINGS;
+            setTab('tray');
+            sim.setPaused(false);
+            build(DEFAULT_SETTINGS);
+          },
+        }}
+      />
+    </MuiTheme>
   );
 }

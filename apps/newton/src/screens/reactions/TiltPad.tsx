@@ -65,7 +65,7 @@ export function TiltPad({ onNudge, onLevel }: TiltPadProps) {
           sx={{ gridArea: 'level', width: 48, height: 48 }}
           data-action="tilt-level"
         >
-          <LevelIcon fontSize="small" />
+          <LevelIcon size={20} />
         </IconButton>
       </Tooltip>
     </Box>
