@@ -319,8 +319,11 @@ export class Solver {
       const bodyStart = batches.bodyStart;
       // The batches visit island by island: constraint n is again the n-th visited.
       if (!filled) this.storeInOrder();
-      // The batches' bodies, where the kernel's body passes read them.
-      this.memory.batchBodies.set(batches.bodies.subarray(0, this.awakeCount));
+      // The batches' bodies, where the kernel's body passes read them (a loop: subarray would
+      // allocate a view each step).
+      const batchBodies = this.memory.batchBodies;
+      const from = batches.bodies;
+      for (let i = 0; i < this.awakeCount; i++) batchBodies[i] = from[i]!;
       for (let k = 0; k < batches.count; k++) {
         if (!filled) this.fill(orderStart[k]!, orderStart[k + 1]!, dt);
         this.subSteps(
