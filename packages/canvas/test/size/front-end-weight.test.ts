@@ -25,9 +25,11 @@ import {
 // those figures plus a tenth of a kilobyte. Then the SIMD lanes' pairs grew the kernel's module
 // (engine 55.2 KB), and joints as handles over their records put the shared accessors in the
 // Joint base class that the canvas's drag (a mouse joint) brings (canvas 13.3 KB, worker page
-// 33.4 KB); the ceilings are those figures plus a tenth of a kilobyte. Lower a ceiling whenever a
-// change makes room.
-const ENGINE_CEILING_BYTES = 55.3 * 1024;
+// 33.4 KB); the ceilings are those figures plus a tenth of a kilobyte. The body passes moved
+// into the kernel (issue #30): their TypeScript left the bundle, their WebAssembly (hex in the
+// module) costs a little more (engine 55.4 KB); the engine's ceiling is that plus a tenth. Lower
+// a ceiling whenever a change makes room.
+const ENGINE_CEILING_BYTES = 55.5 * 1024;
 const CANVAS_CEILING_BYTES = 13.4 * 1024;
 const WORKER_PAGE_CEILING_BYTES = 33.5 * 1024;
 
