@@ -120,14 +120,16 @@ import {
   W,
 } from './contact-layout';
 import { LANES } from './contact-lanes';
+import { ld, st } from './load-store';
 
-function ld(p: usize, k: i32): f64 {
-  return load<f64>(p + ((<usize>k) << 3));
-}
-
-function st(p: usize, k: i32, v: f64): void {
-  store<f64>(p + ((<usize>k) << 3), v);
-}
+// The body passes (integration, speed limits, finalize) are built into the same module: their
+// source is body-passes.ts.
+export {
+  finalizeBodies,
+  integratePositions,
+  integrateVelocities,
+  limitSpeeds,
+} from './body-passes';
 
 // The constraints are stored in pairs, their numbers interleaved: number k of constraint i is at
 // double (i >> 1) * 2 * STRIDE + 2 * k + (i & 1) of the constraint region, so constraints 2m and

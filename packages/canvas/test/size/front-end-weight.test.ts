@@ -27,9 +27,11 @@ import {
 // Joint base class that the canvas's drag (a mouse joint) brings (canvas 13.3 KB, worker page
 // 33.4 KB). Joint then lost what a mouse joint does not use: snapshot state to free functions
 // (joint-state.ts) and the two-body kinds' setters and frame to their own base (two-body-joint.ts):
-// canvas 13.25 -> 12.68 KB, worker page 33.41 -> 32.94 KB; the ceilings are the figures plus a
-// tenth of a kilobyte, rounded up to a tenth. Lower a ceiling whenever a change makes room.
-const ENGINE_CEILING_BYTES = 55.3 * 1024;
+// canvas 13.25 -> 12.68 KB, worker page 33.41 -> 32.94 KB. The body passes moved into the kernel
+// (issue #30): their TypeScript left the bundle, their WebAssembly (hex in the module) costs a
+// little more (engine 55.4 KB). The ceilings are the figures plus a tenth of a kilobyte, rounded
+// up to a tenth. Lower a ceiling whenever a change makes room.
+const ENGINE_CEILING_BYTES = 55.5 * 1024;
 const CANVAS_CEILING_BYTES = 12.8 * 1024;
 const WORKER_PAGE_CEILING_BYTES = 33.1 * 1024;
 

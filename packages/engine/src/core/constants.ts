@@ -13,6 +13,9 @@ export const SPECULATIVE_DISTANCE: number = 4 * LINEAR_SLOP;
 /** Broad-phase boxes are fattened by this much so that small motions do not update the tree (m). */
 export const AABB_MARGIN = 0.1;
 
+/** Bodies slower than this (m/s, at their farthest point) count as resting. */
+export const SLEEP_SPEED = 0.05;
+
 /** Polygons may have at most this many vertices. */
 export const MAX_POLYGON_VERTICES = 8;
 

@@ -25,7 +25,9 @@
 //  31 flags                  FLAG_* bits
 //  32 mass override, 33 inertia override (0: computed from the shapes)
 //  34 contact head           first key of the body's contact edges plus one, 0: none (contact-edges.ts)
-//  35-39 free (the stride stays a whole number of cache lines)
+//  35 forces left            1 while the body has forces with a duration still to act, else 0
+//                            (written by Solver.gatherBodies, read by the kernel's finalizeBodies)
+//  36-39 free (the stride stays a whole number of cache lines)
 
 export const BODY_STRIDE = 40;
 export const B_X = 0;
@@ -63,6 +65,7 @@ export const B_FLAGS = 31;
 export const B_MASS_OVERRIDE = 32;
 export const B_INERTIA_OVERRIDE = 33;
 export const B_CONTACT_HEAD = 34;
+export const B_FORCES_LEFT = 35;
 
 /** Bits of B_FLAGS. */
 export const FLAG_FIXED_ROTATION = 1;

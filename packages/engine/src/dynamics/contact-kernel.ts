@@ -1,8 +1,8 @@
 import { PhysicalError } from '../core/errors.ts';
 import { CONTACT_KERNEL_HEX } from './contact-kernel-binary.ts';
 
-// The contact passes (prepare, warm start, solve, relax, store) have one source,
-// wasm/contact-kernel.ts (AssemblyScript), built twice by scripts/contact-kernel-build.ts: to
+// The contact passes (prepare, warm start, solve, relax, store) and the body passes (integration,
+// finalize) have one source, wasm/contact-kernel.ts and wasm/body-passes.ts (AssemblyScript), built twice by scripts/contact-kernel-build.ts: to
 // WebAssembly (contact-kernel-binary.ts) and, from the same optimised module, to JavaScript by
 // Binaryen's wasm2js (contact-kernel-javascript.ts). Both run the same IEEE double operations in
 // the same order, so they give bit-identical worlds (test/unit/dynamics/contact-kernel.test.ts)
@@ -29,7 +29,7 @@ interface WasmApi {
 }
 
 /** The kernel's exports; pointers are byte offsets into its memory. */
-export interface ContactKernel {
+export interface ContactKernel extends BodyPasses {
   /** prepareContacts; returns the number of constraints. */
   prepare(
     contactData: number,
@@ -133,6 +133,55 @@ export interface ContactKernel {
     marks: number,
     mode: number,
   ): number;
+}
+
+/**
+ * The body passes (wasm/body-passes.ts), built into the same module. `bodies` is the BODIES region,
+ * `awake` the step's awake list (AWAKE_BODIES: world index of awake body i, whose state is slot
+ * i + 1); with `useList` 1 the passes visit the awake indices of the int32 list at `list`
+ * (BATCH_BODIES) from `from` to `to`, else the awake indices from `from` to `to`.
+ */
+export interface BodyPasses {
+  integrateVelocities(
+    bodies: number,
+    awake: number,
+    list: number,
+    useList: number,
+    from: number,
+    to: number,
+    states: number,
+    marks: number,
+    gravityX: number,
+    gravityY: number,
+    h: number,
+    maxSpeed: number,
+    maxAngularSpeed: number,
+  ): void;
+  integratePositions(
+    bodies: number,
+    awake: number,
+    list: number,
+    useList: number,
+    from: number,
+    to: number,
+    states: number,
+    h: number,
+    maxSpeed: number,
+    maxAngularSpeed: number,
+  ): void;
+  limitSpeeds(
+    bodies: number,
+    awake: number,
+    list: number,
+    useList: number,
+    from: number,
+    to: number,
+    states: number,
+    maxSpeed: number,
+    maxAngularSpeed: number,
+  ): void;
+  /** Velocities, centre, angle and sleep clock of the `count` awake bodies into the body memory. */
+  finalizeBodies(bodies: number, awake: number, count: number, states: number, dt: number): void;
 }
 
 /** Creates the JavaScript build of the kernel over `imports.env.memory` (wasm2js's factory). */

@@ -5,7 +5,8 @@ import { createContactKernel, type ContactKernel, type WasmMemory } from './cont
 // copy the Body handles read and write), the body states and the body table
 // (body-state.ts), the contact data with each slot's bodies (contact-data.ts), and the contact
 // constraints with their body offsets, visiting order, source slots and circle pairs
-// (contact-solver.ts). The contact kernel (contact-kernel.ts) reads them at the regions' byte
+// (contact-solver.ts), and the step's awake list (world indices) and a batch's body list, which the
+// kernel's body passes visit. The contact kernel (contact-kernel.ts) reads them at the regions' byte
 // offsets, the rest of the solver through typed-array views. A world's memory is a WebAssembly
 // memory from its start (the JavaScript build of the kernel is an optional entry, and small worlds
 // lose nothing: see the engine README's WebAssembly section), or an ordinary ArrayBuffer run by
@@ -33,9 +34,13 @@ export const CONTACT_BODIES = 7;
 export const BODY_TABLE = 8;
 /** Every body's numbers, by world index (body-memory.ts): doubles. */
 export const BODIES = 9;
-const REGIONS = 10;
+/** The step's awake bodies' world indices, by awake index (state slot minus one): int32. */
+export const AWAKE_BODIES = 10;
+/** A batch of islands' awake indices (solver-batches.ts), for the body passes: int32. */
+export const BATCH_BODIES = 11;
+const REGIONS = 12;
 /** Bytes per element of each region. */
-const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8];
+const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4];
 
 /**
  * @internal When worlds move to the WebAssembly kernel: at this many contacts in a step (0, the
@@ -54,6 +59,10 @@ export class SolverMemory {
   contactData: Float64Array = new Float64Array(0);
   contactBodies: Int32Array = new Int32Array(0);
   bodyTable: Float64Array = new Float64Array(0);
+  /** The step's awake bodies' world indices (AWAKE_BODIES). */
+  awakeBodies: Int32Array = new Int32Array(0);
+  /** A batch's awake indices for the body passes (BATCH_BODIES). */
+  batchBodies: Int32Array = new Int32Array(0);
   /**
    * The bodies' numbers (body-memory.ts): the store every Body handle of the world reads through.
    * Its `data` is this memory's BODIES region, replaced (with every other view) when it moves.
@@ -91,7 +100,14 @@ export class SolverMemory {
 
   private initialCapacities(): number[] {
     const initial = [64 * 8, 256 * this.constraintStride, 512, 256, 256, 256];
-    return initial.concat([256 * this.contactStride, 512, 64 * this.tableStride, 64 * BODY_STRIDE]);
+    return initial.concat([
+      256 * this.contactStride,
+      512,
+      64 * this.tableStride,
+      64 * BODY_STRIDE,
+      64,
+      64,
+    ]);
   }
 
   /**
@@ -103,6 +119,8 @@ export class SolverMemory {
     const wanted = this.initialCapacities();
     this.sizeContacts(wanted, contacts);
     wanted[BODIES] = grown(wanted[BODIES]!, bodies * BODY_STRIDE);
+    wanted[AWAKE_BODIES] = grown(wanted[AWAKE_BODIES]!, bodies);
+    wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, bodies);
     const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
@@ -136,9 +154,21 @@ export class SolverMemory {
     this.reserve(BODIES, count * BODY_STRIDE);
   }
 
-  /** Makes room for `count` bodies in the body table. */
+  /**
+   * Makes room for `count` bodies in the body table and the awake lists (reserveStep made it
+   * already, unless bodies joined since).
+   */
   reserveBodyTable(count: number): Float64Array {
-    this.reserve(BODY_TABLE, count * this.tableStride);
+    const have = this.capacities;
+    if (
+      count * this.tableStride > have[BODY_TABLE]! ||
+      count > have[AWAKE_BODIES]! ||
+      count > have[BATCH_BODIES]!
+    ) {
+      const wanted = have.slice();
+      this.sizeBodies(wanted, count);
+      this.layout(wanted, this.wasm !== null);
+    }
     return this.bodyTable;
   }
 
@@ -164,6 +194,8 @@ export class SolverMemory {
     if (
       stateDoubles <= have[STATES]! &&
       bodies * this.tableStride <= have[BODY_TABLE]! &&
+      bodies <= have[AWAKE_BODIES]! &&
+      bodies <= have[BATCH_BODIES]! &&
       contacts * this.contactStride <= have[CONTACT_DATA]! &&
       contacts <= have[CONSTRAINT_ORDER]! &&
       toWasm === (this.wasm !== null)
@@ -172,7 +204,7 @@ export class SolverMemory {
     }
     const wanted = have.slice();
     wanted[STATES] = grown(have[STATES]!, stateDoubles);
-    wanted[BODY_TABLE] = grown(have[BODY_TABLE]!, bodies * this.tableStride);
+    this.sizeBodies(wanted, bodies);
     this.sizeContacts(wanted, contacts);
     this.sizeConstraints(wanted, contacts);
     this.layout(wanted, toWasm);
@@ -181,6 +213,13 @@ export class SolverMemory {
   /** Whether a step of `count` contacts runs on the WebAssembly kernel (once moved, it stays). */
   private wantsKernel(count: number): boolean {
     return this.wasm !== null || (!this.wasmRefused && count >= kernelSettings.minConstraints);
+  }
+
+  /** Grows `wanted`'s body table and awake lists to hold `count` bodies (no smaller than they are). */
+  private sizeBodies(wanted: number[], count: number): void {
+    wanted[BODY_TABLE] = grown(wanted[BODY_TABLE]!, count * this.tableStride);
+    wanted[AWAKE_BODIES] = grown(wanted[AWAKE_BODIES]!, count);
+    wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, count);
   }
 
   /** Grows `wanted`'s contact regions to hold `count` slots (no smaller than they are). */
@@ -259,6 +298,8 @@ export class SolverMemory {
     this.contactBodies = i32(CONTACT_BODIES);
     this.bodyTable = f64(BODY_TABLE);
     this.bodyStore.data = f64(BODIES);
+    this.awakeBodies = i32(AWAKE_BODIES);
+    this.batchBodies = i32(BATCH_BODIES);
   }
 }
 

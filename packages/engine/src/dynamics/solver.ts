@@ -5,25 +5,18 @@ import {
   BODY_STRIDE,
   B_ANGLE,
   B_ANGLE0,
-  B_ANGULAR_DAMPING,
   B_AWAKE,
   B_CENTER0_X,
   B_CENTER0_Y,
   B_CENTER_X,
   B_CENTER_Y,
-  B_DRAG,
+  B_FORCES_LEFT,
   B_FORCE_X,
   B_FORCE_Y,
-  B_GRAVITY_SCALE,
   B_INV_INERTIA,
   B_INV_MASS,
-  B_LINEAR_DAMPING,
   B_LOCAL_CENTER_X,
   B_LOCAL_CENTER_Y,
-  B_FLAGS,
-  B_MAX_EXTENT,
-  B_SLEEP_TIME,
-  FLAG_ALLOW_SLEEP,
   B_TORQUE,
   B_VX,
   B_VY,
@@ -36,10 +29,6 @@ import {
   DP_Y,
   Q_C,
   Q_S,
-  KICK_VX,
-  KICK_VY,
-  KICK_W,
-  MARK_STRIDE,
   STATE_STRIDE,
   stateDoubles,
   TABLE_CENTER_X,
@@ -68,6 +57,9 @@ import {
 import { ContinuousSolver } from './continuous.ts';
 import { JointSolver } from './joints/joint-solver.ts';
 import {
+  AWAKE_BODIES,
+  BATCH_BODIES,
+  BODIES,
   BODY_TABLE,
   CIRCLE_PAIRS,
   CONSTRAINT_BODIES,
@@ -117,11 +109,6 @@ export class Solver {
   /** The states' and constraints' numbers, shared with the WebAssembly kernel. */
   readonly memory: SolverMemory = new SolverMemory(CONSTRAINT_STRIDE, CONTACT_STRIDE, TABLE_STRIDE);
   readonly states: BodyStates = new BodyStates(this.memory);
-  /**
-   * What the velocity integration needs of each awake body, copied once per step so the sub-step
-   * loops read numbers instead of body objects; entry i belongs to awake[i] (see PARAM_*).
-   */
-  private params: Float64Array = new Float64Array(PARAM_STRIDE * 64);
   readonly constraints: ContactConstraints = new ContactConstraints(this.memory);
   /** The joints, solved before the contacts in each pass (as Box2D v3 orders them). */
   readonly joints: JointSolver = new JointSolver();
@@ -178,7 +165,6 @@ export class Solver {
     this.awake.length = 0;
     this.fastBodies.length = 0;
     this.fastBullets.length = 0;
-    if (this.params.length > PARAM_STRIDE * 64) this.params = new Float64Array(PARAM_STRIDE * 64);
     this.memory.shrink(bodies, contacts);
   }
 
@@ -203,12 +189,9 @@ export class Solver {
     this.memory.reserveBodyTable(bodies.length);
     const s = this.states.reserve(bodies.length);
     const table = this.memory.bodyTable;
-    if (this.params.length < bodies.length * PARAM_STRIDE) {
-      let size = this.params.length;
-      while (size < bodies.length * PARAM_STRIDE) size *= 2;
-      this.params = new Float64Array(size);
-    }
-    const params = this.params;
+    // The body passes (the kernel's, wasm/body-passes.ts) read awake body i's numbers in place,
+    // at the world index listed here.
+    const awakeBodies = this.memory.awakeBodies;
     // The bodies' own numbers, by world index (body-memory.ts): read in place, in order. Taken
     // after the reserves above, which may move the memory.
     const d = this.memory.bodyStore.data;
@@ -236,6 +219,7 @@ export class Solver {
       table[t + TABLE_INV_I] = invInertia;
       if (i < awake.length) awake[i] = body;
       else awake.push(body);
+      awakeBodies[i] = n;
       body.solverIndex = count;
       const k = (i + 1) * STATE_STRIDE;
       s[k + V_X] = d[b + B_VX]!;
@@ -255,16 +239,8 @@ export class Solver {
         d[b + B_FORCE_Y] = 0;
         d[b + B_TORQUE] = 0;
       }
-      const q = i * PARAM_STRIDE;
-      params[q + INV_MASS] = invMass;
-      params[q + INV_INERTIA] = invInertia;
-      params[q + GRAVITY_SCALE] = d[b + B_GRAVITY_SCALE]!;
-      params[q + DRAG] = d[b + B_DRAG]!;
-      params[q + FORCE_X] = d[b + B_FORCE_X]!;
-      params[q + FORCE_Y] = d[b + B_FORCE_Y]!;
-      params[q + TORQUE] = d[b + B_TORQUE]!;
-      params[q + LINEAR_DAMPING] = d[b + B_LINEAR_DAMPING]!;
-      params[q + ANGULAR_DAMPING] = d[b + B_ANGULAR_DAMPING]!;
+      // Spent forces are dropped above: what is left still acts, and keeps the body awake.
+      d[b + B_FORCES_LEFT] = body.forceList.length > 0 ? 1 : 0;
     }
     this.awakeCount = count;
   }
@@ -343,6 +319,11 @@ export class Solver {
       const bodyStart = batches.bodyStart;
       // The batches visit island by island: constraint n is again the n-th visited.
       if (!filled) this.storeInOrder();
+      // The batches' bodies, where the kernel's body passes read them (a loop: subarray would
+      // allocate a view each step).
+      const batchBodies = this.memory.batchBodies;
+      const from = batches.bodies;
+      for (let i = 0; i < this.awakeCount; i++) batchBodies[i] = from[i]!;
       for (let k = 0; k < batches.count; k++) {
         if (!filled) this.fill(orderStart[k]!, orderStart[k + 1]!, dt);
         this.subSteps(
@@ -350,14 +331,14 @@ export class Solver {
           h,
           orderStart[k]!,
           orderStart[k + 1]!,
-          batches.bodies,
+          true,
           bodyStart[k]!,
           bodyStart[k + 1]!,
         );
       }
     } else {
       if (!filled) this.fill(0, constraints.count, dt);
-      this.subSteps(settings, h, 0, constraints.count, null, 0, this.awakeCount);
+      this.subSteps(settings, h, 0, constraints.count, false, 0, this.awakeCount);
     }
     joints.finish();
   }
@@ -408,16 +389,16 @@ export class Solver {
 
   /**
    * The sub-steps of a step, for the constraints at positions `from` to `to` of the visiting
-   * order and the awake bodies `bodyList[bodyFrom .. bodyTo)` (with `bodyList` null, the awake
-   * indices bodyFrom .. bodyTo themselves): the whole step, or one batch of islands. Then stores
-   * those constraints' impulses in their contacts' slots.
+   * order and the awake bodies listed at `bodyFrom .. bodyTo` of the batches' bodies (with
+   * `batch` false, the awake indices bodyFrom .. bodyTo themselves): the whole step, or one batch
+   * of islands. Then stores those constraints' impulses in their contacts' slots.
    */
   private subSteps(
     settings: SolverSettings,
     h: number,
     from: number,
     to: number,
-    bodyList: Int32Array | null,
+    batch: boolean,
     bodyFrom: number,
     bodyTo: number,
   ): void {
@@ -437,16 +418,30 @@ export class Solver {
     this.pushSpeed = maxPushSpeed;
     // The bodies' impact marks (body-state.ts), as a kernel pointer.
     const marksPointer = memory.offsets[STATES]! + 8 * this.states.marks;
+    // The body passes' pointers (wasm/body-passes.ts) and limits: maxLinearSpeed, and at most a
+    // quarter turn per sub-step (Box2D v3's B2_MAX_ROTATION).
+    const bodies = memory.offsets[BODIES]!;
+    const awake = memory.offsets[AWAKE_BODIES]!;
+    const list = memory.offsets[BATCH_BODIES]!;
+    const useList = batch ? 1 : 0;
+    const states = memory.offsets[STATES]!;
+    const maxSpeed = settings.maxLinearSpeed;
+    const maxAngularSpeed = (0.25 * Math.PI) / h;
     for (let step = 0; step < settings.subSteps; step++) {
-      integrateVelocities(
-        this.params,
-        bodyList,
+      kernel.integrateVelocities(
+        bodies,
+        awake,
+        list,
+        useList,
         bodyFrom,
         bodyTo,
-        s,
-        this.states.marks,
-        settings,
+        states,
+        marksPointer,
+        settings.gravityX,
+        settings.gravityY,
         h,
+        maxSpeed,
+        maxAngularSpeed,
       );
       refreshCirclePairs(constraints, s);
       joints.warmStart(s);
@@ -487,7 +482,18 @@ export class Solver {
         );
       }
       joints.solveChains(s, true);
-      integratePositions(this.params, bodyList, bodyFrom, bodyTo, s, settings, h);
+      kernel.integratePositions(
+        bodies,
+        awake,
+        list,
+        useList,
+        bodyFrom,
+        bodyTo,
+        states,
+        h,
+        maxSpeed,
+        maxAngularSpeed,
+      );
       joints.solveChains(s, false, true);
       refreshCirclePairs(constraints, s);
       joints.solve(s, false);
@@ -524,7 +530,17 @@ export class Solver {
       // The relax pass can ask more of a light body than the limits allow (a torqued hinge chain
       // of 1,000:1 against the floor grew 1e2 -> 1e226 m/s in one pass): held to them here, as
       // the position half does, so no step ends with a velocity no later step could move.
-      limitSpeeds(this.params, bodyList, bodyFrom, bodyTo, s, settings, h);
+      kernel.limitSpeeds(
+        bodies,
+        awake,
+        list,
+        useList,
+        bodyFrom,
+        bodyTo,
+        states,
+        maxSpeed,
+        maxAngularSpeed,
+      );
     }
     // Each constraint's impulses go to its own contact slot: a batch stores its own while they
     // are still in cache (the order of the stores changes nothing).
@@ -598,38 +614,33 @@ export class Solver {
    */
   finalizeBodies(dt: number, bounds: BodyBounds, boundsDt: number, continuous: boolean): void {
     const awake = this.awake;
-    const s = this.states.data;
     let fastCount = 0;
     let fastBulletCount = 0;
     const fastBodies = this.fastBodies;
     const fastBullets = this.fastBullets;
     bounds.dt = boundsDt;
-    // The bodies' own numbers (body-memory.ts), written in place at each body's world index.
-    const d = this.memory.bodyStore.data;
+    const memory = this.memory;
+    // Velocities, centres, angles and sleep clocks, in the body memory (the kernel's
+    // finalizeBodies, wasm/body-passes.ts).
+    memory.kernel.finalizeBodies(
+      memory.offsets[BODIES]!,
+      memory.offsets[AWAKE_BODIES]!,
+      this.awakeCount,
+      memory.offsets[STATES]!,
+      dt,
+    );
+    // Then what needs the body's objects: its transform from the new angle (the engine's cosSin),
+    // the fast bodies' lists and the broad-phase boxes.
+    const d = memory.bodyStore.data;
     for (let i = 0; i < this.awakeCount; i++) {
       const body = awake[i]!;
       const b = body.base;
-      const k = (i + 1) * STATE_STRIDE;
-      const vx = s[k + V_X]!;
-      const vy = s[k + V_Y]!;
-      const w = s[k + W]!;
-      const dpx = s[k + DP_X]!;
-      const dpy = s[k + DP_Y]!;
-      d[b + B_VX] = vx;
-      d[b + B_VY] = vy;
-      d[b + B_W] = w;
-      const centerX = d[b + B_CENTER_X]! + dpx;
-      const centerY = d[b + B_CENTER_Y]! + dpy;
-      d[b + B_CENTER_X] = centerX;
-      d[b + B_CENTER_Y] = centerY;
-      const angle = d[b + B_ANGLE]! + s[k + DELTA_ANGLE]!;
-      d[b + B_ANGLE] = angle;
       // The angle is the exact sum of h w; the transform follows it, so rotation never drifts
       // from the integrated angle.
       body.transform.setFromCenter(
-        centerX,
-        centerY,
-        angle,
+        d[b + B_CENTER_X]!,
+        d[b + B_CENTER_Y]!,
+        d[b + B_ANGLE]!,
         d[b + B_LOCAL_CENTER_X]!,
         d[b + B_LOCAL_CENTER_Y]!,
       );
@@ -646,38 +657,11 @@ export class Solver {
       } else {
         bounds.refresh(body, false);
       }
-
-      // Sleep: the body must be slow, and not being moved by position correction either
-      // (Box2D v3's rule, with its 0.5 weight on correction).
-      // A body with a force still to act (a 'constant' or timed one) must not sleep: a small
-      // force on a heavy body is slow at first, and sleeping would zero its velocity and stop it.
-      if ((d[b + B_FLAGS]! & FLAG_ALLOW_SLEEP) === 0 || body.forceList.length > 0) {
-        d[b + B_SLEEP_TIME] = 0;
-        continue;
-      }
-      const extent = d[b + B_MAX_EXTENT]!;
-      const speed = Math.sqrt(vx * vx + vy * vy) + extent * Math.abs(w);
-      const moved = Math.sqrt(dpx * dpx + dpy * dpy) + extent * Math.abs(s[k + DELTA_ANGLE]!);
-      const sleepSpeed = Math.max(speed, (0.5 * moved) / dt);
-      if (sleepSpeed > SLEEP_SPEED) d[b + B_SLEEP_TIME] = 0;
-      else d[b + B_SLEEP_TIME] += dt;
     }
     this.fastCount = fastCount;
     this.fastBulletCount = fastBulletCount;
   }
 }
-
-// Per awake body in Solver.params.
-const INV_MASS = 0;
-const INV_INERTIA = 1;
-const GRAVITY_SCALE = 2;
-const DRAG = 3;
-const FORCE_X = 4;
-const FORCE_Y = 5;
-const TORQUE = 6;
-const LINEAR_DAMPING = 7;
-const ANGULAR_DAMPING = 8;
-const PARAM_STRIDE = 9;
 
 /**
  * Slowest approach (m/s) an impact round counts as an impact, with a restitution threshold below
@@ -735,9 +719,6 @@ function greatestCommonDivisor(a: number, b: number): number {
   return a;
 }
 
-/** Bodies slower than this (m/s, at their farthest point) count as resting. */
-export const SLEEP_SPEED = 0.05;
-
 /** Sums the body's forces for this step (scaled by the part of the step each acts) and drops spent ones. */
 function gatherForces(body: Body, dt: number): void {
   let fx = 0;
@@ -770,176 +751,4 @@ function gatherForces(body: Body, dt: number): void {
   body.forceX = fx;
   body.forceY = fy;
   body.torqueValue = torque;
-}
-
-/**
- * Semi-implicit Euler, velocity half: v += h (F / m + g), with damping and the thesis's drag
- * applied implicitly (v / (1 + h c)) so that no damping value can reverse a velocity; for the
- * awake bodies list[from .. to), or from .. to themselves when `list` is null. Each body's
- * velocity change goes after its impact mark (from `marks` in `s`, body-state.ts).
- */
-function integrateVelocities(
-  params: Float64Array,
-  list: Int32Array | null,
-  from: number,
-  to: number,
-  s: Float64Array,
-  marks: number,
-  settings: SolverSettings,
-  h: number,
-): void {
-  const gx = settings.gravityX;
-  const gy = settings.gravityY;
-  setSpeedLimits(settings, h);
-  for (let n = from; n < to; n++) {
-    const i = list === null ? n : list[n]!;
-    const q = i * PARAM_STRIDE;
-    const invMass = params[q + INV_MASS]!;
-    if (invMass === 0) continue; // kinematic: keeps the velocity it was given
-    const k = (i + 1) * STATE_STRIDE;
-    const scale = params[q + GRAVITY_SCALE]!;
-    let vx = s[k + V_X]!;
-    let vy = s[k + V_Y]!;
-    // The thesis's drag, F = -drag |v| v, with |v| taken at the start of the sub-step: then the
-    // discrete motion has the exact terminal speed sqrt(m g / drag) and coasts exactly as
-    // 1/v = 1/v0 + (drag/m) t.
-    const drag = params[q + DRAG]!;
-    const dragFactor = drag > 0 ? 1 / (1 + h * invMass * drag * Math.sqrt(vx * vx + vy * vy)) : 1;
-    vx = (vx + h * (invMass * params[q + FORCE_X]! + scale * gx)) * dragFactor;
-    vy = (vy + h * (invMass * params[q + FORCE_Y]! + scale * gy)) * dragFactor;
-    let w = s[k + W]! + h * params[q + INV_INERTIA]! * params[q + TORQUE]!;
-    const linearDamping = params[q + LINEAR_DAMPING]!;
-    if (linearDamping > 0) {
-      const factor = 1 / (1 + h * linearDamping);
-      vx *= factor;
-      vy *= factor;
-    }
-    const angularDamping = params[q + ANGULAR_DAMPING]!;
-    if (angularDamping > 0) w /= 1 + h * angularDamping;
-    const vx0 = s[k + V_X]!;
-    const vy0 = s[k + V_Y]!;
-    const w0 = s[k + W]!;
-    s[k + V_X] = vx;
-    s[k + V_Y] = vy;
-    s[k + W] = w;
-    limitSpeed(s, k);
-    // The velocity change of this integration, for a bounce later in the sub-step (body-state.ts).
-    const m = marks + (i + 1) * MARK_STRIDE;
-    s[m + KICK_VX] = s[k + V_X]! - vx0;
-    s[m + KICK_VY] = s[k + V_Y]! - vy0;
-    s[m + KICK_W] = s[k + W]! - w0;
-  }
-}
-
-/** maxLinearSpeed and the quarter turn per sub-step (rad/s), for limitSpeed (see below). */
-const SPEED_LIMITS = new Float64Array(2);
-
-/**
- * At most a quarter turn per sub-step (Box2D v3's B2_MAX_ROTATION): faster, the first-order
- * rotation of the contact and joint anchors is meaningless, and a joint pulling a tiny body by a
- * long lever could spin it up without bound until it became NaN.
- */
-function setSpeedLimits(settings: SolverSettings, h: number): void {
-  SPEED_LIMITS[0] = settings.maxLinearSpeed;
-  SPEED_LIMITS[1] = (0.25 * Math.PI) / h;
-}
-
-/**
- * Holds the velocity of the body at state offset k to the limits setSpeedLimits wrote (read from
- * a typed array: a fractional argument would be boxed). A velocity with a component that
- * overflowed to infinity or became NaN has no direction left to keep: it is dropped (set to zero),
- * so a solve that failed for one sub-step stops the body instead of making its pose NaN.
- */
-function limitSpeed(s: Float64Array, k: number): void {
-  const maxAngularSpeed = SPEED_LIMITS[1]!;
-  const w = s[k + W]!;
-  if (w > maxAngularSpeed) s[k + W] = maxAngularSpeed;
-  else if (w < -maxAngularSpeed) s[k + W] = -maxAngularSpeed;
-  else if (w !== w) s[k + W] = 0;
-  const maxSpeed = SPEED_LIMITS[0]!;
-  const vx = s[k + V_X]!;
-  const vy = s[k + V_Y]!;
-  const speedSquared = vx * vx + vy * vy;
-  if (speedSquared <= maxSpeed * maxSpeed) return;
-  if (speedSquared < Infinity) {
-    const ratio = maxSpeed / Math.sqrt(speedSquared);
-    s[k + V_X] = vx * ratio;
-    s[k + V_Y] = vy * ratio;
-    return;
-  }
-  // The square overflowed (or is NaN): scale by the larger component first.
-  const big = Math.max(Math.abs(vx), Math.abs(vy));
-  if (big < Infinity) {
-    const ux = vx / big;
-    const uy = vy / big;
-    const ratio = maxSpeed / Math.sqrt(ux * ux + uy * uy);
-    s[k + V_X] = ux * ratio;
-    s[k + V_Y] = uy * ratio;
-  } else {
-    s[k + V_X] = 0;
-    s[k + V_Y] = 0;
-  }
-}
-
-/** Holds every awake dynamic body's velocity to the limits (see limitSpeed). */
-function limitSpeeds(
-  params: Float64Array,
-  list: Int32Array | null,
-  from: number,
-  to: number,
-  s: Float64Array,
-  settings: SolverSettings,
-  h: number,
-): void {
-  setSpeedLimits(settings, h);
-  for (let n = from; n < to; n++) {
-    const i = list === null ? n : list[n]!;
-    if (params[i * PARAM_STRIDE + INV_MASS]! !== 0) limitSpeed(s, (i + 1) * STATE_STRIDE);
-  }
-}
-
-/**
- * Semi-implicit Euler, position half: x += h v with the velocity just solved; for the awake
- * bodies list[from .. to), or from .. to themselves when `list` is null.
- *
- * A dynamic body's solved velocity is held to the same limits as in integrateVelocities
- * (maxLinearSpeed, a quarter turn per sub-step). The solve can exceed them: a joint that cannot
- * hold a tiny body against a large torque (a constant 2 N m on a 0.01 kg box on a prismatic
- * joint) let each sub-step's impulses grow the last's, until the velocities overflowed and the
- * whole world went NaN. Bounded, every pose moves at most maxLinearSpeed h and a quarter turn per
- * sub-step, so no error a constraint sees can grow without bound (see limitSpeed for a velocity
- * that is no longer finite).
- */
-function integratePositions(
-  params: Float64Array,
-  list: Int32Array | null,
-  from: number,
-  to: number,
-  s: Float64Array,
-  settings: SolverSettings,
-  h: number,
-): void {
-  setSpeedLimits(settings, h);
-  for (let n = from; n < to; n++) {
-    const i = list === null ? n : list[n]!;
-    const k = (i + 1) * STATE_STRIDE;
-    // Kinematic bodies keep the velocity they were given.
-    if (params[i * PARAM_STRIDE + INV_MASS]! !== 0) limitSpeed(s, k);
-    const w = s[k + W]!;
-    const vx = s[k + V_X]!;
-    const vy = s[k + V_Y]!;
-    s[k + DP_X] += h * vx;
-    s[k + DP_Y] += h * vy;
-    if (w !== 0) {
-      s[k + DELTA_ANGLE] += h * w;
-      // First-order rotation update, renormalised: enough for the contact anchors within a step.
-      const qc = s[k + Q_C]!;
-      const qs = s[k + Q_S]!;
-      const c = qc - h * w * qs;
-      const sn = qs + h * w * qc;
-      const inverseLength = 1 / Math.sqrt(c * c + sn * sn);
-      s[k + Q_C] = c * inverseLength;
-      s[k + Q_S] = sn * inverseLength;
-    }
-  }
 }

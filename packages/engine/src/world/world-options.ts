@@ -69,7 +69,7 @@ export interface WorldOptions {
 }
 
 /**
- * @internal Default restitution threshold (m/s): the sleep speed (solver.ts SLEEP_SPEED). Box2D's
+ * @internal Default restitution threshold (m/s): the sleep speed (core/constants.ts SLEEP_SPEED). Box2D's
  * 1 m/s took two thirds of an elastic gas's energy in a minute; 0 lets a pyramid of e = 0.5 boxes
  * bounce itself apart (the first touch of each resting box bounces off gravity's approach).
  */
