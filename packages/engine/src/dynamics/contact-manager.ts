@@ -74,9 +74,12 @@ export class ContactManager {
   count = 0;
   /** The contacts' numbers, bodies, shapes and pair kinds, by slot. */
   readonly slots: ContactData;
-  /** Shape pairs that started touching during the last narrow phase (the first `beganCount`). */
-  readonly beganA: Shape[] = [];
-  readonly beganB: Shape[] = [];
+  /**
+   * Shape pairs that started touching during the last narrow phase (the first `beganCount`), by
+   * shape id: A at 2 i, B at 2 i + 1 ({@link beganShapeA}, {@link beganShapeB}). Sized with the
+   * contacts, so a pile's first step (15,000 begins) grows no array one begin at a time.
+   */
+  beganIds: Int32Array = new Int32Array(64);
   beganCount = 0;
   /** Shape pairs that stopped touching during the last narrow phase (or were destroyed touching). */
   readonly endedA: Shape[] = [];
@@ -86,9 +89,12 @@ export class ContactManager {
   made = 0;
   destroyed = 0;
   private readonly pairs = new PairSet();
-  /** Pairs accepted by addPair, not yet contacts (the first `pendingCount`, already ordered). */
-  private readonly pendingA: Shape[] = [];
-  private readonly pendingB: Shape[] = [];
+  /**
+   * Pairs accepted by addPair, not yet contacts (the first `pendingCount`, already ordered), by
+   * shape id: A at 2 n, B at 2 n + 1. Reserved with the pair set before the broad phase reports
+   * (reservePairs), so a world's first step does not grow it pair by pair.
+   */
+  private pendingIds = new Int32Array(64);
   private pendingCount = 0;
 
   /** Contacts there will be once createPending has run. */
@@ -132,6 +138,16 @@ export class ContactManager {
     return this.shapes[this.slots.shapes[2 * slot + 1]!]!;
   }
 
+  /** Shape A of the `i`-th begin of the last narrow phase. */
+  beganShapeA(i: number): Shape {
+    return this.shapes[this.beganIds[2 * i]!]!;
+  }
+
+  /** Shape B of the `i`-th begin of the last narrow phase. */
+  beganShapeB(i: number): Shape {
+    return this.shapes[this.beganIds[2 * i + 1]!]!;
+  }
+
   /** Whether the contact in `slot` touches: its slot holds manifold points (contact.ts). */
   touching(slot: number): boolean {
     return this.slots.data[slot * CONTACT_STRIDE + POINT_COUNT] !== 0;
@@ -172,13 +188,11 @@ export class ContactManager {
     // Created in createPending, once the broad phase has reported every pair: the slots then
     // grow once for all of them (a pile's first step finds 15,000 pairs).
     const n = this.pendingCount++;
-    if (shouldSwap(shapeA, shapeB)) {
-      this.pendingA[n] = shapeB;
-      this.pendingB[n] = shapeA;
-    } else {
-      this.pendingA[n] = shapeA;
-      this.pendingB[n] = shapeB;
-    }
+    if (2 * n + 2 > this.pendingIds.length)
+      this.pendingIds = grownInt32(this.pendingIds, 2 * n + 2);
+    const swap = shouldSwap(shapeA, shapeB);
+    this.pendingIds[2 * n] = swap ? shapeIdB : shapeIdA;
+    this.pendingIds[2 * n + 1] = swap ? shapeIdA : shapeIdB;
   }
 
   /**
@@ -187,6 +201,8 @@ export class ContactManager {
    */
   reservePairs(shapeIds: number): void {
     this.pairs.reserve(PAIRS_PER_SHAPE * shapeIds);
+    const pending = 2 * PAIRS_PER_SHAPE * shapeIds;
+    if (pending > this.pendingIds.length) this.pendingIds = grownInt32(this.pendingIds, pending);
   }
 
   /** Creates the contacts of the pairs addPair accepted since the last call, in that order. */
@@ -199,9 +215,11 @@ export class ContactManager {
     // The batch's slots cleared in one call, not one per contact: 15,000 calls in a pile's first
     // step, made before V8 has optimised this loop.
     data.fill(0, this.count * CONTACT_STRIDE, (this.count + count) * CONTACT_STRIDE);
+    const ids = this.pendingIds;
+    const shapes = this.shapes;
     for (let n = 0; n < count; n++) {
       const slot = this.count++;
-      this.fillSlot(slot, this.pendingA[n]!, this.pendingB[n]!, data);
+      this.fillSlot(slot, shapes[ids[2 * n]!]!, shapes[ids[2 * n + 1]!]!, data);
       this.edges.link(slot);
     }
     this.made += count;
@@ -222,6 +240,11 @@ export class ContactManager {
   collide(dt: number): void {
     this.beganCount = 0;
     this.endedCount = 0;
+    // At most one begin per contact: room for them all before the loop.
+    if (2 * this.count > this.beganIds.length) {
+      this.beganIds = grownInt32(this.beganIds, 2 * this.count);
+    }
+    const began = this.beganIds;
     // The world's body memory does not move during the narrow phase (bodies join between steps).
     const pose = this.bodyStore.data;
     const boxes = this.table.data;
@@ -375,8 +398,8 @@ export class ContactManager {
       if (touching !== wasTouching) {
         if (touching) {
           const n = this.beganCount++;
-          this.beganA[n] = this.shapes[sa >> 3]!;
-          this.beganB[n] = this.shapes[sb >> 3]!;
+          began[2 * n] = sa >> 3;
+          began[2 * n + 1] = sb >> 3;
           this.wake(this.bodies[slotBodies[2 * i]!]!);
           this.wake(this.bodies[slotBodies[2 * i + 1]!]!);
         } else {
@@ -498,24 +521,20 @@ export class ContactManager {
    * shapes): overwritten with null in place. The ends not yet reported stay.
    */
   releaseReferences(): void {
-    releaseFrom(this.beganA, 0);
-    releaseFrom(this.beganB, 0);
     this.beganCount = 0;
     releaseFrom(this.endedA, this.endedCount);
     releaseFrom(this.endedB, this.endedCount);
-    releaseFrom(this.pendingA, this.pendingCount);
-    releaseFrom(this.pendingB, this.pendingCount);
   }
 
   /** Frees the per-step lists' room after the world shrank a lot. */
   shrink(): void {
-    this.beganA.length = 0;
-    this.beganB.length = 0;
+    this.beganIds = new Int32Array(64);
     this.beganCount = 0;
     this.endedA.length = this.endedCount;
     this.endedB.length = this.endedCount;
-    this.pendingA.length = this.pendingCount;
-    this.pendingB.length = this.pendingCount;
+    const kept = this.pendingIds.subarray(0, 2 * this.pendingCount);
+    this.pendingIds = grownInt32(new Int32Array(64), kept.length);
+    this.pendingIds.set(kept);
   }
 
   /** Sets up the cleared `slot` for the pair of shapes a and b (ordered): numbers, bodies, shapes, kind. */
@@ -529,4 +548,13 @@ export class ContactManager {
     this.endedA[n] = this.shapeA(slot);
     this.endedB[n] = this.shapeB(slot);
   }
+}
+
+/** A copy of `array` with room for at least `needed` elements (doubling), its contents kept. */
+function grownInt32(array: Int32Array, needed: number): Int32Array<ArrayBuffer> {
+  let size = Math.max(array.length, 1);
+  while (size < needed) size *= 2;
+  const grown = new Int32Array(size);
+  grown.set(array);
+  return grown;
 }

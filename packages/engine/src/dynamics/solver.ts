@@ -169,11 +169,12 @@ export class Solver {
   }
 
   /**
-   * Makes room for a step of `bodies` bodies and `contacts` contacts in one move of the solver
-   * memory, before the narrow phase reads the contact slots.
+   * Makes room for a step of `bodies` bodies and `contacts` contacts (`liveContacts` of them
+   * already in their slots, the rest about to be made) in one move of the solver memory, before
+   * the new contacts are made and the narrow phase reads the slots.
    */
-  reserve(bodies: number, contacts: number): void {
-    this.memory.reserveStep(stateDoubles(bodies), bodies, contacts);
+  reserve(bodies: number, contacts: number, liveContacts: number): void {
+    this.memory.reserveStep(stateDoubles(bodies), bodies, contacts, liveContacts);
   }
 
   /**

@@ -57,10 +57,8 @@ export class EventDispatch {
   /** The step's events: contact begins and ends, sensor begins, collisions, moves. */
   dispatchStep(): void {
     const manager = this.contactManager;
-    const beganA = manager.beganA;
-    const beganB = manager.beganB;
     for (let i = 0; i < manager.beganCount; i++) {
-      this.emitContact('contactBegin', beganA[i]!, beganB[i]!);
+      this.emitContact('contactBegin', manager.beganShapeA(i), manager.beganShapeB(i));
     }
     this.dispatchEnds();
     this.dispatchSensorBegins();

@@ -384,7 +384,11 @@ export class World {
       this.contactManager.reservePairs(this.shapesById.length);
       this.broadPhase.updatePairs(this.onPair);
       // Room for the whole step in one move of the solver memory, then the new contacts.
-      this.solver.reserve(this.bodyList.length, this.contactManager.countWithPending);
+      this.solver.reserve(
+        this.bodyList.length,
+        this.contactManager.countWithPending,
+        this.contactManager.count,
+      );
       this.contactManager.createPending();
       this.contactManager.collide(dt);
       this.solver.gatherBodies(this.bodyList, dt);
