@@ -2,7 +2,7 @@ import { PhysicalError, readOnly } from '../../core/errors.ts';
 import { optionalBoolean, requireNonNegative, requireRange } from '../../core/validate.ts';
 import type { Vec2Like } from '../../math/vec2.ts';
 import { hypot } from '../../math/hypot.ts';
-import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import {
@@ -21,18 +21,22 @@ import {
   requirePoint,
 } from './joint.ts';
 import {
-  DELTA_CENTER_X,
-  DELTA_CENTER_Y,
+  LEVER_AX,
+  LEVER_AY,
+  LEVER_BX,
+  LEVER_BY,
+  SEPARATION_X,
+  SEPARATION_Y,
+  levers,
+  takeSeparation,
+} from './joint-levers.ts';
+import {
   INV_I_A,
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
   LOCAL_ANCHOR_AX,
   LOCAL_ANCHOR_BX,
-  R_AX,
-  R_AY,
-  R_BX,
-  R_BY,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
 } from './joint-record.ts';
@@ -295,20 +299,18 @@ export class DistanceBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
+    const p = levers;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
-      const qAc = s[a + Q_C]!;
-      const qAs = s[a + Q_S]!;
-      const qBc = s[b + Q_C]!;
-      const qBs = s[b + Q_S]!;
-      const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
-      const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
-      const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
-      const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
-      const dx = s[b + DP_X]! - s[a + DP_X]! + d[o + DELTA_CENTER_X]! + rBx - rAx;
-      const dy = s[b + DP_Y]! - s[a + DP_Y]! + d[o + DELTA_CENTER_Y]! + rBy - rAy;
+      takeSeparation(s, a, b, d, o, p);
+      const rAx = p[LEVER_AX]!;
+      const rAy = p[LEVER_AY]!;
+      const rBx = p[LEVER_BX]!;
+      const rBy = p[LEVER_BY]!;
+      const dx = p[SEPARATION_X]!;
+      const dy = p[SEPARATION_Y]!;
       const length = Math.sqrt(dx * dx + dy * dy);
       if (!(length > LENGTH_EPSILON)) continue;
       const axial = d[o + IMPULSE]! + d[o + LOWER_IMPULSE]! - d[o + UPPER_IMPULSE]!;
@@ -327,6 +329,7 @@ export class DistanceBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
+    const p = levers;
     const soft = step.softness;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
@@ -342,16 +345,13 @@ export class DistanceBatch extends FlatJointBatch {
       let vBx = s[b + V_X]!;
       let vBy = s[b + V_Y]!;
       let wB = s[b + W]!;
-      const qAc = s[a + Q_C]!;
-      const qAs = s[a + Q_S]!;
-      const qBc = s[b + Q_C]!;
-      const qBs = s[b + Q_S]!;
-      const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
-      const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
-      const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
-      const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
-      const dx = s[b + DP_X]! - s[a + DP_X]! + d[o + DELTA_CENTER_X]! + rBx - rAx;
-      const dy = s[b + DP_Y]! - s[a + DP_Y]! + d[o + DELTA_CENTER_Y]! + rBy - rAy;
+      takeSeparation(s, a, b, d, o, p);
+      const rAx = p[LEVER_AX]!;
+      const rAy = p[LEVER_AY]!;
+      const rBx = p[LEVER_BX]!;
+      const rBy = p[LEVER_BY]!;
+      const dx = p[SEPARATION_X]!;
+      const dy = p[SEPARATION_Y]!;
       const length = Math.sqrt(dx * dx + dy * dy);
       // Coincident anchors have no direction to push along.
       if (length > LENGTH_EPSILON) {

@@ -1,18 +1,22 @@
-import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { DELTA_ANGLE, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import type { JointStep } from './joint.ts';
 import {
-  DELTA_CENTER_X,
-  DELTA_CENTER_Y,
+  LEVER_AX,
+  LEVER_AY,
+  LEVER_BX,
+  LEVER_BY,
+  SEPARATION_X,
+  SEPARATION_Y,
+  levers,
+  takeSeparation,
+} from './joint-levers.ts';
+import {
   INV_I_A,
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
   JOINT_ANGLE_0,
-  R_AX,
-  R_AY,
-  R_BX,
-  R_BY,
   STEP_ANGULAR_IMPULSE,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
@@ -58,20 +62,20 @@ export class PrismaticBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
+    const p = levers;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
+      takeSeparation(s, a, b, d, o, p);
+      const rAx = p[LEVER_AX]!;
+      const rAy = p[LEVER_AY]!;
+      const rBx = p[LEVER_BX]!;
+      const rBy = p[LEVER_BY]!;
+      const dx = p[SEPARATION_X]!;
+      const dy = p[SEPARATION_Y]!;
       const qAc = s[a + Q_C]!;
       const qAs = s[a + Q_S]!;
-      const qBc = s[b + Q_C]!;
-      const qBs = s[b + Q_S]!;
-      const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
-      const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
-      const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
-      const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
-      const dx = s[b + DP_X]! - s[a + DP_X]! + d[o + DELTA_CENTER_X]! + rBx - rAx;
-      const dy = s[b + DP_Y]! - s[a + DP_Y]! + d[o + DELTA_CENTER_Y]! + rBy - rAy;
       const ax = qAc * d[o + AXIS_X]! - qAs * d[o + AXIS_Y]!;
       const ay = qAs * d[o + AXIS_X]! + qAc * d[o + AXIS_Y]!;
       // Lever arms of the axial and perpendicular rows (A's arm reaches B's anchor: d + rA).
@@ -105,6 +109,7 @@ export class PrismaticBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
+    const p = levers;
     const soft = step.softness;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
@@ -120,16 +125,15 @@ export class PrismaticBatch extends FlatJointBatch {
       let vBx = s[b + V_X]!;
       let vBy = s[b + V_Y]!;
       let wB = s[b + W]!;
+      takeSeparation(s, a, b, d, o, p);
+      const rAx = p[LEVER_AX]!;
+      const rAy = p[LEVER_AY]!;
+      const rBx = p[LEVER_BX]!;
+      const rBy = p[LEVER_BY]!;
+      const dx = p[SEPARATION_X]!;
+      const dy = p[SEPARATION_Y]!;
       const qAc = s[a + Q_C]!;
       const qAs = s[a + Q_S]!;
-      const qBc = s[b + Q_C]!;
-      const qBs = s[b + Q_S]!;
-      const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
-      const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
-      const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
-      const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
-      const dx = s[b + DP_X]! - s[a + DP_X]! + d[o + DELTA_CENTER_X]! + rBx - rAx;
-      const dy = s[b + DP_Y]! - s[a + DP_Y]! + d[o + DELTA_CENTER_Y]! + rBy - rAy;
       const ax = qAc * d[o + AXIS_X]! - qAs * d[o + AXIS_Y]!;
       const ay = qAs * d[o + AXIS_X]! + qAc * d[o + AXIS_Y]!;
       const translation = ax * dx + ay * dy;

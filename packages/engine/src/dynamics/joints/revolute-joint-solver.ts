@@ -1,16 +1,13 @@
-import { DELTA_ANGLE, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { DELTA_ANGLE, V_X, V_Y, W } from '../body-state.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import type { JointStep } from './joint.ts';
+import { LEVER_AX, LEVER_AY, LEVER_BX, LEVER_BY, levers, turnLevers } from './joint-levers.ts';
 import {
   INV_I_A,
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
   JOINT_ANGLE_0,
-  R_AX,
-  R_AY,
-  R_BX,
-  R_BY,
   STEP_ANGULAR_IMPULSE,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
@@ -55,6 +52,7 @@ export class RevoluteBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
+    const p = levers;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
       const a = states[2 * i]!;
@@ -63,10 +61,11 @@ export class RevoluteBatch extends FlatJointBatch {
       const iA = d[o + INV_I_A]!;
       const mB = d[o + INV_MASS_B]!;
       const iB = d[o + INV_I_B]!;
-      const rAx = s[a + Q_C]! * d[o + R_AX]! - s[a + Q_S]! * d[o + R_AY]!;
-      const rAy = s[a + Q_S]! * d[o + R_AX]! + s[a + Q_C]! * d[o + R_AY]!;
-      const rBx = s[b + Q_C]! * d[o + R_BX]! - s[b + Q_S]! * d[o + R_BY]!;
-      const rBy = s[b + Q_S]! * d[o + R_BX]! + s[b + Q_C]! * d[o + R_BY]!;
+      turnLevers(s, a, b, d, o, p);
+      const rAx = p[LEVER_AX]!;
+      const rAy = p[LEVER_AY]!;
+      const rBx = p[LEVER_BX]!;
+      const rBy = p[LEVER_BY]!;
       const px = d[o + LINEAR_IMPULSE_X]!;
       const py = d[o + LINEAR_IMPULSE_Y]!;
       const axial =

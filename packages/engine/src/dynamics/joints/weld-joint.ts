@@ -1,6 +1,6 @@
 import { readOnly } from '../../core/errors.ts';
 import type { Vec2Like } from '../../math/vec2.ts';
-import { DELTA_ANGLE, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { DELTA_ANGLE, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import {
@@ -17,16 +17,13 @@ import {
   requireBodies,
   requirePoint,
 } from './joint.ts';
+import { LEVER_AX, LEVER_AY, LEVER_BX, LEVER_BY, levers, turnLevers } from './joint-levers.ts';
 import {
   INV_I_A,
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
   JOINT_ANGLE_0,
-  R_AX,
-  R_AY,
-  R_BX,
-  R_BY,
   REFERENCE_ANGLE,
   STEP_ANGULAR_IMPULSE,
   STEP_IMPULSE_X,
@@ -193,14 +190,16 @@ export class WeldBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
+    const p = levers;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
-      const rAx = s[a + Q_C]! * d[o + R_AX]! - s[a + Q_S]! * d[o + R_AY]!;
-      const rAy = s[a + Q_S]! * d[o + R_AX]! + s[a + Q_C]! * d[o + R_AY]!;
-      const rBx = s[b + Q_C]! * d[o + R_BX]! - s[b + Q_S]! * d[o + R_BY]!;
-      const rBy = s[b + Q_S]! * d[o + R_BX]! + s[b + Q_C]! * d[o + R_BY]!;
+      turnLevers(s, a, b, d, o, p);
+      const rAx = p[LEVER_AX]!;
+      const rAy = p[LEVER_AY]!;
+      const rBx = p[LEVER_BX]!;
+      const rBy = p[LEVER_BY]!;
       const px = d[o + LINEAR_IMPULSE_X]!;
       const py = d[o + LINEAR_IMPULSE_Y]!;
       const angular = d[o + ANGULAR_IMPULSE]!;
