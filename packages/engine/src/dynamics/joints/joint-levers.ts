@@ -17,8 +17,11 @@ export const LEVER_BY = 3;
 export const SEPARATION_X = 4;
 export const SEPARATION_Y = 5;
 
+/** Where a kind's own preamble may write its numbers (prismatic-joint-solver.ts: axis and arms). */
+export const LEVERS_END = 6;
+
 /** @internal The scratch the preamble writes into (one for all passes: they run one at a time). */
-export const levers = /* @__PURE__ */ new Float64Array(6);
+export const levers = /* @__PURE__ */ new Float64Array(LEVERS_END + 6);
 
 /**
  * @internal Turns the levers of the record at `o` in `d` by the rotations of the states at `a`

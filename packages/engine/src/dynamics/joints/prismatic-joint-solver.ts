@@ -49,6 +49,47 @@ export const PERPENDICULAR_IMPULSE = 46; // SPRING_MOTOR_LIMIT_END + 4; accumula
 export const ANGULAR_IMPULSE = 47; // SPRING_MOTOR_LIMIT_END + 5
 export const STRIDE = 48; // SPRING_MOTOR_LIMIT_END + 6
 
+// The prismatic preamble's own numbers, after the shared ones in the scratch (joint-levers.ts).
+const AXIS_NOW_X = 6; // LEVERS_END; the axis turned by A's rotation this step
+const AXIS_NOW_Y = 7; // LEVERS_END + 1
+const AXIAL_ARM_A = 8; // LEVERS_END + 2; the axial row's lever arms (A's reaches B's anchor)
+const AXIAL_ARM_B = 9; // LEVERS_END + 3
+const PERPENDICULAR_ARM_A = 10; // LEVERS_END + 4; the perpendicular row's
+const PERPENDICULAR_ARM_B = 11; // LEVERS_END + 5
+
+/**
+ * takeSeparation, then the axis turned by A's rotation and the lever arms of the axial and
+ * perpendicular rows (A's arm reaches B's anchor: d + rA), into `p`: what both passes start with.
+ */
+function turnAxis(
+  s: Float64Array,
+  a: number,
+  b: number,
+  d: Float64Array,
+  o: number,
+  p: Float64Array,
+): void {
+  takeSeparation(s, a, b, d, o, p);
+  const rAx = p[LEVER_AX]!;
+  const rAy = p[LEVER_AY]!;
+  const rBx = p[LEVER_BX]!;
+  const rBy = p[LEVER_BY]!;
+  const dx = p[SEPARATION_X]!;
+  const dy = p[SEPARATION_Y]!;
+  const qAc = s[a + Q_C]!;
+  const qAs = s[a + Q_S]!;
+  const ax = qAc * d[o + AXIS_X]! - qAs * d[o + AXIS_Y]!;
+  const ay = qAs * d[o + AXIS_X]! + qAc * d[o + AXIS_Y]!;
+  p[AXIS_NOW_X] = ax;
+  p[AXIS_NOW_Y] = ay;
+  p[AXIAL_ARM_A] = (dx + rAx) * ay - (dy + rAy) * ax;
+  p[AXIAL_ARM_B] = rBx * ay - rBy * ax;
+  const px = -ay;
+  const py = ax;
+  p[PERPENDICULAR_ARM_A] = (dx + rAx) * py - (dy + rAy) * px;
+  p[PERPENDICULAR_ARM_B] = rBx * py - rBy * px;
+}
+
 /**
  * @internal The prismatic joints of a world: their records, and the step's active ones solved in
  * one loop per pass (see JointBatch).
@@ -67,24 +108,15 @@ export class PrismaticBatch extends FlatJointBatch {
       const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
-      takeSeparation(s, a, b, d, o, p);
-      const rAx = p[LEVER_AX]!;
-      const rAy = p[LEVER_AY]!;
-      const rBx = p[LEVER_BX]!;
-      const rBy = p[LEVER_BY]!;
-      const dx = p[SEPARATION_X]!;
-      const dy = p[SEPARATION_Y]!;
-      const qAc = s[a + Q_C]!;
-      const qAs = s[a + Q_S]!;
-      const ax = qAc * d[o + AXIS_X]! - qAs * d[o + AXIS_Y]!;
-      const ay = qAs * d[o + AXIS_X]! + qAc * d[o + AXIS_Y]!;
-      // Lever arms of the axial and perpendicular rows (A's arm reaches B's anchor: d + rA).
-      const a1 = (dx + rAx) * ay - (dy + rAy) * ax;
-      const a2 = rBx * ay - rBy * ax;
+      turnAxis(s, a, b, d, o, p);
+      const ax = p[AXIS_NOW_X]!;
+      const ay = p[AXIS_NOW_Y]!;
+      const a1 = p[AXIAL_ARM_A]!;
+      const a2 = p[AXIAL_ARM_B]!;
       const px = -ay;
       const py = ax;
-      const s1 = (dx + rAx) * py - (dy + rAy) * px;
-      const s2 = rBx * py - rBy * px;
+      const s1 = p[PERPENDICULAR_ARM_A]!;
+      const s2 = p[PERPENDICULAR_ARM_B]!;
       const axial =
         d[o + SPRING_IMPULSE]! +
         d[o + MOTOR_IMPULSE]! +
@@ -125,58 +157,45 @@ export class PrismaticBatch extends FlatJointBatch {
       let vBx = s[b + V_X]!;
       let vBy = s[b + V_Y]!;
       let wB = s[b + W]!;
-      takeSeparation(s, a, b, d, o, p);
-      const rAx = p[LEVER_AX]!;
-      const rAy = p[LEVER_AY]!;
-      const rBx = p[LEVER_BX]!;
-      const rBy = p[LEVER_BY]!;
+      turnAxis(s, a, b, d, o, p);
       const dx = p[SEPARATION_X]!;
       const dy = p[SEPARATION_Y]!;
-      const qAc = s[a + Q_C]!;
-      const qAs = s[a + Q_S]!;
-      const ax = qAc * d[o + AXIS_X]! - qAs * d[o + AXIS_Y]!;
-      const ay = qAs * d[o + AXIS_X]! + qAc * d[o + AXIS_Y]!;
+      const ax = p[AXIS_NOW_X]!;
+      const ay = p[AXIS_NOW_Y]!;
       const translation = ax * dx + ay * dy;
-      const a1 = (dx + rAx) * ay - (dy + rAy) * ax;
-      const a2 = rBx * ay - rBy * ax;
+      const a1 = p[AXIAL_ARM_A]!;
+      const a2 = p[AXIAL_ARM_B]!;
       const kAxial = mA + mB + iA * a1 * a1 + iB * a2 * a2;
       const axialMass = kAxial > 0 ? 1 / kAxial : 0;
 
-      if (d[o + SPRING_ON] === 1) {
-        const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
-        const impulse =
-          -d[o + SPRING_MASS_SCALE]! * axialMass * (cdot + d[o + SPRING_BIAS_RATE]! * translation) -
-          d[o + SPRING_IMPULSE_SCALE]! * d[o + SPRING_IMPULSE]!;
-        d[o + SPRING_IMPULSE] += impulse;
-        vAx -= mA * impulse * ax;
-        vAy -= mA * impulse * ay;
-        wA -= iA * impulse * a1;
-        vBx += mB * impulse * ax;
-        vBy += mB * impulse * ay;
-        wB += iB * impulse * a2;
-      }
-
-      if (d[o + MOTOR_ON] === 1) {
-        const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
-        const impulse = axialMass * (d[o + MOTOR_SPEED]! - cdot);
-        const old = d[o + MOTOR_IMPULSE]!;
-        const maxImpulse = step.h * d[o + MAX_MOTOR]!;
-        const accumulated = Math.max(-maxImpulse, Math.min(old + impulse, maxImpulse));
-        d[o + MOTOR_IMPULSE] = accumulated;
-        const applied = accumulated - old;
-        vAx -= mA * applied * ax;
-        vAy -= mA * applied * ay;
-        wA -= iA * applied * a1;
-        vBx += mB * applied * ax;
-        vBy += mB * applied * ay;
-        wB += iB * applied * a2;
-      }
-
-      if (d[o + LIMIT_ON] === 1) {
-        // Lower: translation - lower >= 0; upper: upper - translation >= 0, the same row with the
-        // sign turned. Speculative like contacts: a gap may close within the sub-step.
-        for (let side = 1; side >= -1; side -= 2) {
-          const c = side === 1 ? translation - d[o + LOWER]! : d[o + UPPER]! - translation;
+      // The rows along the axis, one after another, each on the velocities the one before left:
+      // the spring (row 0), the motor (1), translation >= lower (2) and translation <= upper (3).
+      // Each gives the impulse `push` on B along the axis (on A the opposite), applied in one place.
+      for (let row = 0; row < 4; row++) {
+        if (d[o + (row === 0 ? SPRING_ON : row === 1 ? MOTOR_ON : LIMIT_ON)] !== 1) continue;
+        let push: number;
+        if (row < 2) {
+          const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
+          if (row === 0) {
+            push =
+              -d[o + SPRING_MASS_SCALE]! *
+                axialMass *
+                (cdot + d[o + SPRING_BIAS_RATE]! * translation) -
+              d[o + SPRING_IMPULSE_SCALE]! * d[o + SPRING_IMPULSE]!;
+            d[o + SPRING_IMPULSE] += push;
+          } else {
+            const impulse = axialMass * (d[o + MOTOR_SPEED]! - cdot);
+            const old = d[o + MOTOR_IMPULSE]!;
+            const maxImpulse = step.h * d[o + MAX_MOTOR]!;
+            const accumulated = Math.max(-maxImpulse, Math.min(old + impulse, maxImpulse));
+            d[o + MOTOR_IMPULSE] = accumulated;
+            push = accumulated - old;
+          }
+        } else {
+          // Lower: translation - lower >= 0; upper: upper - translation >= 0, the same row with
+          // the sign turned. Speculative like contacts: a gap may close within the sub-step.
+          const lower = row === 2;
+          const c = lower ? translation - d[o + LOWER]! : d[o + UPPER]! - translation;
           let bias = 0;
           let massScale = 1;
           let impulseScale = 0;
@@ -186,40 +205,30 @@ export class PrismaticBatch extends FlatJointBatch {
             massScale = soft.massScale;
             impulseScale = soft.impulseScale;
           }
-          const cdot =
-            side === 1
-              ? ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA
-              : ax * (vAx - vBx) + ay * (vAy - vBy) + a1 * wA - a2 * wB;
-          const at = side === 1 ? LOWER_IMPULSE : UPPER_IMPULSE;
+          const cdot = lower
+            ? ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA
+            : ax * (vAx - vBx) + ay * (vAy - vBy) + a1 * wA - a2 * wB;
+          const at = lower ? LOWER_IMPULSE : UPPER_IMPULSE;
           const old = d[o + at]!;
           const impulse = -axialMass * massScale * (cdot + bias) - impulseScale * old;
           const accumulated = Math.max(old + impulse, 0);
-          const applied = accumulated - old;
           d[o + at] = accumulated;
-          if (side === 1) {
-            vAx -= mA * applied * ax;
-            vAy -= mA * applied * ay;
-            wA -= iA * applied * a1;
-            vBx += mB * applied * ax;
-            vBy += mB * applied * ay;
-            wB += iB * applied * a2;
-          } else {
-            vAx += mA * applied * ax;
-            vAy += mA * applied * ay;
-            wA += iA * applied * a1;
-            vBx -= mB * applied * ax;
-            vBy -= mB * applied * ay;
-            wB -= iB * applied * a2;
-          }
+          push = lower ? accumulated - old : -(accumulated - old);
         }
+        vAx -= mA * push * ax;
+        vAy -= mA * push * ay;
+        wA -= iA * push * a1;
+        vBx += mB * push * ax;
+        vBy += mB * push * ay;
+        wB += iB * push * a2;
       }
 
       // Perpendicular offset and relative angle, solved together.
       {
         const px = -ay;
         const py = ax;
-        const s1 = (dx + rAx) * py - (dy + rAy) * px;
-        const s2 = rBx * py - rBy * px;
+        const s1 = p[PERPENDICULAR_ARM_A]!;
+        const s2 = p[PERPENDICULAR_ARM_B]!;
         const cdot1 = px * (vBx - vAx) + py * (vBy - vAy) + s2 * wB - s1 * wA;
         const cdot2 = wB - wA;
         let bias1 = 0;
