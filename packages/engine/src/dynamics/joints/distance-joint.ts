@@ -20,16 +20,7 @@ import {
   jointMax,
   requirePoint,
 } from './joint.ts';
-import {
-  LEVER_AX,
-  LEVER_AY,
-  LEVER_BX,
-  LEVER_BY,
-  SEPARATION_X,
-  SEPARATION_Y,
-  levers,
-  takeSeparation,
-} from './joint-levers.ts';
+import { shiftX, shiftY, turnedX, turnedY } from './joint-levers.ts';
 import {
   INV_I_A,
   INV_I_B,
@@ -37,6 +28,8 @@ import {
   INV_MASS_B,
   LOCAL_ANCHOR_AX,
   LOCAL_ANCHOR_BX,
+  R_AX,
+  R_BX,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
 } from './joint-record.ts';
@@ -299,18 +292,16 @@ export class DistanceBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
-    const p = levers;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
-      takeSeparation(s, a, b, d, o, p);
-      const rAx = p[LEVER_AX]!;
-      const rAy = p[LEVER_AY]!;
-      const rBx = p[LEVER_BX]!;
-      const rBy = p[LEVER_BY]!;
-      const dx = p[SEPARATION_X]!;
-      const dy = p[SEPARATION_Y]!;
+      const rAx = turnedX(s, a, d, o + R_AX);
+      const rAy = turnedY(s, a, d, o + R_AX);
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
+      const dx = shiftX(s, a, b, d, o) + rBx - rAx;
+      const dy = shiftY(s, a, b, d, o) + rBy - rAy;
       const length = Math.sqrt(dx * dx + dy * dy);
       if (!(length > LENGTH_EPSILON)) continue;
       const axial = d[o + IMPULSE]! + d[o + LOWER_IMPULSE]! - d[o + UPPER_IMPULSE]!;
@@ -329,7 +320,6 @@ export class DistanceBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
-    const p = levers;
     const soft = step.softness;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
@@ -345,13 +335,12 @@ export class DistanceBatch extends FlatJointBatch {
       let vBx = s[b + V_X]!;
       let vBy = s[b + V_Y]!;
       let wB = s[b + W]!;
-      takeSeparation(s, a, b, d, o, p);
-      const rAx = p[LEVER_AX]!;
-      const rAy = p[LEVER_AY]!;
-      const rBx = p[LEVER_BX]!;
-      const rBy = p[LEVER_BY]!;
-      const dx = p[SEPARATION_X]!;
-      const dy = p[SEPARATION_Y]!;
+      const rAx = turnedX(s, a, d, o + R_AX);
+      const rAy = turnedY(s, a, d, o + R_AX);
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
+      const dx = shiftX(s, a, b, d, o) + rBx - rAx;
+      const dy = shiftY(s, a, b, d, o) + rBy - rAy;
       const length = Math.sqrt(dx * dx + dy * dy);
       // Coincident anchors have no direction to push along.
       if (length > LENGTH_EPSILON) {

@@ -17,7 +17,7 @@ import {
   jointMax,
   requirePoint,
 } from './joint.ts';
-import { LEVER_BX, LEVER_BY, levers, turnLevers } from './joint-levers.ts';
+import { turnedX, turnedY } from './joint-levers.ts';
 import {
   DELTA_CENTER_X,
   DELTA_CENTER_Y,
@@ -251,15 +251,13 @@ export class MouseBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
-    const p = levers;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
       const b = states[2 * i + 1]!;
       const mB = d[o + INV_MASS_B]!;
       const iB = d[o + INV_I_B]!;
-      turnLevers(s, states[2 * i]!, b, d, o, p);
-      const rBx = p[LEVER_BX]!;
-      const rBy = p[LEVER_BY]!;
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
       const px = d[o + LINEAR_IMPULSE_X]!;
       const py = d[o + LINEAR_IMPULSE_Y]!;
       s[b + V_X] += mB * px;
@@ -272,7 +270,6 @@ export class MouseBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
-    const p = levers;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
       const b = states[2 * i + 1]!;
@@ -297,9 +294,8 @@ export class MouseBatch extends FlatJointBatch {
         const biasRate = d[o + LINEAR_BIAS_RATE]!;
         const massScale = d[o + LINEAR_MASS_SCALE]!;
         const impulseScale = d[o + LINEAR_IMPULSE_SCALE]!;
-        turnLevers(s, states[2 * i]!, b, d, o, p);
-        const rBx = p[LEVER_BX]!;
-        const rBy = p[LEVER_BY]!;
+        const rBx = turnedX(s, b, d, o + R_BX);
+        const rBy = turnedY(s, b, d, o + R_BX);
         const cdotX = vBx - wB * rBy;
         const cdotY = vBy + wB * rBx;
         const sepX = s[b + DP_X]! + rBx + d[o + DELTA_CENTER_X]!;

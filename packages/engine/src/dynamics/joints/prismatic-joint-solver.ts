@@ -1,22 +1,15 @@
-import { DELTA_ANGLE, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { DELTA_ANGLE, V_X, V_Y, W } from '../body-state.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import type { JointStep } from './joint.ts';
-import {
-  LEVER_AX,
-  LEVER_AY,
-  LEVER_BX,
-  LEVER_BY,
-  SEPARATION_X,
-  SEPARATION_Y,
-  levers,
-  takeSeparation,
-} from './joint-levers.ts';
+import { shiftX, shiftY, turnedX, turnedY } from './joint-levers.ts';
 import {
   INV_I_A,
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
   JOINT_ANGLE_0,
+  R_AX,
+  R_BX,
   STEP_ANGULAR_IMPULSE,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
@@ -49,47 +42,6 @@ export const PERPENDICULAR_IMPULSE = 46; // SPRING_MOTOR_LIMIT_END + 4; accumula
 export const ANGULAR_IMPULSE = 47; // SPRING_MOTOR_LIMIT_END + 5
 export const STRIDE = 48; // SPRING_MOTOR_LIMIT_END + 6
 
-// The prismatic preamble's own numbers, after the shared ones in the scratch (joint-levers.ts).
-const AXIS_NOW_X = 6; // LEVERS_END; the axis turned by A's rotation this step
-const AXIS_NOW_Y = 7; // LEVERS_END + 1
-const AXIAL_ARM_A = 8; // LEVERS_END + 2; the axial row's lever arms (A's reaches B's anchor)
-const AXIAL_ARM_B = 9; // LEVERS_END + 3
-const PERPENDICULAR_ARM_A = 10; // LEVERS_END + 4; the perpendicular row's
-const PERPENDICULAR_ARM_B = 11; // LEVERS_END + 5
-
-/**
- * takeSeparation, then the axis turned by A's rotation and the lever arms of the axial and
- * perpendicular rows (A's arm reaches B's anchor: d + rA), into `p`: what both passes start with.
- */
-function turnAxis(
-  s: Float64Array,
-  a: number,
-  b: number,
-  d: Float64Array,
-  o: number,
-  p: Float64Array,
-): void {
-  takeSeparation(s, a, b, d, o, p);
-  const rAx = p[LEVER_AX]!;
-  const rAy = p[LEVER_AY]!;
-  const rBx = p[LEVER_BX]!;
-  const rBy = p[LEVER_BY]!;
-  const dx = p[SEPARATION_X]!;
-  const dy = p[SEPARATION_Y]!;
-  const qAc = s[a + Q_C]!;
-  const qAs = s[a + Q_S]!;
-  const ax = qAc * d[o + AXIS_X]! - qAs * d[o + AXIS_Y]!;
-  const ay = qAs * d[o + AXIS_X]! + qAc * d[o + AXIS_Y]!;
-  p[AXIS_NOW_X] = ax;
-  p[AXIS_NOW_Y] = ay;
-  p[AXIAL_ARM_A] = (dx + rAx) * ay - (dy + rAy) * ax;
-  p[AXIAL_ARM_B] = rBx * ay - rBy * ax;
-  const px = -ay;
-  const py = ax;
-  p[PERPENDICULAR_ARM_A] = (dx + rAx) * py - (dy + rAy) * px;
-  p[PERPENDICULAR_ARM_B] = rBx * py - rBy * px;
-}
-
 /**
  * @internal The prismatic joints of a world: their records, and the step's active ones solved in
  * one loop per pass (see JointBatch).
@@ -103,20 +55,25 @@ export class PrismaticBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
-    const p = levers;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
-      turnAxis(s, a, b, d, o, p);
-      const ax = p[AXIS_NOW_X]!;
-      const ay = p[AXIS_NOW_Y]!;
-      const a1 = p[AXIAL_ARM_A]!;
-      const a2 = p[AXIAL_ARM_B]!;
+      const rAx = turnedX(s, a, d, o + R_AX);
+      const rAy = turnedY(s, a, d, o + R_AX);
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
+      const dx = shiftX(s, a, b, d, o) + rBx - rAx;
+      const dy = shiftY(s, a, b, d, o) + rBy - rAy;
+      const ax = turnedX(s, a, d, o + AXIS_X);
+      const ay = turnedY(s, a, d, o + AXIS_X);
+      // Lever arms of the axial and perpendicular rows (A's arm reaches B's anchor: d + rA).
+      const a1 = (dx + rAx) * ay - (dy + rAy) * ax;
+      const a2 = rBx * ay - rBy * ax;
       const px = -ay;
       const py = ax;
-      const s1 = p[PERPENDICULAR_ARM_A]!;
-      const s2 = p[PERPENDICULAR_ARM_B]!;
+      const s1 = (dx + rAx) * py - (dy + rAy) * px;
+      const s2 = rBx * py - rBy * px;
       const axial =
         d[o + SPRING_IMPULSE]! +
         d[o + MOTOR_IMPULSE]! +
@@ -141,7 +98,6 @@ export class PrismaticBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
-    const p = levers;
     const soft = step.softness;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
@@ -157,14 +113,17 @@ export class PrismaticBatch extends FlatJointBatch {
       let vBx = s[b + V_X]!;
       let vBy = s[b + V_Y]!;
       let wB = s[b + W]!;
-      turnAxis(s, a, b, d, o, p);
-      const dx = p[SEPARATION_X]!;
-      const dy = p[SEPARATION_Y]!;
-      const ax = p[AXIS_NOW_X]!;
-      const ay = p[AXIS_NOW_Y]!;
+      const rAx = turnedX(s, a, d, o + R_AX);
+      const rAy = turnedY(s, a, d, o + R_AX);
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
+      const dx = shiftX(s, a, b, d, o) + rBx - rAx;
+      const dy = shiftY(s, a, b, d, o) + rBy - rAy;
+      const ax = turnedX(s, a, d, o + AXIS_X);
+      const ay = turnedY(s, a, d, o + AXIS_X);
       const translation = ax * dx + ay * dy;
-      const a1 = p[AXIAL_ARM_A]!;
-      const a2 = p[AXIAL_ARM_B]!;
+      const a1 = (dx + rAx) * ay - (dy + rAy) * ax;
+      const a2 = rBx * ay - rBy * ax;
       const kAxial = mA + mB + iA * a1 * a1 + iB * a2 * a2;
       const axialMass = kAxial > 0 ? 1 / kAxial : 0;
 
@@ -227,8 +186,8 @@ export class PrismaticBatch extends FlatJointBatch {
       {
         const px = -ay;
         const py = ax;
-        const s1 = p[PERPENDICULAR_ARM_A]!;
-        const s2 = p[PERPENDICULAR_ARM_B]!;
+        const s1 = (dx + rAx) * py - (dy + rAy) * px;
+        const s2 = rBx * py - rBy * px;
         const cdot1 = px * (vBx - vAx) + py * (vBy - vAy) + s2 * wB - s1 * wA;
         const cdot2 = wB - wA;
         let bias1 = 0;

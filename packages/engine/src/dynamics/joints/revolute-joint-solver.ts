@@ -1,13 +1,15 @@
 import { DELTA_ANGLE, V_X, V_Y, W } from '../body-state.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import type { JointStep } from './joint.ts';
-import { LEVER_AX, LEVER_AY, LEVER_BX, LEVER_BY, levers, turnLevers } from './joint-levers.ts';
+import { turnedX, turnedY } from './joint-levers.ts';
 import {
   INV_I_A,
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
   JOINT_ANGLE_0,
+  R_AX,
+  R_BX,
   STEP_ANGULAR_IMPULSE,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
@@ -52,7 +54,6 @@ export class RevoluteBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
-    const p = levers;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
       const a = states[2 * i]!;
@@ -61,11 +62,10 @@ export class RevoluteBatch extends FlatJointBatch {
       const iA = d[o + INV_I_A]!;
       const mB = d[o + INV_MASS_B]!;
       const iB = d[o + INV_I_B]!;
-      turnLevers(s, a, b, d, o, p);
-      const rAx = p[LEVER_AX]!;
-      const rAy = p[LEVER_AY]!;
-      const rBx = p[LEVER_BX]!;
-      const rBy = p[LEVER_BY]!;
+      const rAx = turnedX(s, a, d, o + R_AX);
+      const rAy = turnedY(s, a, d, o + R_AX);
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
       const px = d[o + LINEAR_IMPULSE_X]!;
       const py = d[o + LINEAR_IMPULSE_Y]!;
       const axial =

@@ -1,6 +1,6 @@
 import { DP_X, DP_Y, V_X, V_Y, W } from '../body-state.ts';
 import type { JointStep } from './joint.ts';
-import { LEVER_AX, LEVER_AY, LEVER_BX, LEVER_BY, levers, turnLevers } from './joint-levers.ts';
+import { turnedX, turnedY } from './joint-levers.ts';
 import {
   DELTA_CENTER_X,
   DELTA_CENTER_Y,
@@ -8,6 +8,8 @@ import {
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
+  R_AX,
+  R_BX,
 } from './joint-record.ts';
 
 /**
@@ -45,12 +47,10 @@ export function solveSoftPoint(
   const vBx = s[b + V_X]!;
   const vBy = s[b + V_Y]!;
   const wB = s[b + W]!;
-  const p = levers;
-  turnLevers(s, a, b, d, o, p);
-  const rAx = p[LEVER_AX]!;
-  const rAy = p[LEVER_AY]!;
-  const rBx = p[LEVER_BX]!;
-  const rBy = p[LEVER_BY]!;
+  const rAx = turnedX(s, a, d, o + R_AX);
+  const rAy = turnedY(s, a, d, o + R_AX);
+  const rBx = turnedX(s, b, d, o + R_BX);
+  const rBy = turnedY(s, b, d, o + R_BX);
   const cdotX = vBx - wB * rBy - (vAx - wA * rAy);
   const cdotY = vBy + wB * rBx - (vAy + wA * rAx);
   let biasX = 0;
@@ -59,7 +59,7 @@ export function solveSoftPoint(
   let impulseScale = 0;
   const springy = softAt >= 0 && d[o + softAt] === 1;
   if (useBias || springy) {
-    // Summed in this order, not takeSeparation's (joint-levers.ts): the bridge's, car's and
+    // Summed in this order, not the other kinds' shiftX(...) + rBx - rAx: the bridge's, car's and
     // ragdoll's recorded hashes depend on it.
     const sepX = s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + d[o + DELTA_CENTER_X]!;
     const sepY = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + d[o + DELTA_CENTER_Y]!;

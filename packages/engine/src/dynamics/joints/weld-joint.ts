@@ -17,7 +17,7 @@ import {
   requireBodies,
   requirePoint,
 } from './joint.ts';
-import { LEVER_AX, LEVER_AY, LEVER_BX, LEVER_BY, levers, turnLevers } from './joint-levers.ts';
+import { turnedX, turnedY } from './joint-levers.ts';
 import {
   INV_I_A,
   INV_I_B,
@@ -25,6 +25,8 @@ import {
   INV_MASS_B,
   JOINT_ANGLE_0,
   REFERENCE_ANGLE,
+  R_AX,
+  R_BX,
   STEP_ANGULAR_IMPULSE,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
@@ -190,16 +192,14 @@ export class WeldBatch extends FlatJointBatch {
     const d = this.data;
     const offsets = this.offsets;
     const states = this.states;
-    const p = levers;
     for (let i = 0; i < this.active; i++) {
       const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
-      turnLevers(s, a, b, d, o, p);
-      const rAx = p[LEVER_AX]!;
-      const rAy = p[LEVER_AY]!;
-      const rBx = p[LEVER_BX]!;
-      const rBy = p[LEVER_BY]!;
+      const rAx = turnedX(s, a, d, o + R_AX);
+      const rAy = turnedY(s, a, d, o + R_AX);
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
       const px = d[o + LINEAR_IMPULSE_X]!;
       const py = d[o + LINEAR_IMPULSE_Y]!;
       const angular = d[o + ANGULAR_IMPULSE]!;
