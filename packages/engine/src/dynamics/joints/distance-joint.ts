@@ -2,7 +2,7 @@ import { PhysicalError, readOnly } from '../../core/errors.ts';
 import { optionalBoolean, requireNonNegative, requireRange } from '../../core/validate.ts';
 import type { Vec2Like } from '../../math/vec2.ts';
 import { hypot } from '../../math/hypot.ts';
-import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import {
@@ -20,9 +20,8 @@ import {
   requirePoint,
 } from './joint.ts';
 import { TwoBodyJoint } from './two-body-joint.ts';
+import { shiftX, shiftY, turnedX, turnedY } from './joint-levers.ts';
 import {
-  DELTA_CENTER_X,
-  DELTA_CENTER_Y,
   INV_I_A,
   INV_I_B,
   INV_MASS_A,
@@ -30,9 +29,7 @@ import {
   LOCAL_ANCHOR_AX,
   LOCAL_ANCHOR_BX,
   R_AX,
-  R_AY,
   R_BX,
-  R_BY,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
 } from './joint-record.ts';
@@ -299,16 +296,12 @@ export class DistanceBatch extends FlatJointBatch {
       const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
-      const qAc = s[a + Q_C]!;
-      const qAs = s[a + Q_S]!;
-      const qBc = s[b + Q_C]!;
-      const qBs = s[b + Q_S]!;
-      const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
-      const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
-      const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
-      const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
-      const dx = s[b + DP_X]! - s[a + DP_X]! + d[o + DELTA_CENTER_X]! + rBx - rAx;
-      const dy = s[b + DP_Y]! - s[a + DP_Y]! + d[o + DELTA_CENTER_Y]! + rBy - rAy;
+      const rAx = turnedX(s, a, d, o + R_AX);
+      const rAy = turnedY(s, a, d, o + R_AX);
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
+      const dx = shiftX(s, a, b, d, o) + rBx - rAx;
+      const dy = shiftY(s, a, b, d, o) + rBy - rAy;
       const length = Math.sqrt(dx * dx + dy * dy);
       if (!(length > LENGTH_EPSILON)) continue;
       const axial = d[o + IMPULSE]! + d[o + LOWER_IMPULSE]! - d[o + UPPER_IMPULSE]!;
@@ -342,16 +335,12 @@ export class DistanceBatch extends FlatJointBatch {
       let vBx = s[b + V_X]!;
       let vBy = s[b + V_Y]!;
       let wB = s[b + W]!;
-      const qAc = s[a + Q_C]!;
-      const qAs = s[a + Q_S]!;
-      const qBc = s[b + Q_C]!;
-      const qBs = s[b + Q_S]!;
-      const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
-      const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
-      const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
-      const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
-      const dx = s[b + DP_X]! - s[a + DP_X]! + d[o + DELTA_CENTER_X]! + rBx - rAx;
-      const dy = s[b + DP_Y]! - s[a + DP_Y]! + d[o + DELTA_CENTER_Y]! + rBy - rAy;
+      const rAx = turnedX(s, a, d, o + R_AX);
+      const rAy = turnedY(s, a, d, o + R_AX);
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
+      const dx = shiftX(s, a, b, d, o) + rBx - rAx;
+      const dy = shiftY(s, a, b, d, o) + rBy - rAy;
       const length = Math.sqrt(dx * dx + dy * dy);
       // Coincident anchors have no direction to push along.
       if (length > LENGTH_EPSILON) {
@@ -362,107 +351,75 @@ export class DistanceBatch extends FlatJointBatch {
         const k = mA + mB + iA * crA * crA + iB * crB * crB;
         const axialMass = k > 0 ? 1 / k : 0;
 
-        // The rod or the spring: C = length - rest.
-        if (d[o + EXPLICIT_SPRING] === 1) {
-          if (useBias) {
-            // Spring force -k C - c Cdot over the sub-step, with k and c for the effective mass;
-            // the damping part implicit, so no damping ratio can reverse the motion.
+        // The rows along n, one after another, each on the velocities the one before left: the
+        // explicit spring's force (row 0), the rod or the soft spring (1), length >= minLength (2,
+        // pushes apart only) and length <= maxLength (3, pulls together only: a rope). Each gives
+        // the impulse `push` on B along n (on A the opposite), applied in one place.
+        const explicit = d[o + EXPLICIT_SPRING] === 1;
+        for (let row = 0; row < 4; row++) {
+          if (
+            row === 0
+              ? !explicit || !useBias
+              : row === 1
+                ? explicit || d[o + LENGTH_ROW_ON] !== 1
+                : d[o + (row === 2 ? LOWER_ON : UPPER_ON)] !== 1
+          ) {
+            continue;
+          }
+          const cdot =
+            (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
+          let push: number;
+          if (row === 0) {
+            // Spring force -k C - c Cdot over the sub-step (C = length - rest), with k and c for
+            // the effective mass; the damping part implicit, so no damping ratio can reverse the
+            // motion.
             const omega = d[o + SPRING_OMEGA]!;
             const damping = 2 * d[o + DAMPING_RATIO]! * omega;
-            const cdot =
-              (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
-            const impulse =
+            push =
               (-axialMass * step.h * (omega * omega * (length - d[o + REST]!) + damping * cdot)) /
               (1 + damping * step.h);
-            d[o + SPRING_SUB_STEP_IMPULSE] = impulse;
-            const px = impulse * nx;
-            const py = impulse * ny;
-            vAx -= mA * px;
-            vAy -= mA * py;
-            wA -= iA * (rAx * py - rAy * px);
-            vBx += mB * px;
-            vBy += mB * py;
-            wB += iB * (rBx * py - rBy * px);
+            d[o + SPRING_SUB_STEP_IMPULSE] = push;
+          } else if (row === 1) {
+            // C = length - rest.
+            let bias = 0;
+            let massScale = 1;
+            let impulseScale = 0;
+            if (d[o + SPRING_ENABLED] === 1) {
+              bias = d[o + SPRING_BIAS_RATE]! * (length - d[o + REST]!);
+              massScale = d[o + SPRING_MASS_SCALE]!;
+              impulseScale = d[o + SPRING_IMPULSE_SCALE]!;
+            } else if (useBias) {
+              bias = soft.biasRate * (length - d[o + REST]!);
+              massScale = soft.massScale;
+              impulseScale = soft.impulseScale;
+            }
+            push = -massScale * axialMass * (cdot + bias) - impulseScale * d[o + IMPULSE]!;
+            d[o + IMPULSE] += push;
+          } else {
+            // Lower: C = length - minLength >= 0; upper: C = maxLength - length >= 0, the same
+            // row with the sign turned. Speculative like contacts: a gap may close within the
+            // sub-step.
+            const lower = row === 2;
+            const c = lower ? length - d[o + MIN_LENGTH]! : d[o + MAX_LENGTH]! - length;
+            let bias = 0;
+            let massScale = 1;
+            let impulseScale = 0;
+            if (c > 0) bias = c * step.inverseH;
+            else if (useBias) {
+              bias = soft.biasRate * c;
+              massScale = soft.massScale;
+              impulseScale = soft.impulseScale;
+            }
+            const at = lower ? LOWER_IMPULSE : UPPER_IMPULSE;
+            const old = d[o + at]!;
+            const impulse =
+              -massScale * axialMass * ((lower ? cdot : -cdot) + bias) - impulseScale * old;
+            const accumulated = Math.max(old + impulse, 0);
+            d[o + at] = accumulated;
+            push = lower ? accumulated - old : -(accumulated - old);
           }
-        } else if (d[o + LENGTH_ROW_ON] === 1) {
-          let bias = 0;
-          let massScale = 1;
-          let impulseScale = 0;
-          if (d[o + SPRING_ENABLED] === 1) {
-            bias = d[o + SPRING_BIAS_RATE]! * (length - d[o + REST]!);
-            massScale = d[o + SPRING_MASS_SCALE]!;
-            impulseScale = d[o + SPRING_IMPULSE_SCALE]!;
-          } else if (useBias) {
-            bias = soft.biasRate * (length - d[o + REST]!);
-            massScale = soft.massScale;
-            impulseScale = soft.impulseScale;
-          }
-          const cdot =
-            (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
-          const impulse = -massScale * axialMass * (cdot + bias) - impulseScale * d[o + IMPULSE]!;
-          d[o + IMPULSE] += impulse;
-          const px = impulse * nx;
-          const py = impulse * ny;
-          vAx -= mA * px;
-          vAy -= mA * py;
-          wA -= iA * (rAx * py - rAy * px);
-          vBx += mB * px;
-          vBy += mB * py;
-          wB += iB * (rBx * py - rBy * px);
-        }
-
-        if (d[o + LOWER_ON] === 1) {
-          // length >= minLength: pushes apart only.
-          const c = length - d[o + MIN_LENGTH]!;
-          let bias = 0;
-          let massScale = 1;
-          let impulseScale = 0;
-          if (c > 0) bias = c * step.inverseH;
-          else if (useBias) {
-            bias = soft.biasRate * c;
-            massScale = soft.massScale;
-            impulseScale = soft.impulseScale;
-          }
-          const cdot =
-            (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
-          const old = d[o + LOWER_IMPULSE]!;
-          const impulse = -massScale * axialMass * (cdot + bias) - impulseScale * old;
-          const accumulated = Math.max(old + impulse, 0);
-          const applied = accumulated - old;
-          d[o + LOWER_IMPULSE] = accumulated;
-          const px = applied * nx;
-          const py = applied * ny;
-          vAx -= mA * px;
-          vAy -= mA * py;
-          wA -= iA * (rAx * py - rAy * px);
-          vBx += mB * px;
-          vBy += mB * py;
-          wB += iB * (rBx * py - rBy * px);
-        }
-
-        if (d[o + UPPER_ON] === 1) {
-          // length <= maxLength: pulls together only (a rope).
-          const c = d[o + MAX_LENGTH]! - length;
-          let bias = 0;
-          let massScale = 1;
-          let impulseScale = 0;
-          if (c > 0) bias = c * step.inverseH;
-          else if (useBias) {
-            bias = soft.biasRate * c;
-            massScale = soft.massScale;
-            impulseScale = soft.impulseScale;
-          }
-          const cdot = -(
-            (vBx - wB * rBy - vAx + wA * rAy) * nx +
-            (vBy + wB * rBx - vAy - wA * rAx) * ny
-          );
-          const old = d[o + UPPER_IMPULSE]!;
-          const impulse = -massScale * axialMass * (cdot + bias) - impulseScale * old;
-          const accumulated = Math.max(old + impulse, 0);
-          const applied = accumulated - old;
-          d[o + UPPER_IMPULSE] = accumulated;
-          const px = -applied * nx;
-          const py = -applied * ny;
+          const px = push * nx;
+          const py = push * ny;
           vAx -= mA * px;
           vAy -= mA * py;
           wA -= iA * (rAx * py - rAy * px);

@@ -2,7 +2,7 @@ import { PhysicalError, readOnly } from '../../core/errors.ts';
 import { describeValue, requirePositive, requireVector } from '../../core/validate.ts';
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import type { Body } from '../body.ts';
-import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { DP_X, DP_Y, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import {
@@ -17,6 +17,7 @@ import {
   jointMax,
   requirePoint,
 } from './joint.ts';
+import { turnedX, turnedY } from './joint-levers.ts';
 import {
   DELTA_CENTER_X,
   DELTA_CENTER_Y,
@@ -255,8 +256,8 @@ export class MouseBatch extends FlatJointBatch {
       const b = states[2 * i + 1]!;
       const mB = d[o + INV_MASS_B]!;
       const iB = d[o + INV_I_B]!;
-      const rBx = s[b + Q_C]! * d[o + R_BX]! - s[b + Q_S]! * d[o + R_BY]!;
-      const rBy = s[b + Q_S]! * d[o + R_BX]! + s[b + Q_C]! * d[o + R_BY]!;
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
       const px = d[o + LINEAR_IMPULSE_X]!;
       const py = d[o + LINEAR_IMPULSE_Y]!;
       s[b + V_X] += mB * px;
@@ -293,10 +294,8 @@ export class MouseBatch extends FlatJointBatch {
         const biasRate = d[o + LINEAR_BIAS_RATE]!;
         const massScale = d[o + LINEAR_MASS_SCALE]!;
         const impulseScale = d[o + LINEAR_IMPULSE_SCALE]!;
-        const qc = s[b + Q_C]!;
-        const qs = s[b + Q_S]!;
-        const rBx = qc * d[o + R_BX]! - qs * d[o + R_BY]!;
-        const rBy = qs * d[o + R_BX]! + qc * d[o + R_BY]!;
+        const rBx = turnedX(s, b, d, o + R_BX);
+        const rBy = turnedY(s, b, d, o + R_BX);
         const cdotX = vBx - wB * rBy;
         const cdotY = vBy + wB * rBx;
         const sepX = s[b + DP_X]! + rBx + d[o + DELTA_CENTER_X]!;

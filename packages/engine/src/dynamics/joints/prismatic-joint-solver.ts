@@ -1,18 +1,15 @@
-import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { DELTA_ANGLE, V_X, V_Y, W } from '../body-state.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import type { JointStep } from './joint.ts';
+import { shiftX, shiftY, turnedX, turnedY } from './joint-levers.ts';
 import {
-  DELTA_CENTER_X,
-  DELTA_CENTER_Y,
   INV_I_A,
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
   JOINT_ANGLE_0,
   R_AX,
-  R_AY,
   R_BX,
-  R_BY,
   STEP_ANGULAR_IMPULSE,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
@@ -62,18 +59,14 @@ export class PrismaticBatch extends FlatJointBatch {
       const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
-      const qAc = s[a + Q_C]!;
-      const qAs = s[a + Q_S]!;
-      const qBc = s[b + Q_C]!;
-      const qBs = s[b + Q_S]!;
-      const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
-      const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
-      const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
-      const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
-      const dx = s[b + DP_X]! - s[a + DP_X]! + d[o + DELTA_CENTER_X]! + rBx - rAx;
-      const dy = s[b + DP_Y]! - s[a + DP_Y]! + d[o + DELTA_CENTER_Y]! + rBy - rAy;
-      const ax = qAc * d[o + AXIS_X]! - qAs * d[o + AXIS_Y]!;
-      const ay = qAs * d[o + AXIS_X]! + qAc * d[o + AXIS_Y]!;
+      const rAx = turnedX(s, a, d, o + R_AX);
+      const rAy = turnedY(s, a, d, o + R_AX);
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
+      const dx = shiftX(s, a, b, d, o) + rBx - rAx;
+      const dy = shiftY(s, a, b, d, o) + rBy - rAy;
+      const ax = turnedX(s, a, d, o + AXIS_X);
+      const ay = turnedY(s, a, d, o + AXIS_X);
       // Lever arms of the axial and perpendicular rows (A's arm reaches B's anchor: d + rA).
       const a1 = (dx + rAx) * ay - (dy + rAy) * ax;
       const a2 = rBx * ay - rBy * ax;
@@ -120,59 +113,48 @@ export class PrismaticBatch extends FlatJointBatch {
       let vBx = s[b + V_X]!;
       let vBy = s[b + V_Y]!;
       let wB = s[b + W]!;
-      const qAc = s[a + Q_C]!;
-      const qAs = s[a + Q_S]!;
-      const qBc = s[b + Q_C]!;
-      const qBs = s[b + Q_S]!;
-      const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
-      const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
-      const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
-      const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
-      const dx = s[b + DP_X]! - s[a + DP_X]! + d[o + DELTA_CENTER_X]! + rBx - rAx;
-      const dy = s[b + DP_Y]! - s[a + DP_Y]! + d[o + DELTA_CENTER_Y]! + rBy - rAy;
-      const ax = qAc * d[o + AXIS_X]! - qAs * d[o + AXIS_Y]!;
-      const ay = qAs * d[o + AXIS_X]! + qAc * d[o + AXIS_Y]!;
+      const rAx = turnedX(s, a, d, o + R_AX);
+      const rAy = turnedY(s, a, d, o + R_AX);
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
+      const dx = shiftX(s, a, b, d, o) + rBx - rAx;
+      const dy = shiftY(s, a, b, d, o) + rBy - rAy;
+      const ax = turnedX(s, a, d, o + AXIS_X);
+      const ay = turnedY(s, a, d, o + AXIS_X);
       const translation = ax * dx + ay * dy;
       const a1 = (dx + rAx) * ay - (dy + rAy) * ax;
       const a2 = rBx * ay - rBy * ax;
       const kAxial = mA + mB + iA * a1 * a1 + iB * a2 * a2;
       const axialMass = kAxial > 0 ? 1 / kAxial : 0;
 
-      if (d[o + SPRING_ON] === 1) {
-        const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
-        const impulse =
-          -d[o + SPRING_MASS_SCALE]! * axialMass * (cdot + d[o + SPRING_BIAS_RATE]! * translation) -
-          d[o + SPRING_IMPULSE_SCALE]! * d[o + SPRING_IMPULSE]!;
-        d[o + SPRING_IMPULSE] += impulse;
-        vAx -= mA * impulse * ax;
-        vAy -= mA * impulse * ay;
-        wA -= iA * impulse * a1;
-        vBx += mB * impulse * ax;
-        vBy += mB * impulse * ay;
-        wB += iB * impulse * a2;
-      }
-
-      if (d[o + MOTOR_ON] === 1) {
-        const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
-        const impulse = axialMass * (d[o + MOTOR_SPEED]! - cdot);
-        const old = d[o + MOTOR_IMPULSE]!;
-        const maxImpulse = step.h * d[o + MAX_MOTOR]!;
-        const accumulated = Math.max(-maxImpulse, Math.min(old + impulse, maxImpulse));
-        d[o + MOTOR_IMPULSE] = accumulated;
-        const applied = accumulated - old;
-        vAx -= mA * applied * ax;
-        vAy -= mA * applied * ay;
-        wA -= iA * applied * a1;
-        vBx += mB * applied * ax;
-        vBy += mB * applied * ay;
-        wB += iB * applied * a2;
-      }
-
-      if (d[o + LIMIT_ON] === 1) {
-        // Lower: translation - lower >= 0; upper: upper - translation >= 0, the same row with the
-        // sign turned. Speculative like contacts: a gap may close within the sub-step.
-        for (let side = 1; side >= -1; side -= 2) {
-          const c = side === 1 ? translation - d[o + LOWER]! : d[o + UPPER]! - translation;
+      // The rows along the axis, one after another, each on the velocities the one before left:
+      // the spring (row 0), the motor (1), translation >= lower (2) and translation <= upper (3).
+      // Each gives the impulse `push` on B along the axis (on A the opposite), applied in one place.
+      for (let row = 0; row < 4; row++) {
+        if (d[o + (row === 0 ? SPRING_ON : row === 1 ? MOTOR_ON : LIMIT_ON)] !== 1) continue;
+        let push: number;
+        if (row < 2) {
+          const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
+          if (row === 0) {
+            push =
+              -d[o + SPRING_MASS_SCALE]! *
+                axialMass *
+                (cdot + d[o + SPRING_BIAS_RATE]! * translation) -
+              d[o + SPRING_IMPULSE_SCALE]! * d[o + SPRING_IMPULSE]!;
+            d[o + SPRING_IMPULSE] += push;
+          } else {
+            const impulse = axialMass * (d[o + MOTOR_SPEED]! - cdot);
+            const old = d[o + MOTOR_IMPULSE]!;
+            const maxImpulse = step.h * d[o + MAX_MOTOR]!;
+            const accumulated = Math.max(-maxImpulse, Math.min(old + impulse, maxImpulse));
+            d[o + MOTOR_IMPULSE] = accumulated;
+            push = accumulated - old;
+          }
+        } else {
+          // Lower: translation - lower >= 0; upper: upper - translation >= 0, the same row with
+          // the sign turned. Speculative like contacts: a gap may close within the sub-step.
+          const lower = row === 2;
+          const c = lower ? translation - d[o + LOWER]! : d[o + UPPER]! - translation;
           let bias = 0;
           let massScale = 1;
           let impulseScale = 0;
@@ -182,32 +164,22 @@ export class PrismaticBatch extends FlatJointBatch {
             massScale = soft.massScale;
             impulseScale = soft.impulseScale;
           }
-          const cdot =
-            side === 1
-              ? ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA
-              : ax * (vAx - vBx) + ay * (vAy - vBy) + a1 * wA - a2 * wB;
-          const at = side === 1 ? LOWER_IMPULSE : UPPER_IMPULSE;
+          const cdot = lower
+            ? ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA
+            : ax * (vAx - vBx) + ay * (vAy - vBy) + a1 * wA - a2 * wB;
+          const at = lower ? LOWER_IMPULSE : UPPER_IMPULSE;
           const old = d[o + at]!;
           const impulse = -axialMass * massScale * (cdot + bias) - impulseScale * old;
           const accumulated = Math.max(old + impulse, 0);
-          const applied = accumulated - old;
           d[o + at] = accumulated;
-          if (side === 1) {
-            vAx -= mA * applied * ax;
-            vAy -= mA * applied * ay;
-            wA -= iA * applied * a1;
-            vBx += mB * applied * ax;
-            vBy += mB * applied * ay;
-            wB += iB * applied * a2;
-          } else {
-            vAx += mA * applied * ax;
-            vAy += mA * applied * ay;
-            wA += iA * applied * a1;
-            vBx -= mB * applied * ax;
-            vBy -= mB * applied * ay;
-            wB -= iB * applied * a2;
-          }
+          push = lower ? accumulated - old : -(accumulated - old);
         }
+        vAx -= mA * push * ax;
+        vAy -= mA * push * ay;
+        wA -= iA * push * a1;
+        vBx += mB * push * ax;
+        vBy += mB * push * ay;
+        wB += iB * push * a2;
       }
 
       // Perpendicular offset and relative angle, solved together.

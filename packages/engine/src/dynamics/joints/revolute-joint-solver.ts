@@ -1,6 +1,7 @@
-import { DELTA_ANGLE, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { DELTA_ANGLE, V_X, V_Y, W } from '../body-state.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import type { JointStep } from './joint.ts';
+import { turnedX, turnedY } from './joint-levers.ts';
 import {
   INV_I_A,
   INV_I_B,
@@ -8,9 +9,7 @@ import {
   INV_MASS_B,
   JOINT_ANGLE_0,
   R_AX,
-  R_AY,
   R_BX,
-  R_BY,
   STEP_ANGULAR_IMPULSE,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
@@ -63,10 +62,10 @@ export class RevoluteBatch extends FlatJointBatch {
       const iA = d[o + INV_I_A]!;
       const mB = d[o + INV_MASS_B]!;
       const iB = d[o + INV_I_B]!;
-      const rAx = s[a + Q_C]! * d[o + R_AX]! - s[a + Q_S]! * d[o + R_AY]!;
-      const rAy = s[a + Q_S]! * d[o + R_AX]! + s[a + Q_C]! * d[o + R_AY]!;
-      const rBx = s[b + Q_C]! * d[o + R_BX]! - s[b + Q_S]! * d[o + R_BY]!;
-      const rBy = s[b + Q_S]! * d[o + R_BX]! + s[b + Q_C]! * d[o + R_BY]!;
+      const rAx = turnedX(s, a, d, o + R_AX);
+      const rAy = turnedY(s, a, d, o + R_AX);
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
       const px = d[o + LINEAR_IMPULSE_X]!;
       const py = d[o + LINEAR_IMPULSE_Y]!;
       const axial =

@@ -1,6 +1,6 @@
 import { readOnly } from '../../core/errors.ts';
 import type { Vec2Like } from '../../math/vec2.ts';
-import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { DP_X, DP_Y, V_X, V_Y, W } from '../body-state.ts';
 import { PinChains, type PinJoint } from './pin-chains.ts';
 import {
   AXIAL_MASS,
@@ -23,6 +23,7 @@ import {
   requirePoint,
 } from './joint.ts';
 import { TwoBodyJoint } from './two-body-joint.ts';
+import { turnedX, turnedY } from './joint-levers.ts';
 import {
   DELTA_CENTER_X,
   DELTA_CENTER_Y,
@@ -279,14 +280,10 @@ export class RevoluteJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
     const o = this.base;
     const a = this.stateA;
     const b = this.stateB;
-    const qAc = s[a + Q_C]!;
-    const qAs = s[a + Q_S]!;
-    const qBc = s[b + Q_C]!;
-    const qBs = s[b + Q_S]!;
-    out[offset] = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
-    out[offset + 1] = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
-    out[offset + 2] = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
-    out[offset + 3] = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
+    out[offset] = turnedX(s, a, d, o + R_AX);
+    out[offset + 1] = turnedY(s, a, d, o + R_AX);
+    out[offset + 2] = turnedX(s, b, d, o + R_BX);
+    out[offset + 3] = turnedY(s, b, d, o + R_BX);
   }
 
   /** @internal */

@@ -1,5 +1,6 @@
-import { DP_X, DP_Y, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { DP_X, DP_Y, V_X, V_Y, W } from '../body-state.ts';
 import type { JointStep } from './joint.ts';
+import { turnedX, turnedY } from './joint-levers.ts';
 import {
   DELTA_CENTER_X,
   DELTA_CENTER_Y,
@@ -8,9 +9,7 @@ import {
   INV_MASS_A,
   INV_MASS_B,
   R_AX,
-  R_AY,
   R_BX,
-  R_BY,
 } from './joint-record.ts';
 
 /**
@@ -48,14 +47,10 @@ export function solveSoftPoint(
   const vBx = s[b + V_X]!;
   const vBy = s[b + V_Y]!;
   const wB = s[b + W]!;
-  const qAc = s[a + Q_C]!;
-  const qAs = s[a + Q_S]!;
-  const qBc = s[b + Q_C]!;
-  const qBs = s[b + Q_S]!;
-  const rAx = qAc * d[o + R_AX]! - qAs * d[o + R_AY]!;
-  const rAy = qAs * d[o + R_AX]! + qAc * d[o + R_AY]!;
-  const rBx = qBc * d[o + R_BX]! - qBs * d[o + R_BY]!;
-  const rBy = qBs * d[o + R_BX]! + qBc * d[o + R_BY]!;
+  const rAx = turnedX(s, a, d, o + R_AX);
+  const rAy = turnedY(s, a, d, o + R_AX);
+  const rBx = turnedX(s, b, d, o + R_BX);
+  const rBy = turnedY(s, b, d, o + R_BX);
   const cdotX = vBx - wB * rBy - (vAx - wA * rAy);
   const cdotY = vBy + wB * rBx - (vAy + wA * rAx);
   let biasX = 0;
@@ -64,6 +59,8 @@ export function solveSoftPoint(
   let impulseScale = 0;
   const springy = softAt >= 0 && d[o + softAt] === 1;
   if (useBias || springy) {
+    // Summed in this order, not the other kinds' shiftX(...) + rBx - rAx: the bridge's, car's and
+    // ragdoll's recorded hashes depend on it.
     const sepX = s[b + DP_X]! - s[a + DP_X]! + rBx - rAx + d[o + DELTA_CENTER_X]!;
     const sepY = s[b + DP_Y]! - s[a + DP_Y]! + rBy - rAy + d[o + DELTA_CENTER_Y]!;
     if (springy) {

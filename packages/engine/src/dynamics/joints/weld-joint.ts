@@ -1,6 +1,6 @@
 import { readOnly } from '../../core/errors.ts';
 import type { Vec2Like } from '../../math/vec2.ts';
-import { DELTA_ANGLE, Q_C, Q_S, V_X, V_Y, W } from '../body-state.ts';
+import { DELTA_ANGLE, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
 import { FlatJointBatch } from './joint-batch.ts';
 import {
@@ -17,17 +17,16 @@ import {
   requirePoint,
 } from './joint.ts';
 import { TwoBodyJoint } from './two-body-joint.ts';
+import { turnedX, turnedY } from './joint-levers.ts';
 import {
   INV_I_A,
   INV_I_B,
   INV_MASS_A,
   INV_MASS_B,
   JOINT_ANGLE_0,
-  R_AX,
-  R_AY,
-  R_BX,
-  R_BY,
   REFERENCE_ANGLE,
+  R_AX,
+  R_BX,
   STEP_ANGULAR_IMPULSE,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
@@ -197,10 +196,10 @@ export class WeldBatch extends FlatJointBatch {
       const o = offsets[i]!;
       const a = states[2 * i]!;
       const b = states[2 * i + 1]!;
-      const rAx = s[a + Q_C]! * d[o + R_AX]! - s[a + Q_S]! * d[o + R_AY]!;
-      const rAy = s[a + Q_S]! * d[o + R_AX]! + s[a + Q_C]! * d[o + R_AY]!;
-      const rBx = s[b + Q_C]! * d[o + R_BX]! - s[b + Q_S]! * d[o + R_BY]!;
-      const rBy = s[b + Q_S]! * d[o + R_BX]! + s[b + Q_C]! * d[o + R_BY]!;
+      const rAx = turnedX(s, a, d, o + R_AX);
+      const rAy = turnedY(s, a, d, o + R_AX);
+      const rBx = turnedX(s, b, d, o + R_BX);
+      const rBy = turnedY(s, b, d, o + R_BX);
       const px = d[o + LINEAR_IMPULSE_X]!;
       const py = d[o + LINEAR_IMPULSE_Y]!;
       const angular = d[o + ANGULAR_IMPULSE]!;
