@@ -37,6 +37,8 @@ export interface TrackViewProps {
   readonly hiddenMass?: boolean;
 }
 
+/** Height (CSS px) the force label needs above the square; less, and it goes beside it. */
+const LABEL_HEIGHT = 16;
 const VIEW_BOX = { x: -0.15, y: 0, width: TRACK_LENGTH + 0.3, height: TRACK_HEIGHT };
 
 /** One track of the Forces screen: the canvas, its ruler and force arrow, its label and readouts. */
@@ -115,11 +117,22 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
         context.fillStyle = on ? '#ff8a65' : 'rgba(255, 255, 255, 0.85)';
         const text = on ? labelsRef.current.force : labelsRef.current.balanced;
         const room = context.canvas.width / ratio - context.measureText(text).width - 4;
-        context.fillText(
-          text,
-          Math.max(4, Math.min(room, label.x - SQUARE_SIZE * scale * 0.5)),
-          label.y,
-        );
+        if (label.y >= LABEL_HEIGHT) {
+          context.fillText(
+            text,
+            Math.max(4, Math.min(room, label.x - SQUARE_SIZE * scale * 0.5)),
+            label.y,
+          );
+        } else {
+          // A short track (a small phone): no room above the square, so the label goes beside
+          // it, past the arrow's tip, rather than cut off at the canvas's top edge.
+          const tip = canvas.worldToScreen({
+            x: square.x + SQUARE_SIZE / 2 + (on ? arrowLength(current.force) : 0),
+            y: square.y,
+          });
+          context.textBaseline = 'middle';
+          context.fillText(text, Math.max(4, Math.min(room, tip.x + 6)), tip.y);
+        }
         context.restore();
         if (on) {
           drawArrow(
