@@ -5,7 +5,7 @@ import { drawScene } from '../draw/draw-scene.ts';
 import type { OverlaysDrawer } from '../draw/draw-overlays.ts';
 import type { DrawingSource } from '../draw/drawing-source.ts';
 import type { Pose } from '../draw/pose.ts';
-import type { Scene } from '../draw/scene.ts';
+import type { HeldPoint, Scene } from '../draw/scene.ts';
 import { computeViewport, type Viewport } from '../draw/viewport.ts';
 import type { BodyStyles } from './body-styles.ts';
 import type { CanvasSettings } from './canvas-settings.ts';
@@ -18,6 +18,8 @@ export interface CanvasRendererHost {
   readonly poses: PoseHistory;
   readonly styles: BodyStyles;
   readonly arrows: CollisionArrows;
+  /** The points its drag holds (one array, kept up to date by the drag). */
+  readonly held: readonly HeldPoint[];
   /** The element's CSS size before the first resize report, or null while detached. */
   measure(): { width: number; height: number } | null;
   /** Asks for a frame: the overlays' code arrived. */
@@ -48,7 +50,7 @@ export class CanvasRenderer {
   constructor(host: CanvasRendererHost, context: CanvasRenderingContext2D | null) {
     this.host = host;
     this.context = context;
-    const { settings, poses, styles, arrows } = host;
+    const { settings, poses, styles, arrows, held } = host;
     this.scene = {
       viewport: computeViewport({
         width: 0,
@@ -72,6 +74,7 @@ export class CanvasRenderer {
       background: DEFAULT_BACKGROUND,
       debug: settings.debug,
       collisionArrows: arrows.arrows,
+      held,
       forceScale: settings.forceScale,
       velocityScale: settings.velocityScale,
       reducedMotion: false,

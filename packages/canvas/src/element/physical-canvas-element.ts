@@ -91,7 +91,7 @@ export class PhysicalCanvasElement extends ElementBase {
   static readonly observedAttributes: readonly string[] = SETTING_ATTRIBUTES;
 
   private worldValue: DrawingSource | null = null;
-  /** Pointers whose drag went to the remote source (the others hold a local mouse joint). */
+  /** Pointers whose drag went to the remote source (the others are held by {@link drags}). */
   private readonly remoteDrags = new Set<number>();
   private drawOverlayValue: OverlayDrawer | null = null;
   private schedulerValue: FrameScheduler | null = null;
@@ -122,7 +122,7 @@ export class PhysicalCanvasElement extends ElementBase {
         this.remoteDrags.add(pointerId);
         return true;
       }
-      // A source without `remote` steps its bodies itself: a World, which takes mouse joints.
+      // A source without `remote` is a World, stepped here: the drag pulls before each step.
       return this.drags.start(world as World, pointerId, body, x, y, toX, toY);
     },
     dragMove: (pointerId, x, y) => {
@@ -166,6 +166,7 @@ export class PhysicalCanvasElement extends ElementBase {
         poses: this.poses,
         styles: this.styles,
         arrows: this.arrows,
+        held: this.drags.held,
         measure: () =>
           this.isConnectedValue ? { width: this.clientWidth, height: this.clientHeight } : null,
         redraw: () => this.invalidate(),
@@ -347,7 +348,8 @@ export class PhysicalCanvasElement extends ElementBase {
 
   /**
    * Pointers drag dynamic bodies (attribute `drag`; `drag="off"` turns it off): press on a body
-   * and move, and the engine's mouse joint pulls the pressed point after the pointer; letting go
+   * and move, and a soft spring (the engine's mouse joint's tuning) pulls the pressed point after
+   * the pointer before each step the element runs; letting go
    * throws the body with the pointer's velocity. Mouse, touch and pen; several fingers drag
    * several bodies. Default on. While on, the canvas takes touch gestures (`touch-action: none`),
    * so a page does not scroll by a swipe over it.
@@ -435,7 +437,7 @@ export class PhysicalCanvasElement extends ElementBase {
    * at once: a "next step" button for a paused element (`canvas.paused = true`, then
    * `canvas.step()` per press), in place of `world.step()` followed by {@link invalidate}. Goes
    * through the element, so what a running element does per step happens too: collision arrows
-   * are recorded, a drag's mouse joint pulls, {@link stepCount} counts it. With a `WorkerWorld`
+   * are recorded, a drag pulls, {@link stepCount} counts it. With a `WorkerWorld`
    * the step is posted and its poses are drawn when they arrive. Also works while running (one
    * step more than the clock gives). Without a world it throws a `CanvasSettingError` naming
    * `world`.
@@ -574,7 +576,11 @@ export class PhysicalCanvasElement extends ElementBase {
     const world = this.worldValue;
     if (world === null) return;
     // A remote source keeps its own last two states (see DrawingSource.remote).
-    if (world.remote === undefined) this.poses.snapshot(world.bodies);
+    if (world.remote === undefined) {
+      this.poses.snapshot(world.bodies);
+      // Held bodies are pulled to their pointers before the step (see BodyDrag).
+      this.drags.pull(dt);
+    }
     this.stepDuration = dt;
     world.step(dt);
   }

@@ -124,20 +124,26 @@ describe('front-end weight', () => {
 });
 
 describe("<physical-canvas>'s drag", () => {
-  it("bundles the mouse joint and Joint, without the two-body kinds' base or snapshot state", async () => {
+  it("bundles no joint: its pull is the canvas's own spring, not the engine's mouse joint", async () => {
     const { engineWithCanvas, workerPage } = await measureFrontEnd();
     const library = await appSize(`export * from '@physical/engine';`);
-    // Both files are real: the whole library (joint kinds, snapshots) bundles them.
-    const apart = [
-      'engine/src/dynamics/joints/two-body-joint.ts',
-      'engine/src/dynamics/joints/joint-state.ts',
+    // The joint classes' files are real: the whole library bundles them.
+    const joints = [
+      'engine/src/dynamics/joints/joint-store.ts',
+      'engine/src/dynamics/joints/joint-batch.ts',
+      'engine/src/dynamics/joints/mouse-joint.ts',
     ];
-    for (const module of apart) expect(library.modules).toContain(module);
+    for (const module of joints) expect(library.modules).toContain(module);
     for (const report of [engineWithCanvas, workerPage]) {
-      expect(report.modules).toContain('engine/src/dynamics/joints/mouse-joint.ts');
-      expect(report.modules).toContain('engine/src/dynamics/joints/joint.ts');
-      for (const module of apart) expect(report.modules).not.toContain(module);
+      expect(report.modules).toContain('canvas/src/element/body-drag.ts');
+      expect(report.modules).not.toContain('engine/src/dynamics/joints/joint-store.ts');
+      expect(report.modules).not.toContain('engine/src/dynamics/joints/joint-batch.ts');
     }
+    expect(engineWithCanvas.modules).not.toContain('engine/src/dynamics/joints/mouse-joint.ts');
+    // The worker page checks a mouse joint's options (checkJointOptions), nothing more of it.
+    const mouse = (report: typeof library): number =>
+      report.costs.find((cost) => cost.path === 'engine/src/dynamics/joints/mouse-joint.ts')!.bytes;
+    expect(mouse(workerPage)).toBeLessThan(mouse(library) / 4);
   }, 60_000);
 });
 
