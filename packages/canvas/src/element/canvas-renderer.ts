@@ -18,8 +18,8 @@ export interface CanvasRendererHost {
   readonly poses: PoseHistory;
   readonly styles: BodyStyles;
   readonly arrows: CollisionArrows;
-  /** The points its drag holds (one array, kept up to date by the drag). */
-  readonly held: readonly HeldPoint[];
+  /** The points its drag holds now. */
+  held(): readonly HeldPoint[];
   /** The element's CSS size before the first resize report, or null while detached. */
   measure(): { width: number; height: number } | null;
   /** Asks for a frame: the overlays' code arrived. */
@@ -50,7 +50,7 @@ export class CanvasRenderer {
   constructor(host: CanvasRendererHost, context: CanvasRenderingContext2D | null) {
     this.host = host;
     this.context = context;
-    const { settings, poses, styles, arrows, held } = host;
+    const { settings, poses, styles, arrows } = host;
     this.scene = {
       viewport: computeViewport({
         width: 0,
@@ -74,7 +74,7 @@ export class CanvasRenderer {
       background: DEFAULT_BACKGROUND,
       debug: settings.debug,
       collisionArrows: arrows.arrows,
-      held,
+      held: host.held(),
       forceScale: settings.forceScale,
       velocityScale: settings.velocityScale,
       reducedMotion: false,
@@ -123,6 +123,7 @@ export class CanvasRenderer {
     scene.forceScale = settings.forceScale;
     scene.velocityScale = settings.velocityScale;
     scene.reducedMotion = this.reducedMotion;
+    scene.held = this.host.held();
     if (this.overlays === null && wantsOverlays(scene)) this.loadOverlays();
     drawScene(context, scene, this.batches, overlay, this.overlays);
   }

@@ -1,5 +1,6 @@
 import type { Body, Vec2, Vec2Like, World } from '@physical/engine';
 import type { BodyStyle } from '../draw/body-style.ts';
+import type { HeldPoint } from '../draw/scene.ts';
 import { MAX_REMOTE_STEPS_IN_FLIGHT, type DrawingSource } from '../draw/drawing-source.ts';
 import type { DebugOverlays } from '../draw/debug-overlays.ts';
 import {
@@ -22,7 +23,7 @@ import {
   parsePositiveInteger,
   parseViewBox,
 } from './attribute-parsers.ts';
-import { BodyDrag } from './body-drag.ts';
+import type { BodyDrag } from './body-drag.ts';
 import { BodyStyles, type StyleResolver } from './body-styles.ts';
 import { emit, type PhysicalCanvasEventMap } from './canvas-events.ts';
 import { CanvasRenderer } from './canvas-renderer.ts';
@@ -40,6 +41,8 @@ export type OverlayDrawer = (
   context: CanvasRenderingContext2D,
   canvas: PhysicalCanvasElement,
 ) => void;
+
+const NOT_HOLDING: readonly HeldPoint[] = [];
 
 /** Properties an app may set before the element is defined; re-applied on upgrade. */
 const UPGRADED_PROPERTIES = [
@@ -108,10 +111,22 @@ export class PhysicalCanvasElement extends ElementBase {
   private readonly poses = new PoseHistory();
   private readonly styles = new BodyStyles();
   private readonly arrows = new CollisionArrows();
-  private readonly drags = new BodyDrag();
+  /**
+   * The local drag (body-drag.ts), loaded apart when a press first lands on a body of a local
+   * world: pages that never drag (and a worker world's, whose worker drags) never load it.
+   */
+  private drags: BodyDrag | null = null;
+  private dragLoading = false;
+  /** Drags begun before its code arrived (pointer id: world, body, x, y, toX, toY); see loadDrag. */
+  private readonly waitingDrags = new Map<number, [World, Body, number, number, number, number]>();
   private readonly input = new PointerInput({
     clientToWorld: (x, y) => this.clientToWorld(x, y),
-    bodyAt: (point) => this.worldValue?.bodyAt(point) ?? null,
+    bodyAt: (point) => {
+      const body = this.worldValue?.bodyAt(point) ?? null;
+      // A press on a body may become a drag once it moves: fetch the drag's code now.
+      if (body !== null && this.worldValue!.remote === undefined) this.loadDrag();
+      return body;
+    },
     emit: (type, detail) => emit(this, type, detail),
     wake: () => this.invalidate(),
     dragStart: (pointerId, body, x, y, toX, toY) => {
@@ -123,16 +138,27 @@ export class PhysicalCanvasElement extends ElementBase {
         return true;
       }
       // A source without `remote` is a World, stepped here: the drag pulls before each step.
-      return this.drags.start(world as World, pointerId, body, x, y, toX, toY);
+      if (this.drags !== null)
+        return this.drags.start(world as World, pointerId, body, x, y, toX, toY);
+      if (body.type !== 'dynamic' || !(world as World).has(body)) return false;
+      this.waitingDrags.set(pointerId, [world as World, body, x, y, toX, toY]);
+      this.loadDrag();
+      return true;
     },
     dragMove: (pointerId, x, y) => {
       if (this.remoteDrags.has(pointerId)) this.worldValue?.remote?.moveGrab(pointerId, x, y);
-      else this.drags.move(pointerId, x, y);
+      else {
+        const waiting = this.waitingDrags.get(pointerId);
+        if (waiting !== undefined) {
+          waiting[4] = x;
+          waiting[5] = y;
+        } else this.drags?.move(pointerId, x, y);
+      }
     },
     dragEnd: (pointerId, vx, vy, isThrow) => {
       if (this.remoteDrags.delete(pointerId)) {
         this.worldValue?.remote?.releaseGrab(pointerId, vx, vy, isThrow);
-      } else this.drags.end(pointerId, vx, vy, isThrow);
+      } else if (!this.waitingDrags.delete(pointerId)) this.drags?.end(pointerId, vx, vy, isThrow);
     },
   });
   private readonly renderer: CanvasRenderer;
@@ -166,7 +192,7 @@ export class PhysicalCanvasElement extends ElementBase {
         poses: this.poses,
         styles: this.styles,
         arrows: this.arrows,
-        held: this.drags.held,
+        held: () => this.drags?.held ?? NOT_HOLDING,
         measure: () =>
           this.isConnectedValue ? { width: this.clientWidth, height: this.clientHeight } : null,
         redraw: () => this.invalidate(),
@@ -200,7 +226,7 @@ export class PhysicalCanvasElement extends ElementBase {
     }
     if (value === this.worldValue) return;
     this.releaseRemoteDrags();
-    this.drags.clear();
+    this.releaseLocalDrags();
     this.unsubscribe();
     this.worldValue = value;
     this.poses.clear();
@@ -551,7 +577,7 @@ export class PhysicalCanvasElement extends ElementBase {
     this.unsubscribe();
     this.input.detach();
     this.releaseRemoteDrags();
-    this.drags.clear();
+    this.releaseLocalDrags();
     for (const undo of this.teardown) undo();
     this.teardown = [];
   }
@@ -579,7 +605,7 @@ export class PhysicalCanvasElement extends ElementBase {
     if (world.remote === undefined) {
       this.poses.snapshot(world.bodies);
       // Held bodies are pulled to their pointers before the step (see BodyDrag).
-      this.drags.pull(dt);
+      this.drags?.pull(dt);
     }
     this.stepDuration = dt;
     world.step(dt);
@@ -626,7 +652,7 @@ export class PhysicalCanvasElement extends ElementBase {
     this.arrows.duration = settings.collisionArrowDuration;
     if (name === 'drag' && !settings.drag) {
       this.releaseRemoteDrags();
-      this.drags.clear();
+      this.releaseLocalDrags();
     }
     if (name === 'collision-arrows') {
       // Listen to collisions only while arrows are on: the events cost the engine time.
@@ -647,6 +673,25 @@ export class PhysicalCanvasElement extends ElementBase {
     const value = (this as Record<string, unknown>)[name];
     Reflect.deleteProperty(this, name);
     (this as Record<string, unknown>)[name] = value;
+  }
+
+  /** Lets go of the drags held here, without throwing. */
+  private releaseLocalDrags(): void {
+    this.drags?.clear();
+    this.waitingDrags.clear();
+  }
+
+  /** Loads the drag's code once; drags begun meanwhile start when it arrives. */
+  private loadDrag(): void {
+    if (this.dragLoading) return;
+    this.dragLoading = true;
+    void import('./body-drag.ts').then(({ BodyDrag }) => {
+      const drags = (this.drags = new BodyDrag());
+      for (const [pointerId, [world, body, x, y, toX, toY]] of this.waitingDrags) {
+        if (world === this.worldValue) drags.start(world, pointerId, body, x, y, toX, toY);
+      }
+      this.waitingDrags.clear();
+    });
   }
 
   /** Lets go of drags held by a remote source, without throwing. */
