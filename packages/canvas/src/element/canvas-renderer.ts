@@ -1,7 +1,7 @@
 import type { Body } from '@physical/engine';
 import { DEFAULT_BACKGROUND } from '../draw/body-style.ts';
 import { BodyBatches } from '../draw/draw-bodies.ts';
-import { drawScene } from '../draw/draw-scene.ts';
+import { drawScene, type JointsDrawer } from '../draw/draw-scene.ts';
 import type { OverlaysDrawer } from '../draw/draw-overlays.ts';
 import type { DrawingSource } from '../draw/drawing-source.ts';
 import type { Pose } from '../draw/pose.ts';
@@ -46,6 +46,9 @@ export class CanvasRenderer {
   /** The collision arrows and debug overlays (draw-overlays.ts), once loaded; see draw. */
   private overlays: OverlaysDrawer | null = null;
   private overlaysLoading = false;
+  /** The joints' drawing (draw-joints.ts), once loaded; see draw. */
+  private joints: JointsDrawer | null = null;
+  private jointsLoading = false;
 
   constructor(host: CanvasRendererHost, context: CanvasRenderingContext2D | null) {
     this.host = host;
@@ -125,7 +128,10 @@ export class CanvasRenderer {
     scene.reducedMotion = this.reducedMotion;
     scene.held = this.host.held();
     if (this.overlays === null && wantsOverlays(scene)) this.loadOverlays();
-    drawScene(context, scene, this.batches, overlay, this.overlays);
+    if (this.joints === null && world !== null && world.joints.length + scene.held!.length > 0) {
+      this.loadJoints();
+    }
+    drawScene(context, scene, this.batches, overlay, this.overlays, this.joints);
   }
 
   /**
@@ -137,6 +143,19 @@ export class CanvasRenderer {
     this.overlaysLoading = true;
     void import('../draw/draw-overlays.ts').then(({ drawOverlays }) => {
       this.overlays = drawOverlays;
+      this.host.redraw();
+    });
+  }
+
+  /**
+   * Loads the joints' drawing the first time a frame has joints (or a held body), then draws
+   * again, as the overlays: pages whose worlds have no joints and are never dragged never load it.
+   */
+  private loadJoints(): void {
+    if (this.jointsLoading) return;
+    this.jointsLoading = true;
+    void import('../draw/draw-joints.ts').then(({ drawJoints }) => {
+      this.joints = drawJoints;
       this.host.redraw();
     });
   }
