@@ -192,26 +192,17 @@ test('gallery: a body dragged with the pointer follows it, and is let go', async
       ).world;
       return { joints: world.joints.length, x: world.bodies[world.bodies.length - 1]!.position.x };
     });
-    // The canvas pulls the box itself (its drag spring): the world's joints stay the sample's.
-    assert.equal(held.joints, 0, 'the drag adds no joint');
+    assert.equal(held.joints, 1, 'a mouse joint holds the box');
     assert.ok(held.x > start.worldX + 1, `the box followed the pointer (x ${held.x.toFixed(2)} m)`);
     await page.mouse.up();
     await sleep(100);
-    const lastX = () =>
-      stage.evaluate((element) => {
-        const bodies = (element as unknown as { world: { bodies: { position: { x: number } }[] } })
-          .world.bodies;
-        return bodies[bodies.length - 1]!.position.x;
-      });
-    const released = await lastX();
-    // Let go: the pointer moving back 220 px (over 1.8 m) leaves the box where it fell.
-    for (let i = 1; i <= 10; i++) {
-      await page.mouse.move(start.x + 120 - 22 * i, start.y + 30);
-      await sleep(30);
-    }
-    await sleep(300);
-    const after = await lastX();
-    assert.ok(after > released - 1, `released (x ${released.toFixed(2)} -> ${after.toFixed(2)} m)`);
+    assert.equal(
+      await stage.evaluate(
+        (element) => (element as unknown as { world: { joints: unknown[] } }).world.joints.length,
+      ),
+      0,
+      'released',
+    );
     assertQuiet(gallery);
   } finally {
     await closeGallery(gallery);
