@@ -80,6 +80,8 @@ export interface AppSizeReport extends SizeReport {
   lazyGzippedBytes: number;
   /** The source files only in those chunks. */
   lazyModules: string[];
+  /** Their minified bytes in those chunks, largest first. */
+  lazyCosts: ModuleCost[];
 }
 
 /** What the front-end packages add, each against its budget (gzipped bytes, gzip -9). */
@@ -183,13 +185,15 @@ export async function appSize(
       .sort((x, y) => y.bytes - x.bytes);
   };
   const costs = costOf(first);
+  const lazyCosts = costOf(lazy);
   return {
     minifiedBytes: bytesOf(first, false),
     gzippedBytes: bytesOf(first, true),
     lazyGzippedBytes: bytesOf(lazy, true),
     modules: costs.map((cost) => cost.path),
     costs,
-    lazyModules: costOf(lazy).map((cost) => cost.path),
+    lazyModules: lazyCosts.map((cost) => cost.path),
+    lazyCosts,
   };
 }
 
@@ -300,6 +304,10 @@ export function moduleLines(sizes: FrontEndSizes, shares: KernelShares, top = 25
     ...list(sizes.engine, null),
     "- what <physical-canvas> adds to it (bytes beyond the engine app's, file by file):",
     ...list(sizes.engineWithCanvas, sizes.engine),
+    `- loaded apart, when first used (not in the figures; ${kb(sizes.engineWithCanvas.lazyGzippedBytes)} gzipped in all):`,
+    ...sizes.engineWithCanvas.lazyCosts.map(
+      (cost) => `  ${String(cost.bytes).padStart(7)}  ${cost.path}`,
+    ),
     "- a worker world's page:",
     ...list(sizes.workerPage, null),
     'The contact kernel in the engine figure (gzipped; each build replaced by an empty module):',

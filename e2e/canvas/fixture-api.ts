@@ -1,5 +1,5 @@
 // What the fixture page exposes to the tests as `window.physical`.
-import { Body, World, box, particle, wall } from '@physical/engine';
+import { Body, World, box, distanceJoint, particle, wall } from '@physical/engine';
 import { ManualFrameScheduler, PhysicalCanvasElement, define } from '@physical/canvas';
 
 /** The engine and canvas exports the tests build scenes with, in the page. */
@@ -7,6 +7,7 @@ export const physicalApi = {
   Body,
   World,
   box,
+  distanceJoint,
   particle,
   wall,
   ManualFrameScheduler,

@@ -1,6 +1,6 @@
-import type { Body } from '@physical/engine';
+import type { Body, Vec2 } from '@physical/engine';
 import type { Pose } from './pose.ts';
-import type { Scene } from './scene.ts';
+import type { HeldPoint, Scene } from './scene.ts';
 
 /** The joints' lines: the light grey of labels, half transparent, like a thin rod. */
 const LINK_COLOR = 'rgba(236, 239, 241, 0.6)';
@@ -13,16 +13,19 @@ const DOT_RADIUS = 3;
 // Scratch kept between frames, so drawing allocates nothing once the buffer has grown. Drawing is
 // synchronous, so one set serves every element.
 const pose: Pose = { x: 0, y: 0, angle: 0 };
+const point: Vec2 = { x: 0, y: 0 };
+const NONE: readonly HeldPoint[] = [];
 /** Per joint: anchor A x, y, anchor B x, y (m), at the drawn poses. */
 let anchors = new Float64Array(4 * 64);
 /** Each body's index in `world.bodies` when last looked up: checked before use. */
 const indexHints = new WeakMap<Body, number>();
 
 /**
- * Writes the points of every joint of the scene's world, at the bodies' drawn (interpolated)
- * poses, into `out` (anchor A x, y, anchor B x, y per joint) and returns how many joints were
- * written. Joints with a hidden body are left out. Reads only `world.joints`,
- * `joint.anchorA` / `anchorB` and the bodies' poses.
+ * Writes the points of every joint of the scene's world, then of every held point (the drag's
+ * line, from the pointer to the held point, as a mouse joint's), at the bodies' drawn
+ * (interpolated) poses, into `out` (anchor A x, y, anchor B x, y per link) and returns how many
+ * were written. Links with a hidden body are left out. Reads only `world.joints`,
+ * `joint.anchorA` / `anchorB`, `scene.held` and the bodies' poses.
  */
 export function jointAnchors(scene: Scene, out: Float64Array): number {
   const world = scene.world;
@@ -42,19 +45,30 @@ export function jointAnchors(scene: Scene, out: Float64Array): number {
     const b = joint.anchorB;
     drawnPoint(scene, joint.bodyB, b.x, b.y, out, k + 2);
   }
+  const held = scene.held ?? NONE;
+  for (let i = 0; i < held.length && 4 * count + 3 < out.length; i++) {
+    const hold = held[i]!;
+    if (!scene.styleOf(hold.body).visible) continue;
+    const k = 4 * count++;
+    out[k] = hold.target.x;
+    out[k + 1] = hold.target.y;
+    hold.body.getWorldPoint(hold.local, point);
+    drawnPoint(scene, hold.body, point.x, point.y, out, k + 2);
+  }
   return count;
 }
 
 /**
- * Draws every joint as a thin line between its anchors with a small dot at each, the dot filled
- * with its body's colour, on a context in world metres.
+ * Draws every joint, and every point held by a pointer, as a thin line between its anchors with
+ * a small dot at each, the dot filled with its body's colour, on a context in world metres.
  */
 export function drawJoints(context: CanvasRenderingContext2D, scene: Scene): void {
   const world = scene.world;
-  if (world === null || world.joints.length === 0) return;
-  if (anchors.length < 4 * world.joints.length) {
-    anchors = new Float64Array(Math.max(4 * world.joints.length, 2 * anchors.length));
-  }
+  const held = scene.held ?? NONE;
+  if (world === null || world.joints.length + held.length === 0) return;
+  const links = world.joints.length + held.length;
+  if (anchors.length < 4 * links)
+    anchors = new Float64Array(Math.max(4 * links, 2 * anchors.length));
   const count = jointAnchors(scene, anchors);
   if (count === 0) return;
   const pixel = 1 / scene.viewport.scale;
@@ -81,6 +95,13 @@ export function drawJoints(context: CanvasRenderingContext2D, scene: Scene): voi
     const k = 4 * drawn++;
     fill = dot(context, joint.bodyA, anchors[k]!, anchors[k + 1]!, radius, fill, scene);
     fill = dot(context, joint.bodyB, anchors[k + 2]!, anchors[k + 3]!, radius, fill, scene);
+  }
+  for (let i = 0; i < held.length && drawn < count; i++) {
+    const body = held[i]!.body;
+    if (!scene.styleOf(body).visible) continue;
+    const k = 4 * drawn++;
+    fill = dot(context, body, anchors[k]!, anchors[k + 1]!, radius, fill, scene);
+    fill = dot(context, body, anchors[k + 2]!, anchors[k + 3]!, radius, fill, scene);
   }
   if (fill !== null) finishDots(context, fill);
 }

@@ -1,7 +1,10 @@
 import { drawBodies, drawLabels, type BodyBatches } from './draw-bodies.ts';
-import { drawJoints } from './draw-joints.ts';
+import type { drawJoints } from './draw-joints.ts';
 import type { OverlaysDrawer } from './draw-overlays.ts';
 import type { Scene } from './scene.ts';
+
+/** Draws the joints and held points (draw-joints.ts, loaded apart: see CanvasRenderer). */
+export type JointsDrawer = typeof drawJoints;
 
 /**
  * Sets the context's transform to world metres for a viewport: device px = (world - origin) *
@@ -17,8 +20,8 @@ export function setWorldTransform(
 }
 
 /**
- * Draws a whole frame: background, bodies, joints, collision arrows and debug overlays (with
- * `overlays`, draw-overlays.ts, loaded apart), then `overlay` (in world metres, for app drawings
+ * Draws a whole frame: background, bodies, joints (with `joints`, draw-joints.ts, loaded apart),
+ * collision arrows and debug overlays (with `overlays`, draw-overlays.ts, loaded apart), then `overlay` (in world metres, for app drawings
  * such as force arrows), then labels. The canvas's backing store must be
  * `viewport.width * devicePixelRatio` by `viewport.height * devicePixelRatio` pixels.
  */
@@ -28,6 +31,7 @@ export function drawScene(
   batches: BodyBatches,
   overlay: ((context: CanvasRenderingContext2D) => void) | null = null,
   overlays: OverlaysDrawer | null = null,
+  joints: JointsDrawer | null = null,
 ): void {
   const canvas = context.canvas;
   context.setTransform(1, 0, 0, 1, 0, 0);
@@ -40,7 +44,7 @@ export function drawScene(
   if (scene.world === null) return;
   setWorldTransform(context, scene);
   drawBodies(context, scene, batches);
-  drawJoints(context, scene);
+  if (joints !== null) joints(context, scene);
   if (overlays !== null) overlays(context, scene);
   if (overlay !== null) {
     context.save();

@@ -1,10 +1,17 @@
-import type { Body } from '@physical/engine';
+import type { Body, Vec2 } from '@physical/engine';
 import type { ResolvedBodyStyle } from './body-style.ts';
 import type { DebugOverlays } from './debug-overlays.ts';
 import type { DrawingSource } from './drawing-source.ts';
 import type { CollisionArrowView } from './draw-collision-arrows.ts';
 import type { Pose } from './pose.ts';
 import type { Viewport } from './viewport.ts';
+
+/** A point of a body held by a pointer: `local` (body frame, m) pulled to `target` (world, m). */
+export interface HeldPoint {
+  readonly body: Body;
+  readonly local: Readonly<Vec2>;
+  readonly target: Readonly<Vec2>;
+}
 
 /**
  * What a frame draws: a read-only view of the world with the poses to draw each body at and its
@@ -30,6 +37,8 @@ export interface Scene {
   readonly forceScale: number;
   /** Seconds of motion a velocity arrow shows (its length is speed times this). */
   readonly velocityScale: number;
+  /** Points held by pointers (the canvas's drag), drawn as joints after the world's. */
+  readonly held?: readonly HeldPoint[];
   /** Whether the display should avoid decorative motion (prefers-reduced-motion). */
   readonly reducedMotion: boolean;
 }

@@ -1,11 +1,11 @@
 import type { Body } from '@physical/engine';
 import { DEFAULT_BACKGROUND } from '../draw/body-style.ts';
 import { BodyBatches } from '../draw/draw-bodies.ts';
-import { drawScene } from '../draw/draw-scene.ts';
+import { drawScene, type JointsDrawer } from '../draw/draw-scene.ts';
 import type { OverlaysDrawer } from '../draw/draw-overlays.ts';
 import type { DrawingSource } from '../draw/drawing-source.ts';
 import type { Pose } from '../draw/pose.ts';
-import type { Scene } from '../draw/scene.ts';
+import type { HeldPoint, Scene } from '../draw/scene.ts';
 import { computeViewport, type Viewport } from '../draw/viewport.ts';
 import type { BodyStyles } from './body-styles.ts';
 import type { CanvasSettings } from './canvas-settings.ts';
@@ -18,6 +18,8 @@ export interface CanvasRendererHost {
   readonly poses: PoseHistory;
   readonly styles: BodyStyles;
   readonly arrows: CollisionArrows;
+  /** The points its drag holds now. */
+  held(): readonly HeldPoint[];
   /** The element's CSS size before the first resize report, or null while detached. */
   measure(): { width: number; height: number } | null;
   /** Asks for a frame: the overlays' code arrived. */
@@ -44,6 +46,9 @@ export class CanvasRenderer {
   /** The collision arrows and debug overlays (draw-overlays.ts), once loaded; see draw. */
   private overlays: OverlaysDrawer | null = null;
   private overlaysLoading = false;
+  /** The joints' drawing (draw-joints.ts), once loaded; see draw. */
+  private joints: JointsDrawer | null = null;
+  private jointsLoading = false;
 
   constructor(host: CanvasRendererHost, context: CanvasRenderingContext2D | null) {
     this.host = host;
@@ -72,6 +77,7 @@ export class CanvasRenderer {
       background: DEFAULT_BACKGROUND,
       debug: settings.debug,
       collisionArrows: arrows.arrows,
+      held: host.held(),
       forceScale: settings.forceScale,
       velocityScale: settings.velocityScale,
       reducedMotion: false,
@@ -120,8 +126,12 @@ export class CanvasRenderer {
     scene.forceScale = settings.forceScale;
     scene.velocityScale = settings.velocityScale;
     scene.reducedMotion = this.reducedMotion;
+    scene.held = this.host.held();
     if (this.overlays === null && wantsOverlays(scene)) this.loadOverlays();
-    drawScene(context, scene, this.batches, overlay, this.overlays);
+    if (this.joints === null && world !== null && world.joints.length + scene.held!.length > 0) {
+      this.loadJoints();
+    }
+    drawScene(context, scene, this.batches, overlay, this.overlays, this.joints);
   }
 
   /**
@@ -133,6 +143,19 @@ export class CanvasRenderer {
     this.overlaysLoading = true;
     void import('../draw/draw-overlays.ts').then(({ drawOverlays }) => {
       this.overlays = drawOverlays;
+      this.host.redraw();
+    });
+  }
+
+  /**
+   * Loads the joints' drawing the first time a frame has joints (or a held body), then draws
+   * again, as the overlays: pages whose worlds have no joints and are never dragged never load it.
+   */
+  private loadJoints(): void {
+    if (this.jointsLoading) return;
+    this.jointsLoading = true;
+    void import('../draw/draw-joints.ts').then(({ drawJoints }) => {
+      this.joints = drawJoints;
       this.host.redraw();
     });
   }

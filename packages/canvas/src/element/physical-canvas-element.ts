@@ -1,5 +1,6 @@
 import type { Body, Vec2, Vec2Like, World } from '@physical/engine';
 import type { BodyStyle } from '../draw/body-style.ts';
+import type { HeldPoint } from '../draw/scene.ts';
 import { MAX_REMOTE_STEPS_IN_FLIGHT, type DrawingSource } from '../draw/drawing-source.ts';
 import type { DebugOverlays } from '../draw/debug-overlays.ts';
 import {
@@ -22,7 +23,7 @@ import {
   parsePositiveInteger,
   parseViewBox,
 } from './attribute-parsers.ts';
-import { BodyDrag } from './body-drag.ts';
+import type { BodyDrag } from './body-drag.ts';
 import { BodyStyles, type StyleResolver } from './body-styles.ts';
 import { emit, type PhysicalCanvasEventMap } from './canvas-events.ts';
 import { CanvasRenderer } from './canvas-renderer.ts';
@@ -40,6 +41,8 @@ export type OverlayDrawer = (
   context: CanvasRenderingContext2D,
   canvas: PhysicalCanvasElement,
 ) => void;
+
+const NOT_HOLDING: readonly HeldPoint[] = [];
 
 /** Properties an app may set before the element is defined; re-applied on upgrade. */
 const UPGRADED_PROPERTIES = [
@@ -91,7 +94,7 @@ export class PhysicalCanvasElement extends ElementBase {
   static readonly observedAttributes: readonly string[] = SETTING_ATTRIBUTES;
 
   private worldValue: DrawingSource | null = null;
-  /** Pointers whose drag went to the remote source (the others hold a local mouse joint). */
+  /** Pointers whose drag went to the remote source (the others are held by {@link drags}). */
   private readonly remoteDrags = new Set<number>();
   private drawOverlayValue: OverlayDrawer | null = null;
   private schedulerValue: FrameScheduler | null = null;
@@ -108,10 +111,22 @@ export class PhysicalCanvasElement extends ElementBase {
   private readonly poses = new PoseHistory();
   private readonly styles = new BodyStyles();
   private readonly arrows = new CollisionArrows();
-  private readonly drags = new BodyDrag();
+  /**
+   * The local drag (body-drag.ts), loaded apart when a press first lands on a body of a local
+   * world: pages that never drag (and a worker world's, whose worker drags) never load it.
+   */
+  private drags: BodyDrag | null = null;
+  private dragLoading = false;
+  /** Drags begun before its code arrived (pointer id: world, body, x, y, toX, toY); see loadDrag. */
+  private readonly waitingDrags = new Map<number, [World, Body, number, number, number, number]>();
   private readonly input = new PointerInput({
     clientToWorld: (x, y) => this.clientToWorld(x, y),
-    bodyAt: (point) => this.worldValue?.bodyAt(point) ?? null,
+    bodyAt: (point) => {
+      const body = this.worldValue?.bodyAt(point) ?? null;
+      // A press on a body may become a drag once it moves: fetch the drag's code now.
+      if (body !== null && this.worldValue!.remote === undefined) this.loadDrag();
+      return body;
+    },
     emit: (type, detail) => emit(this, type, detail),
     wake: () => this.invalidate(),
     dragStart: (pointerId, body, x, y, toX, toY) => {
@@ -122,17 +137,28 @@ export class PhysicalCanvasElement extends ElementBase {
         this.remoteDrags.add(pointerId);
         return true;
       }
-      // A source without `remote` steps its bodies itself: a World, which takes mouse joints.
-      return this.drags.start(world as World, pointerId, body, x, y, toX, toY);
+      // A source without `remote` is a World, stepped here: the drag pulls before each step.
+      if (this.drags !== null)
+        return this.drags.start(world as World, pointerId, body, x, y, toX, toY);
+      if (body.type !== 'dynamic' || !(world as World).has(body)) return false;
+      this.waitingDrags.set(pointerId, [world as World, body, x, y, toX, toY]);
+      this.loadDrag();
+      return true;
     },
     dragMove: (pointerId, x, y) => {
       if (this.remoteDrags.has(pointerId)) this.worldValue?.remote?.moveGrab(pointerId, x, y);
-      else this.drags.move(pointerId, x, y);
+      else {
+        const waiting = this.waitingDrags.get(pointerId);
+        if (waiting !== undefined) {
+          waiting[4] = x;
+          waiting[5] = y;
+        } else this.drags?.move(pointerId, x, y);
+      }
     },
     dragEnd: (pointerId, vx, vy, isThrow) => {
       if (this.remoteDrags.delete(pointerId)) {
         this.worldValue?.remote?.releaseGrab(pointerId, vx, vy, isThrow);
-      } else this.drags.end(pointerId, vx, vy, isThrow);
+      } else if (!this.waitingDrags.delete(pointerId)) this.drags?.end(pointerId, vx, vy, isThrow);
     },
   });
   private readonly renderer: CanvasRenderer;
@@ -166,6 +192,7 @@ export class PhysicalCanvasElement extends ElementBase {
         poses: this.poses,
         styles: this.styles,
         arrows: this.arrows,
+        held: () => this.drags?.held ?? NOT_HOLDING,
         measure: () =>
           this.isConnectedValue ? { width: this.clientWidth, height: this.clientHeight } : null,
         redraw: () => this.invalidate(),
@@ -199,7 +226,7 @@ export class PhysicalCanvasElement extends ElementBase {
     }
     if (value === this.worldValue) return;
     this.releaseRemoteDrags();
-    this.drags.clear();
+    this.releaseLocalDrags();
     this.unsubscribe();
     this.worldValue = value;
     this.poses.clear();
@@ -347,7 +374,8 @@ export class PhysicalCanvasElement extends ElementBase {
 
   /**
    * Pointers drag dynamic bodies (attribute `drag`; `drag="off"` turns it off): press on a body
-   * and move, and the engine's mouse joint pulls the pressed point after the pointer; letting go
+   * and move, and a soft spring (the engine's mouse joint's tuning) pulls the pressed point after
+   * the pointer before each step the element runs; letting go
    * throws the body with the pointer's velocity. Mouse, touch and pen; several fingers drag
    * several bodies. Default on. While on, the canvas takes touch gestures (`touch-action: none`),
    * so a page does not scroll by a swipe over it.
@@ -435,7 +463,7 @@ export class PhysicalCanvasElement extends ElementBase {
    * at once: a "next step" button for a paused element (`canvas.paused = true`, then
    * `canvas.step()` per press), in place of `world.step()` followed by {@link invalidate}. Goes
    * through the element, so what a running element does per step happens too: collision arrows
-   * are recorded, a drag's mouse joint pulls, {@link stepCount} counts it. With a `WorkerWorld`
+   * are recorded, a drag pulls, {@link stepCount} counts it. With a `WorkerWorld`
    * the step is posted and its poses are drawn when they arrive. Also works while running (one
    * step more than the clock gives). Without a world it throws a `CanvasSettingError` naming
    * `world`.
@@ -549,7 +577,7 @@ export class PhysicalCanvasElement extends ElementBase {
     this.unsubscribe();
     this.input.detach();
     this.releaseRemoteDrags();
-    this.drags.clear();
+    this.releaseLocalDrags();
     for (const undo of this.teardown) undo();
     this.teardown = [];
   }
@@ -574,7 +602,11 @@ export class PhysicalCanvasElement extends ElementBase {
     const world = this.worldValue;
     if (world === null) return;
     // A remote source keeps its own last two states (see DrawingSource.remote).
-    if (world.remote === undefined) this.poses.snapshot(world.bodies);
+    if (world.remote === undefined) {
+      this.poses.snapshot(world.bodies);
+      // Held bodies are pulled to their pointers before the step (see BodyDrag).
+      this.drags?.pull(dt);
+    }
     this.stepDuration = dt;
     world.step(dt);
   }
@@ -620,7 +652,7 @@ export class PhysicalCanvasElement extends ElementBase {
     this.arrows.duration = settings.collisionArrowDuration;
     if (name === 'drag' && !settings.drag) {
       this.releaseRemoteDrags();
-      this.drags.clear();
+      this.releaseLocalDrags();
     }
     if (name === 'collision-arrows') {
       // Listen to collisions only while arrows are on: the events cost the engine time.
@@ -641,6 +673,25 @@ export class PhysicalCanvasElement extends ElementBase {
     const value = (this as Record<string, unknown>)[name];
     Reflect.deleteProperty(this, name);
     (this as Record<string, unknown>)[name] = value;
+  }
+
+  /** Lets go of the drags held here, without throwing. */
+  private releaseLocalDrags(): void {
+    this.drags?.clear();
+    this.waitingDrags.clear();
+  }
+
+  /** Loads the drag's code once; drags begun meanwhile start when it arrives. */
+  private loadDrag(): void {
+    if (this.dragLoading) return;
+    this.dragLoading = true;
+    void import('./body-drag.ts').then(({ BodyDrag }) => {
+      const drags = (this.drags = new BodyDrag());
+      for (const [pointerId, [world, body, x, y, toX, toY]] of this.waitingDrags) {
+        if (world === this.worldValue) drags.start(world, pointerId, body, x, y, toX, toY);
+      }
+      this.waitingDrags.clear();
+    });
   }
 
   /** Lets go of drags held by a remote source, without throwing. */

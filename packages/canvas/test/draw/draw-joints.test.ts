@@ -103,6 +103,22 @@ describe('joint drawing reads world.joints and the drawn poses', () => {
     expect([...out]).toEqual([3, 4, 0.2, 0]);
   });
 
+  it("draws a held point (the canvas's drag) after the joints, from the pointer to the point", () => {
+    const { world, bar } = hingedBar();
+    // The bar's point 0.5 m right of its centre, drawn shifted 1 m right, pulled to (3, 4).
+    const held = [{ body: bar, local: { x: 0.5, y: 0 }, target: { x: 3, y: 4 } }];
+    const drawn = sceneOf(world, (body, pose) => {
+      pose.x = body.position.x + (body === bar ? 1 : 0);
+      pose.y = body.position.y;
+      pose.angle = body.angle;
+      return pose;
+    });
+    const out = new Float64Array(12);
+    expect(jointAnchors({ ...drawn, held }, out)).toBe(3);
+    expect([...out.subarray(8)]).toEqual([3, 4, 2.5, 0]);
+    expect(jointAnchors({ ...sceneOf(world, undefined, bar), held }, out)).toBe(0);
+  });
+
   it('leaves out a joint whose body is hidden', () => {
     const { world, bar } = hingedBar();
     expect(jointAnchors(sceneOf(world, undefined, bar), new Float64Array(8))).toBe(0);
