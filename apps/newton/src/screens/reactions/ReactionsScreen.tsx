@@ -2,7 +2,6 @@ import {
   Box,
   Button,
   FormControlLabel,
-  IconButton,
   MenuItem,
   Switch,
   Tab,
@@ -10,7 +9,6 @@ import {
   TextField,
   ToggleButton,
   ToggleButtonGroup,
-  Tooltip,
   Typography,
 } from '@mui/material';
 import {
@@ -67,6 +65,7 @@ import { CollisionRecorder, totalMomentumOf, type CollisionRecord } from './coll
 import { drawReactionArrows } from './draw-reaction-arrows.ts';
 import { LabResults } from './LabResults.tsx';
 import { LabelSprites } from './label-sprites.ts';
+import { IconButton as UiIconButton } from '../../ui/IconButton.tsx';
 import { ParticleColumns } from './particle-columns.ts';
 import { LabSetup, type LabField, type LabRow } from './LabSetup.tsx';
 import {
@@ -1004,35 +1003,36 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                   {/* The readouts keep their text's width and go below the pad when it lacks room. */}
                   <Box sx={{ display: 'flex', flexWrap: 'wrap', alignItems: 'center', gap: 1 }}>
                     <Box sx={{ display: 'flex', flexDirection: 'column', gap: 0.5 }}>
-                      <Tooltip title={t('reactions.add')}>
-                        <IconButton
-                          aria-label={t('reactions.add')}
-                          onClick={addAnywhere}
-                          data-action="add"
-                          color="primary"
-                          sx={{ width: 48, height: 48 }}
-                        >
-                          <AddIcon />
-                        </IconButton>
-                      </Tooltip>
-                      <Tooltip title={t('reactions.clear')}>
-                        <IconButton
-                          aria-label={t('reactions.clear')}
-                          onClick={() => {
-                            if (scene === null) return;
-                            setSelected(null);
-                            clearParticles(scene);
-                            worldChanged();
-                            choosePair([], scene);
-                            arrows.clear();
-                            rerender();
-                          }}
-                          data-action="clear"
-                          sx={{ width: 48, height: 48 }}
-                        >
-                          <DeleteIcon />
-                        </IconButton>
-                      </Tooltip>
+                      {/*
+                        Plain buttons (src/ui), not MUI's: a button focused from the keyboard ran
+                        MUI's focus ripple, an endless animation that restyled the page in every
+                        frame of the tray.
+                      */}
+                      <UiIconButton
+                        aria-label={t('reactions.add')}
+                        tip={t('reactions.add')}
+                        onClick={addAnywhere}
+                        data-action="add"
+                        color="primary"
+                      >
+                        <AddIcon />
+                      </UiIconButton>
+                      <UiIconButton
+                        aria-label={t('reactions.clear')}
+                        tip={t('reactions.clear')}
+                        onClick={() => {
+                          if (scene === null) return;
+                          setSelected(null);
+                          clearParticles(scene);
+                          worldChanged();
+                          choosePair([], scene);
+                          arrows.clear();
+                          rerender();
+                        }}
+                        data-action="clear"
+                      >
+                        <DeleteIcon />
+                      </UiIconButton>
                     </Box>
                     <TiltPad
                       onNudge={(dx, dy) => {
