@@ -52,146 +52,142 @@ export const PRIMARY = [
   '[data-nav]',
 ];
 
-/** CSS px a navigation label keeps from its button's top and bottom edges. */
-export const NAV_MARGIN = 2;
-
 /** What is wrong with the fit of the page as it stands (empty when it fits). */
 export async function fitProblems(page: Page): Promise<string[]> {
-  return page.evaluate(
-    ([primary, navMargin]) => {
-      const problems: string[] = [];
-      const root = document.documentElement;
-      const width = window.innerWidth;
-      const height = window.innerHeight;
-      if (root.scrollWidth !== width || root.scrollHeight !== height) {
+  return page.evaluate((primary) => {
+    /** CSS px a navigation label keeps from its button's top and bottom edges. */
+    const navMargin = 2;
+    const problems: string[] = [];
+    const root = document.documentElement;
+    const width = window.innerWidth;
+    const height = window.innerHeight;
+    if (root.scrollWidth !== width || root.scrollHeight !== height) {
+      problems.push(
+        `the document is ${root.scrollWidth}x${root.scrollHeight} in a ${width}x${height} viewport`,
+      );
+    }
+    const describe = (element: Element | null): string => {
+      if (element === null) return 'nothing';
+      const label =
+        element.getAttribute('aria-label') ??
+        element.getAttribute('data-action') ??
+        element.getAttribute('data-nav') ??
+        element.getAttribute('data-readout') ??
+        (element.textContent ?? '').trim().slice(0, 30);
+      return `<${element.tagName.toLowerCase()} class="${String(element.className).slice(0, 40)}"> "${label}"`;
+    };
+    const shown = (element: Element): boolean => {
+      const rect = element.getBoundingClientRect();
+      if (rect.width === 0 && rect.height === 0) return false;
+      for (let node: Element | null = element; node !== null; node = node.parentElement) {
+        const style = getComputedStyle(node);
+        if (style.display === 'none' || style.visibility === 'hidden' || style.opacity === '0') {
+          // A switch's native input is transparent on purpose, over the switch one sees.
+          if (node === element && element instanceof HTMLInputElement) continue;
+          return false;
+        }
+      }
+      return true;
+    };
+    const selector =
+      'button, a[href], input:not([type="hidden"]), select, textarea, [role="button"], ' +
+      '[role="slider"], [role="switch"], [role="tab"], [role="checkbox"], [role="radio"]';
+    for (const control of document.querySelectorAll(selector)) {
+      if (!shown(control)) continue;
+      // MUI hides a slider's native input (clipped to nothing) inside the thumb one sees and drags.
+      let target: Element = control;
+      let rect = target.getBoundingClientRect();
+      const hidden = getComputedStyle(target).clip.startsWith('rect');
+      if ((hidden || rect.width <= 2 || rect.height <= 2) && target.parentElement !== null) {
+        target = target.parentElement;
+        rect = target.getBoundingClientRect();
+      }
+      const x = rect.left + rect.width / 2;
+      const y = rect.top + rect.height / 2;
+      const name = describe(control);
+      // Scrolled out of a panel that scrolls is not shown until scrolled to; clipped by a box
+      // that does not scroll, or by the window, it cannot be reached at all.
+      let away = false;
+      for (let node = target.parentElement; node !== null; node = node.parentElement) {
+        const style = getComputedStyle(node);
+        if (style.overflowX === 'visible' && style.overflowY === 'visible') continue;
+        const box = node.getBoundingClientRect();
+        if (x >= box.left && x <= box.right && y >= box.top && y <= box.bottom) continue;
+        if (/auto|scroll/.test(style.overflowY + style.overflowX) && node !== root) away = true;
+        else problems.push(`${name} is clipped by ${describe(node)}`);
+        break;
+      }
+      if (away) {
+        if (primary.some((css) => control.matches(css))) {
+          problems.push(`${name} is hidden until its panel is scrolled`);
+        }
+        continue;
+      }
+      if (x < 0 || y < 0 || x >= width || y >= height) {
+        problems.push(`${name} is off screen (centre ${Math.round(x)}, ${Math.round(y)})`);
+        continue;
+      }
+      const hit = document.elementFromPoint(x, y);
+      // A disabled button lets taps through (pointer-events: none) to what holds it.
+      const through = getComputedStyle(target).pointerEvents === 'none';
+      // MUI draws a native input's visible part around it (a slider's thumb holds its input).
+      const drawnAround = target instanceof HTMLInputElement && hit === target.parentElement;
+      const reached =
+        hit !== null &&
+        (hit === target ||
+          target.contains(hit) ||
+          drawnAround ||
+          (through && hit.contains(target)));
+      if (!reached) {
         problems.push(
-          `the document is ${root.scrollWidth}x${root.scrollHeight} in a ${width}x${height} viewport`,
+          `${name} is covered by ${describe(hit)} at (${Math.round(x)}, ${Math.round(y)})`,
         );
       }
-      const describe = (element: Element | null): string => {
-        if (element === null) return 'nothing';
-        const label =
-          element.getAttribute('aria-label') ??
-          element.getAttribute('data-action') ??
-          element.getAttribute('data-nav') ??
-          element.getAttribute('data-readout') ??
-          (element.textContent ?? '').trim().slice(0, 30);
-        return `<${element.tagName.toLowerCase()} class="${String(element.className).slice(0, 40)}"> "${label}"`;
-      };
-      const shown = (element: Element): boolean => {
-        const rect = element.getBoundingClientRect();
-        if (rect.width === 0 && rect.height === 0) return false;
-        for (let node: Element | null = element; node !== null; node = node.parentElement) {
-          const style = getComputedStyle(node);
-          if (style.display === 'none' || style.visibility === 'hidden' || style.opacity === '0') {
-            // A switch's native input is transparent on purpose, over the switch one sees.
-            if (node === element && element instanceof HTMLInputElement) continue;
-            return false;
-          }
-        }
-        return true;
-      };
-      const selector =
-        'button, a[href], input:not([type="hidden"]), select, textarea, [role="button"], ' +
-        '[role="slider"], [role="switch"], [role="tab"], [role="checkbox"], [role="radio"]';
-      for (const control of document.querySelectorAll(selector)) {
-        if (!shown(control)) continue;
-        // MUI hides a slider's native input (clipped to nothing) inside the thumb one sees and drags.
-        let target: Element = control;
-        let rect = target.getBoundingClientRect();
-        const hidden = getComputedStyle(target).clip.startsWith('rect');
-        if ((hidden || rect.width <= 2 || rect.height <= 2) && target.parentElement !== null) {
-          target = target.parentElement;
-          rect = target.getBoundingClientRect();
-        }
-        const x = rect.left + rect.width / 2;
-        const y = rect.top + rect.height / 2;
-        const name = describe(control);
-        // Scrolled out of a panel that scrolls is not shown until scrolled to; clipped by a box
-        // that does not scroll, or by the window, it cannot be reached at all.
-        let away = false;
-        for (let node = target.parentElement; node !== null; node = node.parentElement) {
-          const style = getComputedStyle(node);
-          if (style.overflowX === 'visible' && style.overflowY === 'visible') continue;
-          const box = node.getBoundingClientRect();
-          if (x >= box.left && x <= box.right && y >= box.top && y <= box.bottom) continue;
-          if (/auto|scroll/.test(style.overflowY + style.overflowX) && node !== root) away = true;
-          else problems.push(`${name} is clipped by ${describe(node)}`);
-          break;
-        }
-        if (away) {
-          if (primary.some((css) => control.matches(css))) {
-            problems.push(`${name} is hidden until its panel is scrolled`);
-          }
-          continue;
-        }
-        if (x < 0 || y < 0 || x >= width || y >= height) {
-          problems.push(`${name} is off screen (centre ${Math.round(x)}, ${Math.round(y)})`);
-          continue;
-        }
-        const hit = document.elementFromPoint(x, y);
-        // A disabled button lets taps through (pointer-events: none) to what holds it.
-        const through = getComputedStyle(target).pointerEvents === 'none';
-        // MUI draws a native input's visible part around it (a slider's thumb holds its input).
-        const drawnAround = target instanceof HTMLInputElement && hit === target.parentElement;
-        const reached =
-          hit !== null &&
-          (hit === target ||
-            target.contains(hit) ||
-            drawnAround ||
-            (through && hit.contains(target)));
-        if (!reached) {
+    }
+    // A rail, bottom bar or tab label is whole: not cut with an ellipsis (its text wider than its
+    // box) nor running past its button ("Wechselwirkung" in a 72 px rail in landscape).
+    for (const control of document.querySelectorAll('[data-nav], [role="tab"]')) {
+      if (!shown(control)) continue;
+      const box = control.getBoundingClientRect();
+      for (const part of control.querySelectorAll('*')) {
+        const text = [...part.childNodes]
+          .filter((node) => node.nodeType === Node.TEXT_NODE)
+          .map((node) => node.textContent ?? '')
+          .join('')
+          .trim();
+        if (text === '' || !shown(part)) continue;
+        const rect = part.getBoundingClientRect();
+        if (part.clientWidth > 0 && part.scrollWidth > part.clientWidth) {
           problems.push(
-            `${name} is covered by ${describe(hit)} at (${Math.round(x)}, ${Math.round(y)})`,
+            `the label "${text}" of ${describe(control)} is cut (${part.scrollWidth} > ${part.clientWidth} px)`,
+          );
+        } else if (rect.left < box.left - 0.5 || rect.right > box.right + 0.5) {
+          problems.push(
+            `the label "${text}" of ${describe(control)} runs past it (${Math.round(rect.width)} px in ${Math.round(box.width)} px)`,
+          );
+        } else if (
+          control.hasAttribute('data-nav') &&
+          (rect.top < box.top + navMargin || rect.bottom > box.bottom - navMargin)
+        ) {
+          // A label that wraps to a second line must still sit inside its button, clear of the
+          // screen's bottom edge ("Wechsel-wirkung" at 320x568 ran 4 px past it).
+          problems.push(
+            `the label "${text}" of ${describe(control)} is not inside it with ${navMargin} px to spare (${Math.round(rect.top)} to ${Math.round(rect.bottom)} px in ${Math.round(box.top)} to ${Math.round(box.bottom)} px)`,
           );
         }
       }
-      // A rail, bottom bar or tab label is whole: not cut with an ellipsis (its text wider than its
-      // box) nor running past its button ("Wechselwirkung" in a 72 px rail in landscape).
-      for (const control of document.querySelectorAll('[data-nav], [role="tab"]')) {
-        if (!shown(control)) continue;
-        const box = control.getBoundingClientRect();
-        for (const part of control.querySelectorAll('*')) {
-          const text = [...part.childNodes]
-            .filter((node) => node.nodeType === Node.TEXT_NODE)
-            .map((node) => node.textContent ?? '')
-            .join('')
-            .trim();
-          if (text === '' || !shown(part)) continue;
-          const rect = part.getBoundingClientRect();
-          if (part.clientWidth > 0 && part.scrollWidth > part.clientWidth) {
-            problems.push(
-              `the label "${text}" of ${describe(control)} is cut (${part.scrollWidth} > ${part.clientWidth} px)`,
-            );
-          } else if (rect.left < box.left - 0.5 || rect.right > box.right + 0.5) {
-            problems.push(
-              `the label "${text}" of ${describe(control)} runs past it (${Math.round(rect.width)} px in ${Math.round(box.width)} px)`,
-            );
-          } else if (
-            control.hasAttribute('data-nav') &&
-            (rect.top < box.top + navMargin || rect.bottom > box.bottom - navMargin)
-          ) {
-            // A label that wraps to a second line must still sit inside its button, clear of the
-            // screen's bottom edge ("Wechsel-wirkung" at 320x568 ran 4 px past it).
-            problems.push(
-              `the label "${text}" of ${describe(control)} is not inside it with ${navMargin} px to spare (${Math.round(rect.top)} to ${Math.round(rect.bottom)} px in ${Math.round(box.top)} to ${Math.round(box.bottom)} px)`,
-            );
-          }
-        }
+    }
+    // A readout's text stays in its box: none runs under a button or off the screen.
+    for (const value of document.querySelectorAll('[data-readout]')) {
+      if (!shown(value)) continue;
+      if (value.scrollWidth > value.clientWidth + 1 && value.clientWidth > 0) {
+        problems.push(
+          `${describe(value)} overflows its box (${value.scrollWidth} > ${value.clientWidth} px)`,
+        );
       }
-      // A readout's text stays in its box: none runs under a button or off the screen.
-      for (const value of document.querySelectorAll('[data-readout]')) {
-        if (!shown(value)) continue;
-        if (value.scrollWidth > value.clientWidth + 1 && value.clientWidth > 0) {
-          problems.push(
-            `${describe(value)} overflows its box (${value.scrollWidth} > ${value.clientWidth} px)`,
-          );
-        }
-      }
-      return problems;
-    },
-    [PRIMARY, NAV_MARGIN] as const,
-  );
+    }
+    return problems;
+  }, PRIMARY);
 }
 
 /** Shows a screen through the navigation, and waits for it. */
