@@ -85,9 +85,9 @@ function firstScreenPreload(): Plugin {
     apply: 'build',
     transformIndexHtml: {
       order: 'post',
-      handler(_html, context) {
+      handler(html, context) {
         const bundle = context.bundle as OutputBundle | undefined;
-        if (bundle === undefined) return [];
+        if (bundle === undefined) return html;
         const chunks = Object.values(bundle).filter(
           (item): item is OutputChunk => item.type === 'chunk',
         );
@@ -111,7 +111,14 @@ function firstScreenPreload(): Plugin {
           `var id=location.hash.replace(/^#/,'').split('?')[0];` +
           `(f[id]||f.inertia||[]).forEach(function(h){var l=document.createElement('link');` +
           `l.rel='modulepreload';l.crossOrigin='';l.href=h;document.head.appendChild(l);});})();`;
-        return [{ tag: 'script', children: script, injectTo: 'head' }];
+        // Before the stylesheet and the entry: an inline script after a stylesheet waits for
+        // it to arrive (scripts may read styles), and on Slow 4G that held the screen's chunks
+        // back by most of a second (requested at 1.8 s, with the entry at 0.95 s).
+        const tag = `<script>${script}</script>\n    `;
+        const at = html.search(/<script type="module"|<link rel="stylesheet"/);
+        return at < 0
+          ? html.replace('</head>', `${tag}</head>`)
+          : html.slice(0, at) + tag + html.slice(at);
       },
     },
   };

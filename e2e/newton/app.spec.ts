@@ -160,3 +160,35 @@ test('newton: keyboard only, and a navigation rail on a wide screen', async ({ b
     await closeApp(app);
   }
 });
+
+test('newton: the first screen is requested with the entry (its preload script comes before the stylesheet)', async ({
+  browser,
+}) => {
+  const app = await openApp(browser, '#inertia');
+  try {
+    const { page } = app;
+    // The page as served, and the requests it made: the script that preloads the first screen's
+    // chunks runs before the parser meets a stylesheet (a script after one waits for it).
+    const html = await (await page.request.get(`${app.server.url}/index.html`)).text();
+    const preload = html.indexOf('modulepreload');
+    const stylesheet = html.indexOf('rel="stylesheet"');
+    const entry = html.indexOf('<script type="module"');
+    assert.ok(preload > 0, 'the page preloads the first screen');
+    assert.ok(stylesheet > 0 && entry > 0, 'the page has its stylesheet and entry');
+    assert.ok(
+      preload < stylesheet && preload < entry,
+      `the preload script (at ${preload}) comes before the stylesheet (${stylesheet}) and the entry (${entry})`,
+    );
+    const preloaded = await page.evaluate(() =>
+      [...document.querySelectorAll<HTMLLinkElement>('link[rel="modulepreload"]')].map((link) =>
+        link.href.split('/').pop(),
+      ),
+    );
+    assert.ok(
+      preloaded.some((name) => /^InertiaScreen-/.test(name ?? '')),
+      `Inertia's chunk is preloaded (${preloaded.join(', ')})`,
+    );
+  } finally {
+    await closeApp(app);
+  }
+});

@@ -4,11 +4,14 @@ import { closeApp, openApp } from './phone.ts';
 import {
   PHONES,
   SCREENS,
+  RECORD_CANVAS_TEXT,
   TILT_PERMISSION,
   chooseLocale,
   fitProblems,
   phoneOptions,
   showScreen,
+  trackTexts,
+  type CanvasText,
 } from './fit.ts';
 
 const sleep = (ms: number): Promise<void> => new Promise((resolve) => setTimeout(resolve, ms));
@@ -76,3 +79,63 @@ test('newton: fit (375x667), a tap leaves no tooltip on the screen', async ({ br
     await closeApp(app);
   }
 });
+
+// A small phone leaves each Forces track a short canvas: the force label ("F = ΣF = 2 N") the
+// square carries must not be drawn over the ruler's numbers ("2 m", "4 m"...) as it passes them.
+for (const [width, height] of [
+  [320, 568],
+  [360, 640],
+] as const) {
+  test(`newton: fit, ${width}x${height}: a Forces track's force label never covers the ruler's numbers`, async ({
+    browser,
+  }) => {
+    const app = await openApp(
+      browser,
+      '#forces',
+      phoneOptions(width, height, false),
+      'static',
+      RECORD_CANVAS_TEXT,
+    );
+    try {
+      const { page } = app;
+      for (const locale of ['en', 'de'] as const) {
+        await chooseLocale(page, locale);
+        await page.locator('[data-action="reset"]:visible').first().click();
+        await page.locator('#forces [data-action="start"]').click();
+        const overlaps: string[] = [];
+        let numbers = 0;
+        let labels = 0;
+        // The squares pass the 2, 4 and 6 m marks within the samples (x = F t² / 2m).
+        for (let sample = 0; sample < 25; sample++) {
+          await sleep(100);
+          for (const [track, texts] of Object.entries(await trackTexts(page))) {
+            const ruler = texts.filter((text) => /^\d+ m$/.test(text.text));
+            // Neither a ruler number nor the track's name on its square: the force label.
+            const forceLabels = texts.filter(
+              (text) => !/^\d+ m$/.test(text.text) && text.text !== track,
+            );
+            numbers += ruler.length;
+            labels += forceLabels.length;
+            for (const label of forceLabels) {
+              for (const number of ruler) {
+                if (intersects(label, number)) {
+                  overlaps.push(`${locale} ${track}: "${label.text}" covers "${number.text}"`);
+                }
+              }
+            }
+          }
+        }
+        assert.ok(labels > 0, `${locale}: the tracks draw their force labels`);
+        assert.ok(numbers > 0, `${locale}: the tracks draw their ruler's numbers`);
+        assert.deepEqual([...new Set(overlaps)], [], `at ${width}x${height}`);
+      }
+    } finally {
+      await closeApp(app);
+    }
+  });
+}
+
+/** True when two text boxes share any pixel. */
+function intersects(a: CanvasText, b: CanvasText): boolean {
+  return a.left < b.right && b.left < a.right && a.top < b.bottom && b.top < a.bottom;
+}

@@ -55,6 +55,8 @@ export const PRIMARY = [
 /** What is wrong with the fit of the page as it stands (empty when it fits). */
 export async function fitProblems(page: Page): Promise<string[]> {
   return page.evaluate((primary) => {
+    /** CSS px a navigation label keeps from its button's top and bottom edges. */
+    const navMargin = 2;
     const problems: string[] = [];
     const root = document.documentElement;
     const width = window.innerWidth;
@@ -163,6 +165,15 @@ export async function fitProblems(page: Page): Promise<string[]> {
           problems.push(
             `the label "${text}" of ${describe(control)} runs past it (${Math.round(rect.width)} px in ${Math.round(box.width)} px)`,
           );
+        } else if (
+          control.hasAttribute('data-nav') &&
+          (rect.top < box.top + navMargin || rect.bottom > box.bottom - navMargin)
+        ) {
+          // A label that wraps to a second line must still sit inside its button, clear of the
+          // screen's bottom edge ("Wechsel-wirkung" at 320x568 ran 4 px past it).
+          problems.push(
+            `the label "${text}" of ${describe(control)} is not inside it with ${navMargin} px to spare (${Math.round(rect.top)} to ${Math.round(rect.bottom)} px in ${Math.round(box.top)} to ${Math.round(box.bottom)} px)`,
+          );
         }
       }
     }
@@ -189,4 +200,56 @@ export async function showScreen(page: Page, screen: string): Promise<void> {
 export async function chooseLocale(page: Page, locale: 'en' | 'de'): Promise<void> {
   await page.locator(`[data-locale="${locale}"]`).click();
   await page.waitForFunction((lang) => document.documentElement.lang === lang, locale);
+}
+
+/**
+ * Records the boxes of the text each canvas draws in its latest frame (`canvas.__texts`, in the
+ * canvas's device pixels): run before the page's scripts. A frame starts with a clear of the whole
+ * canvas (physical-canvas's drawScene), which starts a new list.
+ */
+export const RECORD_CANVAS_TEXT = `
+  (() => {
+    const proto = CanvasRenderingContext2D.prototype;
+    const clearRect = proto.clearRect;
+    proto.clearRect = function (x, y, w, h) {
+      if (x === 0 && y === 0 && w >= this.canvas.width && h >= this.canvas.height) this.canvas.__texts = [];
+      return clearRect.call(this, x, y, w, h);
+    };
+    const fillText = proto.fillText;
+    proto.fillText = function (text, x, y, maxWidth) {
+      const m = this.measureText(text);
+      const t = this.getTransform();
+      const list = this.canvas.__texts ?? (this.canvas.__texts = []);
+      list.push({
+        text: String(text),
+        left: t.a * (x - m.actualBoundingBoxLeft) + t.e,
+        right: t.a * (x + m.actualBoundingBoxRight) + t.e,
+        top: t.d * (y - m.actualBoundingBoxAscent) + t.f,
+        bottom: t.d * (y + m.actualBoundingBoxDescent) + t.f,
+      });
+      return fillText.call(this, text, x, y, maxWidth);
+    };
+  })();
+`;
+
+/** A text box a canvas drew (see {@link RECORD_CANVAS_TEXT}), in its device pixels. */
+export interface CanvasText {
+  readonly text: string;
+  readonly left: number;
+  readonly right: number;
+  readonly top: number;
+  readonly bottom: number;
+}
+
+/** The text boxes each Forces track's canvas drew in its latest frame, by track name. */
+export async function trackTexts(page: Page): Promise<Record<string, CanvasText[]>> {
+  return page.evaluate(() => {
+    const result: Record<string, CanvasText[]> = {};
+    for (const track of document.querySelectorAll('#forces [data-track]')) {
+      const canvas = track.querySelector('physical-canvas')?.shadowRoot?.querySelector('canvas') as
+        (HTMLCanvasElement & { __texts?: CanvasText[] }) | null | undefined;
+      result[track.getAttribute('data-track')!] = [...(canvas?.__texts ?? [])];
+    }
+    return result;
+  });
 }

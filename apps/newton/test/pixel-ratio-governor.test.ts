@@ -3,7 +3,8 @@ import {
   MIN_PIXEL_RATIO,
   PixelRatioGovernor,
   SLOW_FRAME_RATE,
-  SLOW_SECONDS,
+  SAMPLE_MS,
+  SLOW_SAMPLES,
 } from '../src/app/pixel-ratio-governor.ts';
 import { CANVAS_PIXEL_RATIO } from '../src/app/theme.ts';
 
@@ -14,13 +15,15 @@ describe('the simulation canvas draws fewer pixels when it runs too slowly', () 
     for (let i = 0; i < 10; i++) expect(governor.sample(60, 1000, true)).toBe(CANVAS_PIXEL_RATIO);
   });
 
-  it(`drops to one device px per CSS px after ${SLOW_SECONDS} slow seconds in a row`, () => {
+  it(`drops to one device px per CSS px after ${SLOW_SAMPLES} slow looks in a row`, () => {
     const governor = new PixelRatioGovernor();
     const slowFrames = SLOW_FRAME_RATE - 5;
-    for (let i = 1; i < SLOW_SECONDS; i++) {
-      expect(governor.sample(slowFrames, 1000, true)).toBe(CANVAS_PIXEL_RATIO);
+    for (let i = 1; i < SLOW_SAMPLES; i++) {
+      expect(governor.sample((slowFrames * SAMPLE_MS) / 1000, SAMPLE_MS, true)).toBe(
+        CANVAS_PIXEL_RATIO,
+      );
     }
-    expect(governor.sample(slowFrames, 1000, true)).toBe(MIN_PIXEL_RATIO);
+    expect(governor.sample((slowFrames * SAMPLE_MS) / 1000, SAMPLE_MS, true)).toBe(MIN_PIXEL_RATIO);
     // And stays there when fast again.
     expect(governor.sample(60, 1000, true)).toBe(MIN_PIXEL_RATIO);
   });

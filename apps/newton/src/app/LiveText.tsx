@@ -24,7 +24,12 @@ export function LiveText({ active, ms = 200, text }: LiveTextProps) {
     const element = node.current;
     if (element === null) return;
     const next = read.current();
-    if (element.textContent !== next) element.textContent = next;
+    // The text node's own value, where there is one: setting `textContent` puts a new node in
+    // place of the old, which the page then restyles as well as lays out.
+    const only = element.firstChild;
+    if (only !== null && only === element.lastChild && only.nodeType === Node.TEXT_NODE) {
+      if (only.nodeValue !== next) only.nodeValue = next;
+    } else if (element.textContent !== next) element.textContent = next;
   };
   // After each render of the screen around it (a tap, a step while paused): the text of now.
   useLayoutEffect(write);

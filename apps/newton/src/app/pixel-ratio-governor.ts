@@ -2,15 +2,21 @@ import { CANVAS_PIXEL_RATIO } from './theme.ts';
 
 /** Below this many frames a second a canvas is too slow for its pixels. */
 export const SLOW_FRAME_RATE = 45;
-/** Slow seconds in a row before the canvas draws fewer pixels (one slow second may be a hiccup). */
-export const SLOW_SECONDS = 2;
+/** Milliseconds between two looks at a canvas's frame count. */
+export const SAMPLE_MS = 500;
+/**
+ * Slow looks in a row before the canvas draws fewer pixels: 1.5 s (a single slow half second may
+ * be a hiccup). Two slow seconds, as before, left a slow phone stuttering at the sharper ratio
+ * for the first 2 to 3 s of every run.
+ */
+export const SLOW_SAMPLES = 3;
 /** The fewest device pixels per CSS px: one, the page's own resolution. */
 export const MIN_PIXEL_RATIO = 1;
 
 /**
  * Dynamic resolution for a simulation canvas: it draws at {@link CANVAS_PIXEL_RATIO} device px
  * per CSS px, and at one once its frame rate stayed under {@link SLOW_FRAME_RATE} for
- * {@link SLOW_SECONDS} seconds of running. On a phone whose CPU draws the canvas (no GPU raster),
+ * {@link SLOW_SAMPLES} looks ({@link SAMPLE_MS} apart) of running. On a phone whose CPU draws the canvas (no GPU raster),
  * filling the pixels is most of a frame: 4 device px per CSS px cost about three times the raster
  * of one (Reactions with 50 particles, Chromium's software raster, 4x CPU slowdown). It does not
  * go back up: a sharper canvas that then stutters is worse than a softer one that does not.
@@ -32,7 +38,7 @@ export class PixelRatioGovernor {
     }
     const rate = (frames * 1000) / ms;
     this.slow = rate < SLOW_FRAME_RATE ? this.slow + 1 : 0;
-    if (this.slow >= SLOW_SECONDS && this.ratio > MIN_PIXEL_RATIO) {
+    if (this.slow >= SLOW_SAMPLES && this.ratio > MIN_PIXEL_RATIO) {
       this.ratio = MIN_PIXEL_RATIO;
       this.slow = 0;
     }

@@ -1,14 +1,11 @@
 import { useEffect, useState, type RefObject } from 'react';
 import type { PhysicalCanvasElement } from '@physical/canvas';
-import { PixelRatioGovernor } from './pixel-ratio-governor.ts';
-
-/** Milliseconds between two looks at the canvas' frame count. */
-const SAMPLE_MS = 1000;
+import { PixelRatioGovernor, SAMPLE_MS } from './pixel-ratio-governor.ts';
 
 /**
  * The device pixels per CSS px a simulation canvas draws at (its `maxPixelRatio`): fewer once it
- * runs too slowly for them ({@link PixelRatioGovernor}). Looks at the canvas' frame count once a
- * second while `active`: no work in its frames.
+ * runs too slowly for them ({@link PixelRatioGovernor}). Looks at the canvas' frame count every
+ * {@link SAMPLE_MS} while `active`: no work in its frames.
  */
 export function usePixelRatioGovernor(
   canvasRef: RefObject<PhysicalCanvasElement | null>,

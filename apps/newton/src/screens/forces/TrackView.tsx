@@ -39,6 +39,33 @@ export interface TrackViewProps {
 
 /** Height (CSS px) the force label needs above the square; less, and it goes beside it. */
 const LABEL_HEIGHT = 16;
+const LABEL_FONT = '600 14px system-ui, sans-serif';
+/** The ruler's numbers: their font and the height (CSS px) of a line of it. */
+const RULER_FONT = '13px system-ui, sans-serif';
+const RULER_HEIGHT = 15;
+/** CSS px kept between the force label and a ruler number; a number closer is left out. */
+const LABEL_GAP = 3;
+/** The ruler's numbers, every two metres ("2 m"...): made once, not each frame. */
+const RULER_NUMBERS: readonly { readonly metre: number; readonly text: string }[] = Array.from(
+  { length: Math.floor((TRACK_LENGTH - 0.5 - START_X) / 2) },
+  (_, i) => ({ metre: 2 * (i + 1), text: `${2 * (i + 1)} m` }),
+);
+/** Widths (CSS px) of texts already measured, by font and text: a frame measures nothing new. */
+const widths = new Map<string, Map<string, number>>();
+/** The width of `text` in `font`, which must be the context's font now. */
+function textWidth(context: CanvasRenderingContext2D, font: string, text: string): number {
+  let byText = widths.get(font);
+  if (byText === undefined) {
+    byText = new Map();
+    widths.set(font, byText);
+  }
+  let width = byText.get(text);
+  if (width === undefined) {
+    width = context.measureText(text).width;
+    byText.set(text, width);
+  }
+  return width;
+}
 const VIEW_BOX = { x: -0.15, y: 0, width: TRACK_LENGTH + 0.3, height: TRACK_HEIGHT };
 
 /** One track of the Forces screen: the canvas, its ruler and force arrow, its label and readouts. */
@@ -100,29 +127,22 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
         context.stroke();
         const ratio = canvas.viewport.devicePixelRatio;
         context.setTransform(ratio, 0, 0, ratio, 0, 0);
-        context.fillStyle = 'rgba(255, 255, 255, 0.7)';
-        context.font = '13px system-ui, sans-serif';
-        context.textAlign = 'center';
-        context.textBaseline = 'bottom';
-        for (let metre = 2; START_X + metre <= TRACK_LENGTH - 0.5; metre += 2) {
-          const point = canvas.worldToScreen({ x: START_X + metre, y: base - 0.24 });
-          context.fillText(`${metre} m`, point.x, point.y);
-        }
         const square = current.square.position;
         const on = forceOnRef.current && current.force > 0;
-        // The force and the sum of forces, labelled with their values.
+        // The force and the sum of forces, labelled with their values: placed first, so that the
+        // ruler's numbers it would cover are left out (on a short track it runs over their row).
         const label = canvas.worldToScreen({ x: square.x, y: square.y - SQUARE_SIZE / 2 - 0.08 });
-        context.font = '600 14px system-ui, sans-serif';
-        context.textAlign = 'left';
-        context.fillStyle = on ? '#ff8a65' : 'rgba(255, 255, 255, 0.85)';
+        context.font = LABEL_FONT;
         const text = on ? labelsRef.current.force : labelsRef.current.balanced;
-        const room = context.canvas.width / ratio - context.measureText(text).width - 4;
+        const width = textWidth(context, LABEL_FONT, text);
+        const room = context.canvas.width / ratio - width - 4;
+        let labelX: number;
+        let labelY: number;
+        let labelTop: number;
         if (label.y >= LABEL_HEIGHT) {
-          context.fillText(
-            text,
-            Math.max(4, Math.min(room, label.x - SQUARE_SIZE * scale * 0.5)),
-            label.y,
-          );
+          labelX = Math.max(4, Math.min(room, label.x - SQUARE_SIZE * scale * 0.5));
+          labelY = label.y;
+          labelTop = labelY - LABEL_HEIGHT;
         } else {
           // A short track (a small phone): no room above the square, so the label goes beside
           // it, past the arrow's tip, rather than cut off at the canvas's top edge.
@@ -130,9 +150,28 @@ export const TrackView = forwardRef<PhysicalCanvasElement | null, TrackViewProps
             x: square.x + SQUARE_SIZE / 2 + (on ? arrowLength(current.force) : 0),
             y: square.y,
           });
-          context.textBaseline = 'middle';
-          context.fillText(text, Math.max(4, Math.min(room, tip.x + 6)), tip.y);
+          labelX = Math.max(4, Math.min(room, tip.x + 6));
+          labelY = tip.y + LABEL_HEIGHT / 2;
+          labelTop = tip.y - LABEL_HEIGHT / 2;
         }
+        context.fillStyle = 'rgba(255, 255, 255, 0.7)';
+        context.font = RULER_FONT;
+        context.textAlign = 'center';
+        context.textBaseline = 'bottom';
+        for (const { metre, text: number } of RULER_NUMBERS) {
+          const point = canvas.worldToScreen({ x: START_X + metre, y: base - 0.24 });
+          const half = textWidth(context, RULER_FONT, number) / 2;
+          const clear =
+            point.x + half + LABEL_GAP < labelX ||
+            point.x - half - LABEL_GAP > labelX + width ||
+            point.y + LABEL_GAP < labelTop ||
+            point.y - RULER_HEIGHT - LABEL_GAP > labelY;
+          if (clear) context.fillText(number, point.x, point.y);
+        }
+        context.font = LABEL_FONT;
+        context.textAlign = 'left';
+        context.fillStyle = on ? '#ff8a65' : 'rgba(255, 255, 255, 0.85)';
+        context.fillText(text, labelX, labelY);
         context.restore();
         if (on) {
           drawArrow(

@@ -2,7 +2,6 @@ import {
   Box,
   Button,
   FormControlLabel,
-  IconButton,
   MenuItem,
   Switch,
   Tab,
@@ -10,7 +9,6 @@ import {
   TextField,
   ToggleButton,
   ToggleButtonGroup,
-  Tooltip,
   Typography,
 } from '@mui/material';
 import {
@@ -66,6 +64,8 @@ import {
 import { CollisionRecorder, totalMomentumOf, type CollisionRecord } from './collision-lab.ts';
 import { drawReactionArrows } from './draw-reaction-arrows.ts';
 import { LabResults } from './LabResults.tsx';
+import { LabelSprites } from './label-sprites.ts';
+import { IconButton as UiIconButton } from '../../ui/IconButton.tsx';
 import { ParticleColumns } from './particle-columns.ts';
 import { LabSetup, type LabField, type LabRow } from './LabSetup.tsx';
 import {
@@ -104,8 +104,23 @@ const CHOSEN_STYLE = { stroke: '#82b1ff', lineWidth: 2 } as const;
 const MOMENTUM_ARROW_SCALE = 0.5;
 /** The momentum arrows' batch, reused every frame. */
 const momentumArrows = new ArrowBatch();
+/** The particles' names as bitmaps, made once each. */
+const labelSprites = new LabelSprites();
+/**
+ * The particles' look: their palette colour, filled, without the default's dark outline. On a
+ * phone that rasterises the canvas on its CPU, 50 translucent outlines a frame cost about as much
+ * as the discs they outline; the particles never overlap, so the outline told nothing apart.
+ */
+const PARTICLE_STYLE = { stroke: 'transparent' } as const;
 /** The chosen particles' velocity arrows, which a learner drags. */
 const HANDLE_COLOR = '#ffffff';
+const HANDLE_ARROW = { color: HANDLE_COLOR, width: 2 } as const;
+/** Scratch points of the handles' arrows, rewritten each frame. */
+const handleTip = { x: 0, y: 0 };
+const handleStart = { x: 0, y: 0 };
+const handleVector = { x: 0, y: 0 };
+/** Milliseconds between two writes of the arrow count (`data-arrows`). */
+const ARROW_COUNT_MS = 250;
 /** Saved steps to rewind through: the last 5 s at 60 steps a second. */
 const HISTORY_STEPS = 300;
 /**
@@ -234,6 +249,8 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   /** The strongest impulse (N s) between two particles in this step: told after it. */
   const strongest = useRef(0);
   const columns = useMemo(() => new ParticleColumns(), []);
+  /** Collision arrows drawn in the last frame. */
+  const arrowCount = useRef(0);
   const [initialPreset] = useState(() => settingsFromPreset(location.hash));
   const [settings, setSettings] = useState<Settings>(initialPreset ?? DEFAULT_SETTINGS);
   const settingsRef = useRef(settings);
@@ -556,7 +573,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     for (const body of scene.particles.keys()) {
       canvas.setStyle(
         body,
-        body === selected ? SELECTED_STYLE : chosen.includes(body) ? CHOSEN_STYLE : null,
+        body === selected ? SELECTED_STYLE : chosen.includes(body) ? CHOSEN_STYLE : PARTICLE_STYLE,
       );
     }
     canvas.invalidate();
@@ -685,26 +702,17 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       momentumArrows.finish();
       drawReactionArrows(context, scale, visible, measure, contactTime, REDUCED_MOTION);
       context.restore();
-      // Outside the clip: a handle may sit past a wall, and must stay reachable.
+      // Outside the clip: a handle may sit past a wall, and must stay reachable. Scratch points
+      // and one style object: the overlay allocates nothing a frame.
       for (const body of lab) {
-        const tip = handlePoint(body);
+        const tip = handlePoint(body, handleTip);
         const v = body.linearVelocity;
-        const speed = Math.hypot(v.x, v.y);
-        if (speed > 0.02) {
-          const start = {
-            x: tip.x - (v.x / speed) * speed * VELOCITY_ARROW_SCALE,
-            y: tip.y - (v.y / speed) * speed * VELOCITY_ARROW_SCALE,
-          };
-          drawArrow(
-            context,
-            scale,
-            start,
-            { x: tip.x - start.x, y: tip.y - start.y },
-            {
-              color: HANDLE_COLOR,
-              width: 2,
-            },
-          );
+        if (Math.hypot(v.x, v.y) > 0.02) {
+          handleVector.x = v.x * VELOCITY_ARROW_SCALE;
+          handleVector.y = v.y * VELOCITY_ARROW_SCALE;
+          handleStart.x = tip.x - handleVector.x;
+          handleStart.y = tip.y - handleVector.y;
+          drawArrow(context, scale, handleStart, handleVector, HANDLE_ARROW);
         }
         context.beginPath();
         context.arc(tip.x, tip.y, 9 / scale, 0, Math.PI * 2);
@@ -714,24 +722,30 @@ export function ReactionsScreen({ active }: { active: boolean }) {
         context.strokeStyle = HANDLE_COLOR;
         context.stroke();
       }
-      // Names on the particles (a handful: more would cover the tray).
+      // Names on the particles (a handful: more would cover the tray), each a cached bitmap.
       if (current.particles.size <= 12) {
-        context.save();
-        context.fillStyle = '#000000';
-        context.textAlign = 'center';
-        context.textBaseline = 'middle';
-        context.font = `700 ${13 / scale}px Roboto, system-ui, sans-serif`;
+        const ratio = canvas.viewport.devicePixelRatio;
         for (const [body, info] of current.particles) {
-          context.fillText(info.label, body.position.x, body.position.y);
+          const position = body.position;
+          labelSprites.draw(context, info.label, position.x, position.y, scale, ratio);
         }
-        context.restore();
       }
-      const host = hostRef.current;
-      const count = String(visible.length * 2);
-      if (host !== null && host.dataset['arrows'] !== count) host.dataset['arrows'] = count;
+      arrowCount.current = visible.length * 2;
     },
     [arrows],
   );
+
+  // How many collision arrows show, for tests and tools (`data-arrows`): written a few times a
+  // second, not by each frame (an attribute written in a frame is a DOM change in every frame).
+  useEffect(() => {
+    if (!active) return;
+    const id = setInterval(() => {
+      const host = hostRef.current;
+      const count = String(arrowCount.current);
+      if (host !== null && host.dataset['arrows'] !== count) host.dataset['arrows'] = count;
+    }, ARROW_COUNT_MS);
+    return () => clearInterval(id);
+  }, [active]);
 
   const add = (point: { x: number; y: number }): void => {
     if (scene === null) return;
@@ -740,6 +754,7 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       return;
     }
     const body = spawnParticle(scene, point);
+    canvasRef.current?.setStyle(body, PARTICLE_STYLE);
     worldChanged();
     canvasRef.current?.invalidate();
     rerender();
@@ -988,35 +1003,36 @@ export function ReactionsScreen({ active }: { active: boolean }) {
                   {/* The readouts keep their text's width and go below the pad when it lacks room. */}
                   <Box sx={{ display: 'flex', flexWrap: 'wrap', alignItems: 'center', gap: 1 }}>
                     <Box sx={{ display: 'flex', flexDirection: 'column', gap: 0.5 }}>
-                      <Tooltip title={t('reactions.add')}>
-                        <IconButton
-                          aria-label={t('reactions.add')}
-                          onClick={addAnywhere}
-                          data-action="add"
-                          color="primary"
-                          sx={{ width: 48, height: 48 }}
-                        >
-                          <AddIcon />
-                        </IconButton>
-                      </Tooltip>
-                      <Tooltip title={t('reactions.clear')}>
-                        <IconButton
-                          aria-label={t('reactions.clear')}
-                          onClick={() => {
-                            if (scene === null) return;
-                            setSelected(null);
-                            clearParticles(scene);
-                            worldChanged();
-                            choosePair([], scene);
-                            arrows.clear();
-                            rerender();
-                          }}
-                          data-action="clear"
-                          sx={{ width: 48, height: 48 }}
-                        >
-                          <DeleteIcon />
-                        </IconButton>
-                      </Tooltip>
+                      {/*
+                        Plain buttons (src/ui), not MUI's: a button focused from the keyboard ran
+                        MUI's focus ripple, an endless animation that restyled the page in every
+                        frame of the tray.
+                      */}
+                      <UiIconButton
+                        aria-label={t('reactions.add')}
+                        tip={t('reactions.add')}
+                        onClick={addAnywhere}
+                        data-action="add"
+                        color="primary"
+                      >
+                        <AddIcon />
+                      </UiIconButton>
+                      <UiIconButton
+                        aria-label={t('reactions.clear')}
+                        tip={t('reactions.clear')}
+                        onClick={() => {
+                          if (scene === null) return;
+                          setSelected(null);
+                          clearParticles(scene);
+                          worldChanged();
+                          choosePair([], scene);
+                          arrows.clear();
+                          rerender();
+                        }}
+                        data-action="clear"
+                      >
+                        <DeleteIcon />
+                      </UiIconButton>
                     </Box>
                     <TiltPad
                       onNudge={(dx, dy) => {

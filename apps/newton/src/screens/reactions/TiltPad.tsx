@@ -1,4 +1,5 @@
-import { Box, IconButton, Tooltip } from '@mui/material';
+import { Box } from '@mui/material';
+import { IconButton } from '../../ui/IconButton.tsx';
 import type { ReactElement } from 'react';
 import {
   ArrowDownIcon,
@@ -47,27 +48,26 @@ export function TiltPad({ onNudge, onLevel }: TiltPadProps) {
       }}
     >
       {BUTTONS.map(({ key, dx, dy, icon, area }) => (
-        <Tooltip key={key} title={t(key)}>
-          <IconButton
-            aria-label={t(key)}
-            onClick={() => onNudge(dx * TILT_STEP, dy * TILT_STEP)}
-            sx={{ gridArea: area, width: 48, height: 48 }}
-            data-action={`tilt-${area}`}
-          >
-            {icon}
-          </IconButton>
-        </Tooltip>
-      ))}
-      <Tooltip title={t('reactions.tiltLevel')}>
         <IconButton
-          aria-label={t('reactions.tiltLevel')}
-          onClick={onLevel}
-          sx={{ gridArea: 'level', width: 48, height: 48 }}
-          data-action="tilt-level"
+          key={key}
+          aria-label={t(key)}
+          tip={t(key)}
+          onClick={() => onNudge(dx * TILT_STEP, dy * TILT_STEP)}
+          style={{ gridArea: area }}
+          data-action={`tilt-${area}`}
         >
-          <LevelIcon size={20} />
+          {icon}
         </IconButton>
-      </Tooltip>
+      ))}
+      <IconButton
+        aria-label={t('reactions.tiltLevel')}
+        tip={t('reactions.tiltLevel')}
+        onClick={onLevel}
+        style={{ gridArea: 'level' }}
+        data-action="tilt-level"
+      >
+        <LevelIcon size={20} />
+      </IconButton>
     </Box>
   );
 }

@@ -15,14 +15,22 @@ function radiusOf(body: Body): number {
 
 /**
  * The tip of a particle's velocity arrow, its drag handle (m): from the rim along the velocity,
- * {@link VELOCITY_ARROW_SCALE} metres per m/s (at rest, on the rim at the right).
+ * {@link VELOCITY_ARROW_SCALE} metres per m/s (at rest, on the rim at the right). Written into
+ * `out` when given (a frame's drawing allocates nothing).
  */
-export function handlePoint(body: Body): { x: number; y: number } {
+export function handlePoint(
+  body: Body,
+  out: { x: number; y: number } = { x: 0, y: 0 },
+): { x: number; y: number } {
   const v = body.linearVelocity;
   const speed = Math.hypot(v.x, v.y);
-  const [dx, dy] = speed > 1e-9 ? [v.x / speed, v.y / speed] : [1, 0];
+  const moving = speed > 1e-9;
+  const dx = moving ? v.x / speed : 1;
+  const dy = moving ? v.y / speed : 0;
   const length = radiusOf(body) + speed * VELOCITY_ARROW_SCALE;
-  return { x: body.position.x + dx * length, y: body.position.y + dy * length };
+  out.x = body.position.x + dx * length;
+  out.y = body.position.y + dy * length;
+  return out;
 }
 
 /**
