@@ -3,7 +3,8 @@
 //
 // 1. wasm/contact-layout.ts: the layout constants the kernel reads, generated from the engine's
 //    own definitions (contact-constraint-layout.ts, contact-data.ts, body-state.ts,
-//    body-memory.ts, LINEAR_SLOP and SLEEP_SPEED), so no number is copied by hand.
+//    body-memory.ts, shape-geometry.ts, LINEAR_SLOP and SLEEP_SPEED), so no number is copied by
+//    hand.
 // 2. src/dynamics/contact-kernel-binary.ts: the optimised WebAssembly module, hex-encoded, so the
 //    engine ships it with no dependency and no separate file to fetch.
 // 3. src/dynamics/contact-kernel-javascript.ts: the same optimised module turned into JavaScript
@@ -24,6 +25,7 @@ import * as bodyMemory from '../src/dynamics/body-memory.ts';
 import * as bodyState from '../src/dynamics/body-state.ts';
 import * as constraintLayout from '../src/dynamics/contact-constraint-layout.ts';
 import * as contactData from '../src/dynamics/contact-data.ts';
+import * as shapeGeometry from '../src/dynamics/shape-geometry.ts';
 import { LINEAR_SLOP, SLEEP_SPEED } from '../src/core/constants.ts';
 
 const root = new URL('..', import.meta.url);
@@ -62,6 +64,7 @@ export function kernelLayout(): string {
     ]),
     ...numbers(bodyState),
     ...numbers(bodyMemory),
+    ...numbers(shapeGeometry),
     ['LINEAR_SLOP', LINEAR_SLOP],
     ['SLEEP_SPEED', SLEEP_SPEED],
   ];

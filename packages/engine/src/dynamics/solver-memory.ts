@@ -1,5 +1,7 @@
 import { BODY_STRIDE, BodyStore } from './body-memory.ts';
 import { createContactKernel, type ContactKernel, type WasmMemory } from './contact-kernel.ts';
+import { GEOMETRY_STRIDE } from './shape-geometry.ts';
+import { FILTER_STRIDE, MATERIAL_STRIDE, SHAPE_STRIDE, ShapeTable } from './shape-table.ts';
 
 // The world's hot arrays in one block of memory: the bodies' own numbers (body-memory.ts, the one
 // copy the Body handles read and write), the body states and the body table
@@ -38,9 +40,28 @@ export const BODIES = 9;
 export const AWAKE_BODIES = 10;
 /** A batch of islands' awake indices (solver-batches.ts), for the body passes: int32. */
 export const BATCH_BODIES = 11;
-const REGIONS = 12;
+/** The shapes' boxes, by shape id (shape-table.ts): doubles. */
+export const SHAPE_BOXES = 12;
+/** The shapes' filters (shape-table.ts): int32. */
+export const SHAPE_FILTERS = 13;
+/** The shapes' materials (shape-table.ts): doubles. */
+export const SHAPE_MATERIALS = 14;
+/** The shapes' geometry rows (shape-geometry.ts), which the kernel's narrow phase reads: doubles. */
+export const SHAPE_GEOMETRY = 15;
+/** The kernel's narrow phase's scratch (wasm/narrow-phase-scratch.ts): doubles, fixed size. */
+export const NARROW_PHASE_SCRATCH = 16;
+const REGIONS = 17;
 /** Bytes per element of each region. */
-const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4];
+const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8];
+/** Doubles of NARROW_PHASE_SCRATCH (wasm/narrow-phase-scratch.ts says what they hold). */
+const NARROW_PHASE_SCRATCH_DOUBLES = 128;
+/** The shape regions of that many rows. */
+const SHAPE_REGIONS: readonly (readonly [number, number])[] = [
+  [SHAPE_BOXES, SHAPE_STRIDE],
+  [SHAPE_FILTERS, FILTER_STRIDE],
+  [SHAPE_MATERIALS, MATERIAL_STRIDE],
+  [SHAPE_GEOMETRY, GEOMETRY_STRIDE],
+];
 
 /**
  * @internal When worlds move to the WebAssembly kernel: at this many contacts in a step (0, the
@@ -68,6 +89,12 @@ export class SolverMemory {
    * Its `data` is this memory's BODIES region, replaced (with every other view) when it moves.
    */
   readonly bodyStore: BodyStore = new BodyStore(new Float64Array(0));
+  /**
+   * The shapes' boxes, filters, materials and geometry (shape-table.ts), by shape id: the world's
+   * shape table, whose arrays are this memory's shape regions, replaced (with every other view)
+   * when it moves. It grows through {@link reserveShapes}.
+   */
+  readonly shapeTable: ShapeTable = new ShapeTable(0, (rows) => this.reserveShapes(rows));
   /** Byte offset of each region, for the kernel. */
   readonly offsets: number[] = new Array<number>(REGIONS).fill(0);
   /** The contact passes over this memory: WebAssembly once it has moved there, else JavaScript. */
@@ -107,7 +134,21 @@ export class SolverMemory {
       64 * BODY_STRIDE,
       64,
       64,
+      ...SHAPE_REGIONS.map(([, stride]) => 64 * stride),
+      NARROW_PHASE_SCRATCH_DOUBLES,
     ]);
+  }
+
+  /**
+   * Makes room for `rows` shapes' rows (shape-table.ts), keeping them; replaces every view when
+   * it grows (never inside a step: shapes join between steps).
+   */
+  reserveShapes(rows: number): void {
+    if (rows * SHAPE_STRIDE <= this.capacities[SHAPE_BOXES]!) return;
+    const wanted = this.capacities.slice();
+    for (const [region, stride] of SHAPE_REGIONS)
+      wanted[region] = grown(wanted[region]!, rows * stride);
+    this.layout(wanted, this.wasm !== null);
   }
 
   /**
@@ -121,6 +162,8 @@ export class SolverMemory {
     wanted[BODIES] = grown(wanted[BODIES]!, bodies * BODY_STRIDE);
     wanted[AWAKE_BODIES] = grown(wanted[AWAKE_BODIES]!, bodies);
     wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, bodies);
+    // The shapes keep their rows (the world keeps its shape ids).
+    for (const [region] of SHAPE_REGIONS) wanted[region] = this.capacities[region]!;
     const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
@@ -218,6 +261,7 @@ export class SolverMemory {
     keep[CONTACT_DATA] = liveContacts * this.contactStride;
     keep[CONTACT_BODIES] = 2 * liveContacts;
     keep[BODIES] = bodies * BODY_STRIDE;
+    for (const [region] of SHAPE_REGIONS) keep[region] = have[region]!;
     this.layout(wanted, toWasm, keep);
   }
 
@@ -318,6 +362,11 @@ export class SolverMemory {
     this.bodyStore.data = f64(BODIES);
     this.awakeBodies = i32(AWAKE_BODIES);
     this.batchBodies = i32(BATCH_BODIES);
+    const shapes = this.shapeTable;
+    shapes.data = f64(SHAPE_BOXES);
+    shapes.filters = i32(SHAPE_FILTERS);
+    shapes.materials = f64(SHAPE_MATERIALS);
+    shapes.geometry = f64(SHAPE_GEOMETRY);
   }
 }
 
