@@ -29,7 +29,7 @@ interface WasmApi {
 }
 
 /** The kernel's exports; pointers are byte offsets into its memory. */
-export interface ContactKernel extends BodyPasses {
+export interface ContactKernel extends BodyPasses, NarrowPhase {
   /** prepareContacts; returns the number of constraints. */
   prepare(
     contactData: number,
@@ -182,6 +182,51 @@ export interface BodyPasses {
   ): void;
   /** Velocities, centre, angle and sleep clock of the `count` awake bodies into the body memory. */
   finalizeBodies(bodies: number, awake: number, count: number, states: number, dt: number): void;
+}
+
+/**
+ * The narrow phase (wasm/update-manifold.ts and the wasm/collide-*.ts it calls), built into the
+ * same module: the manifold of a contact from its shapes' geometry rows (SHAPE_GEOMETRY,
+ * shape-geometry.ts) at its bodies' poses (BODIES), in the narrow-phase scratch
+ * (NARROW_PHASE_SCRATCH, narrow-phase-scratch.ts) and then the contact's slot (CONTACT_DATA).
+ */
+export interface NarrowPhase {
+  /**
+   * The narrow phase in full for contact `slot` of pair kind `kind` (pair-kinds.ts), shapes
+   * `shapeA`, `shapeB` (rows of `geometry`), bodies `bodyA`, `bodyB` (world indices into
+   * `bodies`), with the gates' margin and reach (m) and B's pose in A's frame; returns its points.
+   */
+  updateManifold(
+    data: number,
+    bodies: number,
+    geometry: number,
+    scratch: number,
+    slot: number,
+    kind: number,
+    shapeA: number,
+    shapeB: number,
+    bodyA: number,
+    bodyB: number,
+    dt: number,
+    margin: number,
+    reach: number,
+    relX: number,
+    relY: number,
+    relC: number,
+    relS: number,
+  ): number;
+  /**
+   * For tests: the collide function of pair kind `kind` on geometry rows at byte offsets `a` and
+   * `b`, at the transforms in the scratch (S_TRANSFORM_A, S_TRANSFORM_B), into the scratch's
+   * manifold.
+   */
+  collidePair(
+    kind: number,
+    a: number,
+    b: number,
+    scratch: number,
+    speculativeDistance: number,
+  ): void;
 }
 
 /** Creates the JavaScript build of the kernel over `imports.env.memory` (wasm2js's factory). */

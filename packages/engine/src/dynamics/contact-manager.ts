@@ -3,21 +3,7 @@ import { PairSet } from '../collision/pair-set.ts';
 import { AABB_MARGIN, LINEAR_SLOP, SPECULATIVE_DISTANCE } from '../core/constants.ts';
 import type { Body } from './body.ts';
 import type { BodyStore } from './body-memory.ts';
-import {
-  canCollide,
-  GATE_MARGIN,
-  GATE_REACH,
-  GATE_REL_C,
-  GATE_REL_S,
-  GATE_REL_X,
-  GATE_REL_Y,
-  gateTransformA,
-  gateTransformB,
-  initContactSlot,
-  narrowPhaseGate,
-  shouldSwap,
-  updateManifold,
-} from './contact.ts';
+import { canCollide, initContactSlot, shouldSwap } from './contact.ts';
 import type { ContactEdges } from './contact-edges.ts';
 import {
   CACHE,
@@ -40,7 +26,13 @@ import type { Islands } from './island.ts';
 import { jointPreventsCollision } from './joints/joint.ts';
 import type { Shape } from './shape.ts';
 import type { ShapeTable } from './shape-table.ts';
-import type { SolverMemory } from './solver-memory.ts';
+import {
+  BODIES,
+  CONTACT_DATA,
+  NARROW_PHASE_SCRATCH,
+  SHAPE_GEOMETRY,
+  type SolverMemory,
+} from './solver-memory.ts';
 
 // Manifolds are reused while B moved less than this relative to A (m). Motion along the normal is
 // measured exactly on reuse; only sliding along the surface can leave a contact point behind its
@@ -106,7 +98,7 @@ export class ContactManager {
 
   constructor(
     private readonly islands: Islands,
-    memory: SolverMemory,
+    private readonly memory: SolverMemory,
     private readonly table: ShapeTable,
     /** Each body's contact list (shared with the island search). */
     readonly edges: ContactEdges,
@@ -252,8 +244,13 @@ export class ContactManager {
     const slotBodies = this.slots.bodies;
     const slotShapes = this.slots.shapes;
     const kinds = this.slots.kinds;
-    const geometries = this.table.geometries;
-    const gate = narrowPhaseGate;
+    // The narrow phase in full is the kernel's (wasm/update-manifold.ts), over the same memory.
+    const memory = this.memory;
+    const kernel = memory.kernel;
+    const dataAt = memory.offsets[CONTACT_DATA]!;
+    const bodiesAt = memory.offsets[BODIES]!;
+    const geometryAt = memory.offsets[SHAPE_GEOMETRY]!;
+    const scratchAt = memory.offsets[NARROW_PHASE_SCRATCH]!;
     let i = 0;
     while (i < this.count) {
       // Offsets: body-memory.ts (stride 40: pose 0-3, velocity 4-6, origin reach 7, max extent 8,
@@ -366,34 +363,26 @@ export class ContactManager {
         i++;
         continue;
       }
-      gate[GATE_MARGIN] = margin;
-      gate[GATE_REACH] = reach;
-      gate[GATE_REL_X] = relX;
-      gate[GATE_REL_Y] = relY;
-      gate[GATE_REL_C] = relC;
-      gate[GATE_REL_S] = relS;
-      const xfA = gateTransformA;
-      xfA.x = pose[pa]!;
-      xfA.y = pose[pa + 1]!;
-      xfA.c = cA;
-      xfA.s = sA;
-      const xfB = gateTransformB;
-      xfB.x = pose[pb]!;
-      xfB.y = pose[pb + 1]!;
-      xfB.c = cB;
-      xfB.s = sB;
       const wasTouching = data[base + POINT_COUNT] !== 0;
       const touching =
-        updateManifold(
+        kernel.updateManifold(
+          dataAt,
+          bodiesAt,
+          geometryAt,
+          scratchAt,
           i,
           kinds[i]!,
-          geometries[sa >> 3]!,
-          geometries[sb >> 3]!,
+          sa >> 3,
+          sb >> 3,
+          slotBodies[2 * i]!,
+          slotBodies[2 * i + 1]!,
           dt,
-          data,
-          pose,
-          pa,
-          pb,
+          margin,
+          reach,
+          relX,
+          relY,
+          relC,
+          relS,
         ) > 0;
       if (touching !== wasTouching) {
         if (touching) {

@@ -1,5 +1,6 @@
 import { BODY_STRIDE, BodyStore } from './body-memory.ts';
 import { createContactKernel, type ContactKernel, type WasmMemory } from './contact-kernel.ts';
+import { NARROW_PHASE_SCRATCH_DOUBLES } from './narrow-phase-scratch.ts';
 import { GEOMETRY_STRIDE } from './shape-geometry.ts';
 import { FILTER_STRIDE, MATERIAL_STRIDE, SHAPE_STRIDE, ShapeTable } from './shape-table.ts';
 
@@ -48,13 +49,11 @@ export const SHAPE_FILTERS = 13;
 export const SHAPE_MATERIALS = 14;
 /** The shapes' geometry rows (shape-geometry.ts), which the kernel's narrow phase reads: doubles. */
 export const SHAPE_GEOMETRY = 15;
-/** The kernel's narrow phase's scratch (wasm/narrow-phase-scratch.ts): doubles, fixed size. */
+/** The kernel's narrow phase's manifold and scratch (narrow-phase-scratch.ts): doubles, fixed. */
 export const NARROW_PHASE_SCRATCH = 16;
 const REGIONS = 17;
 /** Bytes per element of each region. */
 const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8];
-/** Doubles of NARROW_PHASE_SCRATCH (wasm/narrow-phase-scratch.ts says what they hold). */
-const NARROW_PHASE_SCRATCH_DOUBLES = 128;
 /** The shape regions of that many rows. */
 const SHAPE_REGIONS: readonly (readonly [number, number])[] = [
   [SHAPE_BOXES, SHAPE_STRIDE],
@@ -84,6 +83,8 @@ export class SolverMemory {
   awakeBodies: Int32Array = new Int32Array(0);
   /** A batch's awake indices for the body passes (BATCH_BODIES). */
   batchBodies: Int32Array = new Int32Array(0);
+  /** The kernel's narrow-phase manifold and scratch (NARROW_PHASE_SCRATCH). */
+  narrowPhase: Float64Array = new Float64Array(0);
   /**
    * The bodies' numbers (body-memory.ts): the store every Body handle of the world reads through.
    * Its `data` is this memory's BODIES region, replaced (with every other view) when it moves.
@@ -362,6 +363,7 @@ export class SolverMemory {
     this.bodyStore.data = f64(BODIES);
     this.awakeBodies = i32(AWAKE_BODIES);
     this.batchBodies = i32(BATCH_BODIES);
+    this.narrowPhase = f64(NARROW_PHASE_SCRATCH);
     const shapes = this.shapeTable;
     shapes.data = f64(SHAPE_BOXES);
     shapes.filters = i32(SHAPE_FILTERS);
