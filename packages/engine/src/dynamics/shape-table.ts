@@ -1,6 +1,5 @@
 import type { AABB } from '../geometry/aabb.ts';
 import type { Geometry } from './shape.ts';
-import { writeGeometryRow } from './shape-geometry.ts';
 
 // Every number of a shape in one place, by row: in a world the row is the shape id, and the
 // world's table is what the contact loops read (contact-manager.ts) without loading a Shape.
@@ -30,6 +29,17 @@ export const FILTER_STRIDE = 4;
 export const MATERIAL_STRIDE = 4;
 
 /** Every shape's boxes, filter, material and geometry, by row (in a world, the shape id). */
+/**
+ * The world's solver memory as a shape table sees it: it makes room for rows (replacing the
+ * table's views) and writes a joining shape's geometry row (shape-geometry.ts). Passed in, not
+ * imported, so a page that builds shapes without a world (a worker world's page) does not bundle
+ * the geometry rows.
+ */
+export interface ShapeMemory {
+  reserveShapes(rows: number): void;
+  writeGeometry(row: number, geometry: Geometry): void;
+}
+
 export class ShapeTable {
   /** The boxes; replaced when the table grows (read it at each use). */
   data: Float64Array;
@@ -44,12 +54,12 @@ export class ShapeTable {
   readonly geometries: (Geometry | null)[] = [];
 
   /**
-   * Room for `rows` rows at first; {@link reserve} grows it: by itself, or through `grow`
-   * (a world's solver memory, which makes room for that many rows and replaces the views).
+   * Room for `rows` rows at first; {@link reserve} grows it: by itself, or through `memory` (a
+   * world's solver memory, which makes room for that many rows and replaces the views).
    */
   constructor(
     rows = 64,
-    private readonly grow: ((rows: number) => void) | null = null,
+    private readonly memory: ShapeMemory | null = null,
   ) {
     this.data = new Float64Array(SHAPE_STRIDE * rows);
     this.filters = new Int32Array(FILTER_STRIDE * rows);
@@ -62,8 +72,8 @@ export class ShapeTable {
     if ((id + 1) * SHAPE_STRIDE <= this.data.length) return;
     let rows = Math.max(1, this.data.length / SHAPE_STRIDE);
     while (rows < id + 1) rows *= 2;
-    if (this.grow !== null) {
-      this.grow(rows);
+    if (this.memory !== null) {
+      this.memory.reserveShapes(rows);
       return;
     }
     const grown = new Float64Array(rows * SHAPE_STRIDE);
@@ -94,7 +104,7 @@ export class ShapeTable {
     );
     const g = source.geometries[from]!;
     this.geometries[to] = g;
-    if (this.grow !== null) writeGeometryRow(this.geometry, to, g);
+    this.memory?.writeGeometry(to, g);
   }
 
   /** Stores row `id`'s tight box. */

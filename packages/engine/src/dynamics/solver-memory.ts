@@ -1,8 +1,15 @@
 import { BODY_STRIDE, BodyStore } from './body-memory.ts';
 import { createContactKernel, type ContactKernel, type WasmMemory } from './contact-kernel.ts';
 import { NARROW_PHASE_SCRATCH_DOUBLES } from './narrow-phase-scratch.ts';
-import { GEOMETRY_STRIDE } from './shape-geometry.ts';
-import { FILTER_STRIDE, MATERIAL_STRIDE, SHAPE_STRIDE, ShapeTable } from './shape-table.ts';
+import type { Geometry } from './shape.ts';
+import { GEOMETRY_STRIDE, writeGeometryRow } from './shape-geometry.ts';
+import {
+  FILTER_STRIDE,
+  MATERIAL_STRIDE,
+  SHAPE_STRIDE,
+  ShapeTable,
+  type ShapeMemory,
+} from './shape-table.ts';
 
 // The world's hot arrays in one block of memory: the bodies' own numbers (body-memory.ts, the one
 // copy the Body handles read and write), the body states and the body table
@@ -68,7 +75,7 @@ const SHAPE_REGIONS: readonly (readonly [number, number])[] = [
  */
 export const kernelSettings = { minConstraints: 0 };
 
-export class SolverMemory {
+export class SolverMemory implements ShapeMemory {
   /** Views of the regions; a later reserve of any region replaces them all. */
   states: Float64Array = new Float64Array(0);
   constraintData: Float64Array = new Float64Array(0);
@@ -95,7 +102,7 @@ export class SolverMemory {
    * shape table, whose arrays are this memory's shape regions, replaced (with every other view)
    * when it moves. It grows through {@link reserveShapes}.
    */
-  readonly shapeTable: ShapeTable = new ShapeTable(0, (rows) => this.reserveShapes(rows));
+  readonly shapeTable: ShapeTable = new ShapeTable(0, this);
   /** Byte offset of each region, for the kernel. */
   readonly offsets: number[] = new Array<number>(REGIONS).fill(0);
   /** The contact passes over this memory: WebAssembly once it has moved there, else JavaScript. */
@@ -138,6 +145,11 @@ export class SolverMemory {
       ...SHAPE_REGIONS.map(([, stride]) => 64 * stride),
       NARROW_PHASE_SCRATCH_DOUBLES,
     ]);
+  }
+
+  /** Writes shape `row`'s geometry row (SHAPE_GEOMETRY), when the shape joins the world. */
+  writeGeometry(row: number, geometry: Geometry): void {
+    writeGeometryRow(this.shapeTable.geometry, row, geometry);
   }
 
   /**
