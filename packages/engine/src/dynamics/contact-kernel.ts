@@ -185,35 +185,32 @@ export interface BodyPasses {
 }
 
 /**
- * The narrow phase (wasm/update-manifold.ts and the wasm/collide-*.ts it calls), built into the
- * same module: the manifold of a contact from its shapes' geometry rows (SHAPE_GEOMETRY,
- * shape-geometry.ts) at its bodies' poses (BODIES), in the narrow-phase scratch
- * (NARROW_PHASE_SCRATCH, narrow-phase-scratch.ts) and then the contact's slot (CONTACT_DATA).
+ * The narrow phase (wasm/contact-gates.ts, wasm/update-manifold.ts and the wasm/collide-*.ts it
+ * calls), built into the same module: the gates over the contact slots and the manifolds of the
+ * contacts they leave, from the shapes' geometry rows (SHAPE_GEOMETRY, shape-geometry.ts) at the
+ * bodies' poses (BODIES), through the narrow-phase scratch (NARROW_PHASE_SCRATCH,
+ * narrow-phase-scratch.ts) into the contacts' slots (CONTACT_DATA).
  */
 export interface NarrowPhase {
   /**
-   * The narrow phase in full for contact `slot` of pair kind `kind` (pair-kinds.ts), shapes
-   * `shapeA`, `shapeB` (rows of `geometry`), bodies `bodyA`, `bodyB` (world indices into
-   * `bodies`), with the gates' margin and reach (m) and B's pose in A's frame; returns its points.
+   * The narrow phase's gates over contact slots `from` to `count` - 1 (wasm/contact-gates.ts),
+   * computing the manifolds they leave to compute; returns the first slot that needs the contact
+   * manager (GATE_ACTION of the scratch says why: contact-gates.ts), or `count`. The arguments
+   * are the regions CONTACT_DATA, CONTACT_BODIES, CONTACT_SHAPES, CONTACT_KINDS, BODIES,
+   * SHAPE_BOXES, SHAPE_GEOMETRY and NARROW_PHASE_SCRATCH.
    */
-  updateManifold(
+  collideContacts(
     data: number,
+    slotBodies: number,
+    slotShapes: number,
+    kinds: number,
     bodies: number,
+    boxes: number,
     geometry: number,
     scratch: number,
-    slot: number,
-    kind: number,
-    shapeA: number,
-    shapeB: number,
-    bodyA: number,
-    bodyB: number,
+    from: number,
+    count: number,
     dt: number,
-    margin: number,
-    reach: number,
-    relX: number,
-    relY: number,
-    relC: number,
-    relS: number,
   ): number;
   /**
    * For tests: the collide function of pair kind `kind` on geometry rows at byte offsets `a` and

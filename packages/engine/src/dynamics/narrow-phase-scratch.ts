@@ -24,14 +24,16 @@ export const MP_ID = 3;
 /** Polygon A's vertices in the polygon kernel's frame (2 MAX_POLYGON_VERTICES doubles). */
 export const S_VERTICES_A = 16;
 /** Polygon B's vertices and normals in that frame. */
-export const S_VERTICES_B = S_VERTICES_A + 2 * MAX_POLYGON_VERTICES;
-export const S_NORMALS_B = S_VERTICES_B + 2 * MAX_POLYGON_VERTICES;
+export const S_VERTICES_B: number = S_VERTICES_A + 2 * MAX_POLYGON_VERTICES;
+export const S_NORMALS_B: number = S_VERTICES_B + 2 * MAX_POLYGON_VERTICES;
 /** A capsule or two-sided wall as a two-vertex polygon: a geometry row (shape-geometry.ts). */
-export const S_POLYGON = S_NORMALS_B + 2 * MAX_POLYGON_VERTICES;
+export const S_POLYGON: number = S_NORMALS_B + 2 * MAX_POLYGON_VERTICES;
 /** The closest-segment fractions f1 and f2 (closest-segment-fractions.ts). */
-export const S_FRACTIONS = S_POLYGON + GEOMETRY_STRIDE;
+export const S_FRACTIONS: number = S_POLYGON + GEOMETRY_STRIDE;
 /** A transform (x, y, cos, sin) the tests' collidePair reads, and a second one. */
-export const S_TRANSFORM_A = S_FRACTIONS + 2;
-export const S_TRANSFORM_B = S_TRANSFORM_A + 4;
+export const S_TRANSFORM_A: number = S_FRACTIONS + 2;
+export const S_TRANSFORM_B: number = S_TRANSFORM_A + 4;
+/** Why the kernel's collideContacts stopped at a slot (GATE_DESTROY, ... in contact-gates.ts). */
+export const GATE_ACTION: number = S_TRANSFORM_B + 4;
 /** Doubles of the region. */
-export const NARROW_PHASE_SCRATCH_DOUBLES = S_TRANSFORM_B + 4;
+export const NARROW_PHASE_SCRATCH_DOUBLES: number = GATE_ACTION + 1;

@@ -30,9 +30,9 @@ export const G_CENTROID_X = 3;
 export const G_CENTROID_Y = 4;
 export const G_ONE_SIDED = 5;
 export const G_VERTICES = 6;
-export const G_NORMALS = G_VERTICES + 2 * MAX_POLYGON_VERTICES;
+export const G_NORMALS: number = G_VERTICES + 2 * MAX_POLYGON_VERTICES;
 /** Doubles per row (8-byte rows: any stride keeps doubles aligned). */
-export const GEOMETRY_STRIDE = G_NORMALS + 2 * MAX_POLYGON_VERTICES;
+export const GEOMETRY_STRIDE: number = G_NORMALS + 2 * MAX_POLYGON_VERTICES;
 
 /** Writes geometry `g` into row `row` of `rows` (GEOMETRY_STRIDE doubles a row). */
 export function writeGeometryRow(rows: Float64Array, row: number, g: Geometry): void {

@@ -58,9 +58,13 @@ export const SHAPE_MATERIALS = 14;
 export const SHAPE_GEOMETRY = 15;
 /** The kernel's narrow phase's manifold and scratch (narrow-phase-scratch.ts): doubles, fixed. */
 export const NARROW_PHASE_SCRATCH = 16;
-const REGIONS = 17;
+/** Shape ids of each contact slot's shapes A and B: 2 int32. */
+export const CONTACT_SHAPES = 17;
+/** Each contact slot's pair kind (pair-kinds.ts): int32. */
+export const CONTACT_KINDS = 18;
+const REGIONS = 19;
 /** Bytes per element of each region. */
-const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8];
+const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8, 4, 4];
 /** The shape regions of that many rows. */
 const SHAPE_REGIONS: readonly (readonly [number, number])[] = [
   [SHAPE_BOXES, SHAPE_STRIDE],
@@ -85,6 +89,9 @@ export class SolverMemory implements ShapeMemory {
   circlePairs: Int32Array = new Int32Array(0);
   contactData: Float64Array = new Float64Array(0);
   contactBodies: Int32Array = new Int32Array(0);
+  /** Each contact slot's shape ids (CONTACT_SHAPES) and pair kind (CONTACT_KINDS). */
+  contactShapes: Int32Array = new Int32Array(0);
+  contactKinds: Int32Array = new Int32Array(0);
   bodyTable: Float64Array = new Float64Array(0);
   /** The step's awake bodies' world indices (AWAKE_BODIES). */
   awakeBodies: Int32Array = new Int32Array(0);
@@ -144,6 +151,8 @@ export class SolverMemory implements ShapeMemory {
       64,
       ...SHAPE_REGIONS.map(([, stride]) => 64 * stride),
       NARROW_PHASE_SCRATCH_DOUBLES,
+      512,
+      256,
     ]);
   }
 
@@ -273,6 +282,8 @@ export class SolverMemory implements ShapeMemory {
     const keep = new Array<number>(REGIONS).fill(0);
     keep[CONTACT_DATA] = liveContacts * this.contactStride;
     keep[CONTACT_BODIES] = 2 * liveContacts;
+    keep[CONTACT_SHAPES] = 2 * liveContacts;
+    keep[CONTACT_KINDS] = liveContacts;
     keep[BODIES] = bodies * BODY_STRIDE;
     for (const [region] of SHAPE_REGIONS) keep[region] = have[region]!;
     this.layout(wanted, toWasm, keep);
@@ -295,6 +306,8 @@ export class SolverMemory implements ShapeMemory {
     const slots = grown(wanted[CONTACT_DATA]! / this.contactStride, count);
     wanted[CONTACT_DATA] = slots * this.contactStride;
     wanted[CONTACT_BODIES] = 2 * slots;
+    wanted[CONTACT_SHAPES] = 2 * slots;
+    wanted[CONTACT_KINDS] = slots;
   }
 
   /** Grows `wanted`'s constraint regions to hold `count` constraints (no smaller than they are). */
@@ -376,6 +389,8 @@ export class SolverMemory implements ShapeMemory {
     this.awakeBodies = i32(AWAKE_BODIES);
     this.batchBodies = i32(BATCH_BODIES);
     this.narrowPhase = f64(NARROW_PHASE_SCRATCH);
+    this.contactShapes = i32(CONTACT_SHAPES);
+    this.contactKinds = i32(CONTACT_KINDS);
     const shapes = this.shapeTable;
     shapes.data = f64(SHAPE_BOXES);
     shapes.filters = i32(SHAPE_FILTERS);
