@@ -131,6 +131,11 @@ export {
   limitSpeeds,
 } from './body-passes';
 
+// The narrow phase (issue #30): the gates over the contact slots and the manifolds they leave to
+// compute, from the shapes' geometry rows.
+export { collideContacts } from './contact-gates';
+export { collidePair } from './update-manifold';
+
 // The constraints are stored in pairs, their numbers interleaved: number k of constraint i is at
 // double (i >> 1) * 2 * STRIDE + 2 * k + (i & 1) of the constraint region, so constraints 2m and
 // 2m + 1 have each number side by side, and the lanes (below) fetch both with one v128.load

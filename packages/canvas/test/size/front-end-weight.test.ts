@@ -33,8 +33,10 @@ import {
 // up to a tenth. The canvas's drag became its own spring (no joint: canvas 12.68 -> 10.39 KB,
 // worker page 32.93 -> 30.90 KB), and its code, and the joints' drawing, chunks loaded when first
 // used (a press on a body of a local World; a frame with joints or a held body): canvas 9.33 KB,
-// worker page 29.87 KB, both within budget. Lower a ceiling whenever a change makes room.
-const ENGINE_CEILING_BYTES = 55.5 * 1024;
+// worker page 29.87 KB, both within budget. The narrow phase (its gates and manifold functions)
+// moved into the kernel too (issue #30): its TypeScript left the bundle, the module grew by 11 KB
+// of WebAssembly (engine 55.3 KB). Lower a ceiling whenever a change makes room.
+const ENGINE_CEILING_BYTES = 55.4 * 1024;
 const CANVAS_CEILING_BYTES = 9.5 * 1024;
 const WORKER_PAGE_CEILING_BYTES = 30 * 1024;
 

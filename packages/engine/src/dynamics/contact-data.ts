@@ -59,16 +59,21 @@ export const CONTACT_STRIDE: number = POINTS + 2 * POINT_STRIDE;
  * solver's preparation reads them (in WebAssembly too).
  */
 export class ContactData {
+  constructor(private readonly memory: SolverMemory) {}
+
   /**
    * Per slot, the ids of shape A and shape B (2 per slot), so the narrow phase's gates read the
-   * shapes' boxes without loading the contact (contact-manager.ts). Not in the solver memory:
-   * only JavaScript reads them.
+   * shapes' boxes without loading the contact (contact-manager.ts): the solver memory's
+   * CONTACT_SHAPES, a view a later reserve replaces.
    */
-  shapes: Int32Array = new Int32Array(128);
-  /** Per slot, the pair kind (which collide function applies, see contact.ts). */
-  kinds: Uint8Array = new Uint8Array(64);
+  get shapes(): Int32Array {
+    return this.memory.contactShapes;
+  }
 
-  constructor(private readonly memory: SolverMemory) {}
+  /** Per slot, the pair kind (which collide function applies, pair-kinds.ts): CONTACT_KINDS. */
+  get kinds(): Int32Array {
+    return this.memory.contactKinds;
+  }
 
   /** The slots' numbers; a view that a later reserve of the memory replaces. */
   get data(): Float64Array {
@@ -86,16 +91,6 @@ export class ContactData {
   /** Makes room for `count` slots, keeping the existing ones. */
   reserve(count: number): void {
     this.memory.reserveContacts(count);
-    if (this.shapes.length < 2 * count) {
-      let size = this.shapes.length;
-      while (size < 2 * count) size *= 2;
-      const grown = new Int32Array(size);
-      grown.set(this.shapes);
-      this.shapes = grown;
-      const kinds = new Uint8Array(size / 2);
-      kinds.set(this.kinds);
-      this.kinds = kinds;
-    }
   }
 
   /** Copies slot `from` over slot `to` (swap-removal keeps the slots dense). */
@@ -108,7 +103,8 @@ export class ContactData {
     const shapes = this.shapes;
     shapes[2 * to] = shapes[2 * from]!;
     shapes[2 * to + 1] = shapes[2 * from + 1]!;
-    this.kinds[to] = this.kinds[from]!;
+    const kinds = this.kinds;
+    kinds[to] = kinds[from]!;
   }
 
   /** Records the world indices of a slot's bodies, the ids of its shapes and its pair kind. */

@@ -29,7 +29,7 @@ interface WasmApi {
 }
 
 /** The kernel's exports; pointers are byte offsets into its memory. */
-export interface ContactKernel extends BodyPasses {
+export interface ContactKernel extends BodyPasses, NarrowPhase {
   /** prepareContacts; returns the number of constraints. */
   prepare(
     contactData: number,
@@ -182,6 +182,48 @@ export interface BodyPasses {
   ): void;
   /** Velocities, centre, angle and sleep clock of the `count` awake bodies into the body memory. */
   finalizeBodies(bodies: number, awake: number, count: number, states: number, dt: number): void;
+}
+
+/**
+ * The narrow phase (wasm/contact-gates.ts, wasm/update-manifold.ts and the wasm/collide-*.ts it
+ * calls), built into the same module: the gates over the contact slots and the manifolds of the
+ * contacts they leave, from the shapes' geometry rows (SHAPE_GEOMETRY, shape-geometry.ts) at the
+ * bodies' poses (BODIES), through the narrow-phase scratch (NARROW_PHASE_SCRATCH,
+ * narrow-phase-scratch.ts) into the contacts' slots (CONTACT_DATA).
+ */
+export interface NarrowPhase {
+  /**
+   * The narrow phase's gates over contact slots `from` to `count` - 1 (wasm/contact-gates.ts),
+   * computing the manifolds they leave to compute; returns the first slot that needs the contact
+   * manager (GATE_ACTION of the scratch says why: contact-gates.ts), or `count`. The arguments
+   * are the regions CONTACT_DATA, CONTACT_BODIES, CONTACT_SHAPES, CONTACT_KINDS, BODIES,
+   * SHAPE_BOXES, SHAPE_GEOMETRY and NARROW_PHASE_SCRATCH.
+   */
+  collideContacts(
+    data: number,
+    slotBodies: number,
+    slotShapes: number,
+    kinds: number,
+    bodies: number,
+    boxes: number,
+    geometry: number,
+    scratch: number,
+    from: number,
+    count: number,
+    dt: number,
+  ): number;
+  /**
+   * For tests: the collide function of pair kind `kind` on geometry rows at byte offsets `a` and
+   * `b`, at the transforms in the scratch (S_TRANSFORM_A, S_TRANSFORM_B), into the scratch's
+   * manifold.
+   */
+  collidePair(
+    kind: number,
+    a: number,
+    b: number,
+    scratch: number,
+    speculativeDistance: number,
+  ): void;
 }
 
 /** Creates the JavaScript build of the kernel over `imports.env.memory` (wasm2js's factory). */

@@ -1,60 +1,26 @@
 import { releaseFrom } from '../core/release.ts';
 import { PairSet } from '../collision/pair-set.ts';
-import { AABB_MARGIN, LINEAR_SLOP, SPECULATIVE_DISTANCE } from '../core/constants.ts';
 import type { Body } from './body.ts';
-import type { BodyStore } from './body-memory.ts';
-import {
-  canCollide,
-  GATE_MARGIN,
-  GATE_REACH,
-  GATE_REL_C,
-  GATE_REL_S,
-  GATE_REL_X,
-  GATE_REL_Y,
-  gateTransformA,
-  gateTransformB,
-  initContactSlot,
-  narrowPhaseGate,
-  shouldSwap,
-  updateManifold,
-} from './contact.ts';
+import { canCollide, initContactSlot, shouldSwap } from './contact.ts';
 import type { ContactEdges } from './contact-edges.ts';
-import {
-  CACHE,
-  CONTACT_STRIDE,
-  ContactData,
-  HAS_CACHE,
-  NORMAL_X,
-  NORMAL_Y,
-  P_MAX_NORMAL_IMPULSE,
-  P_SEPARATION,
-  P_STEP_NORMAL_IMPULSE,
-  P_STEP_TANGENT_IMPULSE,
-  P_X,
-  P_Y,
-  POINT_COUNT,
-  POINT_STRIDE,
-  POINTS,
-} from './contact-data.ts';
+import { CONTACT_STRIDE, ContactData, POINT_COUNT } from './contact-data.ts';
+import { GATE_BEGIN, GATE_DESTROY } from './contact-gates.ts';
+import { GATE_ACTION } from './narrow-phase-scratch.ts';
 import type { Islands } from './island.ts';
 import { jointPreventsCollision } from './joints/joint.ts';
 import type { Shape } from './shape.ts';
 import type { ShapeTable } from './shape-table.ts';
-import type { SolverMemory } from './solver-memory.ts';
-
-// Manifolds are reused while B moved less than this relative to A (m). Motion along the normal is
-// measured exactly on reuse; only sliding along the surface can leave a contact point behind its
-// true place, by at most this much: half the slop, below anything the solver resolves.
-const REUSE_TOLERANCE = 0.5 * LINEAR_SLOP;
-const REUSE_TOLERANCE_SQUARED = REUSE_TOLERANCE * REUSE_TOLERANCE;
-
-// A contact whose fat boxes parted lives on while its shapes' tight boxes are no farther apart
-// than this (m) along either axis. Fat boxes reach AABB_MARGIN past their shapes, so shapes within two margins
-// can meet again by re-fattening alone; a turning box's own box also swells and shrinks from step
-// to step. Counted in tumbler's first 150 steps: keeping to two margins, 62,000 of the 124,000
-// contacts made were pairs ended the step before, at tight gaps of 0.21-0.29 m; keeping to four,
-// 358 of 36,000. Per step over 300 steps (npm run bench:churn): 1,106 made before, 152 after.
-const KEEP_GAP = 4 * AABB_MARGIN;
+import {
+  BODIES,
+  CONTACT_BODIES,
+  CONTACT_DATA,
+  CONTACT_KINDS,
+  CONTACT_SHAPES,
+  NARROW_PHASE_SCRATCH,
+  SHAPE_BOXES,
+  SHAPE_GEOMETRY,
+  type SolverMemory,
+} from './solver-memory.ts';
 
 // Pairs reserved per shape before a step finds its pairs: a box in a stack or a pile touches
 // about three others (large_pyramid: 14,950 contacts for 5,050 boxes). More still fit: the set
@@ -101,12 +67,10 @@ export class ContactManager {
   get countWithPending(): number {
     return this.count + this.pendingCount;
   }
-  /** The bodies' numbers (body-memory.ts), which the narrow phase's gates read in place. */
-  private readonly bodyStore: BodyStore;
 
   constructor(
     private readonly islands: Islands,
-    memory: SolverMemory,
+    private readonly memory: SolverMemory,
     private readonly table: ShapeTable,
     /** Each body's contact list (shared with the island search). */
     readonly edges: ContactEdges,
@@ -115,7 +79,6 @@ export class ContactManager {
     private readonly shapes: readonly (Shape | null)[],
   ) {
     this.slots = new ContactData(memory);
-    this.bodyStore = memory.bodyStore;
   }
 
   /** Body A of the contact in `slot`. */
@@ -231,11 +194,12 @@ export class ContactManager {
    * update the manifolds of the rest, record which started or stopped touching, and wake a
    * sleeping body that something started touching.
    *
-   * Gates first, from the bodies' own numbers (body-memory.ts) and the flat copy of the shapes'
-   * boxes (shape-table.ts), so most contacts are settled without loading their Contact, Body, Shape or
-   * Transform objects: in a tumbling pile three contacts in four are pairs of fat boxes whose
-   * shapes are nowhere near touching, and in a resting stack nearly all reuse their manifold.
-   * Box2D v3 streams its contact sims in arrays for the same reason ("b2CollideTask").
+   * The gates and the manifolds run in the kernel (wasm/contact-gates.ts), from the bodies' own
+   * numbers (body-memory.ts) and the shapes' boxes and geometry rows (shape-table.ts,
+   * shape-geometry.ts), so most contacts are settled without loading an object: in a tumbling
+   * pile three contacts in four are pairs of fat boxes whose shapes are nowhere near touching,
+   * and in a resting stack nearly all reuse their manifold. Box2D v3 streams its contact sims in
+   * arrays for the same reason ("b2CollideTask").
    */
   collide(dt: number): void {
     this.beganCount = 0;
@@ -245,166 +209,45 @@ export class ContactManager {
       this.beganIds = grownInt32(this.beganIds, 2 * this.count);
     }
     const began = this.beganIds;
-    // The world's body memory does not move during the narrow phase (bodies join between steps).
-    const pose = this.bodyStore.data;
-    const boxes = this.table.data;
-    const data = this.slots.data;
+    // The gates and the manifolds are the kernel's (wasm/contact-gates.ts), over the slots in the
+    // solver memory, which does not move during the narrow phase (bodies and shapes join between
+    // steps). It stops at each slot whose outcome needs objects: a contact to end, a touch that
+    // began or ended; that work is done here, in slot order, and the pass resumes.
+    const memory = this.memory;
+    const kernel = memory.kernel;
+    const offsets = memory.offsets;
+    const scratch = memory.narrowPhase;
     const slotBodies = this.slots.bodies;
     const slotShapes = this.slots.shapes;
-    const kinds = this.slots.kinds;
-    const geometries = this.table.geometries;
-    const gate = narrowPhaseGate;
     let i = 0;
-    while (i < this.count) {
-      // Offsets: body-memory.ts (stride 40: pose 0-3, velocity 4-6, origin reach 7, max extent 8,
-      // awake 9) and shape-table.ts (stride 8; fat box from 4). Literals: the loop is hot.
-      const pa = slotBodies[2 * i]! * 40;
-      const pb = slotBodies[2 * i + 1]! * 40;
-      if (pose[pa + 9] === 0 && pose[pb + 9] === 0) {
-        i++;
-        continue;
-      }
-      const sa = slotShapes[2 * i]! * 8;
-      const sb = slotShapes[2 * i + 1]! * 8;
-      // aabbOverlaps of the fat boxes, written out. Parted fat boxes end the contact only once the
-      // shapes' tight boxes are also apart by more than KEEP_GAP: a box re-fattened around its new
-      // place often parts from a neighbour's stale fat box, and the neighbour's own re-fattening
-      // joins them again a step or two later (in a tumbling pile two contacts in three made were
-      // ended the step before). Keeping such a pair costs the box test below; ending and making it
-      // again costs the pair set, both bodies' contact lists and a new slot. A kept pair stays
-      // correct: its shapes are still tested every step, and the broad phase's report of its
-      // fat boxes meeting again finds it in the pair set.
-      if (
-        !(
-          boxes[sa + 4]! <= boxes[sb + 6]! &&
-          boxes[sb + 4]! <= boxes[sa + 6]! &&
-          boxes[sa + 5]! <= boxes[sb + 7]! &&
-          boxes[sb + 5]! <= boxes[sa + 7]!
-        ) &&
-        (boxes[sa]! - KEEP_GAP > boxes[sb + 2]! ||
-          boxes[sb]! - KEEP_GAP > boxes[sa + 2]! ||
-          boxes[sa + 1]! - KEEP_GAP > boxes[sb + 3]! ||
-          boxes[sb + 1]! - KEEP_GAP > boxes[sa + 3]!)
-      ) {
+    for (;;) {
+      i = kernel.collideContacts(
+        offsets[CONTACT_DATA]!,
+        offsets[CONTACT_BODIES]!,
+        offsets[CONTACT_SHAPES]!,
+        offsets[CONTACT_KINDS]!,
+        offsets[BODIES]!,
+        offsets[SHAPE_BOXES]!,
+        offsets[SHAPE_GEOMETRY]!,
+        offsets[NARROW_PHASE_SCRATCH]!,
+        i,
+        this.count,
+        dt,
+      );
+      if (i >= this.count) break;
+      const action = scratch[GATE_ACTION];
+      if (action === GATE_DESTROY) {
         this.destroy(i, false);
         continue; // the last contact now sits at index i
       }
-      const base = i * CONTACT_STRIDE;
-      // Bound on how much the gap can close this step: relative speed plus rotation at the rim.
-      const dvx = pose[pb + 4]! - pose[pa + 4]!;
-      const dvy = pose[pb + 5]! - pose[pa + 5]!;
-      // Rotation at the rim: |angular velocity| times the farthest point from the centre of mass.
-      const spinA = Math.abs(pose[pa + 6]!) * pose[pa + 8]!;
-      const spinB = Math.abs(pose[pb + 6]!) * pose[pb + 8]!;
-      const reach = dt * (Math.sqrt(dvx * dvx + dvy * dvy) + spinA + spinB);
-      const margin = SPECULATIVE_DISTANCE + reach;
-      // Most pairs whose fat boxes overlap are nowhere near touching: their tight boxes settle it.
-      if (
-        boxes[sa]! - margin > boxes[sb + 2]! ||
-        boxes[sb]! - margin > boxes[sa + 2]! ||
-        boxes[sa + 1]! - margin > boxes[sb + 3]! ||
-        boxes[sb + 1]! - margin > boxes[sa + 3]!
-      ) {
-        // A contact touches exactly when its slot holds points (contact.ts keeps them together).
-        if (data[base + POINT_COUNT] !== 0) this.recordEnd(i);
-        data[base + POINT_COUNT] = 0;
-        data[base + HAS_CACHE] = 0;
-        i++;
-        continue;
-      }
-      // B's pose in A's frame.
-      const cA = pose[pa + 2]!;
-      const sA = pose[pa + 3]!;
-      const cB = pose[pb + 2]!;
-      const sB = pose[pb + 3]!;
-      const relC = cA * cB + sA * sB;
-      const relS = cA * sB - sA * cB;
-      const ox = pose[pb]! - pose[pa]!;
-      const oy = pose[pb + 1]! - pose[pa + 1]!;
-      const relX = cA * ox + sA * oy;
-      const relY = -sA * ox + cA * oy;
-      // Reuse: B moved relative to A by less than REUSE_TOLERANCE at any of its points since the
-      // manifold was computed in full, so the same features touch and only the separations need
-      // updating. Resting stacks (most contacts of a settled scene) skip the separating-axis test
-      // and the clipping this way (the manifold reuse of Parry/Rapier).
-      const k = base + CACHE;
-      const dx = relX - data[k]!;
-      const dy = relY - data[k + 1]!;
-      // |sin| of the rotation since then, times the farthest point of B from its own origin.
-      const turn = Math.abs(relS * data[k + 2]! - relC * data[k + 3]!) * pose[pb + 7]!;
-      if (
-        data[base + HAS_CACHE] === 1 &&
-        dx * dx + dy * dy + turn * turn < REUSE_TOLERANCE_SQUARED
-      ) {
-        // Move the cached surface points with their bodies and measure the gap along the normal.
-        const xA = pose[pa]!;
-        const yA = pose[pa + 1]!;
-        const xB = pose[pb]!;
-        const yB = pose[pb + 1]!;
-        const nx = cA * data[k + 12]! - sA * data[k + 13]!;
-        const ny = sA * data[k + 12]! + cA * data[k + 13]!;
-        data[base + NORMAL_X] = nx;
-        data[base + NORMAL_Y] = ny;
-        const count = data[base + POINT_COUNT]!;
-        for (let j = 0; j < count; j++) {
-          const q = k + 4 + 4 * j;
-          const ax = cA * data[q]! - sA * data[q + 1]! + xA;
-          const ay = sA * data[q]! + cA * data[q + 1]! + yA;
-          const bx = cB * data[q + 2]! - sB * data[q + 3]! + xB;
-          const by = sB * data[q + 2]! + cB * data[q + 3]! + yB;
-          const p = base + POINTS + j * POINT_STRIDE;
-          data[p + P_SEPARATION] = (bx - ax) * nx + (by - ay) * ny;
-          data[p + P_X] = 0.5 * (ax + bx);
-          data[p + P_Y] = 0.5 * (ay + by);
-        }
-        for (let j = 0; j < 2; j++) {
-          const p = base + POINTS + j * POINT_STRIDE;
-          data[p + P_MAX_NORMAL_IMPULSE] = 0;
-          data[p + P_STEP_NORMAL_IMPULSE] = 0;
-          data[p + P_STEP_TANGENT_IMPULSE] = 0;
-        }
-        i++;
-        continue;
-      }
-      gate[GATE_MARGIN] = margin;
-      gate[GATE_REACH] = reach;
-      gate[GATE_REL_X] = relX;
-      gate[GATE_REL_Y] = relY;
-      gate[GATE_REL_C] = relC;
-      gate[GATE_REL_S] = relS;
-      const xfA = gateTransformA;
-      xfA.x = pose[pa]!;
-      xfA.y = pose[pa + 1]!;
-      xfA.c = cA;
-      xfA.s = sA;
-      const xfB = gateTransformB;
-      xfB.x = pose[pb]!;
-      xfB.y = pose[pb + 1]!;
-      xfB.c = cB;
-      xfB.s = sB;
-      const wasTouching = data[base + POINT_COUNT] !== 0;
-      const touching =
-        updateManifold(
-          i,
-          kinds[i]!,
-          geometries[sa >> 3]!,
-          geometries[sb >> 3]!,
-          dt,
-          data,
-          pose,
-          pa,
-          pb,
-        ) > 0;
-      if (touching !== wasTouching) {
-        if (touching) {
-          const n = this.beganCount++;
-          began[2 * n] = sa >> 3;
-          began[2 * n + 1] = sb >> 3;
-          this.wake(this.bodies[slotBodies[2 * i]!]!);
-          this.wake(this.bodies[slotBodies[2 * i + 1]!]!);
-        } else {
-          this.recordEnd(i);
-        }
+      if (action === GATE_BEGIN) {
+        const n = this.beganCount++;
+        began[2 * n] = slotShapes[2 * i]!;
+        began[2 * n + 1] = slotShapes[2 * i + 1]!;
+        this.wake(this.bodies[slotBodies[2 * i]!]!);
+        this.wake(this.bodies[slotBodies[2 * i + 1]!]!);
+      } else {
+        this.recordEnd(i);
       }
       i++;
     }

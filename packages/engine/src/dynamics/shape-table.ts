@@ -16,6 +16,12 @@ import type { Geometry } from './shape.ts';
 //   2 group, 3 sensor (1/0)
 // Materials, stride 4 doubles per row (not read by the contact loops, so apart from the boxes):
 //   0 density, 1 friction, 2 restitution, 3 free
+// Geometry, stride GEOMETRY_STRIDE doubles per row (shape-geometry.ts), which the kernel's narrow
+// phase reads: written when the shape joins the table (geometry never changes).
+//
+// A world's table is views of its solver memory's regions (SHAPE_BOXES, SHAPE_FILTERS,
+// SHAPE_MATERIALS, SHAPE_GEOMETRY: solver-memory.ts), which the memory replaces when it moves, as
+// it does the body store's; a shape outside a world has a table of plain arrays.
 // The box and filter offsets are literals in contact-manager.ts, the one file whose loops read
 // them, and in shape.ts's accessors.
 export const SHAPE_STRIDE = 8;
@@ -23,15 +29,38 @@ export const FILTER_STRIDE = 4;
 export const MATERIAL_STRIDE = 4;
 
 /** Every shape's boxes, filter, material and geometry, by row (in a world, the shape id). */
+/**
+ * The world's solver memory as a shape table sees it: it makes room for rows (replacing the
+ * table's views) and writes a joining shape's geometry row (shape-geometry.ts). Passed in, not
+ * imported, so a page that builds shapes without a world (a worker world's page) does not bundle
+ * the geometry rows.
+ */
+export interface ShapeMemory {
+  reserveShapes(rows: number): void;
+  writeGeometry(row: number, geometry: Geometry): void;
+}
+
 export class ShapeTable {
+  /** The boxes; replaced when the table grows (read it at each use). */
   data: Float64Array;
   filters: Int32Array;
   materials: Float64Array;
+  /**
+   * Each row's geometry numbers (shape-geometry.ts), in a world's table only (the kernel's narrow
+   * phase reads them; a shape outside a world has its geometry object alone).
+   */
+  geometry: Float64Array = new Float64Array(0);
   /** Each row's geometry (null for a free id). */
   readonly geometries: (Geometry | null)[] = [];
 
-  /** Room for `rows` rows at first; {@link reserve} grows it. */
-  constructor(rows = 64) {
+  /**
+   * Room for `rows` rows at first; {@link reserve} grows it: by itself, or through `memory` (a
+   * world's solver memory, which makes room for that many rows and replaces the views).
+   */
+  constructor(
+    rows = 64,
+    private readonly memory: ShapeMemory | null = null,
+  ) {
     this.data = new Float64Array(SHAPE_STRIDE * rows);
     this.filters = new Int32Array(FILTER_STRIDE * rows);
     this.materials = new Float64Array(MATERIAL_STRIDE * rows);
@@ -41,8 +70,12 @@ export class ShapeTable {
   reserve(id: number): void {
     while (this.geometries.length <= id) this.geometries.push(null);
     if ((id + 1) * SHAPE_STRIDE <= this.data.length) return;
-    let rows = this.data.length / SHAPE_STRIDE;
+    let rows = Math.max(1, this.data.length / SHAPE_STRIDE);
     while (rows < id + 1) rows *= 2;
+    if (this.memory !== null) {
+      this.memory.reserveShapes(rows);
+      return;
+    }
     const grown = new Float64Array(rows * SHAPE_STRIDE);
     grown.set(this.data);
     this.data = grown;
@@ -69,7 +102,9 @@ export class ShapeTable {
       source.materials.subarray(from * MATERIAL_STRIDE, (from + 1) * MATERIAL_STRIDE),
       to * MATERIAL_STRIDE,
     );
-    this.geometries[to] = source.geometries[from]!;
+    const g = source.geometries[from]!;
+    this.geometries[to] = g;
+    this.memory?.writeGeometry(to, g);
   }
 
   /** Stores row `id`'s tight box. */

@@ -1,5 +1,15 @@
 import { BODY_STRIDE, BodyStore } from './body-memory.ts';
 import { createContactKernel, type ContactKernel, type WasmMemory } from './contact-kernel.ts';
+import { NARROW_PHASE_SCRATCH_DOUBLES } from './narrow-phase-scratch.ts';
+import type { Geometry } from './shape.ts';
+import { GEOMETRY_STRIDE, writeGeometryRow } from './shape-geometry.ts';
+import {
+  FILTER_STRIDE,
+  MATERIAL_STRIDE,
+  SHAPE_STRIDE,
+  ShapeTable,
+  type ShapeMemory,
+} from './shape-table.ts';
 
 // The world's hot arrays in one block of memory: the bodies' own numbers (body-memory.ts, the one
 // copy the Body handles read and write), the body states and the body table
@@ -38,9 +48,30 @@ export const BODIES = 9;
 export const AWAKE_BODIES = 10;
 /** A batch of islands' awake indices (solver-batches.ts), for the body passes: int32. */
 export const BATCH_BODIES = 11;
-const REGIONS = 12;
+/** The shapes' boxes, by shape id (shape-table.ts): doubles. */
+export const SHAPE_BOXES = 12;
+/** The shapes' filters (shape-table.ts): int32. */
+export const SHAPE_FILTERS = 13;
+/** The shapes' materials (shape-table.ts): doubles. */
+export const SHAPE_MATERIALS = 14;
+/** The shapes' geometry rows (shape-geometry.ts), which the kernel's narrow phase reads: doubles. */
+export const SHAPE_GEOMETRY = 15;
+/** The kernel's narrow phase's manifold and scratch (narrow-phase-scratch.ts): doubles, fixed. */
+export const NARROW_PHASE_SCRATCH = 16;
+/** Shape ids of each contact slot's shapes A and B: 2 int32. */
+export const CONTACT_SHAPES = 17;
+/** Each contact slot's pair kind (pair-kinds.ts): int32. */
+export const CONTACT_KINDS = 18;
+const REGIONS = 19;
 /** Bytes per element of each region. */
-const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4];
+const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8, 4, 4];
+/** The shape regions of that many rows. */
+const SHAPE_REGIONS: readonly (readonly [number, number])[] = [
+  [SHAPE_BOXES, SHAPE_STRIDE],
+  [SHAPE_FILTERS, FILTER_STRIDE],
+  [SHAPE_MATERIALS, MATERIAL_STRIDE],
+  [SHAPE_GEOMETRY, GEOMETRY_STRIDE],
+];
 
 /**
  * @internal When worlds move to the WebAssembly kernel: at this many contacts in a step (0, the
@@ -48,7 +79,7 @@ const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4];
  */
 export const kernelSettings = { minConstraints: 0 };
 
-export class SolverMemory {
+export class SolverMemory implements ShapeMemory {
   /** Views of the regions; a later reserve of any region replaces them all. */
   states: Float64Array = new Float64Array(0);
   constraintData: Float64Array = new Float64Array(0);
@@ -58,16 +89,27 @@ export class SolverMemory {
   circlePairs: Int32Array = new Int32Array(0);
   contactData: Float64Array = new Float64Array(0);
   contactBodies: Int32Array = new Int32Array(0);
+  /** Each contact slot's shape ids (CONTACT_SHAPES) and pair kind (CONTACT_KINDS). */
+  contactShapes: Int32Array = new Int32Array(0);
+  contactKinds: Int32Array = new Int32Array(0);
   bodyTable: Float64Array = new Float64Array(0);
   /** The step's awake bodies' world indices (AWAKE_BODIES). */
   awakeBodies: Int32Array = new Int32Array(0);
   /** A batch's awake indices for the body passes (BATCH_BODIES). */
   batchBodies: Int32Array = new Int32Array(0);
+  /** The kernel's narrow-phase manifold and scratch (NARROW_PHASE_SCRATCH). */
+  narrowPhase: Float64Array = new Float64Array(0);
   /**
    * The bodies' numbers (body-memory.ts): the store every Body handle of the world reads through.
    * Its `data` is this memory's BODIES region, replaced (with every other view) when it moves.
    */
   readonly bodyStore: BodyStore = new BodyStore(new Float64Array(0));
+  /**
+   * The shapes' boxes, filters, materials and geometry (shape-table.ts), by shape id: the world's
+   * shape table, whose arrays are this memory's shape regions, replaced (with every other view)
+   * when it moves. It grows through {@link reserveShapes}.
+   */
+  readonly shapeTable: ShapeTable = new ShapeTable(0, this);
   /** Byte offset of each region, for the kernel. */
   readonly offsets: number[] = new Array<number>(REGIONS).fill(0);
   /** The contact passes over this memory: WebAssembly once it has moved there, else JavaScript. */
@@ -107,7 +149,28 @@ export class SolverMemory {
       64 * BODY_STRIDE,
       64,
       64,
+      ...SHAPE_REGIONS.map(([, stride]) => 64 * stride),
+      NARROW_PHASE_SCRATCH_DOUBLES,
+      512,
+      256,
     ]);
+  }
+
+  /** Writes shape `row`'s geometry row (SHAPE_GEOMETRY), when the shape joins the world. */
+  writeGeometry(row: number, geometry: Geometry): void {
+    writeGeometryRow(this.shapeTable.geometry, row, geometry);
+  }
+
+  /**
+   * Makes room for `rows` shapes' rows (shape-table.ts), keeping them; replaces every view when
+   * it grows (never inside a step: shapes join between steps).
+   */
+  reserveShapes(rows: number): void {
+    if (rows * SHAPE_STRIDE <= this.capacities[SHAPE_BOXES]!) return;
+    const wanted = this.capacities.slice();
+    for (const [region, stride] of SHAPE_REGIONS)
+      wanted[region] = grown(wanted[region]!, rows * stride);
+    this.layout(wanted, this.wasm !== null);
   }
 
   /**
@@ -121,6 +184,8 @@ export class SolverMemory {
     wanted[BODIES] = grown(wanted[BODIES]!, bodies * BODY_STRIDE);
     wanted[AWAKE_BODIES] = grown(wanted[AWAKE_BODIES]!, bodies);
     wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, bodies);
+    // The shapes keep their rows (the world keeps its shape ids).
+    for (const [region] of SHAPE_REGIONS) wanted[region] = this.capacities[region]!;
     const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
@@ -217,7 +282,10 @@ export class SolverMemory {
     const keep = new Array<number>(REGIONS).fill(0);
     keep[CONTACT_DATA] = liveContacts * this.contactStride;
     keep[CONTACT_BODIES] = 2 * liveContacts;
+    keep[CONTACT_SHAPES] = 2 * liveContacts;
+    keep[CONTACT_KINDS] = liveContacts;
     keep[BODIES] = bodies * BODY_STRIDE;
+    for (const [region] of SHAPE_REGIONS) keep[region] = have[region]!;
     this.layout(wanted, toWasm, keep);
   }
 
@@ -238,6 +306,8 @@ export class SolverMemory {
     const slots = grown(wanted[CONTACT_DATA]! / this.contactStride, count);
     wanted[CONTACT_DATA] = slots * this.contactStride;
     wanted[CONTACT_BODIES] = 2 * slots;
+    wanted[CONTACT_SHAPES] = 2 * slots;
+    wanted[CONTACT_KINDS] = slots;
   }
 
   /** Grows `wanted`'s constraint regions to hold `count` constraints (no smaller than they are). */
@@ -318,6 +388,14 @@ export class SolverMemory {
     this.bodyStore.data = f64(BODIES);
     this.awakeBodies = i32(AWAKE_BODIES);
     this.batchBodies = i32(BATCH_BODIES);
+    this.narrowPhase = f64(NARROW_PHASE_SCRATCH);
+    this.contactShapes = i32(CONTACT_SHAPES);
+    this.contactKinds = i32(CONTACT_KINDS);
+    const shapes = this.shapeTable;
+    shapes.data = f64(SHAPE_BOXES);
+    shapes.filters = i32(SHAPE_FILTERS);
+    shapes.materials = f64(SHAPE_MATERIALS);
+    shapes.geometry = f64(SHAPE_GEOMETRY);
   }
 }
 

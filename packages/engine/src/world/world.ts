@@ -18,7 +18,6 @@ import { Islands } from '../dynamics/island.ts';
 import type { Joint } from '../dynamics/joints/joint.ts';
 import { Sensors } from '../dynamics/sensor.ts';
 import type { Shape, ShapeOptions } from '../dynamics/shape.ts';
-import { ShapeTable } from '../dynamics/shape-table.ts';
 import { Solver } from '../dynamics/solver.ts';
 import { EventDispatch, forgetBodies } from './event-dispatch.ts';
 import { WorldQueries, type RayCastHit } from './queries.ts';
@@ -59,7 +58,8 @@ export class World {
   private readonly solver = new Solver();
   private readonly contactEdges = new ContactEdges(this.solver.memory);
   private readonly islands = new Islands(this.contactEdges, this.bodyList);
-  private readonly shapeTable = new ShapeTable();
+  /** The shapes' numbers: views of the solver memory's shape regions. */
+  private readonly shapeTable = this.solver.memory.shapeTable;
   private readonly contactManager = new ContactManager(
     this.islands,
     this.solver.memory,

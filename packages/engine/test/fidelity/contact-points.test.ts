@@ -1,7 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { SPECULATIVE_DISTANCE } from '../../src/core/constants.ts';
-import { collidePolygons } from '../../src/collision/collide-polygons.ts';
-import { Manifold } from '../../src/collision/manifold.ts';
+import { collidePolygons, Manifold } from '../unit/collision/kernel-collide.ts';
 import { makeBox } from '../../src/geometry/polygon.ts';
 import { Transform } from '../../src/math/transform.ts';
 

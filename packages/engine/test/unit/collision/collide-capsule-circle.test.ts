@@ -1,6 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { collideCapsuleAndCircle } from '../../../src/collision/collide-capsule-circle.ts';
-import { Manifold } from '../../../src/collision/manifold.ts';
+import { collideCapsuleAndCircle, Manifold } from './kernel-collide.ts';
 import { makeCapsule } from '../../../src/geometry/capsule.ts';
 import { makeCircle } from '../../../src/geometry/circle.ts';
 import { Transform } from '../../../src/math/transform.ts';

@@ -1,6 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { collideCapsules } from '../../../src/collision/collide-capsules.ts';
-import { Manifold } from '../../../src/collision/manifold.ts';
+import { collideCapsules, Manifold } from './kernel-collide.ts';
 import { makeCapsule } from '../../../src/geometry/capsule.ts';
 import { Transform } from '../../../src/math/transform.ts';
 

@@ -1,6 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { collidePolygonAndCapsule } from '../../../src/collision/collide-polygon-capsule.ts';
-import { Manifold } from '../../../src/collision/manifold.ts';
+import { collidePolygonAndCapsule, Manifold } from './kernel-collide.ts';
 import { makeCapsule } from '../../../src/geometry/capsule.ts';
 import { makeBox } from '../../../src/geometry/polygon.ts';
 import { Transform } from '../../../src/math/transform.ts';

@@ -1,6 +1,5 @@
 import { describe, expect, it } from 'vitest';
-import { collideSegmentAndCapsule } from '../../../src/collision/collide-segment-capsule.ts';
-import { Manifold } from '../../../src/collision/manifold.ts';
+import { collideSegmentAndCapsule, Manifold } from './kernel-collide.ts';
 import { makeCapsule } from '../../../src/geometry/capsule.ts';
 import { makeSegment } from '../../../src/geometry/segment.ts';
 import { Transform } from '../../../src/math/transform.ts';

@@ -13,6 +13,7 @@ import { computeCapsuleAABB } from '../../../src/geometry/capsule.ts';
 import { computeCircleAABB } from '../../../src/geometry/circle.ts';
 import { computePolygonAABB } from '../../../src/geometry/polygon-queries.ts';
 import { computeSegmentAABB } from '../../../src/geometry/segment.ts';
+import { GEOMETRY_STRIDE } from '../../../src/dynamics/shape-geometry.ts';
 
 // A shape's numbers live once, in the shape table (shape-table.ts): the world's, at the row of
 // its id, which the narrow phase reads without loading the Shape; or a table of its own outside a
@@ -33,6 +34,31 @@ function expectedTight(shape: Shape): number[] {
   return [out.minX, out.minY, out.maxX, out.maxY];
 }
 
+/**
+ * The geometry row the kernel's narrow phase reads for `shape` (layout in shape-geometry.ts:
+ * kind, radius, count, centroid, one-sided, then vertices and normals), from its geometry.
+ */
+function expectedGeometryRow(shape: Shape): number[] {
+  const g = shape.geometry;
+  const row = new Array<number>(GEOMETRY_STRIDE).fill(0);
+  const points = (list: number[]): void => list.forEach((v, i) => (row[6 + i] = v));
+  if (g.kind === 'circle') {
+    row.splice(0, 3, 0, g.radius, 1);
+    points([g.centerX, g.centerY]);
+  } else if (g.kind === 'capsule') {
+    row.splice(0, 3, 1, g.radius, 2);
+    points([g.x1, g.y1, g.x2, g.y2]);
+  } else if (g.kind === 'segment') {
+    row.splice(0, 6, 3, 0, 2, 0, 0, g.oneSided ? 1 : 0);
+    points([g.x1, g.y1, g.x2, g.y2]);
+  } else {
+    row.splice(0, 5, 2, g.radius, g.count, g.centroidX, g.centroidY);
+    points(Array.from(g.vertices.subarray(0, 2 * g.count)));
+    Array.from(g.normals.subarray(0, 2 * g.count)).forEach((v, i) => (row[22 + i] = v));
+  }
+  return row;
+}
+
 /** Checks every shape of `world` against its row; returns how many it checked. */
 function expectRowsMatch(world: World): number {
   const { shapesById, shapeTable, broadPhase } = world.internals() as Internals;
@@ -51,6 +77,10 @@ function expectRowsMatch(world: World): number {
       fat.maxY,
     ]);
     expect(shapeTable.geometries[shape.id]).toBe(shape.geometry);
+    const g = shape.id * GEOMETRY_STRIDE;
+    expect(Array.from(shapeTable.geometry.subarray(g, g + GEOMETRY_STRIDE))).toEqual(
+      expectedGeometryRow(shape),
+    );
     checked++;
   }
   return checked;
@@ -87,6 +117,27 @@ describe('the shape table, where shapes keep their numbers', () => {
 
     const restored = restoreSnapshot(takeSnapshot(world));
     expect(expectRowsMatch(restored)).toBe(13);
+  });
+
+  it("keeps every row in the solver memory's shape regions as the world grows past their first room", () => {
+    const world = pile();
+    world.step(1 / 60);
+    const { shapeTable } = world.internals() as Internals;
+    expect(shapeTable.data.length).toBe(64 * 8);
+    // 64 rows at first: 100 more shapes move the memory, and every view with it.
+    for (let i = 0; i < 100; i++) {
+      world.add(
+        i % 2 === 0
+          ? particle({ position: { x: -4 + 0.08 * i, y: -10 - (i % 5) }, radius: 0.05 })
+          : box({ position: { x: -4 + 0.08 * i, y: -12 - (i % 7) }, width: 0.06, height: 0.05 }),
+      );
+    }
+    expect(shapeTable.data.length).toBe(128 * 8);
+    expect(shapeTable.geometry.buffer).toBe(shapeTable.data.buffer);
+    expect(shapeTable.filters.buffer).toBe(shapeTable.data.buffer);
+    expect(expectRowsMatch(world)).toBe(113);
+    for (let step = 0; step < 20; step++) world.step(1 / 60);
+    expect(expectRowsMatch(world)).toBe(113);
   });
 
   it('writes a filter into the row the narrow phase reads (bits as int32)', () => {
