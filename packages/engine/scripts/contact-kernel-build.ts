@@ -1,5 +1,6 @@
 // Builds the kernel, the contact passes (wasm/contact-kernel.ts) and the body passes
-// (wasm/body-passes.ts, exported by contact-kernel.ts), from their one source (AssemblyScript):
+// (wasm/body-passes.ts, exported by contact-kernel.ts), from their one source (AssemblyScript),
+// with the engine's own math compiled in as it is (src/math/trigonometry.ts and hypot.ts):
 //
 // 1. wasm/contact-layout.ts: the layout constants the kernel reads, generated from the engine's
 //    own definitions (contact-constraint-layout.ts, contact-data.ts, body-state.ts,
@@ -33,6 +34,11 @@ export const KERNEL_LAYOUT = file('wasm/contact-layout.ts');
 export const KERNEL_BODY_PASSES = file('wasm/body-passes.ts');
 export const KERNEL_LOAD_STORE = file('wasm/load-store.ts');
 export const KERNEL_LANES = file('wasm/contact-lanes.ts');
+export const KERNEL_DOUBLES_AT = file('wasm/doubles-at.ts');
+export const KERNEL_MATH = file('wasm/kernel-math.ts');
+/** The engine's own math, compiled into the kernel as it is (one source for both). */
+export const ENGINE_TRIGONOMETRY = file('src/math/trigonometry.ts');
+export const ENGINE_HYPOT = file('src/math/hypot.ts');
 export const KERNEL_BINARY_MODULE = file('src/dynamics/contact-kernel-binary.ts');
 export const KERNEL_JAVASCRIPT_MODULE = file('src/dynamics/contact-kernel-javascript.ts');
 
@@ -88,6 +94,10 @@ async function compile(layout: string, lanes: boolean): Promise<Uint8Array> {
     'contact-kernel.ts': readFileSync(KERNEL_SOURCE, 'utf8'),
     'body-passes.ts': readFileSync(KERNEL_BODY_PASSES, 'utf8'),
     'load-store.ts': readFileSync(KERNEL_LOAD_STORE, 'utf8'),
+    'doubles-at.ts': readFileSync(KERNEL_DOUBLES_AT, 'utf8'),
+    'kernel-math.ts': readFileSync(KERNEL_MATH, 'utf8'),
+    '../src/math/trigonometry.ts': readFileSync(ENGINE_TRIGONOMETRY, 'utf8'),
+    '../src/math/hypot.ts': readFileSync(ENGINE_HYPOT, 'utf8'),
     'contact-layout.ts': layout,
     'contact-lanes.ts': lanes
       ? 'export const LANES: bool = true;\n'

@@ -130,6 +130,8 @@ export {
   integrateVelocities,
   limitSpeeds,
 } from './body-passes';
+// The engine's cosSin and hypot, for the tests (their source is src/math/).
+export { cosSin, hypot } from './kernel-math';
 
 // The constraints are stored in pairs, their numbers interleaved: number k of constraint i is at
 // double (i >> 1) * 2 * STRIDE + 2 * k + (i & 1) of the constraint region, so constraints 2m and

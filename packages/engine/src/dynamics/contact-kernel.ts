@@ -180,8 +180,27 @@ export interface BodyPasses {
     maxSpeed: number,
     maxAngularSpeed: number,
   ): void;
-  /** Velocities, centre, angle and sleep clock of the `count` awake bodies into the body memory. */
-  finalizeBodies(bodies: number, awake: number, count: number, states: number, dt: number): void;
+  /**
+   * Velocities, centre, angle, transform and sleep clock of the `count` awake bodies into the body
+   * memory; with `continuous` 1, lists the awake indices of the fast bodies (a sweep test due) at
+   * `fast` (FAST_BODIES) and returns their number.
+   */
+  finalizeBodies(
+    bodies: number,
+    awake: number,
+    count: number,
+    states: number,
+    dt: number,
+    fast: number,
+    continuous: number,
+  ): number;
+  /**
+   * The engine's cosSin (math/trigonometry.ts, compiled into the kernel) of `angle`: cos at byte
+   * `out`, sin 8 bytes on. For the tests that compare the kernel's math with TypeScript's.
+   */
+  cosSin(angle: number, out: number): void;
+  /** The engine's hypot (math/hypot.ts, compiled into the kernel). For the same tests. */
+  hypot(x: number, y: number): number;
 }
 
 /** Creates the JavaScript build of the kernel over `imports.env.memory` (wasm2js's factory). */

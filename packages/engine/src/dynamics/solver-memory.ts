@@ -6,7 +6,7 @@ import { createContactKernel, type ContactKernel, type WasmMemory } from './cont
 // (body-state.ts), the contact data with each slot's bodies (contact-data.ts), and the contact
 // constraints with their body offsets, visiting order, source slots and circle pairs
 // (contact-solver.ts), and the step's awake list (world indices) and a batch's body list, which the
-// kernel's body passes visit. The contact kernel (contact-kernel.ts) reads them at the regions' byte
+// kernel's body passes visit, and the bodies finalize found fast. The contact kernel (contact-kernel.ts) reads them at the regions' byte
 // offsets, the rest of the solver through typed-array views. A world's memory is a WebAssembly
 // memory from its start (the JavaScript build of the kernel is an optional entry, and small worlds
 // lose nothing: see the engine README's WebAssembly section), or an ordinary ArrayBuffer run by
@@ -38,9 +38,11 @@ export const BODIES = 9;
 export const AWAKE_BODIES = 10;
 /** A batch of islands' awake indices (solver-batches.ts), for the body passes: int32. */
 export const BATCH_BODIES = 11;
-const REGIONS = 12;
+/** The awake indices of the bodies finalize found fast (continuous collision): int32. */
+export const FAST_BODIES = 12;
+const REGIONS = 13;
 /** Bytes per element of each region. */
-const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4];
+const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 4];
 
 /**
  * @internal When worlds move to the WebAssembly kernel: at this many contacts in a step (0, the
@@ -63,6 +65,8 @@ export class SolverMemory {
   awakeBodies: Int32Array = new Int32Array(0);
   /** A batch's awake indices for the body passes (BATCH_BODIES). */
   batchBodies: Int32Array = new Int32Array(0);
+  /** The awake indices of the last finalize's fast bodies (FAST_BODIES). */
+  fastBodies: Int32Array = new Int32Array(0);
   /**
    * The bodies' numbers (body-memory.ts): the store every Body handle of the world reads through.
    * Its `data` is this memory's BODIES region, replaced (with every other view) when it moves.
@@ -107,6 +111,7 @@ export class SolverMemory {
       64 * BODY_STRIDE,
       64,
       64,
+      64, // FAST_BODIES
     ]);
   }
 
@@ -121,6 +126,7 @@ export class SolverMemory {
     wanted[BODIES] = grown(wanted[BODIES]!, bodies * BODY_STRIDE);
     wanted[AWAKE_BODIES] = grown(wanted[AWAKE_BODIES]!, bodies);
     wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, bodies);
+    wanted[FAST_BODIES] = grown(wanted[FAST_BODIES]!, bodies);
     const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
@@ -163,7 +169,8 @@ export class SolverMemory {
     if (
       count * this.tableStride > have[BODY_TABLE]! ||
       count > have[AWAKE_BODIES]! ||
-      count > have[BATCH_BODIES]!
+      count > have[BATCH_BODIES]! ||
+      count > have[FAST_BODIES]!
     ) {
       const wanted = have.slice();
       this.sizeBodies(wanted, count);
@@ -203,6 +210,7 @@ export class SolverMemory {
       bodies * this.tableStride <= have[BODY_TABLE]! &&
       bodies <= have[AWAKE_BODIES]! &&
       bodies <= have[BATCH_BODIES]! &&
+      bodies <= have[FAST_BODIES]! &&
       contacts * this.contactStride <= have[CONTACT_DATA]! &&
       contacts <= have[CONSTRAINT_ORDER]! &&
       toWasm === (this.wasm !== null)
@@ -231,6 +239,7 @@ export class SolverMemory {
     wanted[BODY_TABLE] = grown(wanted[BODY_TABLE]!, count * this.tableStride);
     wanted[AWAKE_BODIES] = grown(wanted[AWAKE_BODIES]!, count);
     wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, count);
+    wanted[FAST_BODIES] = grown(wanted[FAST_BODIES]!, count);
   }
 
   /** Grows `wanted`'s contact regions to hold `count` slots (no smaller than they are). */
@@ -318,6 +327,7 @@ export class SolverMemory {
     this.bodyStore.data = f64(BODIES);
     this.awakeBodies = i32(AWAKE_BODIES);
     this.batchBodies = i32(BATCH_BODIES);
+    this.fastBodies = i32(FAST_BODIES);
   }
 }
 

@@ -15,8 +15,6 @@ import {
   B_FORCE_Y,
   B_INV_INERTIA,
   B_INV_MASS,
-  B_LOCAL_CENTER_X,
-  B_LOCAL_CENTER_Y,
   B_TORQUE,
   B_VX,
   B_VY,
@@ -54,7 +52,6 @@ import {
   IMPACT_OPEN,
   IMPACT_ROUND,
 } from './contact-constraint-layout.ts';
-import { ContinuousSolver } from './continuous.ts';
 import { JointSolver } from './joints/joint-solver.ts';
 import {
   AWAKE_BODIES,
@@ -68,6 +65,7 @@ import {
   CONSTRAINT_SLOTS,
   CONTACT_BODIES,
   CONTACT_DATA,
+  FAST_BODIES,
   SolverMemory,
   STATES,
 } from './solver-memory.ts';
@@ -610,53 +608,47 @@ export class Solver {
    * Writes velocities and poses back to the bodies, updates their sleep timers and moves their
    * shapes' broad-phase boxes (`bounds`, predicting a next step of `boundsDt`). With `continuous`,
    * dynamic bodies that moved far enough to need a sweep test are listed in `fastBodies` and
-   * `fastBullets` instead, their boxes left to the sweep. One pass, so each body object is
-   * fetched once (Box2D v3's "b2FinalizeBodiesTask" does the same).
+   * `fastBullets` instead, their boxes left to the sweep.
    */
   finalizeBodies(dt: number, bounds: BodyBounds, boundsDt: number, continuous: boolean): void {
     const awake = this.awake;
-    let fastCount = 0;
-    let fastBulletCount = 0;
     const fastBodies = this.fastBodies;
     const fastBullets = this.fastBullets;
     bounds.dt = boundsDt;
     const memory = this.memory;
-    // Velocities, centres, angles and sleep clocks, in the body memory (the kernel's
-    // finalizeBodies, wasm/body-passes.ts).
-    memory.kernel.finalizeBodies(
+    // Velocities, centres, angles, transforms and sleep clocks, in the body memory, and the fast
+    // bodies' awake indices (the kernel's finalizeBodies, wasm/body-passes.ts).
+    const fast = memory.kernel.finalizeBodies(
       memory.offsets[BODIES]!,
       memory.offsets[AWAKE_BODIES]!,
       this.awakeCount,
       memory.offsets[STATES]!,
       dt,
+      memory.offsets[FAST_BODIES]!,
+      continuous ? 1 : 0,
     );
-    // Then what needs the body's objects: its transform from the new angle (the engine's cosSin),
-    // the fast bodies' lists and the broad-phase boxes.
-    const d = memory.bodyStore.data;
+    // Then what needs the body objects: the fast bodies' lists and the other bodies' broad-phase
+    // boxes, in awake order (the fast list is in that order too).
+    const fastList = memory.fastBodies;
+    let fastCount = 0;
+    let fastBulletCount = 0;
+    let next = fast > 0 ? fastList[0]! : -1;
     for (let i = 0; i < this.awakeCount; i++) {
       const body = awake[i]!;
-      const b = body.base;
-      // The angle is the exact sum of h w; the transform follows it, so rotation never drifts
-      // from the integrated angle.
-      body.transform.setFromCenter(
-        d[b + B_CENTER_X]!,
-        d[b + B_CENTER_Y]!,
-        d[b + B_ANGLE]!,
-        d[b + B_LOCAL_CENTER_X]!,
-        d[b + B_LOCAL_CENTER_Y]!,
-      );
-      if (continuous && body.type === 'dynamic' && ContinuousSolver.isFast(body)) {
-        if (body.bulletValue) {
-          if (fastBulletCount < fastBullets.length) fastBullets[fastBulletCount] = body;
-          else fastBullets.push(body);
-          fastBulletCount++;
-        } else {
-          if (fastCount < fastBodies.length) fastBodies[fastCount] = body;
-          else fastBodies.push(body);
-          fastCount++;
-        }
-      } else {
+      if (i !== next) {
         bounds.refresh(body, false);
+        continue;
+      }
+      const listed = fastCount + fastBulletCount + 1;
+      next = listed < fast ? fastList[listed]! : -1;
+      if (body.bulletValue) {
+        if (fastBulletCount < fastBullets.length) fastBullets[fastBulletCount] = body;
+        else fastBullets.push(body);
+        fastBulletCount++;
+      } else {
+        if (fastCount < fastBodies.length) fastBodies[fastCount] = body;
+        else fastBodies.push(body);
+        fastCount++;
       }
     }
     this.fastCount = fastCount;
