@@ -120,6 +120,35 @@ export interface ContactKernel extends BodyPasses {
     marks: number,
     useBias: number,
   ): number;
+  /**
+   * The `count` circle pairs listed at `pairs` (CIRCLE_PAIRS): normals and levers along their
+   * centres as they are now (wasm/circle-pairs.ts).
+   */
+  refreshCirclePairs(
+    constraints: number,
+    bodies: number,
+    pairs: number,
+    count: number,
+    states: number,
+  ): void;
+  /**
+   * The heavy-on-light sweep over the `count` entries at `sweep` (SHOCK_SWEEP), ground up, after
+   * the solve (`useBias` 1) or relax (0) pass (wasm/shock-propagation.ts).
+   */
+  shockSweep(
+    constraints: number,
+    bodies: number,
+    sweep: number,
+    count: number,
+    states: number,
+    marks: number,
+    inverseH: number,
+    biasRate: number,
+    maxPushSpeed: number,
+    restitutionThreshold: number,
+    maxApproach: number,
+    useBias: number,
+  ): void;
   /** One pass of the impact rounds in `mode` (IMPACT_ROUND, ...); returns the impacts started. */
   impacts(
     constraints: number,

@@ -1,5 +1,6 @@
 import { BODY_STRIDE, BodyStore } from './body-memory.ts';
 import { createContactKernel, type ContactKernel, type WasmMemory } from './contact-kernel.ts';
+import { SWEEP_STRIDE } from './shock-sweep-layout.ts';
 
 // The world's hot arrays in one block of memory: the bodies' own numbers (body-memory.ts, the one
 // copy the Body handles read and write), the body states and the body table
@@ -40,9 +41,11 @@ export const AWAKE_BODIES = 10;
 export const BATCH_BODIES = 11;
 /** The awake indices of the bodies finalize found fast (continuous collision): int32. */
 export const FAST_BODIES = 12;
-const REGIONS = 13;
+/** The heavy-on-light sweep's list (shock-sweep-layout.ts), room for every constraint: doubles. */
+export const SHOCK_SWEEP = 13;
+const REGIONS = 14;
 /** Bytes per element of each region. */
-const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 4];
+const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 4, 8];
 
 /**
  * @internal When worlds move to the WebAssembly kernel: at this many contacts in a step (0, the
@@ -67,6 +70,8 @@ export class SolverMemory {
   batchBodies: Int32Array = new Int32Array(0);
   /** The awake indices of the last finalize's fast bodies (FAST_BODIES). */
   fastBodies: Int32Array = new Int32Array(0);
+  /** The heavy-on-light sweep's list (SHOCK_SWEEP). */
+  shockSweep: Float64Array = new Float64Array(0);
   /**
    * The bodies' numbers (body-memory.ts): the store every Body handle of the world reads through.
    * Its `data` is this memory's BODIES region, replaced (with every other view) when it moves.
@@ -112,6 +117,7 @@ export class SolverMemory {
       64,
       64,
       64, // FAST_BODIES
+      256 * SWEEP_STRIDE, // SHOCK_SWEEP
     ]);
   }
 
@@ -257,6 +263,7 @@ export class SolverMemory {
     wanted[CONSTRAINT_ORDER] = n;
     wanted[CONSTRAINT_SLOTS] = n;
     wanted[CIRCLE_PAIRS] = n;
+    wanted[SHOCK_SWEEP] = n * SWEEP_STRIDE;
   }
 
   private reserve(region: number, elements: number): void {
@@ -328,6 +335,7 @@ export class SolverMemory {
     this.awakeBodies = i32(AWAKE_BODIES);
     this.batchBodies = i32(BATCH_BODIES);
     this.fastBodies = i32(FAST_BODIES);
+    this.shockSweep = f64(SHOCK_SWEEP);
   }
 }
 

@@ -40,12 +40,7 @@ import {
   W,
 } from './body-state.ts';
 import { CONTACT_STRIDE } from './contact-data.ts';
-import {
-  CONSTRAINT_STRIDE,
-  ContactConstraints,
-  refreshCirclePairs,
-  ShockPropagation,
-} from './contact-solver.ts';
+import { CONSTRAINT_STRIDE, ContactConstraints, ShockPropagation } from './contact-solver.ts';
 import {
   IMPACT_CLOSE,
   IMPACT_CONTINUE,
@@ -66,6 +61,7 @@ import {
   CONTACT_BODIES,
   CONTACT_DATA,
   FAST_BODIES,
+  SHOCK_SWEEP,
   SolverMemory,
   STATES,
 } from './solver-memory.ts';
@@ -408,6 +404,7 @@ export class Solver {
     const joints = this.joints;
     const shock = this.shock;
     const shockBiasRate = this.staticSoftness.biasRate;
+    const circlePairCount = constraints.circlePairCount;
     const inverseH = 1 / h;
     const threshold = settings.restitutionThreshold;
     const maxPushSpeed = settings.maxContactPushSpeed;
@@ -442,7 +439,7 @@ export class Solver {
         maxSpeed,
         maxAngularSpeed,
       );
-      refreshCirclePairs(constraints, s);
+      if (circlePairCount > 0) this.refreshCirclePairs();
       joints.warmStart(s);
       // Offsets in bytes: the order holds 4-byte indices.
       const order = memory.offsets[CONSTRAINT_ORDER]! + 4 * from;
@@ -469,16 +466,7 @@ export class Solver {
         1,
       );
       if (shock.count > 0) {
-        shock.solve(
-          constraints,
-          s,
-          this.states.marks,
-          inverseH,
-          shockBiasRate,
-          maxPushSpeed,
-          threshold,
-          true,
-        );
+        this.shockSweep(marksPointer, inverseH, shockBiasRate, maxPushSpeed, threshold, 1);
       }
       joints.solveChains(s, true);
       kernel.integratePositions(
@@ -494,7 +482,7 @@ export class Solver {
         maxAngularSpeed,
       );
       joints.solveChains(s, false, true);
-      refreshCirclePairs(constraints, s);
+      if (circlePairCount > 0) this.refreshCirclePairs();
       joints.solve(s, false);
       const bounces = kernel.solve(
         memory.offsets[CONSTRAINT_DATA]!,
@@ -511,16 +499,7 @@ export class Solver {
         0,
       );
       if (shock.count > 0) {
-        shock.solve(
-          constraints,
-          s,
-          this.states.marks,
-          inverseH,
-          shockBiasRate,
-          maxPushSpeed,
-          threshold,
-          false,
-        );
+        this.shockSweep(marksPointer, inverseH, shockBiasRate, maxPushSpeed, threshold, 0);
       }
       // Something bounced: the impact travels through the contacts and joints it presses
       // (the kernel's impacts, wasm/contact-kernel.ts).
@@ -549,6 +528,47 @@ export class Solver {
       memory.offsets[CONTACT_DATA]!,
       memory.offsets[CONSTRAINT_ORDER]! + 4 * from,
       count,
+    );
+  }
+
+  /** The circle pairs' normals along their centres as they are now (the kernel's, wasm/circle-pairs.ts). */
+  private refreshCirclePairs(): void {
+    const o = this.memory.offsets;
+    this.memory.kernel.refreshCirclePairs(
+      o[CONSTRAINT_DATA]!,
+      o[CONSTRAINT_BODIES]!,
+      o[CIRCLE_PAIRS]!,
+      this.constraints.circlePairCount,
+      o[STATES]!,
+    );
+  }
+
+  /**
+   * The heavy-on-light sweep of the contacts ShockPropagation listed this step (the kernel's,
+   * wasm/shock-propagation.ts): with `useBias` 1 after the solve pass, 0 after the relax pass.
+   */
+  private shockSweep(
+    marksPointer: number,
+    inverseH: number,
+    biasRate: number,
+    maxPushSpeed: number,
+    restitutionThreshold: number,
+    useBias: number,
+  ): void {
+    const o = this.memory.offsets;
+    this.memory.kernel.shockSweep(
+      o[CONSTRAINT_DATA]!,
+      o[CONSTRAINT_BODIES]!,
+      o[SHOCK_SWEEP]!,
+      this.shock.count,
+      o[STATES]!,
+      marksPointer,
+      inverseH,
+      biasRate,
+      maxPushSpeed,
+      restitutionThreshold,
+      this.shock.maxApproach,
+      useBias,
     );
   }
 
