@@ -130,7 +130,7 @@ export {
 } from './body-passes';
 // The passes between the contact passes: the circle pairs' normals, the heavy-on-light sweep.
 export { refreshCirclePairs } from './circle-pairs';
-export { shockSweep } from './shock-propagation';
+export { prepareShockSweep, shockSweep } from './shock-propagation';
 // The engine's cosSin and hypot, for the tests (their source is src/math/).
 export { cosSin, hypot } from './kernel-math';
 

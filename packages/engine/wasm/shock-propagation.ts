@@ -1,10 +1,15 @@
-// The heavy-on-light sweep of each sub-step (shock propagation: Guendelman, Bridson and Fedkiw,
+// The heavy-on-light sweep: the choice of contacts once a step and the sweep of each sub-step
+// (shock propagation: Guendelman, Bridson and Fedkiw,
 // "Nonconvex rigid bodies with stacking", SIGGRAPH 2003, section 7; Erleben's thesis, 2004): the
-// one source, built into the kernel with the contact passes (contact-kernel.ts). Why and which
-// contacts: src/dynamics/contact-solver.ts (ShockPropagation, which lists them once a step in the
-// SHOCK_SWEEP region, shock-sweep-layout.ts).
+// one source, built into the kernel with the contact passes (contact-kernel.ts). Why:
+// src/dynamics/contact-solver.ts (ShockPropagation, which calls both).
 import {
   BASE_SEPARATION,
+  BIAS_RATE,
+  IMPULSE_SCALE,
+  MASS_SCALE,
+  RESTITUTION,
+  STATE_STRIDE,
   DP_X,
   DP_Y,
   FRICTION,
@@ -38,6 +43,172 @@ import {
 } from './contact-layout';
 import { constraintAt, lc, markOf, pointAt, sc } from './constraint-access';
 import { ld, st } from './load-store';
+import { hypot } from '../src/math/hypot';
+
+/** True when the constraint at `c` was pushing at the end of last step (a resting contact). */
+function resting(c: usize): bool {
+  const pointCount = lc(c, POINT_COUNT);
+  for (let j = 0; <f64>j < pointCount; j++) {
+    if (lc(pointAt(c, j), NORMAL_IMPULSE) > 0) return true;
+  }
+  return false;
+}
+
+/** Int32 number k of the scratch at `p`. */
+function li(p: usize, k: i32): i32 {
+  return load<i32>(p + ((<usize>k) << 2));
+}
+
+function si(p: usize, k: i32, v: i32): void {
+  store<i32>(p + ((<usize>k) << 2), v);
+}
+
+/**
+ * Finds the contacts to sweep this step among the `count` constraints (their state offsets at
+ * `bodies`, CONSTRAINT_BODIES), with the states at the step's start; `bodyCount` is the number
+ * of awake bodies (solver slots 1..bodyCount; slot 0 is every immovable body). Lists them in
+ * SHOCK_SWEEP (`sweep`) from the top down, makes them rigid, moves them to the end of the
+ * visiting order (`order`, ground up) and returns their number. The swept contacts push out
+ * overlap at `biasRate`, as contacts with the ground do. A light body moving along the contact's
+ * normal at `restSpeed` or faster is not resting under the heavy one (see below). `scratch`:
+ * 2 (bodyCount + 1) + 5 count int32 (SHOCK_SCRATCH).
+ *
+ * Once a step the bodies are ordered by how many resting contacts separate them from the ground
+ * (static, sleeping or kinematic bodies); a contact where a heavy body rests on one more than
+ * twice lighter (already pushing last step, normal within 60 degrees of up) is swept, and so is
+ * every resting contact under a body a swept contact stands on, down to the ground.
+ */
+export function prepareShockSweep(
+  constraints: usize,
+  bodies: usize,
+  order: usize,
+  count: i32,
+  states: usize,
+  sweep: usize,
+  scratch: usize,
+  bodyCount: i32,
+  biasRate: f64,
+  gravityX: f64,
+  gravityY: f64,
+  restSpeed: f64,
+): i32 {
+  const gravity = hypot(gravityX, gravityY);
+  if (gravity == 0) return 0;
+  // Scratch: a level and a flag (supports a swept contact) per solver slot; per constraint a
+  // flag (swept), its two solver slots, its rank; the resting constraints.
+  const level = scratch;
+  const supports = level + ((<usize>(bodyCount + 1)) << 2);
+  const swept = supports + ((<usize>(bodyCount + 1)) << 2);
+  const ends = swept + ((<usize>count) << 2);
+  const rank = ends + ((<usize>(2 * count)) << 2);
+  const edges = rank + ((<usize>count) << 2);
+
+  // Each constraint's two solver slots (immovable bodies are slot 0), and the resting ones
+  // (pushing since last step): only they hold a body up.
+  let edgeCount = 0;
+  for (let i = 0; i < count; i++) {
+    const c = constraintAt(constraints, i);
+    const a = load<i32>(bodies + ((<usize>i) << 3));
+    const b = load<i32>(bodies + ((<usize>i) << 3), 4);
+    si(ends, 2 * i, lc(c, INV_MASS_A) == 0 ? 0 : a / STATE_STRIDE);
+    si(ends, 2 * i + 1, lc(c, INV_MASS_B) == 0 ? 0 : b / STATE_STRIDE);
+    if (resting(c)) si(edges, edgeCount++, i);
+  }
+  // Levels: resting contacts from the ground (slot 0), relaxed until no level shrinks (a stack
+  // of n bodies takes at most n sweeps of the resting contacts). A body that only bounces or
+  // flies has none: nothing holds it up.
+  const far = 1 << 30;
+  for (let n = 0; n <= bodyCount; n++) si(level, n, far);
+  si(level, 0, 0);
+  for (let changed = true; changed;) {
+    changed = false;
+    for (let e = 0; e < edgeCount; e++) {
+      const i = li(edges, e);
+      const na = li(ends, 2 * i);
+      const nb = li(ends, 2 * i + 1);
+      const la = li(level, na);
+      const lb = li(level, nb);
+      if (la + 1 < lb) si(level, nb, la + 1);
+      else if (lb + 1 < la) si(level, na, lb + 1);
+      else continue;
+      changed = true;
+    }
+  }
+  // A contact's rank: its lower body's level + 1 (0 between equal or unheld bodies).
+  let maxRank = 0;
+  for (let i = 0; i < count; i++) {
+    const la = li(level, li(ends, 2 * i));
+    const lb = li(level, li(ends, 2 * i + 1));
+    const low = min(la, lb);
+    const r = la == lb || low == far ? 0 : low + 1;
+    si(rank, i, r);
+    if (r > maxRank) maxRank = r;
+  }
+
+  // From the top down: a heavy-on-light contact on a resting light body is swept, and so is
+  // every resting contact under a body that a swept contact stands on (down to the ground), so
+  // the sweep starts from solid ground.
+  for (let n = 0; n <= bodyCount; n++) si(supports, n, 0);
+  for (let i = 0; i < count; i++) si(swept, i, 0);
+  let listed = 0;
+  for (let k = maxRank; k >= 1; k--) {
+    for (let i = 0; i < count; i++) {
+      if (li(rank, i) != k) continue;
+      const c = constraintAt(constraints, i);
+      const aLower = li(level, li(ends, 2 * i)) < li(level, li(ends, 2 * i + 1));
+      const lower = li(ends, 2 * i + (aLower ? 0 : 1));
+      const upper = li(ends, 2 * i + (aLower ? 1 : 0));
+      const mLower = lc(c, aLower ? INV_MASS_A : INV_MASS_B);
+      const mUpper = lc(c, aLower ? INV_MASS_B : INV_MASS_A);
+      const nx = lc(c, NORMAL_X);
+      const ny = lc(c, NORMAL_Y);
+      // Heavy on light: the lower body more than twice lighter, the normal within 60 degrees of
+      // up (a body beside another is not resting on it).
+      const up = (aLower ? -1.0 : 1.0) * (nx * gravityX + ny * gravityY);
+      // And the light body resting there: not moving along the normal (as fast as a load
+      // presses). The sweep's bounce treats it as held still by what is under it; a light ball
+      // sliding fast along the floor into a heavy one is not held along a slanted normal, and
+      // treating it so reflected the heavy ball off a surface moving at the light ball's speed
+      // (a 16-ball gas gained 90 % of its energy in one step). Such a hit is an impact of two
+      // bodies, passed on to the floor by the impact rounds (contact-kernel.ts).
+      const vLower = mLower == 0 ? 0 : load<i32>(bodies + ((<usize>i) << 3) + (aLower ? 0 : 4));
+      const v = states + ((<usize>vLower) << 3);
+      const heavyOnLight =
+        mLower > 2 * mUpper &&
+        up >= 0.5 * gravity &&
+        Math.abs(ld(v, V_X) * nx + ld(v, V_Y) * ny) < restSpeed;
+      if (heavyOnLight || (li(supports, upper) == 1 && li(level, upper) == k && resting(c))) {
+        si(swept, i, 1);
+        si(supports, lower, 1);
+        // Listed from the top down; the sweeps read the list backwards, ground up.
+        const e = sweep + ((<usize>(listed++ * SWEEP_STRIDE)) << 3);
+        st(e, SWEEP_CONSTRAINT, <f64>i);
+        st(e, SWEEP_LOWER_IS_A, aLower ? 1 : 0);
+        // A contact approaching at the step's start may bounce (restitution), once, at first
+        // touch (a resting one does not approach: the last relax pass stopped it). A heavy body
+        // bounces off the light one here, not in the contact solver: there, its bounce would
+        // send the light body into the ground, again each sub-step.
+        st(e, SWEEP_RESTITUTION, lc(c, RESTITUTION));
+        if (heavyOnLight) sc(c, RESTITUTION, 0);
+        // Rigid in the ordinary passes: a soft contact lets its impulse leak each pass, so the
+        // weight above would not reach the ground.
+        sc(c, BIAS_RATE, biasRate);
+        sc(c, MASS_SCALE, 1);
+        sc(c, IMPULSE_SCALE, 0);
+      }
+    }
+  }
+  // The ordinary passes visit the swept contacts last, ground up.
+  let kept = 0;
+  for (let n = 0; n < count; n++) {
+    const i = li(order, n);
+    if (li(swept, i) == 0) si(order, kept++, i);
+  }
+  for (let n = listed - 1; n >= 0; n--) {
+    si(order, kept++, <i32>ld(sweep + ((<usize>(n * SWEEP_STRIDE)) << 3), SWEEP_CONSTRAINT));
+  }
+  return listed;
+}
 
 /**
  * Sweeps the `count` contacts listed at `sweep` (SHOCK_SWEEP, from the top down) once, ground up:

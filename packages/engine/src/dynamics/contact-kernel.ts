@@ -132,6 +132,25 @@ export interface ContactKernel extends BodyPasses {
     states: number,
   ): void;
   /**
+   * The heavy-on-light sweep's choice of contacts among the `count` constraints: listed at
+   * `sweep` (SHOCK_SWEEP), made rigid and moved to the end of `order`; returns their number
+   * (wasm/shock-propagation.ts).
+   */
+  prepareShockSweep(
+    constraints: number,
+    bodies: number,
+    order: number,
+    count: number,
+    states: number,
+    sweep: number,
+    scratch: number,
+    bodyCount: number,
+    biasRate: number,
+    gravityX: number,
+    gravityY: number,
+    restSpeed: number,
+  ): number;
+  /**
    * The heavy-on-light sweep over the `count` entries at `sweep` (SHOCK_SWEEP), ground up, after
    * the solve (`useBias` 1) or relax (0) pass (wasm/shock-propagation.ts).
    */

@@ -1,5 +1,5 @@
-// The heavy-on-light sweep's list (contact-solver.ts's ShockPropagation writes it once a step; the
-// kernel's sweep, wasm/shock-propagation.ts, reads it each sub-step): SWEEP_STRIDE doubles per
+// The heavy-on-light sweep's list (the kernel's prepareShockSweep writes it once a step, its
+// shockSweep reads it each sub-step: wasm/shock-propagation.ts): SWEEP_STRIDE doubles per
 // swept contact in the solver memory's SHOCK_SWEEP region, listed from the top down. The one
 // definition: the build writes the kernel's mirror (wasm/contact-layout.ts).
 

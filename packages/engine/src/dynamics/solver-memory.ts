@@ -43,9 +43,11 @@ export const BATCH_BODIES = 11;
 export const FAST_BODIES = 12;
 /** The heavy-on-light sweep's list (shock-sweep-layout.ts), room for every constraint: doubles. */
 export const SHOCK_SWEEP = 13;
-const REGIONS = 14;
+/** The heavy-on-light sweep's scratch while it chooses (wasm/shock-propagation.ts): int32. */
+export const SHOCK_SCRATCH = 14;
+const REGIONS = 15;
 /** Bytes per element of each region. */
-const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 4, 8];
+const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 4, 8, 4];
 
 /**
  * @internal When worlds move to the WebAssembly kernel: at this many contacts in a step (0, the
@@ -118,6 +120,7 @@ export class SolverMemory {
       64,
       64, // FAST_BODIES
       256 * SWEEP_STRIDE, // SHOCK_SWEEP
+      64, // SHOCK_SCRATCH
     ]);
   }
 
@@ -183,6 +186,11 @@ export class SolverMemory {
       this.layout(wanted, this.wasm !== null);
     }
     return this.bodyTable;
+  }
+
+  /** Makes room for `count` int32 of the heavy-on-light sweep's scratch (SHOCK_SCRATCH). */
+  reserveShockScratch(count: number): void {
+    this.reserve(SHOCK_SCRATCH, count);
   }
 
   /** Makes room for `count` constraints; moves to the WebAssembly kernel at the tests' threshold. */

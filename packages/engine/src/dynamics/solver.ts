@@ -61,7 +61,6 @@ import {
   CONTACT_BODIES,
   CONTACT_DATA,
   FAST_BODIES,
-  SHOCK_SWEEP,
   SolverMemory,
   STATES,
 } from './solver-memory.ts';
@@ -248,6 +247,8 @@ export class Solver {
     const constraints = this.constraints;
     // Room first: growing the memory replaces every view of it, `s` included.
     constraints.reserve(contactCount);
+    // The heavy-on-light sweep's scratch (ShockPropagation.prepare).
+    this.memory.reserveShockScratch(2 * (this.awakeCount + 1) + 5 * contactCount);
     const memory = this.memory;
     const subSteps = settings.subSteps;
     const h = dt / subSteps;
@@ -292,7 +293,6 @@ export class Solver {
     }
     shock.prepare(
       constraints,
-      this.states.data,
       this.awakeCount,
       this.staticSoftness.biasRate,
       settings.gravityX,
@@ -466,7 +466,7 @@ export class Solver {
         1,
       );
       if (shock.count > 0) {
-        this.shockSweep(marksPointer, inverseH, shockBiasRate, maxPushSpeed, threshold, 1);
+        shock.solve(constraints, marksPointer, inverseH, shockBiasRate, maxPushSpeed, threshold, 1);
       }
       joints.solveChains(s, true);
       kernel.integratePositions(
@@ -499,7 +499,7 @@ export class Solver {
         0,
       );
       if (shock.count > 0) {
-        this.shockSweep(marksPointer, inverseH, shockBiasRate, maxPushSpeed, threshold, 0);
+        shock.solve(constraints, marksPointer, inverseH, shockBiasRate, maxPushSpeed, threshold, 0);
       }
       // Something bounced: the impact travels through the contacts and joints it presses
       // (the kernel's impacts, wasm/contact-kernel.ts).
@@ -540,35 +540,6 @@ export class Solver {
       o[CIRCLE_PAIRS]!,
       this.constraints.circlePairCount,
       o[STATES]!,
-    );
-  }
-
-  /**
-   * The heavy-on-light sweep of the contacts ShockPropagation listed this step (the kernel's,
-   * wasm/shock-propagation.ts): with `useBias` 1 after the solve pass, 0 after the relax pass.
-   */
-  private shockSweep(
-    marksPointer: number,
-    inverseH: number,
-    biasRate: number,
-    maxPushSpeed: number,
-    restitutionThreshold: number,
-    useBias: number,
-  ): void {
-    const o = this.memory.offsets;
-    this.memory.kernel.shockSweep(
-      o[CONSTRAINT_DATA]!,
-      o[CONSTRAINT_BODIES]!,
-      o[SHOCK_SWEEP]!,
-      this.shock.count,
-      o[STATES]!,
-      marksPointer,
-      inverseH,
-      biasRate,
-      maxPushSpeed,
-      restitutionThreshold,
-      this.shock.maxApproach,
-      useBias,
     );
   }
 
