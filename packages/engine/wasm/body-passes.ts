@@ -12,7 +12,11 @@
 import {
   BODY_STRIDE,
   B_ANGLE,
+  B_ANGLE0,
   B_ANGULAR_DAMPING,
+  B_C,
+  B_CENTER0_X,
+  B_CENTER0_Y,
   B_CENTER_X,
   B_CENTER_Y,
   B_DRAG,
@@ -24,12 +28,18 @@ import {
   B_INV_INERTIA,
   B_INV_MASS,
   B_LINEAR_DAMPING,
+  B_LOCAL_CENTER_X,
+  B_LOCAL_CENTER_Y,
   B_MAX_EXTENT,
+  B_MIN_EXTENT,
+  B_S,
   B_SLEEP_TIME,
   B_TORQUE,
   B_VX,
   B_VY,
   B_W,
+  B_X,
+  B_Y,
   DELTA_ANGLE,
   DP_X,
   DP_Y,
@@ -47,6 +57,12 @@ import {
   W,
 } from './contact-layout';
 import { ld, st } from './load-store';
+// AssemblyScript has no `import type`, and DoublesAt is only a type here (pointers cast to it).
+// eslint-disable-next-line @typescript-eslint/consistent-type-imports
+import { DoublesAt } from './doubles-at';
+// The engine's own deterministic cosine and sine, this very file compiled in (one source for
+// TypeScript and the kernel).
+import { cosSin } from '../src/math/trigonometry';
 
 /**
  * The awake index visited n-th: list[n] of the int32 list at `list` when `useList` is 1 (a batch
@@ -237,9 +253,18 @@ export function integratePositions(
 
 /**
  * The step's end for the `count` awake bodies: velocities, centre of mass and angle written back
- * to the body memory, and the sleep clock advanced or reset. The angle is the exact sum of h w;
- * the solver sets the transform from it (src/dynamics/solver.ts, with the engine's cosSin), so
- * rotation never drifts from the integrated angle.
+ * to the body memory, the transform from the new angle, and the sleep clock advanced or reset.
+ * Returns how many awake bodies need a sweep test (continuous collision, when `continuous` is 1),
+ * their awake indices listed in order in the int32 list at `fast` (FAST_BODIES).
+ *
+ * The angle is the exact sum of h w, and the transform follows it (the engine's cosSin, the same
+ * bits as TypeScript's: src/math/trigonometry.ts is compiled in), so rotation never drifts from
+ * the integrated angle; the origin is placed so that the body-local centre of mass lands on the
+ * centre (as math/transform.ts's setFromCenter, operation for operation).
+ *
+ * Fast: a dynamic body that moved more than half its smallest extent (the centre's travel plus
+ * the largest extent turned through the step's rotation), so it might have passed through a thin
+ * shape; the world sweeps it (src/dynamics/continuous.ts).
  *
  * Sleep: the body must be slow, and not being moved by position correction either (Box2D v3's
  * rule, with its 0.5 weight on correction). A body with a force still to act (B_FORCES_LEFT, a
@@ -252,7 +277,10 @@ export function finalizeBodies(
   count: i32,
   states: usize,
   dt: f64,
-): void {
+  fast: usize,
+  continuous: i32,
+): i32 {
+  let fastCount = 0;
   for (let i = 0; i < count; i++) {
     const b = bodyOf(bodies, awake, i);
     const k = stateOf(states, i);
@@ -264,9 +292,31 @@ export function finalizeBodies(
     st(b, B_VX, vx);
     st(b, B_VY, vy);
     st(b, B_W, w);
-    st(b, B_CENTER_X, ld(b, B_CENTER_X) + dpx);
-    st(b, B_CENTER_Y, ld(b, B_CENTER_Y) + dpy);
-    st(b, B_ANGLE, ld(b, B_ANGLE) + ld(k, DELTA_ANGLE));
+    const centerX = ld(b, B_CENTER_X) + dpx;
+    const centerY = ld(b, B_CENTER_Y) + dpy;
+    const angle = ld(b, B_ANGLE) + ld(k, DELTA_ANGLE);
+    st(b, B_CENTER_X, centerX);
+    st(b, B_CENTER_Y, centerY);
+    st(b, B_ANGLE, angle);
+    // c and s straight into the body's numbers (B_S follows B_C, body-memory.ts).
+    cosSin<DoublesAt>(angle, changetype<DoublesAt>(b + ((<usize>B_C) << 3)));
+    const c = ld(b, B_C);
+    const s = ld(b, B_S);
+    const localX = ld(b, B_LOCAL_CENTER_X);
+    const localY = ld(b, B_LOCAL_CENTER_Y);
+    st(b, B_X, centerX - (c * localX - s * localY));
+    st(b, B_Y, centerY - (s * localX + c * localY));
+    // Awake and not kinematic (inverse mass 0) is dynamic.
+    if (continuous != 0 && ld(b, B_INV_MASS) != 0) {
+      const mx = centerX - ld(b, B_CENTER0_X);
+      const my = centerY - ld(b, B_CENTER0_Y);
+      const motion =
+        Math.sqrt(mx * mx + my * my) + Math.abs(angle - ld(b, B_ANGLE0)) * ld(b, B_MAX_EXTENT);
+      if (motion > 0.5 * ld(b, B_MIN_EXTENT)) {
+        store<i32>(fast + ((<usize>fastCount) << 2), i);
+        fastCount++;
+      }
+    }
     if (((<i32>ld(b, B_FLAGS)) & FLAG_ALLOW_SLEEP) == 0 || ld(b, B_FORCES_LEFT) != 0) {
       st(b, B_SLEEP_TIME, 0);
       continue;
@@ -278,4 +328,5 @@ export function finalizeBodies(
     if (sleepSpeed > SLEEP_SPEED) st(b, B_SLEEP_TIME, 0);
     else st(b, B_SLEEP_TIME, ld(b, B_SLEEP_TIME) + dt);
   }
+  return fastCount;
 }

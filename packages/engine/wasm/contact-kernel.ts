@@ -73,7 +73,6 @@ import {
   KICK_W,
   LINEAR_SLOP,
   MARK,
-  MARK_STRIDE,
   MASS_SCALE,
   MAX_CONDITION_NUMBER,
   MAX_NORMAL_IMPULSE,
@@ -81,7 +80,6 @@ import {
   NORMAL_MASS,
   NORMAL_X,
   NORMAL_Y,
-  POINTS,
   POINT_COUNT,
   POINT_STRIDE,
   PRESSED_AFTER_BOUNCING_STEPS,
@@ -104,7 +102,6 @@ import {
   SHIFT_WEIGHT_A,
   SHIFT_WEIGHT_B,
   STATE_STRIDE,
-  STRIDE,
   TABLE_CENTER_X,
   TABLE_CENTER_Y,
   TABLE_INV_I,
@@ -121,6 +118,7 @@ import {
 } from './contact-layout';
 import { LANES } from './contact-lanes';
 import { ld, st } from './load-store';
+import { constraintAt, lc, markOf, pointAt, sc } from './constraint-access';
 
 // The body passes (integration, speed limits, finalize) are built into the same module: their
 // source is body-passes.ts.
@@ -130,6 +128,11 @@ export {
   integrateVelocities,
   limitSpeeds,
 } from './body-passes';
+// The passes between the contact passes: the circle pairs' normals, the heavy-on-light sweep.
+export { refreshCirclePairs } from './circle-pairs';
+export { prepareShockSweep, shockSweep } from './shock-propagation';
+// The engine's cosSin and hypot, for the tests (their source is src/math/).
+export { cosSin, hypot } from './kernel-math';
 
 // The narrow phase (issue #30): the gates over the contact slots and the manifolds they leave to
 // compute, from the shapes' geometry rows.
@@ -140,31 +143,8 @@ export { collidePair } from './update-manifold';
 // double (i >> 1) * 2 * STRIDE + 2 * k + (i & 1) of the constraint region, so constraints 2m and
 // 2m + 1 have each number side by side, and the lanes (below) fetch both with one v128.load
 // (Box2D v3 stores its SIMD constraints the same way, b2ContactConstraintSIMD). A scalar pass
-// reads number k of a constraint or point at pointer + 16 k: lc and sc.
-
-/** Where constraint i starts (its number 0; number k is 16 k bytes on). */
-function constraintAt(cPtr: usize, i: i32): usize {
-  return cPtr + ((<usize>(((i >> 1) * STRIDE) << 1)) << 3) + ((<usize>(i & 1)) << 3);
-}
-
-/** Where point j of the constraint at `c` starts. */
-function pointAt(c: usize, j: i32): usize {
-  return c + ((<usize>(POINTS + j * POINT_STRIDE)) << 4);
-}
-
-/** Number k of the constraint or point at `p`. */
-function lc(p: usize, k: i32): f64 {
-  return load<f64>(p + ((<usize>k) << 4));
-}
-
-function sc(p: usize, k: i32, v: f64): void {
-  store<f64>(p + ((<usize>k) << 4), v);
-}
-
-/** The impact mark and sub-step velocity change of the body at state offset `a` (body-state.ts). */
-function markOf(marksPtr: usize, a: i32): usize {
-  return marksPtr + ((<usize>((a / STATE_STRIDE) * MARK_STRIDE)) << 3);
-}
+// reads number k of a constraint or point at pointer + 16 k: lc and sc (constraint-access.ts,
+// shared with the passes in files of their own: circle-pairs.ts, shock-propagation.ts).
 
 /**
  * How much this sub-step's integration (gravity, forces) changed the approach along (nx, ny) at

@@ -120,6 +120,54 @@ export interface ContactKernel extends BodyPasses, NarrowPhase {
     marks: number,
     useBias: number,
   ): number;
+  /**
+   * The `count` circle pairs listed at `pairs` (CIRCLE_PAIRS): normals and levers along their
+   * centres as they are now (wasm/circle-pairs.ts).
+   */
+  refreshCirclePairs(
+    constraints: number,
+    bodies: number,
+    pairs: number,
+    count: number,
+    states: number,
+  ): void;
+  /**
+   * The heavy-on-light sweep's choice of contacts among the `count` constraints: listed at
+   * `sweep` (SHOCK_SWEEP), made rigid and moved to the end of `order`; returns their number
+   * (wasm/shock-propagation.ts).
+   */
+  prepareShockSweep(
+    constraints: number,
+    bodies: number,
+    order: number,
+    count: number,
+    states: number,
+    sweep: number,
+    scratch: number,
+    bodyCount: number,
+    biasRate: number,
+    gravityX: number,
+    gravityY: number,
+    restSpeed: number,
+  ): number;
+  /**
+   * The heavy-on-light sweep over the `count` entries at `sweep` (SHOCK_SWEEP), ground up, after
+   * the solve (`useBias` 1) or relax (0) pass (wasm/shock-propagation.ts).
+   */
+  shockSweep(
+    constraints: number,
+    bodies: number,
+    sweep: number,
+    count: number,
+    states: number,
+    marks: number,
+    inverseH: number,
+    biasRate: number,
+    maxPushSpeed: number,
+    restitutionThreshold: number,
+    maxApproach: number,
+    useBias: number,
+  ): void;
   /** One pass of the impact rounds in `mode` (IMPACT_ROUND, ...); returns the impacts started. */
   impacts(
     constraints: number,
@@ -180,8 +228,27 @@ export interface BodyPasses {
     maxSpeed: number,
     maxAngularSpeed: number,
   ): void;
-  /** Velocities, centre, angle and sleep clock of the `count` awake bodies into the body memory. */
-  finalizeBodies(bodies: number, awake: number, count: number, states: number, dt: number): void;
+  /**
+   * Velocities, centre, angle, transform and sleep clock of the `count` awake bodies into the body
+   * memory; with `continuous` 1, lists the awake indices of the fast bodies (a sweep test due) at
+   * `fast` (FAST_BODIES) and returns their number.
+   */
+  finalizeBodies(
+    bodies: number,
+    awake: number,
+    count: number,
+    states: number,
+    dt: number,
+    fast: number,
+    continuous: number,
+  ): number;
+  /**
+   * The engine's cosSin (math/trigonometry.ts, compiled into the kernel) of `angle`: cos at byte
+   * `out`, sin 8 bytes on. For the tests that compare the kernel's math with TypeScript's.
+   */
+  cosSin(angle: number, out: number): void;
+  /** The engine's hypot (math/hypot.ts, compiled into the kernel). For the same tests. */
+  hypot(x: number, y: number): number;
 }
 
 /**

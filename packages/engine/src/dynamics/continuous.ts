@@ -10,16 +10,6 @@ import { LINEAR_SLOP } from '../core/constants.ts';
 import { AABB } from '../geometry/aabb.ts';
 import { Transform } from '../math/transform.ts';
 import type { Body } from './body.ts';
-import {
-  B_ANGLE,
-  B_ANGLE0,
-  B_CENTER0_X,
-  B_CENTER0_Y,
-  B_CENTER_X,
-  B_CENTER_Y,
-  B_MAX_EXTENT,
-  B_MIN_EXTENT,
-} from './body-memory.ts';
 import type { Shape } from './shape.ts';
 import { setShapeProxy } from './shape-proxy.ts';
 
@@ -59,19 +49,6 @@ export class ContinuousSolver {
   private shapes: readonly (Shape | null)[] = [];
   private readonly queryCallback = (proxyKey: number, shapeId: number): boolean =>
     this.testStaticShape(proxyKey, shapeId);
-
-  /** True if the body moved far enough this step to need a sweep test. */
-  static isFast(body: Body): boolean {
-    // The body's numbers in place (body-memory.ts).
-    const d = body.store.data;
-    const b = body.base;
-    const dx = d[b + B_CENTER_X]! - d[b + B_CENTER0_X]!;
-    const dy = d[b + B_CENTER_Y]! - d[b + B_CENTER0_Y]!;
-    const motion =
-      Math.sqrt(dx * dx + dy * dy) +
-      Math.abs(d[b + B_ANGLE]! - d[b + B_ANGLE0]!) * d[b + B_MAX_EXTENT]!;
-    return motion > 0.5 * d[b + B_MIN_EXTENT]!;
-  }
 
   /**
    * Sweeps a fast body against static shapes (and, for a bullet, against non-bullet moving ones);

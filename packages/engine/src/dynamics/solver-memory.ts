@@ -10,13 +10,14 @@ import {
   ShapeTable,
   type ShapeMemory,
 } from './shape-table.ts';
+import { SWEEP_STRIDE } from './shock-sweep-layout.ts';
 
 // The world's hot arrays in one block of memory: the bodies' own numbers (body-memory.ts, the one
 // copy the Body handles read and write), the body states and the body table
 // (body-state.ts), the contact data with each slot's bodies (contact-data.ts), and the contact
 // constraints with their body offsets, visiting order, source slots and circle pairs
 // (contact-solver.ts), and the step's awake list (world indices) and a batch's body list, which the
-// kernel's body passes visit. The contact kernel (contact-kernel.ts) reads them at the regions' byte
+// kernel's body passes visit, and the bodies finalize found fast. The contact kernel (contact-kernel.ts) reads them at the regions' byte
 // offsets, the rest of the solver through typed-array views. A world's memory is a WebAssembly
 // memory from its start (the JavaScript build of the kernel is an optional entry, and small worlds
 // lose nothing: see the engine README's WebAssembly section), or an ordinary ArrayBuffer run by
@@ -62,9 +63,15 @@ export const NARROW_PHASE_SCRATCH = 16;
 export const CONTACT_SHAPES = 17;
 /** Each contact slot's pair kind (pair-kinds.ts): int32. */
 export const CONTACT_KINDS = 18;
-const REGIONS = 19;
+/** The awake indices of the bodies finalize found fast (continuous collision): int32. */
+export const FAST_BODIES = 19;
+/** The heavy-on-light sweep's list (shock-sweep-layout.ts), room for every constraint: doubles. */
+export const SHOCK_SWEEP = 20;
+/** The heavy-on-light sweep's scratch while it chooses (wasm/shock-propagation.ts): int32. */
+export const SHOCK_SCRATCH = 21;
+const REGIONS = 22;
 /** Bytes per element of each region. */
-const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8, 4, 4];
+const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8, 4, 4, 4, 8, 4];
 /** The shape regions of that many rows. */
 const SHAPE_REGIONS: readonly (readonly [number, number])[] = [
   [SHAPE_BOXES, SHAPE_STRIDE],
@@ -99,6 +106,10 @@ export class SolverMemory implements ShapeMemory {
   batchBodies: Int32Array = new Int32Array(0);
   /** The kernel's narrow-phase manifold and scratch (NARROW_PHASE_SCRATCH). */
   narrowPhase: Float64Array = new Float64Array(0);
+  /** The awake indices of the last finalize's fast bodies (FAST_BODIES). */
+  fastBodies: Int32Array = new Int32Array(0);
+  /** The heavy-on-light sweep's list (SHOCK_SWEEP). */
+  shockSweep: Float64Array = new Float64Array(0);
   /**
    * The bodies' numbers (body-memory.ts): the store every Body handle of the world reads through.
    * Its `data` is this memory's BODIES region, replaced (with every other view) when it moves.
@@ -153,6 +164,9 @@ export class SolverMemory implements ShapeMemory {
       NARROW_PHASE_SCRATCH_DOUBLES,
       512,
       256,
+      64, // FAST_BODIES
+      256 * SWEEP_STRIDE, // SHOCK_SWEEP
+      64, // SHOCK_SCRATCH
     ]);
   }
 
@@ -186,6 +200,7 @@ export class SolverMemory implements ShapeMemory {
     wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, bodies);
     // The shapes keep their rows (the world keeps its shape ids).
     for (const [region] of SHAPE_REGIONS) wanted[region] = this.capacities[region]!;
+    wanted[FAST_BODIES] = grown(wanted[FAST_BODIES]!, bodies);
     const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
@@ -228,13 +243,19 @@ export class SolverMemory implements ShapeMemory {
     if (
       count * this.tableStride > have[BODY_TABLE]! ||
       count > have[AWAKE_BODIES]! ||
-      count > have[BATCH_BODIES]!
+      count > have[BATCH_BODIES]! ||
+      count > have[FAST_BODIES]!
     ) {
       const wanted = have.slice();
       this.sizeBodies(wanted, count);
       this.layout(wanted, this.wasm !== null);
     }
     return this.bodyTable;
+  }
+
+  /** Makes room for `count` int32 of the heavy-on-light sweep's scratch (SHOCK_SCRATCH). */
+  reserveShockScratch(count: number): void {
+    this.reserve(SHOCK_SCRATCH, count);
   }
 
   /** Makes room for `count` constraints; moves to the WebAssembly kernel at the tests' threshold. */
@@ -268,6 +289,7 @@ export class SolverMemory implements ShapeMemory {
       bodies * this.tableStride <= have[BODY_TABLE]! &&
       bodies <= have[AWAKE_BODIES]! &&
       bodies <= have[BATCH_BODIES]! &&
+      bodies <= have[FAST_BODIES]! &&
       contacts * this.contactStride <= have[CONTACT_DATA]! &&
       contacts <= have[CONSTRAINT_ORDER]! &&
       toWasm === (this.wasm !== null)
@@ -299,6 +321,7 @@ export class SolverMemory implements ShapeMemory {
     wanted[BODY_TABLE] = grown(wanted[BODY_TABLE]!, count * this.tableStride);
     wanted[AWAKE_BODIES] = grown(wanted[AWAKE_BODIES]!, count);
     wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, count);
+    wanted[FAST_BODIES] = grown(wanted[FAST_BODIES]!, count);
   }
 
   /** Grows `wanted`'s contact regions to hold `count` slots (no smaller than they are). */
@@ -318,6 +341,7 @@ export class SolverMemory implements ShapeMemory {
     wanted[CONSTRAINT_ORDER] = n;
     wanted[CONSTRAINT_SLOTS] = n;
     wanted[CIRCLE_PAIRS] = n;
+    wanted[SHOCK_SWEEP] = n * SWEEP_STRIDE;
   }
 
   private reserve(region: number, elements: number): void {
@@ -396,6 +420,8 @@ export class SolverMemory implements ShapeMemory {
     shapes.filters = i32(SHAPE_FILTERS);
     shapes.materials = f64(SHAPE_MATERIALS);
     shapes.geometry = f64(SHAPE_GEOMETRY);
+    this.fastBodies = i32(FAST_BODIES);
+    this.shockSweep = f64(SHOCK_SWEEP);
   }
 }
 

@@ -15,8 +15,6 @@ import {
   B_FORCE_Y,
   B_INV_INERTIA,
   B_INV_MASS,
-  B_LOCAL_CENTER_X,
-  B_LOCAL_CENTER_Y,
   B_TORQUE,
   B_VX,
   B_VY,
@@ -42,19 +40,13 @@ import {
   W,
 } from './body-state.ts';
 import { CONTACT_STRIDE } from './contact-data.ts';
-import {
-  CONSTRAINT_STRIDE,
-  ContactConstraints,
-  refreshCirclePairs,
-  ShockPropagation,
-} from './contact-solver.ts';
+import { CONSTRAINT_STRIDE, ContactConstraints, ShockPropagation } from './contact-solver.ts';
 import {
   IMPACT_CLOSE,
   IMPACT_CONTINUE,
   IMPACT_OPEN,
   IMPACT_ROUND,
 } from './contact-constraint-layout.ts';
-import { ContinuousSolver } from './continuous.ts';
 import { JointSolver } from './joints/joint-solver.ts';
 import {
   AWAKE_BODIES,
@@ -68,6 +60,7 @@ import {
   CONSTRAINT_SLOTS,
   CONTACT_BODIES,
   CONTACT_DATA,
+  FAST_BODIES,
   SolverMemory,
   STATES,
 } from './solver-memory.ts';
@@ -254,6 +247,8 @@ export class Solver {
     const constraints = this.constraints;
     // Room first: growing the memory replaces every view of it, `s` included.
     constraints.reserve(contactCount);
+    // The heavy-on-light sweep's scratch (ShockPropagation.prepare).
+    this.memory.reserveShockScratch(2 * (this.awakeCount + 1) + 5 * contactCount);
     const memory = this.memory;
     const subSteps = settings.subSteps;
     const h = dt / subSteps;
@@ -298,7 +293,6 @@ export class Solver {
     }
     shock.prepare(
       constraints,
-      this.states.data,
       this.awakeCount,
       this.staticSoftness.biasRate,
       settings.gravityX,
@@ -410,6 +404,7 @@ export class Solver {
     const joints = this.joints;
     const shock = this.shock;
     const shockBiasRate = this.staticSoftness.biasRate;
+    const circlePairCount = constraints.circlePairCount;
     const inverseH = 1 / h;
     const threshold = settings.restitutionThreshold;
     const maxPushSpeed = settings.maxContactPushSpeed;
@@ -444,7 +439,7 @@ export class Solver {
         maxSpeed,
         maxAngularSpeed,
       );
-      refreshCirclePairs(constraints, s);
+      if (circlePairCount > 0) this.refreshCirclePairs();
       joints.warmStart(s);
       // Offsets in bytes: the order holds 4-byte indices.
       const order = memory.offsets[CONSTRAINT_ORDER]! + 4 * from;
@@ -471,16 +466,7 @@ export class Solver {
         1,
       );
       if (shock.count > 0) {
-        shock.solve(
-          constraints,
-          s,
-          this.states.marks,
-          inverseH,
-          shockBiasRate,
-          maxPushSpeed,
-          threshold,
-          true,
-        );
+        shock.solve(constraints, marksPointer, inverseH, shockBiasRate, maxPushSpeed, threshold, 1);
       }
       joints.solveChains(s, true);
       kernel.integratePositions(
@@ -496,7 +482,7 @@ export class Solver {
         maxAngularSpeed,
       );
       joints.solveChains(s, false, true);
-      refreshCirclePairs(constraints, s);
+      if (circlePairCount > 0) this.refreshCirclePairs();
       joints.solve(s, false);
       const bounces = kernel.solve(
         memory.offsets[CONSTRAINT_DATA]!,
@@ -513,16 +499,7 @@ export class Solver {
         0,
       );
       if (shock.count > 0) {
-        shock.solve(
-          constraints,
-          s,
-          this.states.marks,
-          inverseH,
-          shockBiasRate,
-          maxPushSpeed,
-          threshold,
-          false,
-        );
+        shock.solve(constraints, marksPointer, inverseH, shockBiasRate, maxPushSpeed, threshold, 0);
       }
       // Something bounced: the impact travels through the contacts and joints it presses
       // (the kernel's impacts, wasm/contact-kernel.ts).
@@ -551,6 +528,18 @@ export class Solver {
       memory.offsets[CONTACT_DATA]!,
       memory.offsets[CONSTRAINT_ORDER]! + 4 * from,
       count,
+    );
+  }
+
+  /** The circle pairs' normals along their centres as they are now (the kernel's, wasm/circle-pairs.ts). */
+  private refreshCirclePairs(): void {
+    const o = this.memory.offsets;
+    this.memory.kernel.refreshCirclePairs(
+      o[CONSTRAINT_DATA]!,
+      o[CONSTRAINT_BODIES]!,
+      o[CIRCLE_PAIRS]!,
+      this.constraints.circlePairCount,
+      o[STATES]!,
     );
   }
 
@@ -610,53 +599,47 @@ export class Solver {
    * Writes velocities and poses back to the bodies, updates their sleep timers and moves their
    * shapes' broad-phase boxes (`bounds`, predicting a next step of `boundsDt`). With `continuous`,
    * dynamic bodies that moved far enough to need a sweep test are listed in `fastBodies` and
-   * `fastBullets` instead, their boxes left to the sweep. One pass, so each body object is
-   * fetched once (Box2D v3's "b2FinalizeBodiesTask" does the same).
+   * `fastBullets` instead, their boxes left to the sweep.
    */
   finalizeBodies(dt: number, bounds: BodyBounds, boundsDt: number, continuous: boolean): void {
     const awake = this.awake;
-    let fastCount = 0;
-    let fastBulletCount = 0;
     const fastBodies = this.fastBodies;
     const fastBullets = this.fastBullets;
     bounds.dt = boundsDt;
     const memory = this.memory;
-    // Velocities, centres, angles and sleep clocks, in the body memory (the kernel's
-    // finalizeBodies, wasm/body-passes.ts).
-    memory.kernel.finalizeBodies(
+    // Velocities, centres, angles, transforms and sleep clocks, in the body memory, and the fast
+    // bodies' awake indices (the kernel's finalizeBodies, wasm/body-passes.ts).
+    const fast = memory.kernel.finalizeBodies(
       memory.offsets[BODIES]!,
       memory.offsets[AWAKE_BODIES]!,
       this.awakeCount,
       memory.offsets[STATES]!,
       dt,
+      memory.offsets[FAST_BODIES]!,
+      continuous ? 1 : 0,
     );
-    // Then what needs the body's objects: its transform from the new angle (the engine's cosSin),
-    // the fast bodies' lists and the broad-phase boxes.
-    const d = memory.bodyStore.data;
+    // Then what needs the body objects: the fast bodies' lists and the other bodies' broad-phase
+    // boxes, in awake order (the fast list is in that order too).
+    const fastList = memory.fastBodies;
+    let fastCount = 0;
+    let fastBulletCount = 0;
+    let next = fast > 0 ? fastList[0]! : -1;
     for (let i = 0; i < this.awakeCount; i++) {
       const body = awake[i]!;
-      const b = body.base;
-      // The angle is the exact sum of h w; the transform follows it, so rotation never drifts
-      // from the integrated angle.
-      body.transform.setFromCenter(
-        d[b + B_CENTER_X]!,
-        d[b + B_CENTER_Y]!,
-        d[b + B_ANGLE]!,
-        d[b + B_LOCAL_CENTER_X]!,
-        d[b + B_LOCAL_CENTER_Y]!,
-      );
-      if (continuous && body.type === 'dynamic' && ContinuousSolver.isFast(body)) {
-        if (body.bulletValue) {
-          if (fastBulletCount < fastBullets.length) fastBullets[fastBulletCount] = body;
-          else fastBullets.push(body);
-          fastBulletCount++;
-        } else {
-          if (fastCount < fastBodies.length) fastBodies[fastCount] = body;
-          else fastBodies.push(body);
-          fastCount++;
-        }
-      } else {
+      if (i !== next) {
         bounds.refresh(body, false);
+        continue;
+      }
+      const listed = fastCount + fastBulletCount + 1;
+      next = listed < fast ? fastList[listed]! : -1;
+      if (body.bulletValue) {
+        if (fastBulletCount < fastBullets.length) fastBullets[fastBulletCount] = body;
+        else fastBullets.push(body);
+        fastBulletCount++;
+      } else {
+        if (fastCount < fastBodies.length) fastBodies[fastCount] = body;
+        else fastBodies.push(body);
+        fastCount++;
       }
     }
     this.fastCount = fastCount;

@@ -1,3 +1,7 @@
+// One source for TypeScript and the kernel: AssemblyScript compiles this very file into the
+// kernel's module (scripts/contact-kernel-build.ts), so it keeps to what both languages mean alike
+// (`number` is AssemblyScript's f64; Math.sqrt and abs are f64.sqrt and abs; no imports).
+
 // x^2 + y^2 below this has lost bits to underflow (2^-969: squares under 2^-1022 are
 // subnormal, 53 bits below is where that shows); above it, sqrt(x^2 + y^2) is as good as it gets.
 const TINY = 2.004168360008973e-292;

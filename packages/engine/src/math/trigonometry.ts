@@ -13,6 +13,13 @@
 // exact 1 - z/2 splitting is FreeBSD msun's). The arc tangent is fdlibm's s_atan.c scheme: four
 // reduction intervals with atan(1/2), atan(1), atan(3/2) and pi/2 kept in two parts, then an
 // odd polynomial of degree 23.
+//
+// One source for TypeScript and the kernel: AssemblyScript compiles this very file into the
+// kernel's module (scripts/contact-kernel-build.ts; wasm/body-passes.ts turns each body with
+// cosSin), so it keeps to what both languages mean alike: `number` (AssemblyScript's f64), + - * /,
+// comparisons, Math.floor, abs and sqrt (f64.floor, abs, sqrt), no allocation, no imports. The
+// pair cosSin writes is generic (`Out`): a Float64Array here; in the kernel, the two doubles at an
+// address of its memory (`DoublesAt`, wasm/doubles-at.ts), so it writes a body's c and s in place.
 
 // pi/2 = PIO2_1 + PIO2_1T = PIO2_1 + PIO2_2 + PIO2_2T = PIO2_1 + PIO2_2 + PIO2_3 + PIO2_3T.
 const PIO2_1 = 1.57079632673412561417; // first 33 bits of pi/2
@@ -51,18 +58,19 @@ const C6 = -1.13596475577881948265e-11;
  * 2^20 pi/2 (1.6e6 rad); beyond that the angle is first reduced modulo the double nearest 2 pi,
  * which adds at most half an ulp of the angle itself (below the angle's own precision). The
  * result is a rotation: |c^2 + s^2 - 1| stays within a few ulp of 1. NaN or an infinite angle
- * gives NaN in both. Writes through `out` so that hot loops allocate nothing.
+ * gives NaN in both. Writes through `out` so that hot loops allocate nothing; `out` is any
+ * Float64Array (generic only so the kernel can pass its own pair of doubles, see above).
  */
-export function cosSin(angle: number, out: Float64Array): void {
+export function cosSin<Out extends Float64Array>(angle: number, out: Out): void {
   // The angle goes in through out[0], not as an argument: this wrapper is small enough for V8 to
   // inline everywhere, while cosSinInPlace may not be, and V8 boxes (allocates) a fractional
   // argument of a call it does not inline (dynamics/README.md).
   out[0] = angle;
-  cosSinInPlace(out);
+  cosSinInPlace<Out>(out);
 }
 
 /** cosSin of the angle in out[0]. */
-function cosSinInPlace(out: Float64Array): void {
+function cosSinInPlace<Out extends Float64Array>(out: Out): void {
   const angle = out[0]!;
   const x = Math.abs(angle);
   if (!(x <= PIO4)) {
@@ -73,9 +81,9 @@ function cosSinInPlace(out: Float64Array): void {
         out[1] = NaN;
         return;
       }
-      remainderTau(out);
+      remainderTau<Out>(out);
     }
-    cosSinReduced(out);
+    cosSinReduced<Out>(out);
     if (angle < 0) out[1] = -out[1];
     return;
   }
@@ -101,7 +109,7 @@ function cosSinInPlace(out: Float64Array): void {
  * cos and sin of x = out[0], 0 <= x < 2^20 pi/2, into out[0] and out[1]: x = n pi/2 + (y0 + y1),
  * then the polynomials at y0 with its tail y1, turned by the quadrant n mod 4.
  */
-function cosSinReduced(out: Float64Array): void {
+function cosSinReduced<Out extends Float64Array>(out: Out): void {
   const x = out[0]!;
   // n < 2^20 and each PIO2_k has 33 bits, so n * PIO2_k is exact; x - n PIO2_1 is exact too
   // (Sterbenz: the two are within a factor of 2).
@@ -161,7 +169,7 @@ function cosSinReduced(out: Float64Array): void {
  * TAU 2^(k+1) (Sterbenz). The difference of TAU from 2 pi makes the result differ from
  * x mod 2 pi by at most |x| 2^-53.
  */
-function remainderTau(out: Float64Array): void {
+function remainderTau<Out extends Float64Array>(out: Out): void {
   const x = out[0]!;
   let m = TAU;
   while (m <= x * 0.5) m *= 2;

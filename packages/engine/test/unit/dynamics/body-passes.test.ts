@@ -6,6 +6,8 @@ import type { ContactKernel } from '../../../src/dynamics/contact-kernel.ts';
 // The JavaScript build of the kernel, compared here with the WebAssembly one.
 import '@physical/engine/javascript-kernel';
 import { bodyStates, differingBits } from './body-states.ts';
+import { Transform } from '../../../src/math/transform.ts';
+import type { Solver } from '../../../src/dynamics/solver.ts';
 
 // The body passes (integrate velocities, integrate positions, the speed limits, finalize) are
 // written once, in packages/engine/wasm/body-passes.ts, and built into the kernel's WebAssembly
@@ -132,4 +134,110 @@ describe('the body passes, built into the kernel', () => {
     world.step(1 / 60);
     expect(calls).toEqual({ integrateVelocities: 4, integratePositions: 4, finalizeBodies: 1 });
   });
+
+  it("finalize sets each awake body's transform from its new angle and lists the fast bodies, the same in both builds", () => {
+    interface Record {
+      /** Awake bodies whose transform differs from TypeScript's setFromCenter, bit for bit. */
+      wrongTransforms: number;
+      /** Per step: the ids of the fast bodies and of the fast bullets, as the solver listed them. */
+      fast: string[];
+      /** The same, from the rule itself (centre's travel plus turn times max extent > half the min extent). */
+      expected: string[];
+    }
+    const record = (minConstraints: number): Record => {
+      kernelSettings.minConstraints = minConstraints;
+      const world = new World();
+      world.add(wall({ from: { x: -30, y: 0 }, to: { x: 30, y: 0 } }));
+      // A thin plate that fast bodies would pass through without their sweep.
+      world.add(box({ type: 'static', position: { x: 10, y: -5 }, width: 0.05, height: 8 }));
+      // Fast particles and a fast bullet fired at it, a fast spinning bar, falling boxes, and a
+      // kinematic body moving fast (not dynamic: never listed).
+      for (let i = 0; i < 4; i++) {
+        world.add(
+          particle({
+            position: { x: -5, y: -2 - i },
+            radius: 0.1,
+            linearVelocity: { x: 90 + 10 * i, y: 0 },
+          }),
+        );
+      }
+      world.add(
+        particle({
+          position: { x: -8, y: -7 },
+          radius: 0.05,
+          bullet: true,
+          linearVelocity: { x: 200, y: 0 },
+        }),
+      );
+      world.add(box({ position: { x: -15, y: -10 }, width: 3, height: 0.1, angularVelocity: 40 }));
+      for (let i = 0; i < 5; i++) {
+        world.add(box({ position: { x: -20 + 1.5 * i, y: -1 - 3 * i }, width: 1, height: 1 }));
+      }
+      world.add(
+        box({
+          type: 'kinematic',
+          position: { x: -25, y: -15 },
+          width: 1,
+          height: 1,
+          linearVelocity: { x: 100, y: 0 },
+        }),
+      );
+      const solver = (world as unknown as { solver: Solver }).solver;
+      const finalize = solver.finalizeBodies.bind(solver);
+      const result: Record = { wrongTransforms: 0, fast: [], expected: [] };
+      const transform = new Transform();
+      solver.finalizeBodies = (dt, bounds, boundsDt, continuous) => {
+        finalize(dt, bounds, boundsDt, continuous);
+        const fast: number[] = [];
+        const bullets: number[] = [];
+        for (let i = 0; i < solver.awakeCount; i++) {
+          const body = solver.awake[i]!;
+          transform.setFromCenter(
+            body.centerX,
+            body.centerY,
+            body.angleValue,
+            body.localCenterX,
+            body.localCenterY,
+          );
+          const t = body.transform;
+          if (
+            !Object.is(t.x, transform.x) ||
+            !Object.is(t.y, transform.y) ||
+            !Object.is(t.c, transform.c) ||
+            !Object.is(t.s, transform.s)
+          ) {
+            result.wrongTransforms++;
+          }
+          const dx = body.centerX - body.center0X;
+          const dy = body.centerY - body.center0Y;
+          const motion =
+            Math.sqrt(dx * dx + dy * dy) + Math.abs(body.angleValue - body.angle0) * body.maxExtent;
+          if (body.type === 'dynamic' && motion > 0.5 * body.minExtent) {
+            (body.bullet ? bullets : fast).push(body.id);
+          }
+        }
+        const listed = (list: readonly Body[], count: number): string =>
+          list
+            .slice(0, count)
+            .map((b) => b.id)
+            .join(',');
+        result.fast.push(
+          `${listed(solver.fastBodies, solver.fastCount)} | ${listed(solver.fastBullets, solver.fastBulletCount)}`,
+        );
+        result.expected.push(`${fast.join(',')} | ${bullets.join(',')}`);
+      };
+      for (let i = 0; i < 120; i++) world.step(1 / 60);
+      return result;
+    };
+    const js = record(Infinity);
+    const wasm = record(0);
+    for (const r of [js, wasm]) {
+      expect(r.wrongTransforms).toBe(0);
+      expect(r.fast).toEqual(r.expected);
+    }
+    expect(wasm.fast).toEqual(js.fast);
+    // The lists held something: fast bodies and the bullet in the first steps, none at the end.
+    expect(js.fast[0]).toMatch(/^\d+(,\d+)+ \| \d+$/);
+    expect(js.fast.filter((f) => f !== ' | ').length).toBeGreaterThan(3);
+  }, 60_000);
 });
