@@ -111,7 +111,7 @@ export class SolverMemory {
 
   private initialCapacities(): number[] {
     const initial = [64 * 8, 256 * this.constraintStride, 512, 256, 256, 256];
-    return initial.concat([
+    const capacities = initial.concat([
       256 * this.contactStride,
       512,
       64 * this.tableStride,
@@ -120,8 +120,10 @@ export class SolverMemory {
       64,
       64, // FAST_BODIES
       256 * SWEEP_STRIDE, // SHOCK_SWEEP
-      64, // SHOCK_SCRATCH
+      0, // SHOCK_SCRATCH, sized below
     ]);
+    this.sizeShockScratch(capacities);
+    return capacities;
   }
 
   /**
@@ -136,6 +138,7 @@ export class SolverMemory {
     wanted[AWAKE_BODIES] = grown(wanted[AWAKE_BODIES]!, bodies);
     wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, bodies);
     wanted[FAST_BODIES] = grown(wanted[FAST_BODIES]!, bodies);
+    this.sizeShockScratch(wanted);
     const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
@@ -254,6 +257,7 @@ export class SolverMemory {
     wanted[AWAKE_BODIES] = grown(wanted[AWAKE_BODIES]!, count);
     wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, count);
     wanted[FAST_BODIES] = grown(wanted[FAST_BODIES]!, count);
+    this.sizeShockScratch(wanted);
   }
 
   /** Grows `wanted`'s contact regions to hold `count` slots (no smaller than they are). */
@@ -272,6 +276,16 @@ export class SolverMemory {
     wanted[CONSTRAINT_SLOTS] = n;
     wanted[CIRCLE_PAIRS] = n;
     wanted[SHOCK_SWEEP] = n * SWEEP_STRIDE;
+    this.sizeShockScratch(wanted);
+  }
+
+  /**
+   * Grows `wanted`'s SHOCK_SCRATCH with the constraints and bodies it is sized for (5 int32 per
+   * constraint, 2 per solver slot), so it never moves the memory on its own.
+   */
+  private sizeShockScratch(wanted: number[]): void {
+    const needed = 5 * wanted[CONSTRAINT_ORDER]! + 2 * (wanted[AWAKE_BODIES]! + 1);
+    wanted[SHOCK_SCRATCH] = grown(wanted[SHOCK_SCRATCH]!, needed);
   }
 
   private reserve(region: number, elements: number): void {
