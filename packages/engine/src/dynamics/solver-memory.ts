@@ -153,7 +153,7 @@ export class SolverMemory implements ShapeMemory {
 
   private initialCapacities(): number[] {
     const initial = [64 * 8, 256 * this.constraintStride, 512, 256, 256, 256];
-    return initial.concat([
+    const capacities = initial.concat([
       256 * this.contactStride,
       512,
       64 * this.tableStride,
@@ -166,8 +166,10 @@ export class SolverMemory implements ShapeMemory {
       256,
       64, // FAST_BODIES
       256 * SWEEP_STRIDE, // SHOCK_SWEEP
-      64, // SHOCK_SCRATCH
+      0, // SHOCK_SCRATCH, sized below
     ]);
+    this.sizeShockScratch(capacities);
+    return capacities;
   }
 
   /** Writes shape `row`'s geometry row (SHAPE_GEOMETRY), when the shape joins the world. */
@@ -201,6 +203,7 @@ export class SolverMemory implements ShapeMemory {
     // The shapes keep their rows (the world keeps its shape ids).
     for (const [region] of SHAPE_REGIONS) wanted[region] = this.capacities[region]!;
     wanted[FAST_BODIES] = grown(wanted[FAST_BODIES]!, bodies);
+    this.sizeShockScratch(wanted);
     const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
@@ -322,6 +325,7 @@ export class SolverMemory implements ShapeMemory {
     wanted[AWAKE_BODIES] = grown(wanted[AWAKE_BODIES]!, count);
     wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, count);
     wanted[FAST_BODIES] = grown(wanted[FAST_BODIES]!, count);
+    this.sizeShockScratch(wanted);
   }
 
   /** Grows `wanted`'s contact regions to hold `count` slots (no smaller than they are). */
@@ -342,6 +346,16 @@ export class SolverMemory implements ShapeMemory {
     wanted[CONSTRAINT_SLOTS] = n;
     wanted[CIRCLE_PAIRS] = n;
     wanted[SHOCK_SWEEP] = n * SWEEP_STRIDE;
+    this.sizeShockScratch(wanted);
+  }
+
+  /**
+   * Grows `wanted`'s SHOCK_SCRATCH with the constraints and bodies it is sized for (5 int32 per
+   * constraint, 2 per solver slot), so it never moves the memory on its own.
+   */
+  private sizeShockScratch(wanted: number[]): void {
+    const needed = 5 * wanted[CONSTRAINT_ORDER]! + 2 * (wanted[AWAKE_BODIES]! + 1);
+    wanted[SHOCK_SCRATCH] = grown(wanted[SHOCK_SCRATCH]!, needed);
   }
 
   private reserve(region: number, elements: number): void {
