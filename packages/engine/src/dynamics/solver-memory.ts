@@ -1,5 +1,7 @@
 import { BODY_STRIDE, BodyStore } from './body-memory.ts';
 import { createContactKernel, type ContactKernel, type WasmMemory } from './contact-kernel.ts';
+import { JOINT_RECORD_STRIDE } from './joints/joint-record.ts';
+import { JointStore } from './joints/joint-store.ts';
 
 // The world's hot arrays in one block of memory: the bodies' own numbers (body-memory.ts, the one
 // copy the Body handles read and write), the body states and the body table
@@ -38,9 +40,13 @@ export const BODIES = 9;
 export const AWAKE_BODIES = 10;
 /** A batch of islands' awake indices (solver-batches.ts), for the body passes: int32. */
 export const BATCH_BODIES = 11;
-const REGIONS = 12;
+/** Every joint's record in the world (joints/joint-store.ts), JOINT_RECORD_STRIDE each: doubles. */
+export const JOINT_RECORDS = 12;
+/** The step's active joints, grouped by kind: record offset, state A, state B (3 int32 each). */
+export const JOINT_ACTIVE = 13;
+const REGIONS = 14;
 /** Bytes per element of each region. */
-const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4];
+const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4];
 
 /**
  * @internal When worlds move to the WebAssembly kernel: at this many contacts in a step (0, the
@@ -68,6 +74,16 @@ export class SolverMemory {
    * Its `data` is this memory's BODIES region, replaced (with every other view) when it moves.
    */
   readonly bodyStore: BodyStore = new BodyStore(new Float64Array(0));
+  /**
+   * Every joint's record (joints/joint-store.ts), all kinds at one stride: the store every Joint
+   * handle of the world reads through. Its `data` is the JOINT_RECORDS region, replaced with the
+   * other views when the memory moves; it grows through this memory.
+   */
+  readonly jointStore: JointStore = new JointStore(JOINT_RECORD_STRIDE, 0, false, (doubles) =>
+    this.reserve(JOINT_RECORDS, doubles),
+  );
+  /** The step's active joints (JOINT_ACTIVE): record offset, state A, state B per joint. */
+  jointActive: Int32Array = new Int32Array(0);
   /** Byte offset of each region, for the kernel. */
   readonly offsets: number[] = new Array<number>(REGIONS).fill(0);
   /** The contact passes over this memory: WebAssembly once it has moved there, else JavaScript. */
@@ -107,6 +123,8 @@ export class SolverMemory {
       64 * BODY_STRIDE,
       64,
       64,
+      16 * JOINT_RECORD_STRIDE,
+      48,
     ]);
   }
 
@@ -121,6 +139,10 @@ export class SolverMemory {
     wanted[BODIES] = grown(wanted[BODIES]!, bodies * BODY_STRIDE);
     wanted[AWAKE_BODIES] = grown(wanted[AWAKE_BODIES]!, bodies);
     wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, bodies);
+    wanted[JOINT_RECORDS] = grown(
+      wanted[JOINT_RECORDS]!,
+      this.jointStore.count * JOINT_RECORD_STRIDE,
+    );
     const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
@@ -152,6 +174,20 @@ export class SolverMemory {
    */
   reserveBodies(count: number): void {
     this.reserve(BODIES, count * BODY_STRIDE);
+  }
+
+  /**
+   * Makes room for `records` joints' records (kept) and `active` active joints; replaces every
+   * view when it grows (at a step's start, before the joints are prepared).
+   */
+  reserveJoints(records: number, active: number): void {
+    const have = this.capacities;
+    if (records * JOINT_RECORD_STRIDE <= have[JOINT_RECORDS]! && 3 * active <= have[JOINT_ACTIVE]!)
+      return;
+    const wanted = have.slice();
+    wanted[JOINT_RECORDS] = grown(have[JOINT_RECORDS]!, records * JOINT_RECORD_STRIDE);
+    wanted[JOINT_ACTIVE] = grown(have[JOINT_ACTIVE]!, 3 * active);
+    this.layout(wanted, this.wasm !== null);
   }
 
   /**
@@ -218,6 +254,7 @@ export class SolverMemory {
     keep[CONTACT_DATA] = liveContacts * this.contactStride;
     keep[CONTACT_BODIES] = 2 * liveContacts;
     keep[BODIES] = bodies * BODY_STRIDE;
+    keep[JOINT_RECORDS] = this.jointStore.count * JOINT_RECORD_STRIDE;
     this.layout(wanted, toWasm, keep);
   }
 
@@ -318,6 +355,8 @@ export class SolverMemory {
     this.bodyStore.data = f64(BODIES);
     this.awakeBodies = i32(AWAKE_BODIES);
     this.batchBodies = i32(BATCH_BODIES);
+    this.jointStore.data = f64(JOINT_RECORDS);
+    this.jointActive = i32(JOINT_ACTIVE);
   }
 }
 

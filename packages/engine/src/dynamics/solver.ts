@@ -111,7 +111,7 @@ export class Solver {
   readonly states: BodyStates = new BodyStates(this.memory);
   readonly constraints: ContactConstraints = new ContactConstraints(this.memory);
   /** The joints, solved before the contacts in each pass (as Box2D v3 orders them). */
-  readonly joints: JointSolver = new JointSolver();
+  readonly joints: JointSolver = new JointSolver(this.memory);
   /**
    * Awake non-static bodies of this step, in world order (body.solverIndex = position + 1); only
    * the first `awakeCount` entries are valid. Per-step lists keep a count instead of truncating,
@@ -262,11 +262,11 @@ export class Solver {
     const contactHertz = Math.min(settings.contactHertz, (0.25 * subSteps) / dt);
     this.contactSoftness.set(contactHertz, settings.contactDampingRatio, h);
     this.staticSoftness.set(2 * contactHertz, settings.contactDampingRatio, h);
-    const kernel = memory.kernel;
     // Joints first (they do not depend on the contacts): whether the step may run in batches of
-    // islands decides how the contacts are prepared.
+    // islands decides how the contacts are prepared. They may grow the memory: the kernel after.
     const joints = this.joints;
     joints.prepare(dt, subSteps, contactHertz, this.awakeCount, settings.maxLinearSpeed);
+    const kernel = memory.kernel;
     const batches = this.batches;
     const batchable = joints.activeCount === 0 && batches.wants(contactCount);
     // Contacts are classified here and filled once their visiting order and numbering are

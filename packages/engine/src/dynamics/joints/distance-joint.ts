@@ -4,7 +4,8 @@ import type { Vec2Like } from '../../math/vec2.ts';
 import { hypot } from '../../math/hypot.ts';
 import { V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
-import { FlatJointBatch } from './joint-batch.ts';
+import { JointBatch } from './joint-batch.ts';
+import type { SolverMemory } from '../solver-memory.ts';
 import {
   checkCollideConnected,
   jointLayout,
@@ -283,19 +284,15 @@ export class DistanceJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
  * @internal The distance joints of a world: their records, and the step's active ones solved in
  * one loop per pass (see JointBatch).
  */
-export class DistanceBatch extends FlatJointBatch {
-  constructor() {
-    super(STRIDE);
-  }
-
-  warmStart(s: Float64Array): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const a = states[2 * i]!;
-      const b = states[2 * i + 1]!;
+export class DistanceBatch extends JointBatch {
+  warmStart(s: Float64Array, memory: SolverMemory): void {
+    const d = memory.jointStore.data;
+    const list = memory.jointActive;
+    const end = this.start + this.active;
+    for (let i = this.start; i < end; i++) {
+      const o = list[3 * i]!;
+      const a = list[3 * i + 1]!;
+      const b = list[3 * i + 2]!;
       const rAx = turnedX(s, a, d, o + R_AX);
       const rAy = turnedY(s, a, d, o + R_AX);
       const rBx = turnedX(s, b, d, o + R_BX);
@@ -316,15 +313,15 @@ export class DistanceBatch extends FlatJointBatch {
     }
   }
 
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
+  solve(s: Float64Array, memory: SolverMemory, step: JointStep, useBias: boolean): void {
+    const d = memory.jointStore.data;
+    const list = memory.jointActive;
+    const end = this.start + this.active;
     const soft = step.softness;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const a = states[2 * i]!;
-      const b = states[2 * i + 1]!;
+    for (let i = this.start; i < end; i++) {
+      const o = list[3 * i]!;
+      const a = list[3 * i + 1]!;
+      const b = list[3 * i + 2]!;
       const mA = d[o + INV_MASS_A]!;
       const iA = d[o + INV_I_A]!;
       const mB = d[o + INV_MASS_B]!;

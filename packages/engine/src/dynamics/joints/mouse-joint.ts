@@ -4,7 +4,8 @@ import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import type { Body } from '../body.ts';
 import { DP_X, DP_Y, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
-import { FlatJointBatch } from './joint-batch.ts';
+import { JointBatch } from './joint-batch.ts';
+import type { SolverMemory } from '../solver-memory.ts';
 import {
   Joint,
   jointLayout,
@@ -242,18 +243,14 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
  * @internal The mouse joints of a world: their records, and the step's active ones solved in one
  * loop per pass (see JointBatch).
  */
-export class MouseBatch extends FlatJointBatch {
-  constructor() {
-    super(STRIDE);
-  }
-
-  warmStart(s: Float64Array): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const b = states[2 * i + 1]!;
+export class MouseBatch extends JointBatch {
+  warmStart(s: Float64Array, memory: SolverMemory): void {
+    const d = memory.jointStore.data;
+    const list = memory.jointActive;
+    const end = this.start + this.active;
+    for (let i = this.start; i < end; i++) {
+      const o = list[3 * i]!;
+      const b = list[3 * i + 2]!;
       const mB = d[o + INV_MASS_B]!;
       const iB = d[o + INV_I_B]!;
       const rBx = turnedX(s, b, d, o + R_BX);
@@ -266,13 +263,13 @@ export class MouseBatch extends FlatJointBatch {
     }
   }
 
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const b = states[2 * i + 1]!;
+  solve(s: Float64Array, memory: SolverMemory, step: JointStep, useBias: boolean): void {
+    const d = memory.jointStore.data;
+    const list = memory.jointActive;
+    const end = this.start + this.active;
+    for (let i = this.start; i < end; i++) {
+      const o = list[3 * i]!;
+      const b = list[3 * i + 2]!;
       const mB = d[o + INV_MASS_B]!;
       const iB = d[o + INV_I_B]!;
       let vBx = s[b + V_X]!;

@@ -1,5 +1,6 @@
 import { DELTA_ANGLE, V_X, V_Y, W } from '../body-state.ts';
-import { FlatJointBatch } from './joint-batch.ts';
+import { JointBatch } from './joint-batch.ts';
+import type { SolverMemory } from '../solver-memory.ts';
 import type { JointStep } from './joint.ts';
 import { turnedX, turnedY } from './joint-levers.ts';
 import {
@@ -45,19 +46,15 @@ export const STRIDE = 46; // SPRING_MOTOR_LIMIT_END + 4
  * @internal The revolute joints of a world: their records, and the step's active ones solved in
  * one loop per pass (see JointBatch).
  */
-export class RevoluteBatch extends FlatJointBatch {
-  constructor() {
-    super(STRIDE);
-  }
-
-  warmStart(s: Float64Array): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const a = states[2 * i]!;
-      const b = states[2 * i + 1]!;
+export class RevoluteBatch extends JointBatch {
+  warmStart(s: Float64Array, memory: SolverMemory): void {
+    const d = memory.jointStore.data;
+    const list = memory.jointActive;
+    const end = this.start + this.active;
+    for (let i = this.start; i < end; i++) {
+      const o = list[3 * i]!;
+      const a = list[3 * i + 1]!;
+      const b = list[3 * i + 2]!;
       const mA = d[o + INV_MASS_A]!;
       const iA = d[o + INV_I_A]!;
       const mB = d[o + INV_MASS_B]!;
@@ -82,15 +79,15 @@ export class RevoluteBatch extends FlatJointBatch {
     }
   }
 
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
+  solve(s: Float64Array, memory: SolverMemory, step: JointStep, useBias: boolean): void {
+    const d = memory.jointStore.data;
+    const list = memory.jointActive;
+    const end = this.start + this.active;
     const soft = step.softness;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const a = states[2 * i]!;
-      const b = states[2 * i + 1]!;
+    for (let i = this.start; i < end; i++) {
+      const o = list[3 * i]!;
+      const a = list[3 * i + 1]!;
+      const b = list[3 * i + 2]!;
       const iA = d[o + INV_I_A]!;
       const iB = d[o + INV_I_B]!;
       let wA = s[a + W]!;

@@ -2,7 +2,8 @@ import { readOnly } from '../../core/errors.ts';
 import type { Vec2Like } from '../../math/vec2.ts';
 import { DELTA_ANGLE, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
-import { FlatJointBatch } from './joint-batch.ts';
+import { JointBatch } from './joint-batch.ts';
+import type { SolverMemory } from '../solver-memory.ts';
 import {
   FRAME_SAVED,
   checkCollideConnected,
@@ -183,19 +184,15 @@ export class WeldJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
  * @internal The weld joints of a world: their records, and the step's active ones solved in one
  * loop per pass (see JointBatch).
  */
-export class WeldBatch extends FlatJointBatch {
-  constructor() {
-    super(STRIDE);
-  }
-
-  warmStart(s: Float64Array): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const a = states[2 * i]!;
-      const b = states[2 * i + 1]!;
+export class WeldBatch extends JointBatch {
+  warmStart(s: Float64Array, memory: SolverMemory): void {
+    const d = memory.jointStore.data;
+    const list = memory.jointActive;
+    const end = this.start + this.active;
+    for (let i = this.start; i < end; i++) {
+      const o = list[3 * i]!;
+      const a = list[3 * i + 1]!;
+      const b = list[3 * i + 2]!;
       const rAx = turnedX(s, a, d, o + R_AX);
       const rAy = turnedY(s, a, d, o + R_AX);
       const rBx = turnedX(s, b, d, o + R_BX);
@@ -212,15 +209,15 @@ export class WeldBatch extends FlatJointBatch {
     }
   }
 
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
+  solve(s: Float64Array, memory: SolverMemory, step: JointStep, useBias: boolean): void {
+    const d = memory.jointStore.data;
+    const list = memory.jointActive;
+    const end = this.start + this.active;
     const rigid = step.softness;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const a = states[2 * i]!;
-      const b = states[2 * i + 1]!;
+    for (let i = this.start; i < end; i++) {
+      const o = list[3 * i]!;
+      const a = list[3 * i + 1]!;
+      const b = list[3 * i + 2]!;
       const iA = d[o + INV_I_A]!;
       const iB = d[o + INV_I_B]!;
       let wA = s[a + W]!;
