@@ -29,7 +29,7 @@ interface WasmApi {
 }
 
 /** The kernel's exports; pointers are byte offsets into its memory. */
-export interface ContactKernel extends BodyPasses {
+export interface ContactKernel extends BodyPasses, JointPasses {
   /** prepareContacts; returns the number of constraints. */
   prepare(
     contactData: number,
@@ -182,6 +182,37 @@ export interface BodyPasses {
   ): void;
   /** Velocities, centre, angle and sleep clock of the `count` awake bodies into the body memory. */
   finalizeBodies(bodies: number, awake: number, count: number, states: number, dt: number): void;
+}
+
+/**
+ * The joints' passes (wasm/joint-passes.ts), built into the same module: per kind, over active
+ * joints `from` to `to` of the JOINT_ACTIVE list at `active` (record offset, state A, state B),
+ * their records in JOINT_RECORDS at `records`, the states at `states`. A solve's step numbers:
+ * the sub-step and its inverse, the joint softness (bias rate, mass and impulse scale), the
+ * largest bias speed, and `useBias` 1 (solve) or 0 (relax).
+ */
+export interface JointPasses {
+  warmStartRevolute(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+  ): void;
+  solveRevolute(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    h: number,
+    inverseH: number,
+    biasRate: number,
+    massScale: number,
+    impulseScale: number,
+    maxBiasSpeed: number,
+    useBias: number,
+  ): void;
 }
 
 /** Creates the JavaScript build of the kernel over `imports.env.memory` (wasm2js's factory). */

@@ -1,0 +1,321 @@
+// The joints' passes of a sub-step: warm start and solve (with or without the position bias) per
+// joint kind, over the step's active joints of the kind. Like the contact and body passes
+// (contact-kernel.ts exports these too), this is their one source, built to WebAssembly and by
+// wasm2js to JavaScript (scripts/contact-kernel-build.ts), in AssemblyScript's portable subset:
+// f64 and i32 arithmetic over the solver memory at the byte offsets the solver passes in
+// (src/dynamics/solver-memory.ts), no allocation.
+//
+// `records` is the JOINT_RECORDS region (every joint's record, src/dynamics/joints/joint-record.ts
+// and each kind's file), `active` the JOINT_ACTIVE list (per active joint: its record's offset and
+// its two bodies' state offsets, in doubles), `states` the STATES region (body-state.ts). A pass
+// visits active joints `from` to `to` (one kind's range, in the world's joint order). The step's
+// numbers come as f64 arguments, once per pass.
+//
+// The small helpers below are inlined by Binaryen's optimiser (-O3), as the contact passes' are.
+//
+// Every sum is kept in the order of the TypeScript passes these replaced, so no recorded result
+// changed: Math.sqrt, max and min of doubles are f64.sqrt, max and min here, the same IEEE results
+// for every finite number (they differ only in how a NaN among the arguments propagates).
+//
+// Sequential impulses on soft constraints (Catto, Box2D v3's joints and "Solver2D"); the
+// revolute joint's rows are Box2D v3's b2SolveRevoluteJoint.
+import {
+  DELTA_ANGLE,
+  DP_X,
+  DP_Y,
+  J_DELTA_CENTER_X,
+  J_DELTA_CENTER_Y,
+  J_INV_I_A,
+  J_INV_I_B,
+  J_INV_MASS_A,
+  J_INV_MASS_B,
+  J_JOINT_ANGLE_0,
+  J_LIMIT_ON,
+  J_LOWER,
+  J_LOWER_IMPULSE,
+  J_MAX_MOTOR,
+  J_MOTOR_IMPULSE,
+  J_MOTOR_ON,
+  J_MOTOR_SPEED,
+  J_REVOLUTE_AXIAL_MASS,
+  J_REVOLUTE_LINEAR_IMPULSE_X,
+  J_REVOLUTE_LINEAR_IMPULSE_Y,
+  J_R_AX,
+  J_R_BX,
+  J_SPRING_BIAS_RATE,
+  J_SPRING_IMPULSE,
+  J_SPRING_IMPULSE_SCALE,
+  J_SPRING_MASS_SCALE,
+  J_SPRING_ON,
+  J_STEP_ANGULAR_IMPULSE,
+  J_STEP_IMPULSE_X,
+  J_STEP_IMPULSE_Y,
+  J_UPPER,
+  J_UPPER_IMPULSE,
+  Q_C,
+  Q_S,
+  V_X,
+  V_Y,
+  W,
+} from './contact-layout';
+import { ld, st } from './load-store';
+
+/** Where the numbers at double offset `at` of the region at `region` start. */
+function row(region: usize, at: i32): usize {
+  return region + ((<usize>at) << 3);
+}
+
+/** Entry k (0: record offset, 1: state A, 2: state B) of active joint i. */
+function listed(active: usize, i: i32, k: i32): i32 {
+  return load<i32>(active + ((<usize>(3 * i + k)) << 2));
+}
+
+// The preamble every pass shares (src/dynamics/joints/joint-levers.ts did it in TypeScript): a
+// vector of the record at `v` (x, then y) turned by the rotation this step of the state at `k`.
+
+function turnedX(k: usize, r: usize, v: i32): f64 {
+  return ld(k, Q_C) * ld(r, v) - ld(k, Q_S) * ld(r, v + 1);
+}
+
+function turnedY(k: usize, r: usize, v: i32): f64 {
+  return ld(k, Q_S) * ld(r, v) + ld(k, Q_C) * ld(r, v + 1);
+}
+
+/**
+ * The soft point constraint of the record at `r` between the states at `ka` and `kb`: B's anchor
+ * held on A's, both directions solved together as a 2x2 block (Box2D v3's revolute and weld
+ * joints). The accumulated impulse is at `impulse` (x, then y). The position error is corrected
+ * in the biased pass with the step's joint softness, or in both passes with the record's own
+ * (`softAt`: 1 when it applies, then bias rate, mass scale and impulse scale; -1 when the record
+ * has none); `clamp` 1 bounds the bias at `maxBiasSpeed`.
+ */
+function solveSoftPoint(
+  ka: usize,
+  kb: usize,
+  r: usize,
+  impulse: i32,
+  softAt: i32,
+  useBias: i32,
+  biasRate: f64,
+  softMassScale: f64,
+  softImpulseScale: f64,
+  maxBiasSpeed: f64,
+  clamp: i32,
+): void {
+  const mA = ld(r, J_INV_MASS_A);
+  const iA = ld(r, J_INV_I_A);
+  const mB = ld(r, J_INV_MASS_B);
+  const iB = ld(r, J_INV_I_B);
+  const vAx = ld(ka, V_X);
+  const vAy = ld(ka, V_Y);
+  const wA = ld(ka, W);
+  const vBx = ld(kb, V_X);
+  const vBy = ld(kb, V_Y);
+  const wB = ld(kb, W);
+  const rAx = turnedX(ka, r, J_R_AX);
+  const rAy = turnedY(ka, r, J_R_AX);
+  const rBx = turnedX(kb, r, J_R_BX);
+  const rBy = turnedY(kb, r, J_R_BX);
+  const cdotX = vBx - wB * rBy - (vAx - wA * rAy);
+  const cdotY = vBy + wB * rBx - (vAy + wA * rAx);
+  let biasX: f64 = 0;
+  let biasY: f64 = 0;
+  let massScale: f64 = 1;
+  let impulseScale: f64 = 0;
+  const springy = softAt >= 0 && ld(r, softAt) == 1;
+  if (useBias != 0 || springy) {
+    // Summed in this order, not the other kinds' shift + rBx - rAx: the bridge's, car's and
+    // ragdoll's recorded hashes depend on it.
+    const sepX = ld(kb, DP_X) - ld(ka, DP_X) + rBx - rAx + ld(r, J_DELTA_CENTER_X);
+    const sepY = ld(kb, DP_Y) - ld(ka, DP_Y) + rBy - rAy + ld(r, J_DELTA_CENTER_Y);
+    if (springy) {
+      biasX = ld(r, softAt + 1) * sepX;
+      biasY = ld(r, softAt + 1) * sepY;
+      massScale = ld(r, softAt + 2);
+      impulseScale = ld(r, softAt + 3);
+    } else {
+      biasX = biasRate * sepX;
+      biasY = biasRate * sepY;
+      massScale = softMassScale;
+      impulseScale = softImpulseScale;
+    }
+    if (clamp != 0) {
+      // At most maxBiasSpeed (see JointStep.maxBiasSpeed).
+      const biasSquared = biasX * biasX + biasY * biasY;
+      if (biasSquared > maxBiasSpeed * maxBiasSpeed) {
+        const ratio = maxBiasSpeed / Math.sqrt(biasSquared);
+        biasX *= ratio;
+        biasY *= ratio;
+      }
+    }
+  }
+  const k11 = mA + mB + rAy * rAy * iA + rBy * rBy * iB;
+  const k12 = -rAy * rAx * iA - rBy * rBx * iB;
+  const k22 = mA + mB + rAx * rAx * iA + rBx * rBx * iB;
+  const bX = cdotX + biasX;
+  const bY = cdotY + biasY;
+  let det = k11 * k22 - k12 * k12;
+  if (det != 0) det = 1 / det;
+  const solvedX = det * (k22 * bX - k12 * bY);
+  const solvedY = det * (k11 * bY - k12 * bX);
+  const px = -massScale * solvedX - impulseScale * ld(r, impulse);
+  const py = -massScale * solvedY - impulseScale * ld(r, impulse + 1);
+  st(r, impulse, ld(r, impulse) + px);
+  st(r, impulse + 1, ld(r, impulse + 1) + py);
+  st(ka, V_X, vAx - mA * px);
+  st(ka, V_Y, vAy - mA * py);
+  st(ka, W, wA - iA * (rAx * py - rAy * px));
+  st(kb, V_X, vBx + mB * px);
+  st(kb, V_Y, vBy + mB * py);
+  st(kb, W, wB + iB * (rBx * py - rBy * px));
+}
+
+/** The revolute joints' warm start: last step's point and axial impulses applied again. */
+export function warmStartRevolute(
+  records: usize,
+  active: usize,
+  states: usize,
+  from: i32,
+  to: i32,
+): void {
+  for (let i = from; i < to; i++) {
+    const r = row(records, listed(active, i, 0));
+    const ka = row(states, listed(active, i, 1));
+    const kb = row(states, listed(active, i, 2));
+    const mA = ld(r, J_INV_MASS_A);
+    const iA = ld(r, J_INV_I_A);
+    const mB = ld(r, J_INV_MASS_B);
+    const iB = ld(r, J_INV_I_B);
+    const rAx = turnedX(ka, r, J_R_AX);
+    const rAy = turnedY(ka, r, J_R_AX);
+    const rBx = turnedX(kb, r, J_R_BX);
+    const rBy = turnedY(kb, r, J_R_BX);
+    const px = ld(r, J_REVOLUTE_LINEAR_IMPULSE_X);
+    const py = ld(r, J_REVOLUTE_LINEAR_IMPULSE_Y);
+    const axial =
+      ld(r, J_SPRING_IMPULSE) +
+      ld(r, J_MOTOR_IMPULSE) +
+      ld(r, J_LOWER_IMPULSE) -
+      ld(r, J_UPPER_IMPULSE);
+    st(ka, V_X, ld(ka, V_X) - mA * px);
+    st(ka, V_Y, ld(ka, V_Y) - mA * py);
+    st(ka, W, ld(ka, W) - iA * (rAx * py - rAy * px + axial));
+    st(kb, V_X, ld(kb, V_X) + mB * px);
+    st(kb, V_Y, ld(kb, V_Y) + mB * py);
+    st(kb, W, ld(kb, W) + iB * (rBx * py - rBy * px + axial));
+  }
+}
+
+/**
+ * The revolute joints' solve (`useBias` 1) or relax (0) pass: the spring, the motor and the two
+ * limits on the angle, then the point; the relax pass sums the step's impulses (the reaction).
+ */
+export function solveRevolute(
+  records: usize,
+  active: usize,
+  states: usize,
+  from: i32,
+  to: i32,
+  h: f64,
+  inverseH: f64,
+  biasRate: f64,
+  massScale: f64,
+  impulseScale: f64,
+  maxBiasSpeed: f64,
+  useBias: i32,
+): void {
+  for (let i = from; i < to; i++) {
+    const r = row(records, listed(active, i, 0));
+    const ka = row(states, listed(active, i, 1));
+    const kb = row(states, listed(active, i, 2));
+    const iA = ld(r, J_INV_I_A);
+    const iB = ld(r, J_INV_I_B);
+    let wA = ld(ka, W);
+    let wB = ld(kb, W);
+    const jointAngle = ld(r, J_JOINT_ANGLE_0) + ld(kb, DELTA_ANGLE) - ld(ka, DELTA_ANGLE);
+    const axialMass = ld(r, J_REVOLUTE_AXIAL_MASS);
+
+    if (ld(r, J_SPRING_ON) == 1) {
+      const bias = ld(r, J_SPRING_BIAS_RATE) * jointAngle;
+      const impulse =
+        -ld(r, J_SPRING_MASS_SCALE) * axialMass * (wB - wA + bias) -
+        ld(r, J_SPRING_IMPULSE_SCALE) * ld(r, J_SPRING_IMPULSE);
+      st(r, J_SPRING_IMPULSE, ld(r, J_SPRING_IMPULSE) + impulse);
+      wA -= iA * impulse;
+      wB += iB * impulse;
+    }
+
+    if (ld(r, J_MOTOR_ON) == 1) {
+      const impulse = -axialMass * (wB - wA - ld(r, J_MOTOR_SPEED));
+      const old = ld(r, J_MOTOR_IMPULSE);
+      const maxImpulse = h * ld(r, J_MAX_MOTOR);
+      const accumulated = Math.max(-maxImpulse, Math.min(old + impulse, maxImpulse));
+      st(r, J_MOTOR_IMPULSE, accumulated);
+      const applied = accumulated - old;
+      wA -= iA * applied;
+      wB += iB * applied;
+    }
+
+    if (ld(r, J_LIMIT_ON) == 1) {
+      // Lower limit: C = angle - lower >= 0; upper: C = upper - angle >= 0, the same row with
+      // the sign turned. Speculative like contacts: a gap may close within the sub-step.
+      for (let side = 1; side >= -1; side -= 2) {
+        const c = side == 1 ? jointAngle - ld(r, J_LOWER) : ld(r, J_UPPER) - jointAngle;
+        let bias: f64 = 0;
+        let rowMassScale: f64 = 1;
+        let rowImpulseScale: f64 = 0;
+        if (c > 0) bias = c * inverseH;
+        else if (useBias != 0) {
+          bias = biasRate * c;
+          rowMassScale = massScale;
+          rowImpulseScale = impulseScale;
+        }
+        const at = side == 1 ? J_LOWER_IMPULSE : J_UPPER_IMPULSE;
+        const cdot = side == 1 ? wB - wA : wA - wB;
+        const old = ld(r, at);
+        const impulse = -axialMass * rowMassScale * (cdot + bias) - rowImpulseScale * old;
+        const accumulated = Math.max(old + impulse, 0);
+        const applied = accumulated - old;
+        st(r, at, accumulated);
+        if (side == 1) {
+          wA -= iA * applied;
+          wB += iB * applied;
+        } else {
+          wA += iA * applied;
+          wB -= iB * applied;
+        }
+      }
+    }
+
+    // The point constraint: both anchors at the same place.
+    st(ka, W, wA);
+    st(kb, W, wB);
+    solveSoftPoint(
+      ka,
+      kb,
+      r,
+      J_REVOLUTE_LINEAR_IMPULSE_X,
+      -1,
+      useBias,
+      biasRate,
+      massScale,
+      impulseScale,
+      maxBiasSpeed,
+      1,
+    );
+
+    if (useBias == 0) {
+      st(r, J_STEP_IMPULSE_X, ld(r, J_STEP_IMPULSE_X) + ld(r, J_REVOLUTE_LINEAR_IMPULSE_X));
+      st(r, J_STEP_IMPULSE_Y, ld(r, J_STEP_IMPULSE_Y) + ld(r, J_REVOLUTE_LINEAR_IMPULSE_Y));
+      st(
+        r,
+        J_STEP_ANGULAR_IMPULSE,
+        ld(r, J_STEP_ANGULAR_IMPULSE) +
+          (ld(r, J_SPRING_IMPULSE) +
+            ld(r, J_MOTOR_IMPULSE) +
+            ld(r, J_LOWER_IMPULSE) -
+            ld(r, J_UPPER_IMPULSE)),
+      );
+    }
+  }
+}
