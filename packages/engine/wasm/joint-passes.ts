@@ -18,7 +18,7 @@
 // for every finite number (they differ only in how a NaN among the arguments propagates).
 //
 // Sequential impulses on soft constraints (Catto, Box2D v3's joints and "Solver2D"); the
-// revolute joint's rows are Box2D v3's b2SolveRevoluteJoint.
+// revolute and weld joints' rows are Box2D v3's b2SolveRevoluteJoint and b2SolveWeldJoint.
 import {
   DELTA_ANGLE,
   DP_X,
@@ -52,6 +52,15 @@ import {
   J_STEP_IMPULSE_Y,
   J_UPPER,
   J_UPPER_IMPULSE,
+  J_WELD_ANGULAR_BIAS_RATE,
+  J_WELD_ANGULAR_IMPULSE,
+  J_WELD_ANGULAR_IMPULSE_SCALE,
+  J_WELD_ANGULAR_MASS_SCALE,
+  J_WELD_ANGULAR_SPRINGY,
+  J_WELD_AXIAL_MASS,
+  J_WELD_LINEAR_IMPULSE_X,
+  J_WELD_LINEAR_IMPULSE_Y,
+  J_WELD_LINEAR_SPRINGY,
   Q_C,
   Q_S,
   V_X,
@@ -316,6 +325,108 @@ export function solveRevolute(
             ld(r, J_LOWER_IMPULSE) -
             ld(r, J_UPPER_IMPULSE)),
       );
+    }
+  }
+}
+
+/** The weld joints' warm start: last step's point and angle impulses applied again. */
+export function warmStartWeld(
+  records: usize,
+  active: usize,
+  states: usize,
+  from: i32,
+  to: i32,
+): void {
+  for (let i = from; i < to; i++) {
+    const r = row(records, listed(active, i, 0));
+    const ka = row(states, listed(active, i, 1));
+    const kb = row(states, listed(active, i, 2));
+    const rAx = turnedX(ka, r, J_R_AX);
+    const rAy = turnedY(ka, r, J_R_AX);
+    const rBx = turnedX(kb, r, J_R_BX);
+    const rBy = turnedY(kb, r, J_R_BX);
+    const px = ld(r, J_WELD_LINEAR_IMPULSE_X);
+    const py = ld(r, J_WELD_LINEAR_IMPULSE_Y);
+    const angular = ld(r, J_WELD_ANGULAR_IMPULSE);
+    st(ka, V_X, ld(ka, V_X) - ld(r, J_INV_MASS_A) * px);
+    st(ka, V_Y, ld(ka, V_Y) - ld(r, J_INV_MASS_A) * py);
+    st(ka, W, ld(ka, W) - ld(r, J_INV_I_A) * (rAx * py - rAy * px + angular));
+    st(kb, V_X, ld(kb, V_X) + ld(r, J_INV_MASS_B) * px);
+    st(kb, V_Y, ld(kb, V_Y) + ld(r, J_INV_MASS_B) * py);
+    st(kb, W, ld(kb, W) + ld(r, J_INV_I_B) * (rBx * py - rBy * px + angular));
+  }
+}
+
+/**
+ * The weld joints' solve (`useBias` 1) or relax (0) pass: the angle row, then the point block
+ * (Box2D v3's b2SolveWeldJoint). A rigid hold corrects its error with the joint softness in the
+ * biased pass only, a soft one with its own softness in both.
+ */
+export function solveWeld(
+  records: usize,
+  active: usize,
+  states: usize,
+  from: i32,
+  to: i32,
+  biasRate: f64,
+  massScale: f64,
+  impulseScale: f64,
+  useBias: i32,
+): void {
+  for (let i = from; i < to; i++) {
+    const r = row(records, listed(active, i, 0));
+    const ka = row(states, listed(active, i, 1));
+    const kb = row(states, listed(active, i, 2));
+    const iA = ld(r, J_INV_I_A);
+    const iB = ld(r, J_INV_I_B);
+    let wA = ld(ka, W);
+    let wB = ld(kb, W);
+
+    // Angle.
+    let bias: f64 = 0;
+    let rowMassScale: f64 = 1;
+    let rowImpulseScale: f64 = 0;
+    const springy = ld(r, J_WELD_ANGULAR_SPRINGY) == 1;
+    if (useBias != 0 || springy) {
+      const c = ld(r, J_JOINT_ANGLE_0) + ld(kb, DELTA_ANGLE) - ld(ka, DELTA_ANGLE);
+      if (springy) {
+        bias = ld(r, J_WELD_ANGULAR_BIAS_RATE) * c;
+        rowMassScale = ld(r, J_WELD_ANGULAR_MASS_SCALE);
+        rowImpulseScale = ld(r, J_WELD_ANGULAR_IMPULSE_SCALE);
+      } else {
+        bias = biasRate * c;
+        rowMassScale = massScale;
+        rowImpulseScale = impulseScale;
+      }
+    }
+    const impulse =
+      -ld(r, J_WELD_AXIAL_MASS) * rowMassScale * (wB - wA + bias) -
+      rowImpulseScale * ld(r, J_WELD_ANGULAR_IMPULSE);
+    st(r, J_WELD_ANGULAR_IMPULSE, ld(r, J_WELD_ANGULAR_IMPULSE) + impulse);
+    wA -= iA * impulse;
+    wB += iB * impulse;
+
+    // Position of the anchor: rigid, or springy with its own softness in both passes.
+    st(ka, W, wA);
+    st(kb, W, wB);
+    solveSoftPoint(
+      ka,
+      kb,
+      r,
+      J_WELD_LINEAR_IMPULSE_X,
+      J_WELD_LINEAR_SPRINGY,
+      useBias,
+      biasRate,
+      massScale,
+      impulseScale,
+      0,
+      0,
+    );
+
+    if (useBias == 0) {
+      st(r, J_STEP_IMPULSE_X, ld(r, J_STEP_IMPULSE_X) + ld(r, J_WELD_LINEAR_IMPULSE_X));
+      st(r, J_STEP_IMPULSE_Y, ld(r, J_STEP_IMPULSE_Y) + ld(r, J_WELD_LINEAR_IMPULSE_Y));
+      st(r, J_STEP_ANGULAR_IMPULSE, ld(r, J_STEP_ANGULAR_IMPULSE) + ld(r, J_WELD_ANGULAR_IMPULSE));
     }
   }
 }

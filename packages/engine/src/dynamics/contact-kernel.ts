@@ -213,6 +213,18 @@ export interface JointPasses {
     maxBiasSpeed: number,
     useBias: number,
   ): void;
+  warmStartWeld(records: number, active: number, states: number, from: number, to: number): void;
+  solveWeld(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    biasRate: number,
+    massScale: number,
+    impulseScale: number,
+    useBias: number,
+  ): void;
 }
 
 /** Creates the JavaScript build of the kernel over `imports.env.memory` (wasm2js's factory). */
