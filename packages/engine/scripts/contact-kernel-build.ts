@@ -26,6 +26,7 @@ import * as constraintLayout from '../src/dynamics/contact-constraint-layout.ts'
 import * as contactData from '../src/dynamics/contact-data.ts';
 import * as jointRecord from '../src/dynamics/joints/joint-record.ts';
 import * as springMotorLimit from '../src/dynamics/joints/spring-motor-limit.ts';
+import * as prismaticLayout from '../src/dynamics/joints/prismatic-joint-solver.ts';
 import * as revoluteLayout from '../src/dynamics/joints/revolute-joint-solver.ts';
 import * as weldLayout from '../src/dynamics/joints/weld-joint-layout.ts';
 import { LINEAR_SLOP, SLEEP_SPEED } from '../src/core/constants.ts';
@@ -79,6 +80,7 @@ export function kernelLayout(): string {
     ...prefixed('J_', jointRecord),
     ...prefixed('J_', springMotorLimit),
     ...prefixed('J_REVOLUTE_', revoluteLayout),
+    ...prefixed('J_PRISMATIC_', prismaticLayout),
     ...prefixed('J_WELD_', weldLayout),
   ];
   const lines = [

@@ -131,7 +131,14 @@ export {
   limitSpeeds,
 } from './body-passes';
 // The joints' passes (warm start and solve per kind): joint-passes.ts.
-export { solveRevolute, solveWeld, warmStartRevolute, warmStartWeld } from './joint-passes';
+export {
+  solvePrismatic,
+  solveRevolute,
+  solveWeld,
+  warmStartPrismatic,
+  warmStartRevolute,
+  warmStartWeld,
+} from './joint-passes';
 
 // The constraints are stored in pairs, their numbers interleaved: number k of constraint i is at
 // double (i >> 1) * 2 * STRIDE + 2 * k + (i & 1) of the constraint region, so constraints 2m and

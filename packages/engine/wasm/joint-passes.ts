@@ -18,7 +18,8 @@
 // for every finite number (they differ only in how a NaN among the arguments propagates).
 //
 // Sequential impulses on soft constraints (Catto, Box2D v3's joints and "Solver2D"); the
-// revolute and weld joints' rows are Box2D v3's b2SolveRevoluteJoint and b2SolveWeldJoint.
+// revolute and weld joints' rows are Box2D v3's (b2SolveRevoluteJoint, b2SolveWeldJoint,
+// b2SolvePrismaticJoint, ...).
 import {
   DELTA_ANGLE,
   DP_X,
@@ -37,6 +38,9 @@ import {
   J_MOTOR_IMPULSE,
   J_MOTOR_ON,
   J_MOTOR_SPEED,
+  J_PRISMATIC_ANGULAR_IMPULSE,
+  J_PRISMATIC_AXIS_X,
+  J_PRISMATIC_PERPENDICULAR_IMPULSE,
   J_REVOLUTE_AXIAL_MASS,
   J_REVOLUTE_LINEAR_IMPULSE_X,
   J_REVOLUTE_LINEAR_IMPULSE_Y,
@@ -428,5 +432,239 @@ export function solveWeld(
       st(r, J_STEP_IMPULSE_Y, ld(r, J_STEP_IMPULSE_Y) + ld(r, J_WELD_LINEAR_IMPULSE_Y));
       st(r, J_STEP_ANGULAR_IMPULSE, ld(r, J_STEP_ANGULAR_IMPULSE) + ld(r, J_WELD_ANGULAR_IMPULSE));
     }
+  }
+}
+
+// x and y of how far B's centre is from A's now (src/dynamics/joints/joint-levers.ts did it in
+// TypeScript): their motion this step plus their offset at its start. The anchors' separation
+// adds the turned levers' difference to it, in that order (shiftX(...) + rBx - rAx).
+
+function shiftX(ka: usize, kb: usize, r: usize): f64 {
+  return ld(kb, DP_X) - ld(ka, DP_X) + ld(r, J_DELTA_CENTER_X);
+}
+
+function shiftY(ka: usize, kb: usize, r: usize): f64 {
+  return ld(kb, DP_Y) - ld(ka, DP_Y) + ld(r, J_DELTA_CENTER_Y);
+}
+
+/** The prismatic joints' warm start: last step's axial, perpendicular and angle impulses. */
+export function warmStartPrismatic(
+  records: usize,
+  active: usize,
+  states: usize,
+  from: i32,
+  to: i32,
+): void {
+  for (let i = from; i < to; i++) {
+    const r = row(records, listed(active, i, 0));
+    const ka = row(states, listed(active, i, 1));
+    const kb = row(states, listed(active, i, 2));
+    const rAx = turnedX(ka, r, J_R_AX);
+    const rAy = turnedY(ka, r, J_R_AX);
+    const rBx = turnedX(kb, r, J_R_BX);
+    const rBy = turnedY(kb, r, J_R_BX);
+    const dx = shiftX(ka, kb, r) + rBx - rAx;
+    const dy = shiftY(ka, kb, r) + rBy - rAy;
+    const ax = turnedX(ka, r, J_PRISMATIC_AXIS_X);
+    const ay = turnedY(ka, r, J_PRISMATIC_AXIS_X);
+    // Lever arms of the axial and perpendicular rows (A's arm reaches B's anchor: d + rA).
+    const a1 = (dx + rAx) * ay - (dy + rAy) * ax;
+    const a2 = rBx * ay - rBy * ax;
+    const px = -ay;
+    const py = ax;
+    const s1 = (dx + rAx) * py - (dy + rAy) * px;
+    const s2 = rBx * py - rBy * px;
+    const axial =
+      ld(r, J_SPRING_IMPULSE) +
+      ld(r, J_MOTOR_IMPULSE) +
+      ld(r, J_LOWER_IMPULSE) -
+      ld(r, J_UPPER_IMPULSE);
+    const perpendicular = ld(r, J_PRISMATIC_PERPENDICULAR_IMPULSE);
+    const angular = ld(r, J_PRISMATIC_ANGULAR_IMPULSE);
+    const fx = axial * ax + perpendicular * px;
+    const fy = axial * ay + perpendicular * py;
+    const lA = axial * a1 + perpendicular * s1 + angular;
+    const lB = axial * a2 + perpendicular * s2 + angular;
+    st(ka, V_X, ld(ka, V_X) - ld(r, J_INV_MASS_A) * fx);
+    st(ka, V_Y, ld(ka, V_Y) - ld(r, J_INV_MASS_A) * fy);
+    st(ka, W, ld(ka, W) - ld(r, J_INV_I_A) * lA);
+    st(kb, V_X, ld(kb, V_X) + ld(r, J_INV_MASS_B) * fx);
+    st(kb, V_Y, ld(kb, V_Y) + ld(r, J_INV_MASS_B) * fy);
+    st(kb, W, ld(kb, W) + ld(r, J_INV_I_B) * lB);
+  }
+}
+
+/**
+ * The prismatic joints' solve (`useBias` 1) or relax (0) pass (Box2D v3's b2SolvePrismaticJoint):
+ * the rows along the axis one after another (spring, motor, lower and upper limit), then the
+ * perpendicular offset and the relative angle together as a 2x2 block.
+ */
+export function solvePrismatic(
+  records: usize,
+  active: usize,
+  states: usize,
+  from: i32,
+  to: i32,
+  h: f64,
+  inverseH: f64,
+  biasRate: f64,
+  softMassScale: f64,
+  softImpulseScale: f64,
+  useBias: i32,
+): void {
+  for (let i = from; i < to; i++) {
+    const r = row(records, listed(active, i, 0));
+    const ka = row(states, listed(active, i, 1));
+    const kb = row(states, listed(active, i, 2));
+    const mA = ld(r, J_INV_MASS_A);
+    const iA = ld(r, J_INV_I_A);
+    const mB = ld(r, J_INV_MASS_B);
+    const iB = ld(r, J_INV_I_B);
+    let vAx = ld(ka, V_X);
+    let vAy = ld(ka, V_Y);
+    let wA = ld(ka, W);
+    let vBx = ld(kb, V_X);
+    let vBy = ld(kb, V_Y);
+    let wB = ld(kb, W);
+    const rAx = turnedX(ka, r, J_R_AX);
+    const rAy = turnedY(ka, r, J_R_AX);
+    const rBx = turnedX(kb, r, J_R_BX);
+    const rBy = turnedY(kb, r, J_R_BX);
+    const dx = shiftX(ka, kb, r) + rBx - rAx;
+    const dy = shiftY(ka, kb, r) + rBy - rAy;
+    const ax = turnedX(ka, r, J_PRISMATIC_AXIS_X);
+    const ay = turnedY(ka, r, J_PRISMATIC_AXIS_X);
+    const translation = ax * dx + ay * dy;
+    const a1 = (dx + rAx) * ay - (dy + rAy) * ax;
+    const a2 = rBx * ay - rBy * ax;
+    const kAxial = mA + mB + iA * a1 * a1 + iB * a2 * a2;
+    const axialMass: f64 = kAxial > 0 ? 1 / kAxial : 0;
+
+    // The rows along the axis, one after another, each on the velocities the one before left:
+    // the spring (row 0), the motor (1), translation >= lower (2) and translation <= upper (3).
+    // Each gives the impulse `push` on B along the axis (on A the opposite), applied in one place.
+    for (let k = 0; k < 4; k++) {
+      if (ld(r, k == 0 ? J_SPRING_ON : k == 1 ? J_MOTOR_ON : J_LIMIT_ON) != 1) continue;
+      let push: f64 = 0;
+      if (k < 2) {
+        const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
+        if (k == 0) {
+          push =
+            -ld(r, J_SPRING_MASS_SCALE) *
+              axialMass *
+              (cdot + ld(r, J_SPRING_BIAS_RATE) * translation) -
+            ld(r, J_SPRING_IMPULSE_SCALE) * ld(r, J_SPRING_IMPULSE);
+          st(r, J_SPRING_IMPULSE, ld(r, J_SPRING_IMPULSE) + push);
+        } else {
+          const impulse = axialMass * (ld(r, J_MOTOR_SPEED) - cdot);
+          const old = ld(r, J_MOTOR_IMPULSE);
+          const maxImpulse = h * ld(r, J_MAX_MOTOR);
+          const accumulated = Math.max(-maxImpulse, Math.min(old + impulse, maxImpulse));
+          st(r, J_MOTOR_IMPULSE, accumulated);
+          push = accumulated - old;
+        }
+      } else {
+        // Lower: translation - lower >= 0; upper: upper - translation >= 0, the same row with
+        // the sign turned. Speculative like contacts: a gap may close within the sub-step.
+        const lower = k == 2;
+        const c = lower ? translation - ld(r, J_LOWER) : ld(r, J_UPPER) - translation;
+        let bias: f64 = 0;
+        let massScale: f64 = 1;
+        let impulseScale: f64 = 0;
+        if (c > 0) bias = c * inverseH;
+        else if (useBias != 0) {
+          bias = biasRate * c;
+          massScale = softMassScale;
+          impulseScale = softImpulseScale;
+        }
+        const cdot = lower
+          ? ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA
+          : ax * (vAx - vBx) + ay * (vAy - vBy) + a1 * wA - a2 * wB;
+        const at = lower ? J_LOWER_IMPULSE : J_UPPER_IMPULSE;
+        const old = ld(r, at);
+        const impulse = -axialMass * massScale * (cdot + bias) - impulseScale * old;
+        const accumulated = Math.max(old + impulse, 0);
+        st(r, at, accumulated);
+        push = lower ? accumulated - old : -(accumulated - old);
+      }
+      vAx -= mA * push * ax;
+      vAy -= mA * push * ay;
+      wA -= iA * push * a1;
+      vBx += mB * push * ax;
+      vBy += mB * push * ay;
+      wB += iB * push * a2;
+    }
+
+    // Perpendicular offset and relative angle, solved together.
+    const px = -ay;
+    const py = ax;
+    const s1 = (dx + rAx) * py - (dy + rAy) * px;
+    const s2 = rBx * py - rBy * px;
+    const cdot1 = px * (vBx - vAx) + py * (vBy - vAy) + s2 * wB - s1 * wA;
+    const cdot2 = wB - wA;
+    let bias1: f64 = 0;
+    let bias2: f64 = 0;
+    let massScale: f64 = 1;
+    let impulseScale: f64 = 0;
+    if (useBias != 0) {
+      bias1 = biasRate * (px * dx + py * dy);
+      bias2 = biasRate * (ld(r, J_JOINT_ANGLE_0) + ld(kb, DELTA_ANGLE) - ld(ka, DELTA_ANGLE));
+      massScale = softMassScale;
+      impulseScale = softImpulseScale;
+    }
+    const k11 = mA + mB + iA * s1 * s1 + iB * s2 * s2;
+    const k12 = iA * s1 + iB * s2;
+    let k22 = iA + iB;
+    if (k22 == 0) k22 = 1; // neither body turns: the angle row is idle
+    const bX = cdot1 + bias1;
+    const bY = cdot2 + bias2;
+    let det = k11 * k22 - k12 * k12;
+    if (det != 0) det = 1 / det;
+    const solvedX = det * (k22 * bX - k12 * bY);
+    const solvedY = det * (k11 * bY - k12 * bX);
+    const impulse1 = -massScale * solvedX - impulseScale * ld(r, J_PRISMATIC_PERPENDICULAR_IMPULSE);
+    const impulse2 = -massScale * solvedY - impulseScale * ld(r, J_PRISMATIC_ANGULAR_IMPULSE);
+    st(r, J_PRISMATIC_PERPENDICULAR_IMPULSE, ld(r, J_PRISMATIC_PERPENDICULAR_IMPULSE) + impulse1);
+    st(r, J_PRISMATIC_ANGULAR_IMPULSE, ld(r, J_PRISMATIC_ANGULAR_IMPULSE) + impulse2);
+    const fx = impulse1 * px;
+    const fy = impulse1 * py;
+    const lA = impulse1 * s1 + impulse2;
+    const lB = impulse1 * s2 + impulse2;
+    vAx -= mA * fx;
+    vAy -= mA * fy;
+    wA -= iA * lA;
+    vBx += mB * fx;
+    vBy += mB * fy;
+    wB += iB * lB;
+
+    if (useBias == 0) {
+      const axial =
+        ld(r, J_SPRING_IMPULSE) +
+        ld(r, J_MOTOR_IMPULSE) +
+        ld(r, J_LOWER_IMPULSE) -
+        ld(r, J_UPPER_IMPULSE);
+      st(
+        r,
+        J_STEP_IMPULSE_X,
+        ld(r, J_STEP_IMPULSE_X) + (axial * ax + ld(r, J_PRISMATIC_PERPENDICULAR_IMPULSE) * px),
+      );
+      st(
+        r,
+        J_STEP_IMPULSE_Y,
+        ld(r, J_STEP_IMPULSE_Y) + (axial * ay + ld(r, J_PRISMATIC_PERPENDICULAR_IMPULSE) * py),
+      );
+      st(
+        r,
+        J_STEP_ANGULAR_IMPULSE,
+        ld(r, J_STEP_ANGULAR_IMPULSE) + ld(r, J_PRISMATIC_ANGULAR_IMPULSE),
+      );
+    }
+
+    st(ka, V_X, vAx);
+    st(ka, V_Y, vAy);
+    st(ka, W, wA);
+    st(kb, V_X, vBx);
+    st(kb, V_Y, vBy);
+    st(kb, W, wB);
   }
 }

@@ -213,6 +213,26 @@ export interface JointPasses {
     maxBiasSpeed: number,
     useBias: number,
   ): void;
+  warmStartPrismatic(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+  ): void;
+  solvePrismatic(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    h: number,
+    inverseH: number,
+    biasRate: number,
+    massScale: number,
+    impulseScale: number,
+    useBias: number,
+  ): void;
   warmStartWeld(records: number, active: number, states: number, from: number, to: number): void;
   solveWeld(
     records: number,
