@@ -545,7 +545,7 @@ export function solvePrismatic(
     // Each gives the impulse `push` on B along the axis (on A the opposite), applied in one place.
     for (let k = 0; k < 4; k++) {
       if (ld(r, k == 0 ? J_SPRING_ON : k == 1 ? J_MOTOR_ON : J_LIMIT_ON) != 1) continue;
-      let push: f64 = 0;
+      let push: f64;
       if (k < 2) {
         const cdot = ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA;
         if (k == 0) {
