@@ -132,9 +132,13 @@ export {
 } from './body-passes';
 // The joints' passes (warm start and solve per kind): joint-passes.ts.
 export {
+  solveDistance,
+  solveMouse,
   solvePrismatic,
   solveRevolute,
   solveWeld,
+  warmStartDistance,
+  warmStartMouse,
   warmStartPrismatic,
   warmStartRevolute,
   warmStartWeld,

@@ -25,6 +25,33 @@ import {
   DP_X,
   DP_Y,
   J_DELTA_CENTER_X,
+  J_DISTANCE_DAMPING_RATIO,
+  J_DISTANCE_EXPLICIT_SPRING,
+  J_DISTANCE_IMPULSE,
+  J_DISTANCE_LENGTH_EPSILON,
+  J_DISTANCE_LENGTH_ROW_ON,
+  J_DISTANCE_LOWER_IMPULSE,
+  J_DISTANCE_LOWER_ON,
+  J_DISTANCE_MAX_LENGTH,
+  J_DISTANCE_MIN_LENGTH,
+  J_DISTANCE_REST,
+  J_DISTANCE_SPRING_BIAS_RATE,
+  J_DISTANCE_SPRING_ENABLED,
+  J_DISTANCE_SPRING_IMPULSE_SCALE,
+  J_DISTANCE_SPRING_MASS_SCALE,
+  J_DISTANCE_SPRING_OMEGA,
+  J_DISTANCE_SPRING_SUB_STEP_IMPULSE,
+  J_DISTANCE_UPPER_IMPULSE,
+  J_DISTANCE_UPPER_ON,
+  J_MOUSE_ANGULAR_IMPULSE,
+  J_MOUSE_ANGULAR_IMPULSE_SCALE,
+  J_MOUSE_ANGULAR_MASS_SCALE,
+  J_MOUSE_LINEAR_BIAS_RATE,
+  J_MOUSE_LINEAR_IMPULSE_SCALE,
+  J_MOUSE_LINEAR_IMPULSE_X,
+  J_MOUSE_LINEAR_IMPULSE_Y,
+  J_MOUSE_LINEAR_MASS_SCALE,
+  J_MOUSE_MAX_FORCE,
   J_DELTA_CENTER_Y,
   J_INV_I_A,
   J_INV_I_B,
@@ -666,5 +693,291 @@ export function solvePrismatic(
     st(kb, V_X, vBx);
     st(kb, V_Y, vBy);
     st(kb, W, wB);
+  }
+}
+
+/** The distance joints' warm start: last step's impulses along the line between the anchors. */
+export function warmStartDistance(
+  records: usize,
+  active: usize,
+  states: usize,
+  from: i32,
+  to: i32,
+): void {
+  for (let i = from; i < to; i++) {
+    const r = row(records, listed(active, i, 0));
+    const ka = row(states, listed(active, i, 1));
+    const kb = row(states, listed(active, i, 2));
+    const rAx = turnedX(ka, r, J_R_AX);
+    const rAy = turnedY(ka, r, J_R_AX);
+    const rBx = turnedX(kb, r, J_R_BX);
+    const rBy = turnedY(kb, r, J_R_BX);
+    const dx = shiftX(ka, kb, r) + rBx - rAx;
+    const dy = shiftY(ka, kb, r) + rBy - rAy;
+    const length = Math.sqrt(dx * dx + dy * dy);
+    if (!(length > J_DISTANCE_LENGTH_EPSILON)) continue;
+    const axial =
+      ld(r, J_DISTANCE_IMPULSE) + ld(r, J_DISTANCE_LOWER_IMPULSE) - ld(r, J_DISTANCE_UPPER_IMPULSE);
+    const px = (axial * dx) / length;
+    const py = (axial * dy) / length;
+    st(ka, V_X, ld(ka, V_X) - ld(r, J_INV_MASS_A) * px);
+    st(ka, V_Y, ld(ka, V_Y) - ld(r, J_INV_MASS_A) * py);
+    st(ka, W, ld(ka, W) - ld(r, J_INV_I_A) * (rAx * py - rAy * px));
+    st(kb, V_X, ld(kb, V_X) + ld(r, J_INV_MASS_B) * px);
+    st(kb, V_Y, ld(kb, V_Y) + ld(r, J_INV_MASS_B) * py);
+    st(kb, W, ld(kb, W) + ld(r, J_INV_I_B) * (rBx * py - rBy * px));
+  }
+}
+
+/**
+ * The distance joints' solve (`useBias` 1) or relax (0) pass (Box2D v3's b2SolveDistanceJoint,
+ * with an explicit spring force for slow springs): the rows along the line between the anchors
+ * one after another.
+ */
+export function solveDistance(
+  records: usize,
+  active: usize,
+  states: usize,
+  from: i32,
+  to: i32,
+  h: f64,
+  inverseH: f64,
+  biasRate: f64,
+  softMassScale: f64,
+  softImpulseScale: f64,
+  useBias: i32,
+): void {
+  for (let i = from; i < to; i++) {
+    const r = row(records, listed(active, i, 0));
+    const ka = row(states, listed(active, i, 1));
+    const kb = row(states, listed(active, i, 2));
+    const mA = ld(r, J_INV_MASS_A);
+    const iA = ld(r, J_INV_I_A);
+    const mB = ld(r, J_INV_MASS_B);
+    const iB = ld(r, J_INV_I_B);
+    let vAx = ld(ka, V_X);
+    let vAy = ld(ka, V_Y);
+    let wA = ld(ka, W);
+    let vBx = ld(kb, V_X);
+    let vBy = ld(kb, V_Y);
+    let wB = ld(kb, W);
+    const rAx = turnedX(ka, r, J_R_AX);
+    const rAy = turnedY(ka, r, J_R_AX);
+    const rBx = turnedX(kb, r, J_R_BX);
+    const rBy = turnedY(kb, r, J_R_BX);
+    const dx = shiftX(ka, kb, r) + rBx - rAx;
+    const dy = shiftY(ka, kb, r) + rBy - rAy;
+    const length = Math.sqrt(dx * dx + dy * dy);
+    // Coincident anchors have no direction to push along.
+    if (length > J_DISTANCE_LENGTH_EPSILON) {
+      const nx = dx / length;
+      const ny = dy / length;
+      const crA = rAx * ny - rAy * nx;
+      const crB = rBx * ny - rBy * nx;
+      const k = mA + mB + iA * crA * crA + iB * crB * crB;
+      const axialMass: f64 = k > 0 ? 1 / k : 0;
+
+      // The rows along n, one after another, each on the velocities the one before left: the
+      // explicit spring's force (row 0), the rod or the soft spring (1), length >= minLength (2,
+      // pushes apart only) and length <= maxLength (3, pulls together only: a rope). Each gives
+      // the impulse `push` on B along n (on A the opposite), applied in one place.
+      const explicit = ld(r, J_DISTANCE_EXPLICIT_SPRING) == 1;
+      for (let n = 0; n < 4; n++) {
+        if (
+          n == 0
+            ? !explicit || useBias == 0
+            : n == 1
+              ? explicit || ld(r, J_DISTANCE_LENGTH_ROW_ON) != 1
+              : ld(r, n == 2 ? J_DISTANCE_LOWER_ON : J_DISTANCE_UPPER_ON) != 1
+        ) {
+          continue;
+        }
+        const cdot =
+          (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
+        let push: f64;
+        if (n == 0) {
+          // Spring force -k C - c Cdot over the sub-step (C = length - rest), with k and c for
+          // the effective mass; the damping part implicit, so no damping ratio can reverse the
+          // motion.
+          const omega = ld(r, J_DISTANCE_SPRING_OMEGA);
+          const damping = 2 * ld(r, J_DISTANCE_DAMPING_RATIO) * omega;
+          push =
+            (-axialMass *
+              h *
+              (omega * omega * (length - ld(r, J_DISTANCE_REST)) + damping * cdot)) /
+            (1 + damping * h);
+          st(r, J_DISTANCE_SPRING_SUB_STEP_IMPULSE, push);
+        } else if (n == 1) {
+          // C = length - rest.
+          let bias: f64 = 0;
+          let massScale: f64 = 1;
+          let impulseScale: f64 = 0;
+          if (ld(r, J_DISTANCE_SPRING_ENABLED) == 1) {
+            bias = ld(r, J_DISTANCE_SPRING_BIAS_RATE) * (length - ld(r, J_DISTANCE_REST));
+            massScale = ld(r, J_DISTANCE_SPRING_MASS_SCALE);
+            impulseScale = ld(r, J_DISTANCE_SPRING_IMPULSE_SCALE);
+          } else if (useBias != 0) {
+            bias = biasRate * (length - ld(r, J_DISTANCE_REST));
+            massScale = softMassScale;
+            impulseScale = softImpulseScale;
+          }
+          push = -massScale * axialMass * (cdot + bias) - impulseScale * ld(r, J_DISTANCE_IMPULSE);
+          st(r, J_DISTANCE_IMPULSE, ld(r, J_DISTANCE_IMPULSE) + push);
+        } else {
+          // Lower: C = length - minLength >= 0; upper: C = maxLength - length >= 0, the same
+          // row with the sign turned. Speculative like contacts: a gap may close within the
+          // sub-step.
+          const lower = n == 2;
+          const c = lower
+            ? length - ld(r, J_DISTANCE_MIN_LENGTH)
+            : ld(r, J_DISTANCE_MAX_LENGTH) - length;
+          let bias: f64 = 0;
+          let massScale: f64 = 1;
+          let impulseScale: f64 = 0;
+          if (c > 0) bias = c * inverseH;
+          else if (useBias != 0) {
+            bias = biasRate * c;
+            massScale = softMassScale;
+            impulseScale = softImpulseScale;
+          }
+          const at = lower ? J_DISTANCE_LOWER_IMPULSE : J_DISTANCE_UPPER_IMPULSE;
+          const old = ld(r, at);
+          const impulse =
+            -massScale * axialMass * ((lower ? cdot : -cdot) + bias) - impulseScale * old;
+          const accumulated = Math.max(old + impulse, 0);
+          st(r, at, accumulated);
+          push = lower ? accumulated - old : -(accumulated - old);
+        }
+        const px = push * nx;
+        const py = push * ny;
+        vAx -= mA * px;
+        vAy -= mA * py;
+        wA -= iA * (rAx * py - rAy * px);
+        vBx += mB * px;
+        vBy += mB * py;
+        wB += iB * (rBx * py - rBy * px);
+      }
+
+      if (useBias == 0) {
+        const axial =
+          ld(r, J_DISTANCE_IMPULSE) +
+          ld(r, J_DISTANCE_SPRING_SUB_STEP_IMPULSE) +
+          ld(r, J_DISTANCE_LOWER_IMPULSE) -
+          ld(r, J_DISTANCE_UPPER_IMPULSE);
+        st(r, J_STEP_IMPULSE_X, ld(r, J_STEP_IMPULSE_X) + axial * nx);
+        st(r, J_STEP_IMPULSE_Y, ld(r, J_STEP_IMPULSE_Y) + axial * ny);
+      }
+    }
+
+    st(ka, V_X, vAx);
+    st(ka, V_Y, vAy);
+    st(ka, W, wA);
+    st(kb, V_X, vBx);
+    st(kb, V_Y, vBy);
+    st(kb, W, wB);
+  }
+}
+
+/** The mouse joints' warm start: last step's pull and spin brake on the one body (B). */
+export function warmStartMouse(
+  records: usize,
+  active: usize,
+  states: usize,
+  from: i32,
+  to: i32,
+): void {
+  for (let i = from; i < to; i++) {
+    const r = row(records, listed(active, i, 0));
+    const kb = row(states, listed(active, i, 2));
+    const mB = ld(r, J_INV_MASS_B);
+    const iB = ld(r, J_INV_I_B);
+    const rBx = turnedX(kb, r, J_R_BX);
+    const rBy = turnedY(kb, r, J_R_BX);
+    const px = ld(r, J_MOUSE_LINEAR_IMPULSE_X);
+    const py = ld(r, J_MOUSE_LINEAR_IMPULSE_Y);
+    st(kb, V_X, ld(kb, V_X) + mB * px);
+    st(kb, V_Y, ld(kb, V_Y) + mB * py);
+    st(kb, W, ld(kb, W) + iB * (rBx * py - rBy * px + ld(r, J_MOUSE_ANGULAR_IMPULSE)));
+  }
+}
+
+/**
+ * The mouse joints' solve (`useBias` 1) or relax (0) pass (Box2D v3's b2SolveMouseJoint): a soft
+ * brake on the spin, then the spring to the target, soft in both passes, its impulse bounded by
+ * the joint's maxForce.
+ */
+export function solveMouse(
+  records: usize,
+  active: usize,
+  states: usize,
+  from: i32,
+  to: i32,
+  h: f64,
+  useBias: i32,
+): void {
+  for (let i = from; i < to; i++) {
+    const r = row(records, listed(active, i, 0));
+    const kb = row(states, listed(active, i, 2));
+    const mB = ld(r, J_INV_MASS_B);
+    const iB = ld(r, J_INV_I_B);
+    let vBx = ld(kb, V_X);
+    let vBy = ld(kb, V_Y);
+    let wB = ld(kb, W);
+
+    // A soft brake on the spin, with no target angle.
+    let spin: f64 = iB > 0 ? -wB / iB : 0;
+    spin =
+      ld(r, J_MOUSE_ANGULAR_MASS_SCALE) * spin -
+      ld(r, J_MOUSE_ANGULAR_IMPULSE_SCALE) * ld(r, J_MOUSE_ANGULAR_IMPULSE);
+    st(r, J_MOUSE_ANGULAR_IMPULSE, ld(r, J_MOUSE_ANGULAR_IMPULSE) + spin);
+    wB += iB * spin;
+
+    // The spring to the target; always soft, in both passes (it is a spring, not a rigid link).
+    const biasRate = ld(r, J_MOUSE_LINEAR_BIAS_RATE);
+    const massScale = ld(r, J_MOUSE_LINEAR_MASS_SCALE);
+    const impulseScale = ld(r, J_MOUSE_LINEAR_IMPULSE_SCALE);
+    const rBx = turnedX(kb, r, J_R_BX);
+    const rBy = turnedY(kb, r, J_R_BX);
+    const cdotX = vBx - wB * rBy;
+    const cdotY = vBy + wB * rBx;
+    const sepX = ld(kb, DP_X) + rBx + ld(r, J_DELTA_CENTER_X);
+    const sepY = ld(kb, DP_Y) + rBy + ld(r, J_DELTA_CENTER_Y);
+    const k11 = mB + rBy * rBy * iB;
+    const k12 = -rBy * rBx * iB;
+    const k22 = mB + rBx * rBx * iB;
+    const bX = cdotX + biasRate * sepX;
+    const bY = cdotY + biasRate * sepY;
+    let det = k11 * k22 - k12 * k12;
+    if (det != 0) det = 1 / det;
+    const solvedX = det * (k22 * bX - k12 * bY);
+    const solvedY = det * (k11 * bY - k12 * bX);
+    const oldX = ld(r, J_MOUSE_LINEAR_IMPULSE_X);
+    const oldY = ld(r, J_MOUSE_LINEAR_IMPULSE_Y);
+    let accX = oldX - massScale * solvedX - impulseScale * oldX;
+    let accY = oldY - massScale * solvedY - impulseScale * oldY;
+    const maxImpulse = ld(r, J_MOUSE_MAX_FORCE) * h;
+    const magnitude = Math.sqrt(accX * accX + accY * accY);
+    if (magnitude > maxImpulse) {
+      const scale = maxImpulse / magnitude;
+      accX *= scale;
+      accY *= scale;
+    }
+    st(r, J_MOUSE_LINEAR_IMPULSE_X, accX);
+    st(r, J_MOUSE_LINEAR_IMPULSE_Y, accY);
+    const px = accX - oldX;
+    const py = accY - oldY;
+    vBx += mB * px;
+    vBy += mB * py;
+    wB += iB * (rBx * py - rBy * px);
+
+    st(kb, V_X, vBx);
+    st(kb, V_Y, vBy);
+    st(kb, W, wB);
+
+    if (useBias == 0) {
+      st(r, J_STEP_IMPULSE_X, ld(r, J_STEP_IMPULSE_X) + ld(r, J_MOUSE_LINEAR_IMPULSE_X));
+      st(r, J_STEP_IMPULSE_Y, ld(r, J_STEP_IMPULSE_Y) + ld(r, J_MOUSE_LINEAR_IMPULSE_Y));
+      st(r, J_STEP_ANGULAR_IMPULSE, ld(r, J_STEP_ANGULAR_IMPULSE) + ld(r, J_MOUSE_ANGULAR_IMPULSE));
+    }
   }
 }

@@ -31,12 +31,12 @@ import {
 // (issue #30): their TypeScript left the bundle, their WebAssembly (hex in the module) costs a
 // little more (engine 55.4 KB). The ceilings are the figures plus a tenth of a kilobyte, rounded
 // up to a tenth. The joints' passes moved into the kernel (issue #30 item 2): every app now ships
-// their WebAssembly in the module's hex, jointed or not (engine 55.5 -> 57.5 KB), and their
-// TypeScript left the joint files (canvas 12.7 -> 12.3 KB). Lower a ceiling whenever a change
-// makes room.
-const ENGINE_CEILING_BYTES = 57.6 * 1024;
-const CANVAS_CEILING_BYTES = 12.4 * 1024;
-const WORKER_PAGE_CEILING_BYTES = 33.1 * 1024;
+// their WebAssembly in the module's hex, jointed or not (engine 55.5 -> 59.7 KB: five kinds'
+// passes, 7.5 KB more of module), and their TypeScript left the joint files (canvas 12.7 -> 11.9
+// KB, worker page 32.9 -> 32.4 KB). Lower a ceiling whenever a change makes room.
+const ENGINE_CEILING_BYTES = 59.8 * 1024;
+const CANVAS_CEILING_BYTES = 12.0 * 1024;
+const WORKER_PAGE_CEILING_BYTES = 32.5 * 1024;
 
 /** Modules of the step a worker world's page must not ship: the worker runs them. */
 const SOLVER_MODULES = [
@@ -87,14 +87,15 @@ describe('front-end weight', () => {
     for (const module of SOLVER_MODULES) expect(library.modules).toContain(module);
     expect(engine.modules).toContain('engine/src/world/world.ts');
     for (const module of SOLVER_MODULES) expect(workerPage.modules).not.toContain(module);
-    // A joint file's check is a small part of it: under a fifth of what the library bundles (each
+    // A joint file's check is a small part of it: under a quarter of what the library bundles (a
+    // fifth until the passes left the joint files for the kernel, issue #30; each
     // joint file is over 1.5 KB there: the class, its accessors and preparation; the shared joint
     // code is in joint-record.ts and spring-motor-limit.ts, the passes in the kernel).
     const bytesOf = (report: typeof library, module: string): number =>
       report.costs.find((cost) => cost.path === module)?.bytes ?? 0;
     for (const module of JOINT_CLASS_MODULES) {
       expect(bytesOf(library, module)).toBeGreaterThan(1500);
-      expect(bytesOf(workerPage, module)).toBeLessThan(bytesOf(library, module) / 5);
+      expect(bytesOf(workerPage, module)).toBeLessThan(bytesOf(library, module) / 4);
     }
   }, 60_000);
 

@@ -233,6 +233,36 @@ export interface JointPasses {
     impulseScale: number,
     useBias: number,
   ): void;
+  warmStartDistance(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+  ): void;
+  solveDistance(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    h: number,
+    inverseH: number,
+    biasRate: number,
+    massScale: number,
+    impulseScale: number,
+    useBias: number,
+  ): void;
+  warmStartMouse(records: number, active: number, states: number, from: number, to: number): void;
+  solveMouse(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    h: number,
+    useBias: number,
+  ): void;
   warmStartWeld(records: number, active: number, states: number, from: number, to: number): void;
   solveWeld(
     records: number,

@@ -445,7 +445,7 @@ export class Solver {
         maxAngularSpeed,
       );
       refreshCirclePairs(constraints, s);
-      joints.warmStart(s);
+      joints.warmStart();
       // Offsets in bytes: the order holds 4-byte indices.
       const order = memory.offsets[CONSTRAINT_ORDER]! + 4 * from;
       kernel.warmStart(
@@ -455,7 +455,7 @@ export class Solver {
         memory.offsets[STATES]!,
         count,
       );
-      joints.solve(s, true);
+      joints.solve(true);
       kernel.solve(
         memory.offsets[CONSTRAINT_DATA]!,
         memory.offsets[CONSTRAINT_BODIES]!,
@@ -497,7 +497,7 @@ export class Solver {
       );
       joints.solveChains(s, false, true);
       refreshCirclePairs(constraints, s);
-      joints.solve(s, false);
+      joints.solve(false);
       const bounces = kernel.solve(
         memory.offsets[CONSTRAINT_DATA]!,
         memory.offsets[CONSTRAINT_BODIES]!,
@@ -582,9 +582,8 @@ export class Solver {
     to: number,
     impactSpeed: number,
   ): void {
-    const s = this.states.data;
     for (let k = 0; k < JOINT_IMPACT_ITERATIONS; k++) {
-      joints.solve(s, false);
+      joints.solve(false);
       this.impacts(from, to, impactSpeed, IMPACT_CONTINUE);
     }
   }

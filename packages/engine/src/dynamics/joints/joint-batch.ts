@@ -23,10 +23,10 @@ export abstract class JointBatch {
   /** Active joints of the kind this step. */
   active = 0;
 
-  /** Every active joint of the kind: the warm start with last step's impulses. */
-  abstract warmStart(s: Float64Array, memory: SolverMemory): void;
+  /** Every active joint of the kind (the kernel's pass, wasm/joint-passes.ts): the warm start with last step's impulses. */
+  abstract warmStart(memory: SolverMemory): void;
   /** Every active joint of the kind: a solve (`useBias`) or relax pass. */
-  abstract solve(s: Float64Array, memory: SolverMemory, step: JointStep, useBias: boolean): void;
+  abstract solve(memory: SolverMemory, step: JointStep, useBias: boolean): void;
 
   /** Turns the step's summed impulses into each active joint's reaction (N, N m). */
   finish(memory: SolverMemory, dt: number): void {

@@ -127,15 +127,15 @@ export class JointSolver {
   }
 
   /** Kind after kind, in the order the kinds first came. */
-  warmStart(s: Float64Array): void {
+  warmStart(): void {
     const batches = this.batches;
-    for (let i = 0; i < batches.length; i++) batches[i]!.warmStart(s, this.memory);
+    for (let i = 0; i < batches.length; i++) batches[i]!.warmStart(this.memory);
   }
 
-  solve(s: Float64Array, useBias: boolean): void {
+  solve(useBias: boolean): void {
     const step = this.step;
     const batches = this.batches;
-    for (let i = 0; i < batches.length; i++) batches[i]!.solve(s, this.memory, step, useBias);
+    for (let i = 0; i < batches.length; i++) batches[i]!.solve(this.memory, step, useBias);
   }
 
   /**

@@ -22,7 +22,7 @@ export const STRIDE = SPRING_MOTOR_LIMIT_END + 6;
  * passes (wasm/joint-passes.ts: warmStartPrismatic, solvePrismatic), one call per pass.
  */
 export class PrismaticBatch extends JointBatch {
-  warmStart(_s: Float64Array, memory: SolverMemory): void {
+  warmStart(memory: SolverMemory): void {
     const o = memory.offsets;
     memory.kernel.warmStartPrismatic(
       o[JOINT_RECORDS]!,
@@ -33,7 +33,7 @@ export class PrismaticBatch extends JointBatch {
     );
   }
 
-  solve(_s: Float64Array, memory: SolverMemory, step: JointStep, useBias: boolean): void {
+  solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
     const o = memory.offsets;
     const soft = step.softness;
     memory.kernel.solvePrismatic(

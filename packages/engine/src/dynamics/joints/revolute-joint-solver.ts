@@ -20,7 +20,7 @@ export const STRIDE = SPRING_MOTOR_LIMIT_END + 4;
  * passes (wasm/joint-passes.ts: warmStartRevolute, solveRevolute), one call per pass.
  */
 export class RevoluteBatch extends JointBatch {
-  warmStart(_s: Float64Array, memory: SolverMemory): void {
+  warmStart(memory: SolverMemory): void {
     const o = memory.offsets;
     memory.kernel.warmStartRevolute(
       o[JOINT_RECORDS]!,
@@ -31,7 +31,7 @@ export class RevoluteBatch extends JointBatch {
     );
   }
 
-  solve(_s: Float64Array, memory: SolverMemory, step: JointStep, useBias: boolean): void {
+  solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
     const o = memory.offsets;
     const soft = step.softness;
     memory.kernel.solveRevolute(

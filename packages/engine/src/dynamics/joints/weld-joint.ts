@@ -166,7 +166,7 @@ export class WeldJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
  * (wasm/joint-passes.ts: warmStartWeld, solveWeld), one call per pass.
  */
 export class WeldBatch extends JointBatch {
-  warmStart(_s: Float64Array, memory: SolverMemory): void {
+  warmStart(memory: SolverMemory): void {
     const o = memory.offsets;
     memory.kernel.warmStartWeld(
       o[JOINT_RECORDS]!,
@@ -177,7 +177,7 @@ export class WeldBatch extends JointBatch {
     );
   }
 
-  solve(_s: Float64Array, memory: SolverMemory, step: JointStep, useBias: boolean): void {
+  solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
     const o = memory.offsets;
     const soft = step.softness;
     memory.kernel.solveWeld(
