@@ -139,6 +139,20 @@ export { cosSin, hypot } from './kernel-math';
 export { collideContacts } from './contact-gates';
 export { collidePair } from './update-manifold';
 
+// The joints' passes (warm start and solve per kind): joint-passes.ts.
+export {
+  solveDistance,
+  solveMouse,
+  solvePrismatic,
+  solveRevolute,
+  solveWeld,
+  warmStartDistance,
+  warmStartMouse,
+  warmStartPrismatic,
+  warmStartRevolute,
+  warmStartWeld,
+} from './joint-passes';
+
 // The constraints are stored in pairs, their numbers interleaved: number k of constraint i is at
 // double (i >> 1) * 2 * STRIDE + 2 * k + (i & 1) of the constraint region, so constraints 2m and
 // 2m + 1 have each number side by side, and the lanes (below) fetch both with one v128.load

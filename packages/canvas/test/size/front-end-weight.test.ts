@@ -35,8 +35,10 @@ import {
 // used (a press on a body of a local World; a frame with joints or a held body): canvas 9.33 KB,
 // worker page 29.87 KB, both within budget. The narrow phase (its gates and manifold functions)
 // moved into the kernel too (issue #30): its TypeScript left the bundle, the module grew by 11 KB
-// of WebAssembly (engine 55.3 KB). Lower a ceiling whenever a change makes room.
-const ENGINE_CEILING_BYTES = 55.4 * 1024;
+// of WebAssembly (engine 55.3 KB); so did the passes between the contact passes and finalize's
+// transform (56.6 KB) and the joints' passes (five kinds: every app now ships their WebAssembly,
+// jointed or not; engine 60.5 KB with all three). Lower a ceiling whenever a change makes room.
+const ENGINE_CEILING_BYTES = 60.6 * 1024;
 const CANVAS_CEILING_BYTES = 9.5 * 1024;
 const WORKER_PAGE_CEILING_BYTES = 30 * 1024;
 
@@ -92,14 +94,15 @@ describe('front-end weight', () => {
     for (const module of SOLVER_MODULES) expect(library.modules).toContain(module);
     expect(engine.modules).toContain('engine/src/world/world.ts');
     for (const module of SOLVER_MODULES) expect(workerPage.modules).not.toContain(module);
-    // A joint file's check is a small part of it: under a fifth of what the library bundles (each
-    // joint file is over 2 KB there, since the shared joint code moved to joint-record.ts,
-    // soft-point.ts and spring-motor-limit.ts).
+    // A joint file's check is a small part of it: under a quarter of what the library bundles (a
+    // fifth until the passes left the joint files for the kernel, issue #30; each
+    // joint file is over 1.5 KB there: the class, its accessors and preparation; the shared joint
+    // code is in joint-record.ts and spring-motor-limit.ts, the passes in the kernel).
     const bytesOf = (report: typeof library, module: string): number =>
       report.costs.find((cost) => cost.path === module)?.bytes ?? 0;
     for (const module of JOINT_CLASS_MODULES) {
-      expect(bytesOf(library, module)).toBeGreaterThan(2000);
-      expect(bytesOf(workerPage, module)).toBeLessThan(bytesOf(library, module) / 5);
+      expect(bytesOf(library, module)).toBeGreaterThan(1500);
+      expect(bytesOf(workerPage, module)).toBeLessThan(bytesOf(library, module) / 4);
     }
   }, 60_000);
 

@@ -29,7 +29,7 @@ interface WasmApi {
 }
 
 /** The kernel's exports; pointers are byte offsets into its memory. */
-export interface ContactKernel extends BodyPasses, NarrowPhase {
+export interface ContactKernel extends BodyPasses, NarrowPhase, JointPasses {
   /** prepareContacts; returns the number of constraints. */
   prepare(
     contactData: number,
@@ -290,6 +290,99 @@ export interface NarrowPhase {
     b: number,
     scratch: number,
     speculativeDistance: number,
+  ): void;
+}
+
+/**
+ * The joints' passes (wasm/joint-passes.ts), built into the same module: per kind, over active
+ * joints `from` to `to` of the JOINT_ACTIVE list at `active` (record offset, state A, state B),
+ * their records in JOINT_RECORDS at `records`, the states at `states`. A solve's step numbers:
+ * the sub-step and its inverse, the joint softness (bias rate, mass and impulse scale), the
+ * largest bias speed, and `useBias` 1 (solve) or 0 (relax).
+ */
+export interface JointPasses {
+  warmStartRevolute(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+  ): void;
+  solveRevolute(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    h: number,
+    inverseH: number,
+    biasRate: number,
+    massScale: number,
+    impulseScale: number,
+    maxBiasSpeed: number,
+    useBias: number,
+  ): void;
+  warmStartPrismatic(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+  ): void;
+  solvePrismatic(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    h: number,
+    inverseH: number,
+    biasRate: number,
+    massScale: number,
+    impulseScale: number,
+    useBias: number,
+  ): void;
+  warmStartDistance(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+  ): void;
+  solveDistance(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    h: number,
+    inverseH: number,
+    biasRate: number,
+    massScale: number,
+    impulseScale: number,
+    useBias: number,
+  ): void;
+  warmStartMouse(records: number, active: number, states: number, from: number, to: number): void;
+  solveMouse(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    h: number,
+    useBias: number,
+  ): void;
+  warmStartWeld(records: number, active: number, states: number, from: number, to: number): void;
+  solveWeld(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    biasRate: number,
+    massScale: number,
+    impulseScale: number,
+    useBias: number,
   ): void;
 }
 

@@ -11,6 +11,8 @@ import {
   type ShapeMemory,
 } from './shape-table.ts';
 import { SWEEP_STRIDE } from './shock-sweep-layout.ts';
+import { JOINT_RECORD_STRIDE } from './joints/joint-record.ts';
+import { JointStore } from './joints/joint-store.ts';
 
 // The world's hot arrays in one block of memory: the bodies' own numbers (body-memory.ts, the one
 // copy the Body handles read and write), the body states and the body table
@@ -69,9 +71,13 @@ export const FAST_BODIES = 19;
 export const SHOCK_SWEEP = 20;
 /** The heavy-on-light sweep's scratch while it chooses (wasm/shock-propagation.ts): int32. */
 export const SHOCK_SCRATCH = 21;
-const REGIONS = 22;
+/** Every joint's record in the world (joints/joint-store.ts), JOINT_RECORD_STRIDE each: doubles. */
+export const JOINT_RECORDS = 22;
+/** The step's active joints, grouped by kind: record offset, state A, state B (3 int32 each). */
+export const JOINT_ACTIVE = 23;
+const REGIONS = 24;
 /** Bytes per element of each region. */
-const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8, 4, 4, 4, 8, 4];
+const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8, 4, 4, 4, 8, 4, 8, 4];
 /** The shape regions of that many rows. */
 const SHAPE_REGIONS: readonly (readonly [number, number])[] = [
   [SHAPE_BOXES, SHAPE_STRIDE],
@@ -121,6 +127,16 @@ export class SolverMemory implements ShapeMemory {
    * when it moves. It grows through {@link reserveShapes}.
    */
   readonly shapeTable: ShapeTable = new ShapeTable(0, this);
+  /**
+   * Every joint's record (joints/joint-store.ts), all kinds at one stride: the store every Joint
+   * handle of the world reads through. Its `data` is the JOINT_RECORDS region, replaced with the
+   * other views when the memory moves; it grows through this memory.
+   */
+  readonly jointStore: JointStore = new JointStore(JOINT_RECORD_STRIDE, 0, false, (doubles) =>
+    this.reserve(JOINT_RECORDS, doubles),
+  );
+  /** The step's active joints (JOINT_ACTIVE): record offset, state A, state B per joint. */
+  jointActive: Int32Array = new Int32Array(0);
   /** Byte offset of each region, for the kernel. */
   readonly offsets: number[] = new Array<number>(REGIONS).fill(0);
   /** The contact passes over this memory: WebAssembly once it has moved there, else JavaScript. */
@@ -167,6 +183,8 @@ export class SolverMemory implements ShapeMemory {
       64, // FAST_BODIES
       256 * SWEEP_STRIDE, // SHOCK_SWEEP
       0, // SHOCK_SCRATCH, sized below
+      16 * JOINT_RECORD_STRIDE,
+      48,
     ]);
     this.sizeShockScratch(capacities);
     return capacities;
@@ -204,6 +222,10 @@ export class SolverMemory implements ShapeMemory {
     for (const [region] of SHAPE_REGIONS) wanted[region] = this.capacities[region]!;
     wanted[FAST_BODIES] = grown(wanted[FAST_BODIES]!, bodies);
     this.sizeShockScratch(wanted);
+    wanted[JOINT_RECORDS] = grown(
+      wanted[JOINT_RECORDS]!,
+      this.jointStore.count * JOINT_RECORD_STRIDE,
+    );
     const total = wanted.reduce((sum, c, r) => sum + c * ELEMENT_BYTES[r]!, 0);
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
@@ -235,6 +257,20 @@ export class SolverMemory implements ShapeMemory {
    */
   reserveBodies(count: number): void {
     this.reserve(BODIES, count * BODY_STRIDE);
+  }
+
+  /**
+   * Makes room for `records` joints' records (kept) and `active` active joints; replaces every
+   * view when it grows (at a step's start, before the joints are prepared).
+   */
+  reserveJoints(records: number, active: number): void {
+    const have = this.capacities;
+    if (records * JOINT_RECORD_STRIDE <= have[JOINT_RECORDS]! && 3 * active <= have[JOINT_ACTIVE]!)
+      return;
+    const wanted = have.slice();
+    wanted[JOINT_RECORDS] = grown(have[JOINT_RECORDS]!, records * JOINT_RECORD_STRIDE);
+    wanted[JOINT_ACTIVE] = grown(have[JOINT_ACTIVE]!, 3 * active);
+    this.layout(wanted, this.wasm !== null);
   }
 
   /**
@@ -311,6 +347,7 @@ export class SolverMemory implements ShapeMemory {
     keep[CONTACT_KINDS] = liveContacts;
     keep[BODIES] = bodies * BODY_STRIDE;
     for (const [region] of SHAPE_REGIONS) keep[region] = have[region]!;
+    keep[JOINT_RECORDS] = this.jointStore.count * JOINT_RECORD_STRIDE;
     this.layout(wanted, toWasm, keep);
   }
 
@@ -436,6 +473,8 @@ export class SolverMemory implements ShapeMemory {
     shapes.geometry = f64(SHAPE_GEOMETRY);
     this.fastBodies = i32(FAST_BODIES);
     this.shockSweep = f64(SHOCK_SWEEP);
+    this.jointStore.data = f64(JOINT_RECORDS);
+    this.jointActive = i32(JOINT_ACTIVE);
   }
 }
 

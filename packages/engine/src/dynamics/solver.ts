@@ -104,7 +104,7 @@ export class Solver {
   readonly states: BodyStates = new BodyStates(this.memory);
   readonly constraints: ContactConstraints = new ContactConstraints(this.memory);
   /** The joints, solved before the contacts in each pass (as Box2D v3 orders them). */
-  readonly joints: JointSolver = new JointSolver();
+  readonly joints: JointSolver = new JointSolver(this.memory);
   /**
    * Awake non-static bodies of this step, in world order (body.solverIndex = position + 1); only
    * the first `awakeCount` entries are valid. Per-step lists keep a count instead of truncating,
@@ -257,11 +257,11 @@ export class Solver {
     const contactHertz = Math.min(settings.contactHertz, (0.25 * subSteps) / dt);
     this.contactSoftness.set(contactHertz, settings.contactDampingRatio, h);
     this.staticSoftness.set(2 * contactHertz, settings.contactDampingRatio, h);
-    const kernel = memory.kernel;
     // Joints first (they do not depend on the contacts): whether the step may run in batches of
-    // islands decides how the contacts are prepared.
+    // islands decides how the contacts are prepared. They may grow the memory: the kernel after.
     const joints = this.joints;
     joints.prepare(dt, subSteps, contactHertz, this.awakeCount, settings.maxLinearSpeed);
+    const kernel = memory.kernel;
     const batches = this.batches;
     const batchable = joints.activeCount === 0 && batches.wants(contactCount);
     // Contacts are classified here and filled once their visiting order and numbering are
@@ -440,7 +440,7 @@ export class Solver {
         maxAngularSpeed,
       );
       if (circlePairCount > 0) this.refreshCirclePairs();
-      joints.warmStart(s);
+      joints.warmStart();
       // Offsets in bytes: the order holds 4-byte indices.
       const order = memory.offsets[CONSTRAINT_ORDER]! + 4 * from;
       kernel.warmStart(
@@ -450,7 +450,7 @@ export class Solver {
         memory.offsets[STATES]!,
         count,
       );
-      joints.solve(s, true);
+      joints.solve(true);
       kernel.solve(
         memory.offsets[CONSTRAINT_DATA]!,
         memory.offsets[CONSTRAINT_BODIES]!,
@@ -483,7 +483,7 @@ export class Solver {
       );
       joints.solveChains(s, false, true);
       if (circlePairCount > 0) this.refreshCirclePairs();
-      joints.solve(s, false);
+      joints.solve(false);
       const bounces = kernel.solve(
         memory.offsets[CONSTRAINT_DATA]!,
         memory.offsets[CONSTRAINT_BODIES]!,
@@ -571,9 +571,8 @@ export class Solver {
     to: number,
     impactSpeed: number,
   ): void {
-    const s = this.states.data;
     for (let k = 0; k < JOINT_IMPACT_ITERATIONS; k++) {
-      joints.solve(s, false);
+      joints.solve(false);
       this.impacts(from, to, impactSpeed, IMPACT_CONTINUE);
     }
   }

@@ -2,9 +2,28 @@ import { PhysicalError, readOnly } from '../../core/errors.ts';
 import { optionalBoolean, requireNonNegative, requireRange } from '../../core/validate.ts';
 import type { Vec2Like } from '../../math/vec2.ts';
 import { hypot } from '../../math/hypot.ts';
-import { V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
-import { FlatJointBatch } from './joint-batch.ts';
+import { JointBatch } from './joint-batch.ts';
+import { JOINT_ACTIVE, JOINT_RECORDS, STATES, type SolverMemory } from '../solver-memory.ts';
+import {
+  DAMPING_RATIO,
+  EXPLICIT_SPRING,
+  HERTZ,
+  IMPULSE,
+  LENGTH_ROW_ON,
+  LOWER_IMPULSE,
+  LOWER_ON,
+  MAX_LENGTH,
+  MIN_LENGTH,
+  REST,
+  SPRING_BIAS_RATE,
+  SPRING_ENABLED,
+  SPRING_OMEGA,
+  SPRING_SUB_STEP_IMPULSE,
+  STRIDE,
+  UPPER_IMPULSE,
+  UPPER_ON,
+} from './distance-joint-layout.ts';
 import {
   checkCollideConnected,
   jointLayout,
@@ -20,19 +39,7 @@ import {
   requirePoint,
 } from './joint.ts';
 import { TwoBodyJoint } from './two-body-joint.ts';
-import { shiftX, shiftY, turnedX, turnedY } from './joint-levers.ts';
-import {
-  INV_I_A,
-  INV_I_B,
-  INV_MASS_A,
-  INV_MASS_B,
-  LOCAL_ANCHOR_AX,
-  LOCAL_ANCHOR_BX,
-  R_AX,
-  R_BX,
-  STEP_IMPULSE_X,
-  STEP_IMPULSE_Y,
-} from './joint-record.ts';
+import { LOCAL_ANCHOR_AX, LOCAL_ANCHOR_BX } from './joint-record.ts';
 
 /**
  * Options of a {@link DistanceJoint}: a rod between two points (rigid), or a spring of given
@@ -91,29 +98,6 @@ export function checkDistanceJointOptions(options: DistanceJointOptions<unknown>
 
 // A distance joint's record: the head (joint-record.ts), then its own numbers. The joint has no
 // angular row: its step angular impulse stays 0, as prepareBodies cleared it.
-const REST = 25; // JOINT_HEAD; settings: rest length, shortest and longest length (m)
-const MIN_LENGTH = 26; // JOINT_HEAD + 1
-const MAX_LENGTH = 27; // JOINT_HEAD + 2
-const SPRING_ENABLED = 28; // JOINT_HEAD + 3; 1 or 0: a spring, else a rigid rod
-const HERTZ = 29; // JOINT_HEAD + 4
-const DAMPING_RATIO = 30; // JOINT_HEAD + 5
-const EXPLICIT_SPRING = 31; // JOINT_HEAD + 6; this step, 1 or 0: the spring acts as a force (see prepare)
-const SPRING_OMEGA = 32; // JOINT_HEAD + 7
-const LENGTH_ROW_ON = 33; // JOINT_HEAD + 8; 1 or 0: the rod, or the spring as a soft constraint
-const SPRING_BIAS_RATE = 34; // JOINT_HEAD + 9
-const SPRING_MASS_SCALE = 35; // JOINT_HEAD + 10
-const SPRING_IMPULSE_SCALE = 36; // JOINT_HEAD + 11
-const LOWER_ON = 37; // JOINT_HEAD + 12; 1 or 0: the minLength row
-const UPPER_ON = 38; // JOINT_HEAD + 13; 1 or 0: the maxLength row
-const IMPULSE = 39; // JOINT_HEAD + 14; accumulated impulses (warm-started)
-const LOWER_IMPULSE = 40; // JOINT_HEAD + 15
-const UPPER_IMPULSE = 41; // JOINT_HEAD + 16
-const SPRING_SUB_STEP_IMPULSE = 42; // JOINT_HEAD + 17; the explicit spring's impulse in the sub-step
-const STRIDE = 43; // JOINT_HEAD + 18
-
-/** Below this anchor distance (m) the joint has no direction and does nothing. */
-const LENGTH_EPSILON = 1e-9;
-
 const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
   STRIDE,
   [
@@ -280,172 +264,37 @@ export class DistanceJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
 }
 
 /**
- * @internal The distance joints of a world: their records, and the step's active ones solved in
- * one loop per pass (see JointBatch).
+ * @internal The distance joints of a world: the step's active ones, solved by the kernel's passes
+ * (wasm/joint-passes.ts: warmStartDistance, solveDistance), one call per pass.
  */
-export class DistanceBatch extends FlatJointBatch {
-  constructor() {
-    super(STRIDE);
+export class DistanceBatch extends JointBatch {
+  warmStart(memory: SolverMemory): void {
+    const o = memory.offsets;
+    memory.kernel.warmStartDistance(
+      o[JOINT_RECORDS]!,
+      o[JOINT_ACTIVE]!,
+      o[STATES]!,
+      this.start,
+      this.start + this.active,
+    );
   }
 
-  warmStart(s: Float64Array): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const a = states[2 * i]!;
-      const b = states[2 * i + 1]!;
-      const rAx = turnedX(s, a, d, o + R_AX);
-      const rAy = turnedY(s, a, d, o + R_AX);
-      const rBx = turnedX(s, b, d, o + R_BX);
-      const rBy = turnedY(s, b, d, o + R_BX);
-      const dx = shiftX(s, a, b, d, o) + rBx - rAx;
-      const dy = shiftY(s, a, b, d, o) + rBy - rAy;
-      const length = Math.sqrt(dx * dx + dy * dy);
-      if (!(length > LENGTH_EPSILON)) continue;
-      const axial = d[o + IMPULSE]! + d[o + LOWER_IMPULSE]! - d[o + UPPER_IMPULSE]!;
-      const px = (axial * dx) / length;
-      const py = (axial * dy) / length;
-      s[a + V_X] -= d[o + INV_MASS_A]! * px;
-      s[a + V_Y] -= d[o + INV_MASS_A]! * py;
-      s[a + W] -= d[o + INV_I_A]! * (rAx * py - rAy * px);
-      s[b + V_X] += d[o + INV_MASS_B]! * px;
-      s[b + V_Y] += d[o + INV_MASS_B]! * py;
-      s[b + W] += d[o + INV_I_B]! * (rBx * py - rBy * px);
-    }
-  }
-
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
+  solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
+    const o = memory.offsets;
     const soft = step.softness;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const a = states[2 * i]!;
-      const b = states[2 * i + 1]!;
-      const mA = d[o + INV_MASS_A]!;
-      const iA = d[o + INV_I_A]!;
-      const mB = d[o + INV_MASS_B]!;
-      const iB = d[o + INV_I_B]!;
-      let vAx = s[a + V_X]!;
-      let vAy = s[a + V_Y]!;
-      let wA = s[a + W]!;
-      let vBx = s[b + V_X]!;
-      let vBy = s[b + V_Y]!;
-      let wB = s[b + W]!;
-      const rAx = turnedX(s, a, d, o + R_AX);
-      const rAy = turnedY(s, a, d, o + R_AX);
-      const rBx = turnedX(s, b, d, o + R_BX);
-      const rBy = turnedY(s, b, d, o + R_BX);
-      const dx = shiftX(s, a, b, d, o) + rBx - rAx;
-      const dy = shiftY(s, a, b, d, o) + rBy - rAy;
-      const length = Math.sqrt(dx * dx + dy * dy);
-      // Coincident anchors have no direction to push along.
-      if (length > LENGTH_EPSILON) {
-        const nx = dx / length;
-        const ny = dy / length;
-        const crA = rAx * ny - rAy * nx;
-        const crB = rBx * ny - rBy * nx;
-        const k = mA + mB + iA * crA * crA + iB * crB * crB;
-        const axialMass = k > 0 ? 1 / k : 0;
-
-        // The rows along n, one after another, each on the velocities the one before left: the
-        // explicit spring's force (row 0), the rod or the soft spring (1), length >= minLength (2,
-        // pushes apart only) and length <= maxLength (3, pulls together only: a rope). Each gives
-        // the impulse `push` on B along n (on A the opposite), applied in one place.
-        const explicit = d[o + EXPLICIT_SPRING] === 1;
-        for (let row = 0; row < 4; row++) {
-          if (
-            row === 0
-              ? !explicit || !useBias
-              : row === 1
-                ? explicit || d[o + LENGTH_ROW_ON] !== 1
-                : d[o + (row === 2 ? LOWER_ON : UPPER_ON)] !== 1
-          ) {
-            continue;
-          }
-          const cdot =
-            (vBx - wB * rBy - vAx + wA * rAy) * nx + (vBy + wB * rBx - vAy - wA * rAx) * ny;
-          let push: number;
-          if (row === 0) {
-            // Spring force -k C - c Cdot over the sub-step (C = length - rest), with k and c for
-            // the effective mass; the damping part implicit, so no damping ratio can reverse the
-            // motion.
-            const omega = d[o + SPRING_OMEGA]!;
-            const damping = 2 * d[o + DAMPING_RATIO]! * omega;
-            push =
-              (-axialMass * step.h * (omega * omega * (length - d[o + REST]!) + damping * cdot)) /
-              (1 + damping * step.h);
-            d[o + SPRING_SUB_STEP_IMPULSE] = push;
-          } else if (row === 1) {
-            // C = length - rest.
-            let bias = 0;
-            let massScale = 1;
-            let impulseScale = 0;
-            if (d[o + SPRING_ENABLED] === 1) {
-              bias = d[o + SPRING_BIAS_RATE]! * (length - d[o + REST]!);
-              massScale = d[o + SPRING_MASS_SCALE]!;
-              impulseScale = d[o + SPRING_IMPULSE_SCALE]!;
-            } else if (useBias) {
-              bias = soft.biasRate * (length - d[o + REST]!);
-              massScale = soft.massScale;
-              impulseScale = soft.impulseScale;
-            }
-            push = -massScale * axialMass * (cdot + bias) - impulseScale * d[o + IMPULSE]!;
-            d[o + IMPULSE] += push;
-          } else {
-            // Lower: C = length - minLength >= 0; upper: C = maxLength - length >= 0, the same
-            // row with the sign turned. Speculative like contacts: a gap may close within the
-            // sub-step.
-            const lower = row === 2;
-            const c = lower ? length - d[o + MIN_LENGTH]! : d[o + MAX_LENGTH]! - length;
-            let bias = 0;
-            let massScale = 1;
-            let impulseScale = 0;
-            if (c > 0) bias = c * step.inverseH;
-            else if (useBias) {
-              bias = soft.biasRate * c;
-              massScale = soft.massScale;
-              impulseScale = soft.impulseScale;
-            }
-            const at = lower ? LOWER_IMPULSE : UPPER_IMPULSE;
-            const old = d[o + at]!;
-            const impulse =
-              -massScale * axialMass * ((lower ? cdot : -cdot) + bias) - impulseScale * old;
-            const accumulated = Math.max(old + impulse, 0);
-            d[o + at] = accumulated;
-            push = lower ? accumulated - old : -(accumulated - old);
-          }
-          const px = push * nx;
-          const py = push * ny;
-          vAx -= mA * px;
-          vAy -= mA * py;
-          wA -= iA * (rAx * py - rAy * px);
-          vBx += mB * px;
-          vBy += mB * py;
-          wB += iB * (rBx * py - rBy * px);
-        }
-
-        if (!useBias) {
-          const axial =
-            d[o + IMPULSE]! +
-            d[o + SPRING_SUB_STEP_IMPULSE]! +
-            d[o + LOWER_IMPULSE]! -
-            d[o + UPPER_IMPULSE]!;
-          d[o + STEP_IMPULSE_X] += axial * nx;
-          d[o + STEP_IMPULSE_Y] += axial * ny;
-        }
-      }
-
-      s[a + V_X] = vAx;
-      s[a + V_Y] = vAy;
-      s[a + W] = wA;
-      s[b + V_X] = vBx;
-      s[b + V_Y] = vBy;
-      s[b + W] = wB;
-    }
+    memory.kernel.solveDistance(
+      o[JOINT_RECORDS]!,
+      o[JOINT_ACTIVE]!,
+      o[STATES]!,
+      this.start,
+      this.start + this.active,
+      step.h,
+      step.inverseH,
+      soft.biasRate,
+      soft.massScale,
+      soft.impulseScale,
+      useBias ? 1 : 0,
+    );
   }
 }
 

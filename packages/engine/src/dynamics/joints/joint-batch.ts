@@ -1,86 +1,43 @@
-import type { Joint, JointStep } from './joint.ts';
+import type { SolverMemory } from '../solver-memory.ts';
+import type { JointStep } from './joint.ts';
 import {
   REACTION_ANGULAR,
   REACTION_X,
   REACTION_Y,
-  STATE_A,
-  STATE_B,
   STEP_ANGULAR_IMPULSE,
   STEP_IMPULSE_X,
   STEP_IMPULSE_Y,
 } from './joint-record.ts';
-import { JointStore } from './joint-store.ts';
 
 /**
- * @internal One joint kind in a world: its joints' records (the one copy of their numbers, see
- * JointStore) and the step's active joints among them, solved in one loop per pass instead of a
- * call per joint object (Box2D v3 keeps joint solver data in arrays the same way).
+ * @internal One joint kind in a world: the step's active joints of the kind, solved in one loop
+ * per pass instead of a call per joint object (Box2D v3 keeps joint solver data in arrays the same
+ * way). Their records are in the world's joint store (joint-store.ts, the solver memory's
+ * JOINT_RECORDS region); the step's active joints are listed in the memory's JOINT_ACTIVE region,
+ * grouped by kind (record offset, state A offset, state B offset each), this kind's from `start`,
+ * `active` of them, in the world's joint order (the order they are solved in).
  */
-export interface JointBatch {
-  /** The kind's records; a joint of the kind is moved here before its first step in the world. */
-  readonly store: JointStore;
-  /** Forgets last step's active joints. */
-  clear(): void;
-  /** Adds a joint of the batch's kind, prepared for the step, to the step's active joints. */
-  add(joint: Joint): void;
-  warmStart(s: Float64Array): void;
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void;
-  /** Turns the step's summed impulses into each active joint's reaction (N, N m). */
-  finish(dt: number): void;
-}
-
-/**
- * @internal The storage every kind's batch shares: the kind's store, the offsets of the step's
- * active records in `offsets` (in the world's joint order, the order they are solved in) and their
- * two bodies' state offsets in `states` (A, B), growing by doubling (allocation only when a step
- * has more joints of the kind than any before). The kind's solver file (`*-joint-solver.ts`, or
- * the kind's own file) adds the two pass loops, over its own layout offsets.
- */
-export abstract class FlatJointBatch extends JointStore implements JointBatch {
-  /** Active joints this step. */
+export abstract class JointBatch {
+  /** Where this kind's active joints start in JOINT_ACTIVE (in joints, not int32s). */
+  start = 0;
+  /** Active joints of the kind this step. */
   active = 0;
-  protected offsets: Int32Array = new Int32Array(16);
-  protected states: Int32Array = new Int32Array(2 * 16);
 
-  constructor(stride: number) {
-    super(stride, 16, false);
-  }
+  /** Every active joint of the kind (the kernel's pass, wasm/joint-passes.ts): the warm start with last step's impulses. */
+  abstract warmStart(memory: SolverMemory): void;
+  /** Every active joint of the kind: a solve (`useBias`) or relax pass. */
+  abstract solve(memory: SolverMemory, step: JointStep, useBias: boolean): void;
 
-  get store(): JointStore {
-    return this;
-  }
-
-  clear(): void {
-    this.active = 0;
-  }
-
-  add(joint: Joint): void {
-    const i = this.active++;
-    if (this.offsets.length < this.active) {
-      const offsets = new Int32Array(2 * this.offsets.length);
-      offsets.set(this.offsets);
-      this.offsets = offsets;
-      const states = new Int32Array(2 * this.states.length);
-      states.set(this.states);
-      this.states = states;
-    }
-    const o = joint.base;
-    const d = this.data;
-    this.offsets[i] = o;
-    this.states[2 * i] = d[o + STATE_A]!;
-    this.states[2 * i + 1] = d[o + STATE_B]!;
-  }
-
-  finish(dt: number): void {
-    const d = this.data;
-    for (let i = 0; i < this.active; i++) {
-      const o = this.offsets[i]!;
+  /** Turns the step's summed impulses into each active joint's reaction (N, N m). */
+  finish(memory: SolverMemory, dt: number): void {
+    const d = memory.jointStore.data;
+    const list = memory.jointActive;
+    const end = this.start + this.active;
+    for (let i = this.start; i < end; i++) {
+      const o = list[3 * i]!;
       d[o + REACTION_X] = d[o + STEP_IMPULSE_X]! / dt;
       d[o + REACTION_Y] = d[o + STEP_IMPULSE_Y]! / dt;
       d[o + REACTION_ANGULAR] = d[o + STEP_ANGULAR_IMPULSE]! / dt;
     }
   }
-
-  abstract warmStart(s: Float64Array): void;
-  abstract solve(s: Float64Array, step: JointStep, useBias: boolean): void;
 }

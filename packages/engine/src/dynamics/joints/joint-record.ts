@@ -43,3 +43,8 @@ export const LOCAL_ANCHOR_BY = 23;
 export const REFERENCE_ANGLE = 24;
 /** Where a kind's own numbers start. */
 export const JOINT_HEAD = 25;
+/**
+ * Doubles per record in a world's store: the largest kind's (prismatic); every kind's record is
+ * at most this long (joint-layouts.test.ts), so all kinds share one store in the solver memory.
+ */
+export const JOINT_RECORD_STRIDE = 48;

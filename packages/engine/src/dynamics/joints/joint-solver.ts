@@ -1,7 +1,9 @@
 import { releaseFrom } from '../../core/release.ts';
 import { Softness } from '../softness.ts';
+import type { SolverMemory } from '../solver-memory.ts';
 import type { Joint, JointStep, JointType } from './joint.ts';
 import type { JointBatch } from './joint-batch.ts';
+import { STATE_A, STATE_B } from './joint-record.ts';
 import type { PinChains } from './pin-chains.ts';
 
 /**
@@ -18,6 +20,9 @@ const JOINT_DAMPING_RATIO = 2;
  * one awake body take part; the rest sleep with their island.
  */
 export class JointSolver {
+  /** The world's solver memory: the joints' records and the step's active list are there. */
+  constructor(private readonly memory: SolverMemory) {}
+
   /** The world's joints (the world's own list, shared). */
   list: readonly Joint[] = [];
   /** Joints solved this step (the first `count`). */
@@ -60,7 +65,12 @@ export class JointSolver {
     const list = this.list;
     const active = this.active;
     const batches = this.batches;
-    for (let i = 0; i < batches.length; i++) batches[i]!.clear();
+    const memory = this.memory;
+    // Room first for every joint's record and the active list: growing moves the whole memory
+    // (every view replaced), so it happens before anything of the step is read from it.
+    memory.reserveJoints(list.length, list.length);
+    const store = memory.jointStore;
+    for (let i = 0; i < batches.length; i++) batches[i]!.active = 0;
     let count = 0;
     for (let i = 0; i < list.length; i++) {
       const joint = list[i]!;
@@ -74,9 +84,10 @@ export class JointSolver {
         this.batchOf[joint.type] = batch;
         batches.push(batch);
       }
-      // The joint's record moves into its kind's store at its first step in this world (it
+      batch.active++;
+      // The joint's record moves into the world's store at its first step in this world (it
       // leaves with the joint: see Joint.worldRef).
-      if (joint.store !== batch.store) batch.store.adopt(joint);
+      if (joint.store !== store) store.adopt(joint);
       joint.prepare(step);
       // Made by the first joint kind that needs it, however the joint came in (added or
       // restored from a snapshot); apps without such joints never load it.
@@ -84,28 +95,47 @@ export class JointSolver {
     }
     this.count = count;
     this.chains?.prepare(active, count, bodyCount, step.h, maxLinearSpeed);
-    // After the chains: they add their pins' geometric stiffness to the joints' inertia.
-    for (let i = 0; i < count; i++) this.batchOf[active[i]!.type]!.add(active[i]!);
+    // The active list, kind after kind in the order the kinds first came, each kind's joints in
+    // the world's order; after the chains: they add their pins' geometric stiffness to the
+    // joints' inertia, which the state offsets do not depend on but the passes read.
+    let start = 0;
+    for (let i = 0; i < batches.length; i++) {
+      const batch = batches[i]!;
+      batch.start = start;
+      start += batch.active;
+      batch.active = 0;
+    }
+    const d = store.data;
+    const listed = memory.jointActive;
+    for (let i = 0; i < count; i++) {
+      const joint = active[i]!;
+      const batch = this.batchOf[joint.type]!;
+      const at = 3 * (batch.start + batch.active++);
+      const o = joint.base;
+      listed[at] = o;
+      listed[at + 1] = d[o + STATE_A]!;
+      listed[at + 2] = d[o + STATE_B]!;
+    }
   }
 
   /** Drops the references to the last step's joints (see Solver.releaseReferences). */
   releaseReferences(): void {
     releaseFrom(this.active, 0);
     this.count = 0;
-    for (let i = 0; i < this.batches.length; i++) this.batches[i]!.clear();
+    for (let i = 0; i < this.batches.length; i++) this.batches[i]!.active = 0;
     this.chains?.release();
   }
 
   /** Kind after kind, in the order the kinds first came. */
-  warmStart(s: Float64Array): void {
+  warmStart(): void {
     const batches = this.batches;
-    for (let i = 0; i < batches.length; i++) batches[i]!.warmStart(s);
+    for (let i = 0; i < batches.length; i++) batches[i]!.warmStart(this.memory);
   }
 
-  solve(s: Float64Array, useBias: boolean): void {
+  solve(useBias: boolean): void {
     const step = this.step;
     const batches = this.batches;
-    for (let i = 0; i < batches.length; i++) batches[i]!.solve(s, step, useBias);
+    for (let i = 0; i < batches.length; i++) batches[i]!.solve(this.memory, step, useBias);
   }
 
   /**
@@ -120,6 +150,6 @@ export class JointSolver {
   finish(): void {
     const dt = this.step.dt;
     const batches = this.batches;
-    for (let i = 0; i < batches.length; i++) batches[i]!.finish(dt);
+    for (let i = 0; i < batches.length; i++) batches[i]!.finish(this.memory, dt);
   }
 }

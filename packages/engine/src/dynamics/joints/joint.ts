@@ -203,7 +203,7 @@ export abstract class Joint<UserData = unknown> {
   /** @internal */
   set worldRef(value: World | null) {
     this.worldValue = value;
-    if (value === null && !this.store.local) this.store.release(this);
+    if (value === null && !this.store.local) this.store.release(this, this.layout.stride);
   }
   /** @internal Index in the world's joint list. */
   worldIndex = -1;

@@ -2,9 +2,22 @@ import { PhysicalError, readOnly } from '../../core/errors.ts';
 import { describeValue, requirePositive, requireVector } from '../../core/validate.ts';
 import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import type { Body } from '../body.ts';
-import { DP_X, DP_Y, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
-import { FlatJointBatch } from './joint-batch.ts';
+import { JointBatch } from './joint-batch.ts';
+import { JOINT_ACTIVE, JOINT_RECORDS, STATES, type SolverMemory } from '../solver-memory.ts';
+import {
+  ANGULAR_BIAS_RATE,
+  ANGULAR_IMPULSE,
+  DAMPING_RATIO,
+  HERTZ,
+  LINEAR_BIAS_RATE,
+  LINEAR_IMPULSE_X,
+  LINEAR_IMPULSE_Y,
+  MAX_FORCE,
+  STRIDE,
+  TARGET_X,
+  TARGET_Y,
+} from './mouse-joint-layout.ts';
 import {
   Joint,
   jointLayout,
@@ -17,22 +30,16 @@ import {
   jointMax,
   requirePoint,
 } from './joint.ts';
-import { turnedX, turnedY } from './joint-levers.ts';
 import {
   DELTA_CENTER_X,
   DELTA_CENTER_Y,
   INV_I_A,
-  INV_I_B,
   INV_MASS_A,
-  INV_MASS_B,
   LOCAL_ANCHOR_BX,
   LOCAL_ANCHOR_BY,
   R_BX,
   R_BY,
   STATE_A,
-  STEP_ANGULAR_IMPULSE,
-  STEP_IMPULSE_X,
-  STEP_IMPULSE_Y,
 } from './joint-record.ts';
 
 /** Options of a {@link MouseJoint}: what dragging a body with a finger or the mouse needs. */
@@ -78,25 +85,6 @@ export function checkMouseJointOptions(options: MouseJointOptions<unknown>) {
     dampingRatio: optionalNonNegative('dampingRatio', options.dampingRatio, 0.7),
   };
 }
-
-// A mouse joint's record: the head (joint-record.ts; the grabbed point is B's local anchor, the
-// "A" side is the fixed target, so of A's numbers only zeros), then its own numbers. The spin brake
-// has no target angle: of its softness only the mass and impulse scales are used.
-const TARGET_X = 25; // JOINT_HEAD; settings
-const TARGET_Y = 26; // JOINT_HEAD + 1
-const MAX_FORCE = 27; // JOINT_HEAD + 2
-const HERTZ = 28; // JOINT_HEAD + 3
-const DAMPING_RATIO = 29; // JOINT_HEAD + 4
-const LINEAR_BIAS_RATE = 30; // JOINT_HEAD + 5; the pull's softness this step
-const LINEAR_MASS_SCALE = 31; // JOINT_HEAD + 6
-const LINEAR_IMPULSE_SCALE = 32; // JOINT_HEAD + 7
-const ANGULAR_BIAS_RATE = 33; // JOINT_HEAD + 8; the spin brake's softness this step
-const ANGULAR_MASS_SCALE = 34; // JOINT_HEAD + 9
-const ANGULAR_IMPULSE_SCALE = 35; // JOINT_HEAD + 10
-const LINEAR_IMPULSE_X = 36; // JOINT_HEAD + 11; accumulated impulses (warm-started)
-const LINEAR_IMPULSE_Y = 37; // JOINT_HEAD + 12
-const ANGULAR_IMPULSE = 38; // JOINT_HEAD + 13
-const STRIDE = 39; // JOINT_HEAD + 14
 
 const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
   STRIDE,
@@ -239,106 +227,32 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
 }
 
 /**
- * @internal The mouse joints of a world: their records, and the step's active ones solved in one
- * loop per pass (see JointBatch).
+ * @internal The mouse joints of a world: the step's active ones, solved by the kernel's passes
+ * (wasm/joint-passes.ts: warmStartMouse, solveMouse), one call per pass.
  */
-export class MouseBatch extends FlatJointBatch {
-  constructor() {
-    super(STRIDE);
+export class MouseBatch extends JointBatch {
+  warmStart(memory: SolverMemory): void {
+    const o = memory.offsets;
+    memory.kernel.warmStartMouse(
+      o[JOINT_RECORDS]!,
+      o[JOINT_ACTIVE]!,
+      o[STATES]!,
+      this.start,
+      this.start + this.active,
+    );
   }
 
-  warmStart(s: Float64Array): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const b = states[2 * i + 1]!;
-      const mB = d[o + INV_MASS_B]!;
-      const iB = d[o + INV_I_B]!;
-      const rBx = turnedX(s, b, d, o + R_BX);
-      const rBy = turnedY(s, b, d, o + R_BX);
-      const px = d[o + LINEAR_IMPULSE_X]!;
-      const py = d[o + LINEAR_IMPULSE_Y]!;
-      s[b + V_X] += mB * px;
-      s[b + V_Y] += mB * py;
-      s[b + W] += iB * (rBx * py - rBy * px + d[o + ANGULAR_IMPULSE]!);
-    }
-  }
-
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const b = states[2 * i + 1]!;
-      const mB = d[o + INV_MASS_B]!;
-      const iB = d[o + INV_I_B]!;
-      let vBx = s[b + V_X]!;
-      let vBy = s[b + V_Y]!;
-      let wB = s[b + W]!;
-
-      // A soft brake on the spin, with no target angle.
-      {
-        let impulse = iB > 0 ? -wB / iB : 0;
-        impulse =
-          d[o + ANGULAR_MASS_SCALE]! * impulse -
-          d[o + ANGULAR_IMPULSE_SCALE]! * d[o + ANGULAR_IMPULSE]!;
-        d[o + ANGULAR_IMPULSE] += impulse;
-        wB += iB * impulse;
-      }
-
-      // The spring to the target; always soft, in both passes (it is a spring, not a rigid link).
-      {
-        const biasRate = d[o + LINEAR_BIAS_RATE]!;
-        const massScale = d[o + LINEAR_MASS_SCALE]!;
-        const impulseScale = d[o + LINEAR_IMPULSE_SCALE]!;
-        const rBx = turnedX(s, b, d, o + R_BX);
-        const rBy = turnedY(s, b, d, o + R_BX);
-        const cdotX = vBx - wB * rBy;
-        const cdotY = vBy + wB * rBx;
-        const sepX = s[b + DP_X]! + rBx + d[o + DELTA_CENTER_X]!;
-        const sepY = s[b + DP_Y]! + rBy + d[o + DELTA_CENTER_Y]!;
-        const k11 = mB + rBy * rBy * iB;
-        const k12 = -rBy * rBx * iB;
-        const k22 = mB + rBx * rBx * iB;
-        const bX = cdotX + biasRate * sepX;
-        const bY = cdotY + biasRate * sepY;
-        let det = k11 * k22 - k12 * k12;
-        if (det !== 0) det = 1 / det;
-        const solvedX = det * (k22 * bX - k12 * bY);
-        const solvedY = det * (k11 * bY - k12 * bX);
-        const oldX = d[o + LINEAR_IMPULSE_X]!;
-        const oldY = d[o + LINEAR_IMPULSE_Y]!;
-        let accX = oldX - massScale * solvedX - impulseScale * oldX;
-        let accY = oldY - massScale * solvedY - impulseScale * oldY;
-        const maxImpulse = d[o + MAX_FORCE]! * step.h;
-        const magnitude = Math.sqrt(accX * accX + accY * accY);
-        if (magnitude > maxImpulse) {
-          const scale = maxImpulse / magnitude;
-          accX *= scale;
-          accY *= scale;
-        }
-        d[o + LINEAR_IMPULSE_X] = accX;
-        d[o + LINEAR_IMPULSE_Y] = accY;
-        const px = accX - oldX;
-        const py = accY - oldY;
-        vBx += mB * px;
-        vBy += mB * py;
-        wB += iB * (rBx * py - rBy * px);
-      }
-
-      s[b + V_X] = vBx;
-      s[b + V_Y] = vBy;
-      s[b + W] = wB;
-
-      if (!useBias) {
-        d[o + STEP_IMPULSE_X] += d[o + LINEAR_IMPULSE_X]!;
-        d[o + STEP_IMPULSE_Y] += d[o + LINEAR_IMPULSE_Y]!;
-        d[o + STEP_ANGULAR_IMPULSE] += d[o + ANGULAR_IMPULSE]!;
-      }
-    }
+  solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
+    const o = memory.offsets;
+    memory.kernel.solveMouse(
+      o[JOINT_RECORDS]!,
+      o[JOINT_ACTIVE]!,
+      o[STATES]!,
+      this.start,
+      this.start + this.active,
+      step.h,
+      useBias ? 1 : 0,
+    );
   }
 }
 

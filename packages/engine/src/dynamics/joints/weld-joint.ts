@@ -1,8 +1,22 @@
 import { readOnly } from '../../core/errors.ts';
 import type { Vec2Like } from '../../math/vec2.ts';
-import { DELTA_ANGLE, V_X, V_Y, W } from '../body-state.ts';
 import { Softness } from '../softness.ts';
-import { FlatJointBatch } from './joint-batch.ts';
+import { JointBatch } from './joint-batch.ts';
+import { JOINT_ACTIVE, JOINT_RECORDS, STATES, type SolverMemory } from '../solver-memory.ts';
+import {
+  ANGULAR_HERTZ,
+  ANGULAR_IMPULSE,
+  ANGULAR_SPRINGY,
+  ANGULAR_BIAS_RATE,
+  AXIAL_MASS,
+  DAMPING_RATIO,
+  LINEAR_BIAS_RATE,
+  LINEAR_HERTZ,
+  LINEAR_IMPULSE_X,
+  LINEAR_IMPULSE_Y,
+  LINEAR_SPRINGY,
+  STRIDE,
+} from './weld-joint-layout.ts';
 import {
   FRAME_SAVED,
   checkCollideConnected,
@@ -17,21 +31,7 @@ import {
   requirePoint,
 } from './joint.ts';
 import { TwoBodyJoint } from './two-body-joint.ts';
-import { turnedX, turnedY } from './joint-levers.ts';
-import {
-  INV_I_A,
-  INV_I_B,
-  INV_MASS_A,
-  INV_MASS_B,
-  JOINT_ANGLE_0,
-  REFERENCE_ANGLE,
-  R_AX,
-  R_BX,
-  STEP_ANGULAR_IMPULSE,
-  STEP_IMPULSE_X,
-  STEP_IMPULSE_Y,
-} from './joint-record.ts';
-import { solveSoftPoint } from './soft-point.ts';
+import { INV_I_A, INV_I_B, REFERENCE_ANGLE } from './joint-record.ts';
 
 /** Options of a {@link WeldJoint}: glues two bodies together, rigidly or springily. */
 export interface WeldJointOptions<UserData = unknown> extends JointOptions<UserData> {
@@ -61,24 +61,6 @@ export function checkWeldJointOptions(options: WeldJointOptions<unknown>) {
     dampingRatio: optionalNonNegative('dampingRatio', options.dampingRatio, 1),
   };
 }
-
-// A weld joint's record: the head (joint-record.ts), then its own numbers.
-const LINEAR_HERTZ = 25; // JOINT_HEAD; settings
-const ANGULAR_HERTZ = 26; // JOINT_HEAD + 1
-const DAMPING_RATIO = 27; // JOINT_HEAD + 2
-const AXIAL_MASS = 28; // JOINT_HEAD + 3; this step: 1 / (1/IA + 1/IB)
-// 1: the position hold has its own softness (bias rate, mass scale and impulse scale next), in
-// both passes; 0: rigid. The order is what solveSoftPoint reads.
-const LINEAR_SPRINGY = 29; // JOINT_HEAD + 4
-const LINEAR_BIAS_RATE = 30; // JOINT_HEAD + 5; then its mass scale and impulse scale
-const ANGULAR_SPRINGY = 33; // JOINT_HEAD + 8; the same for the angle hold
-const ANGULAR_BIAS_RATE = 34; // JOINT_HEAD + 9
-const ANGULAR_MASS_SCALE = 35; // JOINT_HEAD + 10
-const ANGULAR_IMPULSE_SCALE = 36; // JOINT_HEAD + 11
-const LINEAR_IMPULSE_X = 37; // JOINT_HEAD + 12; accumulated impulses (warm-started)
-const LINEAR_IMPULSE_Y = 38; // JOINT_HEAD + 13
-const ANGULAR_IMPULSE = 39; // JOINT_HEAD + 14
-const STRIDE = 40; // JOINT_HEAD + 15
 
 const LAYOUT: JointLayout = /* @__PURE__ */ jointLayout(
   STRIDE,
@@ -180,88 +162,34 @@ export class WeldJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
 }
 
 /**
- * @internal The weld joints of a world: their records, and the step's active ones solved in one
- * loop per pass (see JointBatch).
+ * @internal The weld joints of a world: the step's active ones, solved by the kernel's passes
+ * (wasm/joint-passes.ts: warmStartWeld, solveWeld), one call per pass.
  */
-export class WeldBatch extends FlatJointBatch {
-  constructor() {
-    super(STRIDE);
+export class WeldBatch extends JointBatch {
+  warmStart(memory: SolverMemory): void {
+    const o = memory.offsets;
+    memory.kernel.warmStartWeld(
+      o[JOINT_RECORDS]!,
+      o[JOINT_ACTIVE]!,
+      o[STATES]!,
+      this.start,
+      this.start + this.active,
+    );
   }
 
-  warmStart(s: Float64Array): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const a = states[2 * i]!;
-      const b = states[2 * i + 1]!;
-      const rAx = turnedX(s, a, d, o + R_AX);
-      const rAy = turnedY(s, a, d, o + R_AX);
-      const rBx = turnedX(s, b, d, o + R_BX);
-      const rBy = turnedY(s, b, d, o + R_BX);
-      const px = d[o + LINEAR_IMPULSE_X]!;
-      const py = d[o + LINEAR_IMPULSE_Y]!;
-      const angular = d[o + ANGULAR_IMPULSE]!;
-      s[a + V_X] -= d[o + INV_MASS_A]! * px;
-      s[a + V_Y] -= d[o + INV_MASS_A]! * py;
-      s[a + W] -= d[o + INV_I_A]! * (rAx * py - rAy * px + angular);
-      s[b + V_X] += d[o + INV_MASS_B]! * px;
-      s[b + V_Y] += d[o + INV_MASS_B]! * py;
-      s[b + W] += d[o + INV_I_B]! * (rBx * py - rBy * px + angular);
-    }
-  }
-
-  solve(s: Float64Array, step: JointStep, useBias: boolean): void {
-    const d = this.data;
-    const offsets = this.offsets;
-    const states = this.states;
-    const rigid = step.softness;
-    for (let i = 0; i < this.active; i++) {
-      const o = offsets[i]!;
-      const a = states[2 * i]!;
-      const b = states[2 * i + 1]!;
-      const iA = d[o + INV_I_A]!;
-      const iB = d[o + INV_I_B]!;
-      let wA = s[a + W]!;
-      let wB = s[b + W]!;
-
-      // Angle.
-      {
-        let bias = 0;
-        let massScale = 1;
-        let impulseScale = 0;
-        const springy = d[o + ANGULAR_SPRINGY] === 1;
-        if (useBias || springy) {
-          const c = d[o + JOINT_ANGLE_0]! + s[b + DELTA_ANGLE]! - s[a + DELTA_ANGLE]!;
-          if (springy) {
-            bias = d[o + ANGULAR_BIAS_RATE]! * c;
-            massScale = d[o + ANGULAR_MASS_SCALE]!;
-            impulseScale = d[o + ANGULAR_IMPULSE_SCALE]!;
-          } else {
-            bias = rigid.biasRate * c;
-            massScale = rigid.massScale;
-            impulseScale = rigid.impulseScale;
-          }
-        }
-        const impulse =
-          -d[o + AXIAL_MASS]! * massScale * (wB - wA + bias) -
-          impulseScale * d[o + ANGULAR_IMPULSE]!;
-        d[o + ANGULAR_IMPULSE] += impulse;
-        wA -= iA * impulse;
-        wB += iB * impulse;
-      }
-
-      // Position of the anchor: rigid, or springy with its own softness in both passes.
-      s[a + W] = wA;
-      s[b + W] = wB;
-      solveSoftPoint(s, a, b, d, o, LINEAR_IMPULSE_X, LINEAR_SPRINGY, useBias, step, false);
-
-      if (!useBias) {
-        d[o + STEP_IMPULSE_X] += d[o + LINEAR_IMPULSE_X]!;
-        d[o + STEP_IMPULSE_Y] += d[o + LINEAR_IMPULSE_Y]!;
-        d[o + STEP_ANGULAR_IMPULSE] += d[o + ANGULAR_IMPULSE]!;
-      }
-    }
+  solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
+    const o = memory.offsets;
+    const soft = step.softness;
+    memory.kernel.solveWeld(
+      o[JOINT_RECORDS]!,
+      o[JOINT_ACTIVE]!,
+      o[STATES]!,
+      this.start,
+      this.start + this.active,
+      soft.biasRate,
+      soft.massScale,
+      soft.impulseScale,
+      useBias ? 1 : 0,
+    );
   }
 }

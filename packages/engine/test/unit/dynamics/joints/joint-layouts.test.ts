@@ -10,7 +10,7 @@ import {
   weldJoint,
   type Joint,
 } from '@physical/engine';
-import { JOINT_HEAD } from '../../../../src/dynamics/joints/joint-record.ts';
+import { JOINT_HEAD, JOINT_RECORD_STRIDE } from '../../../../src/dynamics/joints/joint-record.ts';
 import { exportJointState } from '../../../../src/dynamics/joints/joint-state.ts';
 import type { JointLayout } from '../../../../src/dynamics/joints/joint.ts';
 import {
@@ -116,6 +116,12 @@ describe('joint record layouts', () => {
     expect(REVOLUTE_STRIDE).toBe(MAX_BIAS_SPEED + 1);
     expect(LOCAL_AXIS_X).toBe(SPRING_MOTOR_LIMIT_END);
     expect(PRISMATIC_STRIDE).toBe(PRISMATIC_LAST + 1);
+  });
+
+  it("fit every kind's record in the world store's stride, the largest kind's", () => {
+    const strides = kinds().map((joint) => layoutOf(joint).stride);
+    for (const stride of strides) expect(stride).toBeLessThanOrEqual(JOINT_RECORD_STRIDE);
+    expect(Math.max(...strides)).toBe(JOINT_RECORD_STRIDE);
   });
 
   it('give every saved number its own place inside the record', () => {

@@ -11,6 +11,12 @@ import {
 } from '@physical/engine';
 import { exportJointState } from '../../../../src/dynamics/joints/joint-state.ts';
 import type { JointStore } from '../../../../src/dynamics/joints/joint-store.ts';
+import type { SolverMemory } from '../../../../src/dynamics/solver-memory.ts';
+
+/** The world's solver memory (internal). */
+function memoryOf(world: World): SolverMemory {
+  return (world as unknown as { solver: { memory: SolverMemory } }).solver.memory;
+}
 
 // A joint's numbers live in one record: its kind's store in its world (the handle and the solver
 // passes read and write the same numbers, nothing is copied back after a step), or a store of its
@@ -63,6 +69,29 @@ describe('joint store', () => {
     world.step(DT);
     expect(Math.abs(hinges[1]!.motorTorque)).toBeLessThanOrEqual(3 + 1e-9);
     expect(Math.abs(hinges[1]!.motorTorque)).toBeGreaterThan(0);
+  });
+
+  it("keeps the world's records in its solver memory, across the memory's moves", () => {
+    const world = new World({ enableSleep: false });
+    const { hinges } = pendulums(world, 3);
+    world.step(DT);
+    const memory = memoryOf(world);
+    expect(storeOf(hinges[0]!)).toBe(memory.jointStore);
+    const saved = hinges.map((hinge) => JSON.stringify(exportJointState(hinge)));
+    // Forty more hinges outgrow the first room for records: the memory moves, the handles'
+    // numbers with it.
+    const firstView = memory.jointStore.data;
+    const more = pendulums(world, 40).hinges;
+    memory.reserveJoints(world.joints.length, world.joints.length);
+    expect(memory.jointStore.data).not.toBe(firstView);
+    expect(hinges.map((hinge) => JSON.stringify(exportJointState(hinge)))).toEqual(saved);
+    world.step(DT);
+    expect(storeOf(more[39]!)).toBe(memory.jointStore);
+    expect(memory.jointStore.count).toBe(43);
+    // Each step lists its active joints, kind by kind, with their bodies' state offsets.
+    // (A world adopts its joints in its order: the last one's record is the 43rd.)
+    expect(memory.jointActive[3 * 42]).toBe(42 * memory.jointStore.stride);
+    expect(hinges[1]!.motorSpeed).toBe(2);
   });
 
   it('moves a leaving joint out with all its numbers, and the last joint into its place', () => {
