@@ -7,13 +7,13 @@ import { SPRING_MOTOR_LIMIT_END } from './spring-motor-limit.ts';
 // (spring-motor-limit.ts), then these. The kernel's passes read them from the layout the build
 // script generates from this file (J_REVOLUTE_..., wasm/contact-layout.ts).
 /** The point's accumulated impulse (x, then y). */
-export const LINEAR_IMPULSE_X = SPRING_MOTOR_LIMIT_END;
-export const LINEAR_IMPULSE_Y = SPRING_MOTOR_LIMIT_END + 1;
+export const LINEAR_IMPULSE_X: number = SPRING_MOTOR_LIMIT_END;
+export const LINEAR_IMPULSE_Y: number = SPRING_MOTOR_LIMIT_END + 1;
 /** This step: 1 / (1/IA + 1/IB). */
-export const AXIAL_MASS = SPRING_MOTOR_LIMIT_END + 2;
+export const AXIAL_MASS: number = SPRING_MOTOR_LIMIT_END + 2;
 /** This step's JointStep.maxBiasSpeed. */
-export const MAX_BIAS_SPEED = SPRING_MOTOR_LIMIT_END + 3;
-export const STRIDE = SPRING_MOTOR_LIMIT_END + 4;
+export const MAX_BIAS_SPEED: number = SPRING_MOTOR_LIMIT_END + 3;
+export const STRIDE: number = SPRING_MOTOR_LIMIT_END + 4;
 
 /**
  * @internal The revolute joints of a world: the step's active ones, solved by the kernel's

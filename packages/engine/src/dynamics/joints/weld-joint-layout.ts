@@ -5,25 +5,25 @@ import { JOINT_HEAD } from './joint-record.ts';
 // (J_WELD_..., wasm/contact-layout.ts).
 
 /** Settings: the holds' stiffness (Hz) and damping ratio. */
-export const LINEAR_HERTZ = JOINT_HEAD;
-export const ANGULAR_HERTZ = JOINT_HEAD + 1;
-export const DAMPING_RATIO = JOINT_HEAD + 2;
+export const LINEAR_HERTZ: number = JOINT_HEAD;
+export const ANGULAR_HERTZ: number = JOINT_HEAD + 1;
+export const DAMPING_RATIO: number = JOINT_HEAD + 2;
 /** This step: 1 / (1/IA + 1/IB). */
-export const AXIAL_MASS = JOINT_HEAD + 3;
+export const AXIAL_MASS: number = JOINT_HEAD + 3;
 /**
  * 1: the position hold has its own softness (bias rate, mass scale and impulse scale next), in
  * both passes; 0: rigid. The order is what the soft point reads.
  */
-export const LINEAR_SPRINGY = JOINT_HEAD + 4;
+export const LINEAR_SPRINGY: number = JOINT_HEAD + 4;
 /** Then its mass scale and impulse scale. */
-export const LINEAR_BIAS_RATE = JOINT_HEAD + 5;
+export const LINEAR_BIAS_RATE: number = JOINT_HEAD + 5;
 /** The same for the angle hold. */
-export const ANGULAR_SPRINGY = JOINT_HEAD + 8;
-export const ANGULAR_BIAS_RATE = JOINT_HEAD + 9;
-export const ANGULAR_MASS_SCALE = JOINT_HEAD + 10;
-export const ANGULAR_IMPULSE_SCALE = JOINT_HEAD + 11;
+export const ANGULAR_SPRINGY: number = JOINT_HEAD + 8;
+export const ANGULAR_BIAS_RATE: number = JOINT_HEAD + 9;
+export const ANGULAR_MASS_SCALE: number = JOINT_HEAD + 10;
+export const ANGULAR_IMPULSE_SCALE: number = JOINT_HEAD + 11;
 /** Accumulated impulses (warm-started). */
-export const LINEAR_IMPULSE_X = JOINT_HEAD + 12;
-export const LINEAR_IMPULSE_Y = JOINT_HEAD + 13;
-export const ANGULAR_IMPULSE = JOINT_HEAD + 14;
-export const STRIDE = JOINT_HEAD + 15;
+export const LINEAR_IMPULSE_X: number = JOINT_HEAD + 12;
+export const LINEAR_IMPULSE_Y: number = JOINT_HEAD + 13;
+export const ANGULAR_IMPULSE: number = JOINT_HEAD + 14;
+export const STRIDE: number = JOINT_HEAD + 15;
