@@ -4,6 +4,14 @@ import { AABB } from '../geometry/aabb.ts';
 import type { Body } from './body.ts';
 import { B_MAX_EXTENT, B_VX, B_VY, B_W } from './body-memory.ts';
 import type { Shape } from './shape.ts';
+import {
+  ESCAPE_ID,
+  ESCAPE_MAX_X,
+  ESCAPE_MAX_Y,
+  ESCAPE_MIN_X,
+  ESCAPE_MIN_Y,
+  ESCAPE_STRIDE,
+} from './shape-escapes.ts';
 
 /**
  * Keeps a body's shapes' broad-phase boxes around them: each shape's box at the body's pose, grown
@@ -29,7 +37,31 @@ export class BodyBounds {
    */
   dt: number = 1 / 60;
 
-  constructor(private readonly broadPhase: BroadPhase) {}
+  constructor(
+    private readonly broadPhase: BroadPhase,
+    private readonly shapesById: readonly (Shape | null)[],
+  ) {}
+
+  /**
+   * Moves the proxies of the `count` shapes the kernel's shapeBounds (wasm/shape-bounds.ts) found
+   * out of their fat boxes in a step's finalize, listed in `escaped` (shape-escapes.ts) in the
+   * order the TypeScript of {@link refresh} would have moved them, and stores their new fat boxes.
+   */
+  moveEscaped(escaped: Float64Array, count: number): void {
+    const broadPhase = this.broadPhase;
+    const box = this.box;
+    for (let i = 0; i < count; i++) {
+      const e = i * ESCAPE_STRIDE;
+      const shape = this.shapesById[escaped[e + ESCAPE_ID]!]!;
+      box.minX = escaped[e + ESCAPE_MIN_X]!;
+      box.minY = escaped[e + ESCAPE_MIN_Y]!;
+      box.maxX = escaped[e + ESCAPE_MAX_X]!;
+      box.maxY = escaped[e + ESCAPE_MAX_Y]!;
+      // Listed because the box left the fat box, which the tree holds too: this moves it.
+      broadPhase.moveProxy(shape.proxyKey, box);
+      shape.setFatBox(broadPhase.getFatAABB(shape.proxyKey, this.fat));
+    }
+  }
 
   /** The speculative box of a shape at its body's pose (m); valid until the next call. */
   speculativeBox(shape: Shape, dt: number): AABB {

@@ -27,7 +27,10 @@
 //  34 contact head           first key of the body's contact edges plus one, 0: none (contact-edges.ts)
 //  35 forces left            1 while the body has forces with a duration still to act, else 0
 //                            (written by Solver.gatherBodies, read by the kernel's finalizeBodies)
-//  36-39 free (the stride stays a whole number of cache lines)
+//  36 shape head             first shape id of the body plus one, 0: none; the next shape's id plus
+//                            one per shape in SHAPE_NEXT (solver-memory.ts), in shapeList's order
+//                            (written by WorldMembership, read by the kernel's shapeBounds)
+//  37-39 free (the stride stays a whole number of cache lines)
 
 export const BODY_STRIDE = 40;
 export const B_X = 0;
@@ -66,6 +69,7 @@ export const B_MASS_OVERRIDE = 32;
 export const B_INERTIA_OVERRIDE = 33;
 export const B_CONTACT_HEAD = 34;
 export const B_FORCES_LEFT = 35;
+export const B_SHAPE_HEAD = 36;
 
 /** Bits of B_FLAGS. */
 export const FLAG_FIXED_ROTATION = 1;

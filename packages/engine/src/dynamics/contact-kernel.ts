@@ -243,6 +243,24 @@ export interface BodyPasses {
     continuous: number,
   ): number;
   /**
+   * The shapes' boxes of the `count` awake bodies at `awake` but the `fastCount` listed at `fast`
+   * (wasm/shape-bounds.ts): each tight box into `boxes` (SHAPE_BOXES), each box grown for a next
+   * step of `dt` that left its fat box listed at `escaped` (ESCAPED_SHAPES, shape-escapes.ts);
+   * returns how many were listed.
+   */
+  shapeBounds(
+    bodies: number,
+    awake: number,
+    count: number,
+    fast: number,
+    fastCount: number,
+    boxes: number,
+    geometry: number,
+    next: number,
+    dt: number,
+    escaped: number,
+  ): number;
+  /**
    * The engine's cosSin (math/trigonometry.ts, compiled into the kernel) of `angle`: cos at byte
    * `out`, sin 8 bytes on. For the tests that compare the kernel's math with TypeScript's.
    */

@@ -11,6 +11,7 @@ import {
   type ShapeMemory,
 } from './shape-table.ts';
 import { SWEEP_STRIDE } from './shock-sweep-layout.ts';
+import { ESCAPE_STRIDE } from './shape-escapes.ts';
 import { JOINT_RECORD_STRIDE } from './joints/joint-record.ts';
 import { JointStore } from './joints/joint-store.ts';
 
@@ -75,15 +76,23 @@ export const SHOCK_SCRATCH = 21;
 export const JOINT_RECORDS = 22;
 /** The step's active joints, grouped by kind: record offset, state A, state B (3 int32 each). */
 export const JOINT_ACTIVE = 23;
-const REGIONS = 24;
+/** Each shape's next shape of the same body, id plus one, 0: none (body-memory.ts): int32. */
+export const SHAPE_NEXT = 24;
+/** The shapes whose box left its fat box in finalize (shape-escapes.ts): doubles, one row a shape. */
+export const ESCAPED_SHAPES = 25;
+const REGIONS = 26;
 /** Bytes per element of each region. */
-const ELEMENT_BYTES = [8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8, 4, 4, 4, 8, 4, 8, 4];
+const ELEMENT_BYTES = [
+  8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8, 4, 4, 4, 8, 4, 8, 4, 4, 8,
+];
 /** The shape regions of that many rows. */
 const SHAPE_REGIONS: readonly (readonly [number, number])[] = [
   [SHAPE_BOXES, SHAPE_STRIDE],
   [SHAPE_FILTERS, FILTER_STRIDE],
   [SHAPE_MATERIALS, MATERIAL_STRIDE],
   [SHAPE_GEOMETRY, GEOMETRY_STRIDE],
+  [SHAPE_NEXT, 1],
+  [ESCAPED_SHAPES, ESCAPE_STRIDE],
 ];
 
 /**
@@ -114,6 +123,10 @@ export class SolverMemory implements ShapeMemory {
   narrowPhase: Float64Array = new Float64Array(0);
   /** The awake indices of the last finalize's fast bodies (FAST_BODIES). */
   fastBodies: Int32Array = new Int32Array(0);
+  /** Each shape's next shape of its body (SHAPE_NEXT). */
+  shapeNext: Int32Array = new Int32Array(0);
+  /** The shapes finalize found out of their fat boxes (ESCAPED_SHAPES). */
+  escapedShapes: Float64Array = new Float64Array(0);
   /** The heavy-on-light sweep's list (SHOCK_SWEEP). */
   shockSweep: Float64Array = new Float64Array(0);
   /**
@@ -176,7 +189,8 @@ export class SolverMemory implements ShapeMemory {
       64 * BODY_STRIDE,
       64,
       64,
-      ...SHAPE_REGIONS.map(([, stride]) => 64 * stride),
+      // SHAPE_BOXES to SHAPE_GEOMETRY (the shape regions after them are at the end).
+      ...SHAPE_REGIONS.slice(0, 4).map(([, stride]) => 64 * stride),
       NARROW_PHASE_SCRATCH_DOUBLES,
       512,
       256,
@@ -185,6 +199,8 @@ export class SolverMemory implements ShapeMemory {
       0, // SHOCK_SCRATCH, sized below
       16 * JOINT_RECORD_STRIDE,
       48,
+      64, // SHAPE_NEXT
+      64 * ESCAPE_STRIDE, // ESCAPED_SHAPES
     ]);
     this.sizeShockScratch(capacities);
     return capacities;
@@ -475,6 +491,8 @@ export class SolverMemory implements ShapeMemory {
     this.shockSweep = f64(SHOCK_SWEEP);
     this.jointStore.data = f64(JOINT_RECORDS);
     this.jointActive = i32(JOINT_ACTIVE);
+    this.shapeNext = i32(SHAPE_NEXT);
+    this.escapedShapes = f64(ESCAPED_SHAPES);
   }
 }
 

@@ -60,7 +60,11 @@ import {
   CONSTRAINT_SLOTS,
   CONTACT_BODIES,
   CONTACT_DATA,
+  ESCAPED_SHAPES,
   FAST_BODIES,
+  SHAPE_BOXES,
+  SHAPE_GEOMETRY,
+  SHAPE_NEXT,
   SolverMemory,
   STATES,
 } from './solver-memory.ts';
@@ -617,18 +621,30 @@ export class Solver {
       memory.offsets[FAST_BODIES]!,
       continuous ? 1 : 0,
     );
-    // Then what needs the body objects: the fast bodies' lists and the other bodies' broad-phase
-    // boxes, in awake order (the fast list is in that order too).
+    // The other bodies' shapes' boxes (the kernel's shapeBounds, wasm/shape-bounds.ts), then the
+    // proxies of those that left their fat boxes moved in the trees, in awake order.
+    const escaped = memory.kernel.shapeBounds(
+      memory.offsets[BODIES]!,
+      memory.offsets[AWAKE_BODIES]!,
+      this.awakeCount,
+      memory.offsets[FAST_BODIES]!,
+      fast,
+      memory.offsets[SHAPE_BOXES]!,
+      memory.offsets[SHAPE_GEOMETRY]!,
+      memory.offsets[SHAPE_NEXT]!,
+      boundsDt,
+      memory.offsets[ESCAPED_SHAPES]!,
+    );
+    bounds.moveEscaped(memory.escapedShapes, escaped);
+    // Then what needs the body objects: the fast bodies' lists, in awake order (the fast list is
+    // in that order too).
     const fastList = memory.fastBodies;
     let fastCount = 0;
     let fastBulletCount = 0;
     let next = fast > 0 ? fastList[0]! : -1;
     for (let i = 0; i < this.awakeCount; i++) {
       const body = awake[i]!;
-      if (i !== next) {
-        bounds.refresh(body, false);
-        continue;
-      }
+      if (i !== next) continue;
       const listed = fastCount + fastBulletCount + 1;
       next = listed < fast ? fastList[listed]! : -1;
       if (body.bulletValue) {

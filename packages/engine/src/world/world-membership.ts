@@ -1,6 +1,7 @@
 import { callAll, type Listeners } from '../core/listeners.ts';
 import type { BroadPhase, ProxyType } from '../collision/broad-phase.ts';
 import type { Body } from '../dynamics/body.ts';
+import { B_SHAPE_HEAD } from '../dynamics/body-memory.ts';
 import type { BodyBounds } from '../dynamics/body-bounds.ts';
 import type { ContactManager } from '../dynamics/contact-manager.ts';
 import type { Islands } from '../dynamics/island.ts';
@@ -91,6 +92,7 @@ export class WorldMembership {
     this.bodyList.push(body);
     if (this.bodyList.length > this.mostBodies) this.mostBodies = this.bodyList.length;
     for (const shape of body.shapeList) this.createProxy(shape);
+    this.linkShapes(body);
     callAll(this.listeners.get('bodyAdded'), body);
   }
 
@@ -204,6 +206,27 @@ export class WorldMembership {
     shape.proxyKey = this.broadPhase.createProxy(box, PROXY_TYPE[shape.body.type], id, false);
     shape.setFatBox(this.broadPhase.getFatAABB(shape.proxyKey, this.fatScratch));
     if (shape.sensor) this.sensors.add(shape);
+  }
+
+  /**
+   * Writes `body`'s shape chain (B_SHAPE_HEAD in its numbers, SHAPE_NEXT by shape id: id plus one,
+   * 0 none) in its shapeList's order, skipping shapes without an id (one leaving): the order the
+   * kernel's shapeBounds (wasm/shape-bounds.ts) lists escaped proxies in, which the trees' shape
+   * and the pairs' order depend on. Runs whenever a body's shapes in a world change.
+   */
+  linkShapes(body: Body): void {
+    const memory = this.solver.memory;
+    const next = memory.shapeNext;
+    let last = -1;
+    let head = 0;
+    for (const shape of body.shapeList) {
+      if (shape.id < 0) continue;
+      if (last < 0) head = shape.id + 1;
+      else next[last] = shape.id + 1;
+      last = shape.id;
+    }
+    if (last >= 0) next[last] = 0;
+    memory.bodyStore.data[body.base + B_SHAPE_HEAD] = head;
   }
 
   /** A shape leaves: its id is freed and its numbers move to a table of its own. */

@@ -54,7 +54,7 @@ export class World {
   private readonly bodyList: Body[] = [];
   private readonly shapesById: (Shape | null)[] = [];
   private readonly broadPhase = new BroadPhase();
-  private readonly bounds = new BodyBounds(this.broadPhase);
+  private readonly bounds = new BodyBounds(this.broadPhase, this.shapesById);
   private readonly solver = new Solver();
   private readonly contactEdges = new ContactEdges(this.solver.memory);
   private readonly islands = new Islands(this.contactEdges, this.bodyList);
@@ -558,7 +558,9 @@ export class World {
 
   /** @internal */
   shapeAdded(shape: Shape): void {
-    if (this.bodyList[shape.body.worldIndex] === shape.body) this.membership.createProxy(shape);
+    if (this.bodyList[shape.body.worldIndex] !== shape.body) return;
+    this.membership.createProxy(shape);
+    this.membership.linkShapes(shape.body);
   }
 
   /**
@@ -578,6 +580,7 @@ export class World {
     if (shape.proxyKey < 0) return;
     this.contactManager.destroyContactsOfShape(shape);
     this.membership.destroyProxy(shape);
+    this.membership.linkShapes(shape.body);
     this.events.dispatchEnds();
   }
 
