@@ -54,6 +54,8 @@ export interface WorldInternals {
   readonly freeShapeIds: number[];
   /** Moves a loaded body's numbers into the world's body memory at world index `index`. */
   placeBody(body: Body, index: number): void;
+  /** Writes a body's shape chain (WorldMembership.linkShapes) once its shapes have their rows. */
+  linkShapes(body: Body): void;
   nextBodyId: number;
   stepCount: number;
   lastStep: number;

@@ -340,6 +340,8 @@ export function loadWorld(w: WorldInternals, snapshot: unknown): void {
     shape?.attachTable(w.shapeTable);
   }
   w.freeShapeIds.push(...free);
+  // Each body's shape chain, which the kernel's finalize walks (wasm/shape-bounds.ts).
+  for (const body of w.bodies) w.linkShapes(body);
   importBroadPhaseState(w.broadPhase, { trees, moved });
   // Joints, in their saved order; each body's list holds its joints in that same order.
   joints.forEach((plan, i) => {

@@ -694,6 +694,9 @@ export class World {
         memory.reserveBodies(index + 1);
         body.moveTo(memory.bodyStore, index);
       },
+      linkShapes(body: Body): void {
+        world.membership.linkShapes(body);
+      },
       get nextBodyId(): number {
         return world.membership.nextBodyId;
       },
