@@ -92,12 +92,13 @@ function firstScreenPreload(): Plugin {
           (item): item is OutputChunk => item.type === 'chunk',
         );
         const byName = new Map(chunks.map((chunk) => [chunk.fileName, chunk]));
-        // Per screen, two waves: the screen's chunk and what it imports statically (its
+        // Per screen, two lists: the screen's chunk and what it imports statically (its
         // controls), then its engine part (`src/screens/<id>/<id>-engine.ts`, which the screen
-        // imports once its controls are on the page) with its chunks. The second wave is
-        // requested when the first has arrived: Slow 4G shares its 1.6 Mbit/s among the files
-        // in flight, and the engine's 80 KB fetched beside the entry held the entry (React, the
-        // shell) back by half a second, and with it the controls.
+        // imports once its controls are on the page) with its chunks, at low priority. Slow 4G
+        // shares its 1.6 Mbit/s among the files in flight: fetched beside the entry, the engine's
+        // 80 KB held the entry (React, the shell) back until about when the engine came, and
+        // the controls with it; at low priority they wait for one of the six connections
+        // (HTTP/1.1) to come free, after the entry's and the controls' requests.
         const files: Record<string, [string[], string[]]> = {};
         for (const chunk of chunks) {
           const match = /\/src\/screens\/(\w+)\/\w+Screen\.tsx$/.exec(chunk.facadeModuleId ?? '');
@@ -120,10 +121,9 @@ function firstScreenPreload(): Plugin {
         const script =
           `(function(){var f=${JSON.stringify(files)};` +
           `var id=location.hash.replace(/^#/,'').split('?')[0];var w=f[id]||f.inertia;if(!w)return;` +
-          `function add(h,done){var l=document.createElement('link');l.rel='modulepreload';` +
-          `l.crossOrigin='';l.href=h;if(done){l.onload=l.onerror=done;}document.head.appendChild(l);}` +
-          `var left=w[0].length;function next(){if(--left===0)w[1].forEach(function(h){add(h);});}` +
-          `w[0].forEach(function(h){add(h,next);});})();`;
+          `function add(h,low){var l=document.createElement('link');l.rel='modulepreload';` +
+          `l.crossOrigin='';l.href=h;if(low)l.fetchPriority='low';document.head.appendChild(l);}` +
+          `w[0].forEach(function(h){add(h);});w[1].forEach(function(h){add(h,1);});})();`;
         // Before the stylesheet and the entry: an inline script after a stylesheet waits for
         // it to arrive (scripts may read styles), and on Slow 4G that held the screen's chunks
         // back by most of a second (requested at 1.8 s, with the entry at 0.95 s).
