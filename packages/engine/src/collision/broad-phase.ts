@@ -57,11 +57,8 @@ export class BroadPhase {
   /** @internal */
   movedIndex = new Int32Array(64).fill(-1);
 
-  // State of the current updatePairs, query or rayCast, read by the pre-bound tree callbacks
-  // below so that no closure is created per call.
-  private queryProxyKey = NULL_KEY;
-  private queryShapeId = 0;
-  private onPair: PairCallback | null = null;
+  // State of the current query or rayCast, read by the pre-bound tree callbacks below so that no
+  // closure is created per call.
   private currentType = 0;
   private userQuery: TreeQueryCallback | null = null;
   private userRayCast: TreeRayCastCallback | null = null;
@@ -75,8 +72,6 @@ export class BroadPhase {
   deferring = false;
   private readonly scratchBox = new AABB();
 
-  private readonly pairQueryCallback: TreeQueryCallback = (proxyId, shapeId) =>
-    this.reportPair(proxyId, shapeId);
   private readonly forwardQueryCallback: TreeQueryCallback = (proxyId, shapeId) => {
     const proceed = this.userQuery!(makeProxyKey(proxyId, this.currentType), shapeId);
     if (!proceed) {
@@ -201,19 +196,15 @@ export class BroadPhase {
    * contact are reported too: filtering them is the caller's job.
    */
   updatePairs(onPair: PairCallback): void {
-    this.onPair = onPair;
-    this.queryMovedProxies();
-    this.onPair = null;
-    this.queryProxyKey = NULL_KEY;
+    this.queryMovedProxies(onPair);
     this.clearMoveBuffer();
   }
 
   // The loops live in methods of their own, with nothing after them: V8 compiles a long loop on
   // stack replacement before the code after it has run, and that code then lacked type feedback
   // and deoptimised on every step.
-  private queryMovedProxies(): void {
+  private queryMovedProxies(onPair: PairCallback): void {
     const trees = this.trees;
-    const box = this.scratchBox;
     for (let i = 0; i < this.moveCount; i++) {
       const proxyKey = this.moveBuffer[i]!;
       if (proxyKey === NULL_KEY) {
@@ -221,18 +212,57 @@ export class BroadPhase {
       }
       const type = proxyKey & 3;
       const tree = trees[type]!;
-      const proxyId = proxyKey >> 2;
-      tree.getFatAABB(proxyId, box);
-      this.queryProxyKey = proxyKey;
-      this.queryShapeId = tree.getUserData(proxyId);
+      const o = 4 * (proxyKey >> 2);
+      const boxes = tree.boxes;
+      const minX = boxes[o]!;
+      const minY = boxes[o + 1]!;
+      const maxX = boxes[o + 2]!;
+      const maxY = boxes[o + 3]!;
+      const shapeId = tree.getUserData(proxyKey >> 2);
       if (type === DYNAMIC) {
-        this.currentType = 0;
-        trees[0].query(box, this.pairQueryCallback);
-        this.currentType = 1;
-        trees[1].query(box, this.pairQueryCallback);
+        this.reportPairs(onPair, trees[0], 0, proxyKey, shapeId, minX, minY, maxX, maxY);
+        this.reportPairs(onPair, trees[1], 1, proxyKey, shapeId, minX, minY, maxX, maxY);
       }
-      this.currentType = DYNAMIC;
-      trees[2].query(box, this.pairQueryCallback);
+      this.reportPairs(onPair, trees[2], DYNAMIC, proxyKey, shapeId, minX, minY, maxX, maxY);
+    }
+  }
+
+  /**
+   * Reports the pairs of moved proxy `queryKey` (shape `queryShapeId`, fat box given) with the
+   * proxies of `tree` (type `type`) its box overlaps, in the tree's query order: the list
+   * DynamicTree.overlapping makes, read here with no callback per leaf.
+   */
+  private reportPairs(
+    onPair: PairCallback,
+    tree: DynamicTree,
+    type: number,
+    queryKey: number,
+    queryShapeId: number,
+    minX: number,
+    minY: number,
+    maxX: number,
+    maxY: number,
+  ): void {
+    const count = tree.overlapping(minX, minY, maxX, maxY);
+    if (count === 0) return;
+    const hits = tree.hits;
+    const userData = tree.userData;
+    const movedIndex = this.movedIndex;
+    for (let k = 0; k < count; k++) {
+      const proxyId = hits[k]!;
+      const proxyKey = makeProxyKey(proxyId, type);
+      if (proxyKey === queryKey) continue;
+      // When both proxies moved, both queries find the pair; only the one with the larger key
+      // reports it (Box2D's rule), which keeps each pair to one report.
+      if (proxyKey > queryKey && proxyKey < movedIndex.length && movedIndex[proxyKey] !== -1) {
+        continue;
+      }
+      const shapeId = userData[proxyId]!;
+      if (shapeId < queryShapeId) {
+        onPair(shapeId, queryShapeId);
+      } else {
+        onPair(queryShapeId, shapeId);
+      }
     }
   }
 
@@ -290,30 +320,6 @@ export class BroadPhase {
     }
     this.userRayCast = savedCallback;
     this.currentType = savedType;
-  }
-
-  private reportPair(proxyId: number, shapeId: number): boolean {
-    const proxyKey = makeProxyKey(proxyId, this.currentType);
-    const queryKey = this.queryProxyKey;
-    if (proxyKey === queryKey) {
-      return true;
-    }
-    // When both proxies moved, both queries find the pair; only the one with the larger key
-    // reports it (Box2D's rule), which keeps each pair to one report.
-    if (
-      proxyKey > queryKey &&
-      proxyKey < this.movedIndex.length &&
-      this.movedIndex[proxyKey] !== -1
-    ) {
-      return true;
-    }
-    const queryShapeId = this.queryShapeId;
-    if (shapeId < queryShapeId) {
-      this.onPair!(shapeId, queryShapeId);
-    } else {
-      this.onPair!(queryShapeId, shapeId);
-    }
-    return true;
   }
 
   private unbufferMove(proxyKey: number): void {
