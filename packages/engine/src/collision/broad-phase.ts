@@ -2,6 +2,7 @@ import { AABB_MARGIN } from '../core/constants.ts';
 import { AABB } from '../geometry/aabb.ts';
 import type { RayInput } from '../geometry/ray.ts';
 import { DynamicTree } from './dynamic-tree.ts';
+import type { PairSet } from './pair-set.ts';
 import type { TreeQueryCallback } from './dynamic-tree.ts';
 import { rayCastTree, type TreeRayCastCallback } from './dynamic-tree-ray-cast.ts';
 import type { TreeState } from './dynamic-tree-state.ts';
@@ -192,18 +193,19 @@ export class BroadPhase {
    * Reports every pair of overlapping fat boxes that involves a proxy moved since the last
    * call and at least one dynamic proxy, exactly once, as (smaller shape id, larger shape id);
    * then empties the move buffer. The order follows the move buffer, then each tree's
-   * traversal, so it is the same for the same sequence of calls. Pairs that already have a
-   * contact are reported too: filtering them is the caller's job.
+   * traversal, so it is the same for the same sequence of calls. Pairs of shape ids in `known`
+   * (the pairs that already have a contact) are not reported: most reports are those (Box2D v3
+   * looks its pair set up in the same place), and the set answers them before any call.
    */
-  updatePairs(onPair: PairCallback): void {
-    this.queryMovedProxies(onPair);
+  updatePairs(onPair: PairCallback, known: PairSet): void {
+    this.queryMovedProxies(onPair, known);
     this.clearMoveBuffer();
   }
 
   // The loops live in methods of their own, with nothing after them: V8 compiles a long loop on
   // stack replacement before the code after it has run, and that code then lacked type feedback
   // and deoptimised on every step.
-  private queryMovedProxies(onPair: PairCallback): void {
+  private queryMovedProxies(onPair: PairCallback, known: PairSet): void {
     const trees = this.trees;
     for (let i = 0; i < this.moveCount; i++) {
       const proxyKey = this.moveBuffer[i]!;
@@ -220,10 +222,10 @@ export class BroadPhase {
       const maxY = boxes[o + 3]!;
       const shapeId = tree.getUserData(proxyKey >> 2);
       if (type === DYNAMIC) {
-        this.reportPairs(onPair, trees[0], 0, proxyKey, shapeId, minX, minY, maxX, maxY);
-        this.reportPairs(onPair, trees[1], 1, proxyKey, shapeId, minX, minY, maxX, maxY);
+        this.reportPairs(onPair, known, trees[0], 0, proxyKey, shapeId, minX, minY, maxX, maxY);
+        this.reportPairs(onPair, known, trees[1], 1, proxyKey, shapeId, minX, minY, maxX, maxY);
       }
-      this.reportPairs(onPair, trees[2], DYNAMIC, proxyKey, shapeId, minX, minY, maxX, maxY);
+      this.reportPairs(onPair, known, trees[2], DYNAMIC, proxyKey, shapeId, minX, minY, maxX, maxY);
     }
   }
 
@@ -234,6 +236,7 @@ export class BroadPhase {
    */
   private reportPairs(
     onPair: PairCallback,
+    known: PairSet,
     tree: DynamicTree,
     type: number,
     queryKey: number,
@@ -258,11 +261,9 @@ export class BroadPhase {
         continue;
       }
       const shapeId = userData[proxyId]!;
-      if (shapeId < queryShapeId) {
-        onPair(shapeId, queryShapeId);
-      } else {
-        onPair(queryShapeId, shapeId);
-      }
+      const low = shapeId < queryShapeId ? shapeId : queryShapeId;
+      const high = shapeId < queryShapeId ? queryShapeId : shapeId;
+      if (!known.hasOrdered(low, high)) onPair(low, high);
     }
   }
 

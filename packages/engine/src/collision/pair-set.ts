@@ -73,6 +73,11 @@ export class PairSet {
     return this.find(a < b ? a : b, a < b ? b : a) !== EMPTY;
   }
 
+  /** Whether the pair {low, high} is in the set, given `low` < `high` (the broad phase's order). */
+  hasOrdered(low: number, high: number): boolean {
+    return this.find(low, high) !== EMPTY;
+  }
+
   /** Removes the pair {a, b}; returns true if it was present. */
   remove(a: number, b: number): boolean {
     let hole = this.find(a < b ? a : b, a < b ? b : a);

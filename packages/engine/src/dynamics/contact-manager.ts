@@ -54,7 +54,8 @@ export class ContactManager {
   /** Contacts made and destroyed since the world was created (the bench's churn counters). */
   made = 0;
   destroyed = 0;
-  private readonly pairs = new PairSet();
+  /** The pairs of shape ids that have a contact (or will, once createPending has run). */
+  readonly pairs: PairSet = new PairSet();
   /**
    * Pairs accepted by addPair, not yet contacts (the first `pendingCount`, already ordered), by
    * shape id: A at 2 n, B at 2 n + 1. Reserved with the pair set before the broad phase reports
@@ -117,9 +118,9 @@ export class ContactManager {
   }
 
   /**
-   * Broad-phase callback: a pair of overlapping fat boxes, by shape id. Most pairs reported
-   * already have a contact (a moved box overlaps what it overlapped before): one hash lookup
-   * settles those before any shape or body is read.
+   * Broad-phase callback: a pair of overlapping fat boxes, by shape id. Most pairs found already
+   * have a contact (a moved box overlaps what it overlapped before): the broad phase turns those
+   * away itself, from {@link pairs} (BroadPhase.updatePairs), before calling this.
    */
   addPair(shapeIdA: number, shapeIdB: number, shapesById: readonly (Shape | null)[]): void {
     // Sensors never make contacts, and filters may forbid the pair (filtersCollide in filter.ts,

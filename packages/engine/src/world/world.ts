@@ -382,7 +382,7 @@ export class World {
     let thrown: Thrown | null = null;
     try {
       this.contactManager.reservePairs(this.shapesById.length);
-      this.broadPhase.updatePairs(this.onPair);
+      this.broadPhase.updatePairs(this.onPair, this.contactManager.pairs);
       // Room for the whole step in one move of the solver memory, then the new contacts.
       this.solver.reserve(
         this.bodyList.length,
