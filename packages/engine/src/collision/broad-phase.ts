@@ -2,6 +2,7 @@ import { AABB_MARGIN } from '../core/constants.ts';
 import { AABB } from '../geometry/aabb.ts';
 import type { RayInput } from '../geometry/ray.ts';
 import { DynamicTree } from './dynamic-tree.ts';
+import { filterRowsAllow } from './pair-filter.ts';
 import type { PairSet } from './pair-set.ts';
 import type { TreeQueryCallback } from './dynamic-tree.ts';
 import { rayCastTree, type TreeRayCastCallback } from './dynamic-tree-ray-cast.ts';
@@ -193,19 +194,20 @@ export class BroadPhase {
    * Reports every pair of overlapping fat boxes that involves a proxy moved since the last
    * call and at least one dynamic proxy, exactly once, as (smaller shape id, larger shape id);
    * then empties the move buffer. The order follows the move buffer, then each tree's
-   * traversal, so it is the same for the same sequence of calls. Pairs of shape ids in `known`
-   * (the pairs that already have a contact) are not reported: most reports are those (Box2D v3
-   * looks its pair set up in the same place), and the set answers them before any call.
+   * traversal, so it is the same for the same sequence of calls. Not reported: pairs the shapes'
+   * rows of `filters` forbid (pair-filter.ts: sensors, filter bits and groups), checked first,
+   * from numbers, and then pairs of shape ids in `known` (those that already have a contact;
+   * Box2D v3 looks its pair set up in the same place): most pairs found are one or the other.
    */
-  updatePairs(onPair: PairCallback, known: PairSet): void {
-    this.queryMovedProxies(onPair, known);
+  updatePairs(onPair: PairCallback, known: PairSet, filters: Int32Array): void {
+    this.queryMovedProxies(onPair, known, filters);
     this.clearMoveBuffer();
   }
 
   // The loops live in methods of their own, with nothing after them: V8 compiles a long loop on
   // stack replacement before the code after it has run, and that code then lacked type feedback
   // and deoptimised on every step.
-  private queryMovedProxies(onPair: PairCallback, known: PairSet): void {
+  private queryMovedProxies(onPair: PairCallback, known: PairSet, filters: Int32Array): void {
     const trees = this.trees;
     for (let i = 0; i < this.moveCount; i++) {
       const proxyKey = this.moveBuffer[i]!;
@@ -222,10 +224,46 @@ export class BroadPhase {
       const maxY = boxes[o + 3]!;
       const shapeId = tree.getUserData(proxyKey >> 2);
       if (type === DYNAMIC) {
-        this.reportPairs(onPair, known, trees[0], 0, proxyKey, shapeId, minX, minY, maxX, maxY);
-        this.reportPairs(onPair, known, trees[1], 1, proxyKey, shapeId, minX, minY, maxX, maxY);
+        this.reportPairs(
+          onPair,
+          known,
+          filters,
+          trees[0],
+          0,
+          proxyKey,
+          shapeId,
+          minX,
+          minY,
+          maxX,
+          maxY,
+        );
+        this.reportPairs(
+          onPair,
+          known,
+          filters,
+          trees[1],
+          1,
+          proxyKey,
+          shapeId,
+          minX,
+          minY,
+          maxX,
+          maxY,
+        );
       }
-      this.reportPairs(onPair, known, trees[2], DYNAMIC, proxyKey, shapeId, minX, minY, maxX, maxY);
+      this.reportPairs(
+        onPair,
+        known,
+        filters,
+        trees[2],
+        DYNAMIC,
+        proxyKey,
+        shapeId,
+        minX,
+        minY,
+        maxX,
+        maxY,
+      );
     }
   }
 
@@ -237,6 +275,7 @@ export class BroadPhase {
   private reportPairs(
     onPair: PairCallback,
     known: PairSet,
+    filters: Int32Array,
     tree: DynamicTree,
     type: number,
     queryKey: number,
@@ -263,7 +302,7 @@ export class BroadPhase {
       const shapeId = userData[proxyId]!;
       const low = shapeId < queryShapeId ? shapeId : queryShapeId;
       const high = shapeId < queryShapeId ? queryShapeId : shapeId;
-      if (!known.hasOrdered(low, high)) onPair(low, high);
+      if (filterRowsAllow(filters, low, high) && !known.hasOrdered(low, high)) onPair(low, high);
     }
   }
 
