@@ -2,6 +2,8 @@ import { AABB_MARGIN } from '../core/constants.ts';
 import { AABB } from '../geometry/aabb.ts';
 import type { RayInput } from '../geometry/ray.ts';
 import { DynamicTree } from './dynamic-tree.ts';
+import { filterRowsAllow } from './pair-filter.ts';
+import type { PairSet } from './pair-set.ts';
 import type { TreeQueryCallback } from './dynamic-tree.ts';
 import { rayCastTree, type TreeRayCastCallback } from './dynamic-tree-ray-cast.ts';
 import type { TreeState } from './dynamic-tree-state.ts';
@@ -57,11 +59,8 @@ export class BroadPhase {
   /** @internal */
   movedIndex = new Int32Array(64).fill(-1);
 
-  // State of the current updatePairs, query or rayCast, read by the pre-bound tree callbacks
-  // below so that no closure is created per call.
-  private queryProxyKey = NULL_KEY;
-  private queryShapeId = 0;
-  private onPair: PairCallback | null = null;
+  // State of the current query or rayCast, read by the pre-bound tree callbacks below so that no
+  // closure is created per call.
   private currentType = 0;
   private userQuery: TreeQueryCallback | null = null;
   private userRayCast: TreeRayCastCallback | null = null;
@@ -75,8 +74,6 @@ export class BroadPhase {
   deferring = false;
   private readonly scratchBox = new AABB();
 
-  private readonly pairQueryCallback: TreeQueryCallback = (proxyId, shapeId) =>
-    this.reportPair(proxyId, shapeId);
   private readonly forwardQueryCallback: TreeQueryCallback = (proxyId, shapeId) => {
     const proceed = this.userQuery!(makeProxyKey(proxyId, this.currentType), shapeId);
     if (!proceed) {
@@ -197,23 +194,21 @@ export class BroadPhase {
    * Reports every pair of overlapping fat boxes that involves a proxy moved since the last
    * call and at least one dynamic proxy, exactly once, as (smaller shape id, larger shape id);
    * then empties the move buffer. The order follows the move buffer, then each tree's
-   * traversal, so it is the same for the same sequence of calls. Pairs that already have a
-   * contact are reported too: filtering them is the caller's job.
+   * traversal, so it is the same for the same sequence of calls. Not reported: pairs the shapes'
+   * rows of `filters` forbid (pair-filter.ts: sensors, filter bits and groups), checked first,
+   * from numbers, and then pairs of shape ids in `known` (those that already have a contact;
+   * Box2D v3 looks its pair set up in the same place): most pairs found are one or the other.
    */
-  updatePairs(onPair: PairCallback): void {
-    this.onPair = onPair;
-    this.queryMovedProxies();
-    this.onPair = null;
-    this.queryProxyKey = NULL_KEY;
+  updatePairs(onPair: PairCallback, known: PairSet, filters: Int32Array): void {
+    this.queryMovedProxies(onPair, known, filters);
     this.clearMoveBuffer();
   }
 
   // The loops live in methods of their own, with nothing after them: V8 compiles a long loop on
   // stack replacement before the code after it has run, and that code then lacked type feedback
   // and deoptimised on every step.
-  private queryMovedProxies(): void {
+  private queryMovedProxies(onPair: PairCallback, known: PairSet, filters: Int32Array): void {
     const trees = this.trees;
-    const box = this.scratchBox;
     for (let i = 0; i < this.moveCount; i++) {
       const proxyKey = this.moveBuffer[i]!;
       if (proxyKey === NULL_KEY) {
@@ -221,18 +216,93 @@ export class BroadPhase {
       }
       const type = proxyKey & 3;
       const tree = trees[type]!;
-      const proxyId = proxyKey >> 2;
-      tree.getFatAABB(proxyId, box);
-      this.queryProxyKey = proxyKey;
-      this.queryShapeId = tree.getUserData(proxyId);
+      const o = 4 * (proxyKey >> 2);
+      const boxes = tree.boxes;
+      const minX = boxes[o]!;
+      const minY = boxes[o + 1]!;
+      const maxX = boxes[o + 2]!;
+      const maxY = boxes[o + 3]!;
+      const shapeId = tree.getUserData(proxyKey >> 2);
       if (type === DYNAMIC) {
-        this.currentType = 0;
-        trees[0].query(box, this.pairQueryCallback);
-        this.currentType = 1;
-        trees[1].query(box, this.pairQueryCallback);
+        this.reportPairs(
+          onPair,
+          known,
+          filters,
+          trees[0],
+          0,
+          proxyKey,
+          shapeId,
+          minX,
+          minY,
+          maxX,
+          maxY,
+        );
+        this.reportPairs(
+          onPair,
+          known,
+          filters,
+          trees[1],
+          1,
+          proxyKey,
+          shapeId,
+          minX,
+          minY,
+          maxX,
+          maxY,
+        );
       }
-      this.currentType = DYNAMIC;
-      trees[2].query(box, this.pairQueryCallback);
+      this.reportPairs(
+        onPair,
+        known,
+        filters,
+        trees[2],
+        DYNAMIC,
+        proxyKey,
+        shapeId,
+        minX,
+        minY,
+        maxX,
+        maxY,
+      );
+    }
+  }
+
+  /**
+   * Reports the pairs of moved proxy `queryKey` (shape `queryShapeId`, fat box given) with the
+   * proxies of `tree` (type `type`) its box overlaps, in the tree's query order: the list
+   * DynamicTree.overlapping makes, read here with no callback per leaf.
+   */
+  private reportPairs(
+    onPair: PairCallback,
+    known: PairSet,
+    filters: Int32Array,
+    tree: DynamicTree,
+    type: number,
+    queryKey: number,
+    queryShapeId: number,
+    minX: number,
+    minY: number,
+    maxX: number,
+    maxY: number,
+  ): void {
+    const count = tree.overlapping(minX, minY, maxX, maxY);
+    if (count === 0) return;
+    const hits = tree.hits;
+    const userData = tree.userData;
+    const movedIndex = this.movedIndex;
+    for (let k = 0; k < count; k++) {
+      const proxyId = hits[k]!;
+      const proxyKey = makeProxyKey(proxyId, type);
+      if (proxyKey === queryKey) continue;
+      // When both proxies moved, both queries find the pair; only the one with the larger key
+      // reports it (Box2D's rule), which keeps each pair to one report.
+      if (proxyKey > queryKey && proxyKey < movedIndex.length && movedIndex[proxyKey] !== -1) {
+        continue;
+      }
+      const shapeId = userData[proxyId]!;
+      const low = shapeId < queryShapeId ? shapeId : queryShapeId;
+      const high = shapeId < queryShapeId ? queryShapeId : shapeId;
+      if (filterRowsAllow(filters, low, high) && !known.hasOrdered(low, high)) onPair(low, high);
     }
   }
 
@@ -290,30 +360,6 @@ export class BroadPhase {
     }
     this.userRayCast = savedCallback;
     this.currentType = savedType;
-  }
-
-  private reportPair(proxyId: number, shapeId: number): boolean {
-    const proxyKey = makeProxyKey(proxyId, this.currentType);
-    const queryKey = this.queryProxyKey;
-    if (proxyKey === queryKey) {
-      return true;
-    }
-    // When both proxies moved, both queries find the pair; only the one with the larger key
-    // reports it (Box2D's rule), which keeps each pair to one report.
-    if (
-      proxyKey > queryKey &&
-      proxyKey < this.movedIndex.length &&
-      this.movedIndex[proxyKey] !== -1
-    ) {
-      return true;
-    }
-    const queryShapeId = this.queryShapeId;
-    if (shapeId < queryShapeId) {
-      this.onPair!(shapeId, queryShapeId);
-    } else {
-      this.onPair!(queryShapeId, shapeId);
-    }
-    return true;
   }
 
   private unbufferMove(proxyKey: number): void {

@@ -76,6 +76,9 @@ export class DynamicTree {
   flags: Uint8Array;
   /** rebuild's items: the leaves and unchanged subtrees under the flagged nodes. */
   private items: Int32Array = new Int32Array(INITIAL_STACK);
+  /** The proxies the last {@link overlapping} found, in its order (grown as needed). */
+  /** @internal */
+  hits: Int32Array = new Int32Array(INITIAL_STACK);
   /** @internal */
   capacity = 0;
   /** @internal */
@@ -397,6 +400,64 @@ export class DynamicTree {
         this.stack[top++] = first;
       }
     }
+  }
+
+  /**
+   * Lists in {@link hits} every proxy whose box overlaps the box (m, world frame; touching
+   * counts), in {@link query}'s order, and returns their count. No callback: the broad phase's
+   * pair search reads the list (issue #30: in tumbler the query with its callback chain was 14 %
+   * of a step). A child is tested before it is pushed, which visits the same leaves in the same
+   * depth-first order with fewer stack moves.
+   */
+  overlapping(minX: number, minY: number, maxX: number, maxY: number): number {
+    const root = this.root;
+    if (root === NULL_NODE) return 0;
+    const boxes = this.boxes;
+    const child1 = this.child1;
+    const child2 = this.child2;
+    let o = 4 * root;
+    if (boxes[o]! > maxX || minX > boxes[o + 2]! || boxes[o + 1]! > maxY || minY > boxes[o + 3]!) {
+      return 0;
+    }
+    let hits = this.hits;
+    let count = 0;
+    let stack = this.stack;
+    const base = this.stackTop;
+    let top = base;
+    stack[top++] = root;
+    while (top > base) {
+      const node = stack[--top]!;
+      const a = child1[node]!;
+      if (a === NULL_NODE) {
+        if (count === hits.length) hits = this.hits = growInt32(hits, 2 * count);
+        hits[count++] = node;
+        continue;
+      }
+      if (top + 2 > stack.length) {
+        this.growStack();
+        stack = this.stack;
+      }
+      const b = child2[node]!;
+      o = 4 * b;
+      if (!(
+        boxes[o]! > maxX ||
+        minX > boxes[o + 2]! ||
+        boxes[o + 1]! > maxY ||
+        minY > boxes[o + 3]!
+      )) {
+        stack[top++] = b;
+      }
+      o = 4 * a;
+      if (!(
+        boxes[o]! > maxX ||
+        minX > boxes[o + 2]! ||
+        boxes[o + 1]! > maxY ||
+        minY > boxes[o + 3]!
+      )) {
+        stack[top++] = a;
+      }
+    }
+    return count;
   }
 
   /** Half the node box's perimeter (see unionPerimeter). */

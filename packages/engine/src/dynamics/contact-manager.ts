@@ -9,7 +9,6 @@ import { GATE_ACTION } from './narrow-phase-scratch.ts';
 import type { Islands } from './island.ts';
 import { jointPreventsCollision } from './joints/joint.ts';
 import type { Shape } from './shape.ts';
-import type { ShapeTable } from './shape-table.ts';
 import {
   BODIES,
   CONTACT_BODIES,
@@ -54,7 +53,8 @@ export class ContactManager {
   /** Contacts made and destroyed since the world was created (the bench's churn counters). */
   made = 0;
   destroyed = 0;
-  private readonly pairs = new PairSet();
+  /** The pairs of shape ids that have a contact (or will, once createPending has run). */
+  readonly pairs: PairSet = new PairSet();
   /**
    * Pairs accepted by addPair, not yet contacts (the first `pendingCount`, already ordered), by
    * shape id: A at 2 n, B at 2 n + 1. Reserved with the pair set before the broad phase reports
@@ -71,7 +71,6 @@ export class ContactManager {
   constructor(
     private readonly islands: Islands,
     private readonly memory: SolverMemory,
-    private readonly table: ShapeTable,
     /** Each body's contact list (shared with the island search). */
     readonly edges: ContactEdges,
     /** The world's bodies by world index, and its shapes by id: what a slot's numbers name. */
@@ -117,26 +116,14 @@ export class ContactManager {
   }
 
   /**
-   * Broad-phase callback: a pair of overlapping fat boxes, by shape id. Most pairs reported
-   * already have a contact (a moved box overlaps what it overlapped before): one hash lookup
-   * settles those before any shape or body is read.
+   * Broad-phase callback: a pair of overlapping fat boxes, by shape id, that the filters allow
+   * and that has no contact. Most pairs found are neither (a moved box overlaps what it overlapped
+   * before; in a ragdoll rain, bones of one ragdoll): the broad phase turns those away itself,
+   * from the filter rows (collision/pair-filter.ts) and then {@link pairs}
+   * (BroadPhase.updatePairs), before any call. A pair with a contact always passes the filters:
+   * a filter change destroys the contacts it forbids.
    */
   addPair(shapeIdA: number, shapeIdB: number, shapesById: readonly (Shape | null)[]): void {
-    // Sensors never make contacts, and filters may forbid the pair (filtersCollide in filter.ts,
-    // from the shape table: offsets in shape-table.ts). Checked first, from numbers: in a ragdoll
-    // rain nine reports in ten are pairs the filters forbid (bones of one ragdoll, feet), and they
-    // are reported again whenever a box moves. A pair with a contact always passes: a filter
-    // change destroys the contacts it forbids.
-    const f = this.table.filters;
-    const fa = shapeIdA * 4;
-    const fb = shapeIdB * 4;
-    if (f[fa + 3] !== 0 || f[fb + 3] !== 0) return;
-    const group = f[fa + 2]!;
-    if (group === f[fb + 2] && group !== 0) {
-      if (group < 0) return;
-    } else if ((f[fa]! & f[fb + 1]!) === 0 || (f[fb]! & f[fa + 1]!) === 0) {
-      return;
-    }
     if (this.pairs.has(shapeIdA, shapeIdB)) return;
     const shapeA = shapesById[shapeIdA]!;
     const shapeB = shapesById[shapeIdB]!;

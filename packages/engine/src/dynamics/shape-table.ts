@@ -1,3 +1,4 @@
+import { FILTER_ROW } from '../collision/pair-filter.ts';
 import type { AABB } from '../geometry/aabb.ts';
 import type { Geometry } from './shape.ts';
 
@@ -25,7 +26,8 @@ import type { Geometry } from './shape.ts';
 // The box and filter offsets are literals in contact-manager.ts, the one file whose loops read
 // them, and in shape.ts's accessors.
 export const SHAPE_STRIDE = 8;
-export const FILTER_STRIDE = 4;
+/** Int32s per filter row (category, mask, group, sensor): the pair filter's row (pair-filter.ts). */
+export const FILTER_STRIDE: number = FILTER_ROW;
 export const MATERIAL_STRIDE = 4;
 
 /** Every shape's boxes, filter, material and geometry, by row (in a world, the shape id). */

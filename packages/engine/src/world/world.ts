@@ -63,7 +63,6 @@ export class World {
   private readonly contactManager = new ContactManager(
     this.islands,
     this.solver.memory,
-    this.shapeTable,
     this.contactEdges,
     this.bodyList,
     this.shapesById,
@@ -382,7 +381,7 @@ export class World {
     let thrown: Thrown | null = null;
     try {
       this.contactManager.reservePairs(this.shapesById.length);
-      this.broadPhase.updatePairs(this.onPair);
+      this.broadPhase.updatePairs(this.onPair, this.contactManager.pairs, this.shapeTable.filters);
       // Room for the whole step in one move of the solver memory, then the new contacts.
       this.solver.reserve(
         this.bodyList.length,

@@ -1,6 +1,8 @@
 import { describe, expect, it } from 'vitest';
 import { BroadPhase } from '../../../src/collision/broad-phase.ts';
 import type { ProxyType } from '../../../src/collision/broad-phase.ts';
+import { FILTER_ROW } from '../../../src/collision/pair-filter.ts';
+import { PairSet } from '../../../src/collision/pair-set.ts';
 import { AABB_MARGIN } from '../../../src/core/constants.ts';
 import { AABB, aabbOverlaps } from '../../../src/geometry/aabb.ts';
 import { RayInput } from '../../../src/geometry/ray.ts';
@@ -12,6 +14,19 @@ function randomBox(random: () => number, extent: number, maxSize: number): AABB 
   return new AABB().set(x, y, x + 0.05 + random() * maxSize, y + 0.05 + random() * maxSize);
 }
 
+/** Filter rows for shape ids below `count`: category 1, every mask bit, no group, no sensor. */
+function openFilters(count: number): Int32Array {
+  const filters = new Int32Array(count * FILTER_ROW);
+  for (let id = 0; id < count; id++) {
+    filters[id * FILTER_ROW] = 1;
+    filters[id * FILTER_ROW + 1] = -1;
+  }
+  return filters;
+}
+
+/** Rows for the few shape ids the small tests below use. */
+const OPEN = openFilters(16);
+
 interface Proxy {
   key: number;
   type: ProxyType;
@@ -20,10 +35,16 @@ interface Proxy {
 
 /**
  * Runs a seeded random scene of static, kinematic and dynamic proxies through several rounds of
- * create, move and destroy, checks every updatePairs against brute force, and returns the
- * reported pairs in order.
+ * create, move and destroy, checks every updatePairs against brute force (less the pairs in
+ * `known` and those `forbidden` says the `filters` rows forbid, which it must not report), and
+ * returns the reported pairs in order.
  */
-function runScene(seed: number): string[] {
+function runScene(
+  seed: number,
+  known = new PairSet(),
+  filters = openFilters(4096),
+  forbidden: (a: number, b: number) => boolean = () => false,
+): string[] {
   const random = makeRandom(seed);
   const broadPhase = new BroadPhase();
   const live = new Map<number, Proxy>();
@@ -96,20 +117,28 @@ function runScene(seed: number): string[] {
         }
         broadPhase.getFatAABB(a.key, fatA);
         broadPhase.getFatAABB(b.key, fatB);
-        if (aabbOverlaps(fatA, fatB)) {
+        if (
+          aabbOverlaps(fatA, fatB) &&
+          !known.has(a.shapeId, b.shapeId) &&
+          !forbidden(a.shapeId, b.shapeId)
+        ) {
           expected.add(`${Math.min(a.shapeId, b.shapeId)},${Math.max(a.shapeId, b.shapeId)}`);
         }
       }
     }
 
     const reported: string[] = [];
-    broadPhase.updatePairs((shapeIdA, shapeIdB) => {
-      expect(shapeIdA).toBeLessThan(shapeIdB);
-      const a = live.get(shapeIdA)!;
-      const b = live.get(shapeIdB)!;
-      expect(a.type === 0 && b.type === 0).toBe(false);
-      reported.push(`${shapeIdA},${shapeIdB}`);
-    });
+    broadPhase.updatePairs(
+      (shapeIdA, shapeIdB) => {
+        expect(shapeIdA).toBeLessThan(shapeIdB);
+        const a = live.get(shapeIdA)!;
+        const b = live.get(shapeIdB)!;
+        expect(a.type === 0 && b.type === 0).toBe(false);
+        reported.push(`${shapeIdA},${shapeIdB}`);
+      },
+      known,
+      filters,
+    );
     expect(new Set(reported).size).toBe(reported.length);
     expect([...reported].sort()).toEqual([...expected].sort());
     expect(broadPhase.movedProxyCount).toBe(0);
@@ -117,6 +146,12 @@ function runScene(seed: number): string[] {
   }
   expect(broadPhase.proxyCount).toBe(live.size);
   return log;
+}
+
+/** The two shape ids of a logged pair "a,b". */
+function pairOf(entry: string): [number, number] {
+  const [a, b] = entry.split(',').map(Number);
+  return [a!, b!];
 }
 
 describe('BroadPhase', () => {
@@ -129,6 +164,35 @@ describe('BroadPhase', () => {
     expect(runScene(5)).toEqual(runScene(5));
   });
 
+  it('does not report the known pairs (those with a contact), and reports the rest in order', () => {
+    const all = runScene(11);
+    const known = new PairSet();
+    const pairs = all.filter((entry) => entry !== '|');
+    for (let i = 0; i < pairs.length; i += 2) {
+      const [a, b] = pairs[i]!.split(',').map(Number);
+      known.add(a!, b!);
+    }
+    expect(known.size).toBeGreaterThan(50);
+    const rest = runScene(11, known);
+    expect(rest).toEqual(all.filter((entry) => entry === '|' || !known.has(...pairOf(entry))));
+    expect(rest.length).toBeLessThan(all.length);
+  });
+
+  it('does not report the pairs the filter rows forbid (sensors, groups), and reports the rest in order', () => {
+    const all = runScene(13);
+    // Shape ids divisible by 4 are sensors; those divisible by 3 share group -1 (never together).
+    const filters = openFilters(4096);
+    for (let id = 0; id < 4096; id++) {
+      if (id % 4 === 0) filters[id * FILTER_ROW + 3] = 1;
+      if (id % 3 === 0) filters[id * FILTER_ROW + 2] = -1;
+    }
+    const forbidden = (a: number, b: number): boolean =>
+      a % 4 === 0 || b % 4 === 0 || (a % 3 === 0 && b % 3 === 0);
+    const rest = runScene(13, new PairSet(), filters, forbidden);
+    expect(rest).toEqual(all.filter((entry) => entry === '|' || !forbidden(...pairOf(entry))));
+    expect(rest.length).toBeLessThan(all.length - 50);
+  });
+
   it('never pairs static with static, even when forced', () => {
     const broadPhase = new BroadPhase();
     const box = new AABB().set(0, 0, 1, 1);
@@ -136,15 +200,23 @@ describe('BroadPhase', () => {
     broadPhase.createProxy(box, 0, 2, true);
     broadPhase.createProxy(box, 1, 3, false);
     let count = 0;
-    broadPhase.updatePairs(() => {
-      count++;
-    });
+    broadPhase.updatePairs(
+      () => {
+        count++;
+      },
+      new PairSet(),
+      OPEN,
+    );
     expect(count).toBe(0);
     broadPhase.createProxy(box, 2, 4, false);
     const pairs: string[] = [];
-    broadPhase.updatePairs((a, b) => {
-      pairs.push(`${a},${b}`);
-    });
+    broadPhase.updatePairs(
+      (a, b) => {
+        pairs.push(`${a},${b}`);
+      },
+      new PairSet(),
+      OPEN,
+    );
     expect(pairs.sort()).toEqual(['1,4', '2,4', '3,4']);
   });
 
@@ -167,7 +239,7 @@ describe('BroadPhase', () => {
     expect(broadPhase.getShapeId(staticKey)).toBe(8);
     expect(broadPhase.getType(dynamicKey)).toBe(2);
     expect(broadPhase.getType(staticKey)).toBe(0);
-    broadPhase.updatePairs(() => undefined);
+    broadPhase.updatePairs(() => undefined, new PairSet(), OPEN);
 
     const half = AABB_MARGIN / 2;
     expect(broadPhase.moveProxy(dynamicKey, new AABB().set(half, half, 1 + half, 1 + half))).toBe(
@@ -189,9 +261,13 @@ describe('BroadPhase', () => {
     const doomed = broadPhase.createProxy(box, 2, 2, false);
     broadPhase.destroyProxy(doomed);
     let count = 0;
-    broadPhase.updatePairs(() => {
-      count++;
-    });
+    broadPhase.updatePairs(
+      () => {
+        count++;
+      },
+      new PairSet(),
+      OPEN,
+    );
     expect(count).toBe(0);
     expect(broadPhase.proxyCount).toBe(1);
   });

@@ -51,7 +51,10 @@ function areaRatio(tree: DynamicTree): number {
   return total / perimeter(state.root);
 }
 
-/** Ten random box queries, each answered with exactly the proxies brute force over `live` finds. */
+/**
+ * Ten random box queries, each answered with exactly the proxies brute force over `live` finds,
+ * and `overlapping` listing them in the query's order.
+ */
 function expectQueriesMatchBruteForce(
   tree: DynamicTree,
   live: ReadonlyMap<number, AABB>,
@@ -65,6 +68,9 @@ function expectQueriesMatchBruteForce(
       return true;
     });
     const expected = [...live].filter(([, box]) => aabbOverlaps(box, query)).map(([id]) => id);
+    // overlapping (the broad phase's pair search) lists the same proxies in the query's order.
+    const count = tree.overlapping(query.minX, query.minY, query.maxX, query.maxY);
+    expect([...tree.hits.subarray(0, count)]).toEqual(found);
     expect(found.sort((a, b) => a - b)).toEqual(expected.sort((a, b) => a - b));
     // overlapsAny (continuous collision's early out) agrees with the full query.
     expect(tree.overlapsAny(query)).toBe(expected.length > 0);
