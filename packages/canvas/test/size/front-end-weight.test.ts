@@ -38,9 +38,10 @@ import {
 // of WebAssembly (engine 55.3 KB); so did the passes between the contact passes and finalize's
 // transform (56.6 KB) and the joints' passes (five kinds: every app now ships their WebAssembly,
 // jointed or not; engine 60.5 KB with all three), and finalize's broad-phase boxes (the kernel's
-// shapeBounds and the escape list's handling; engine 61.4 KB). Lower a ceiling whenever a change
-// makes room.
-const ENGINE_CEILING_BYTES = 61.5 * 1024;
+// shapeBounds and the escape list's handling; engine 61.4 KB), and the room a world foresees
+// for its first step as shapes join (WorldMembership.foresee, SolverMemory.reserveForeseen;
+// engine 61.8 KB). Lower a ceiling whenever a change makes room.
+const ENGINE_CEILING_BYTES = 61.9 * 1024;
 const CANVAS_CEILING_BYTES = 9.5 * 1024;
 const WORKER_PAGE_CEILING_BYTES = 30 * 1024;
 

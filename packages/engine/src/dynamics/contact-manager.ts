@@ -21,10 +21,21 @@ import {
   type SolverMemory,
 } from './solver-memory.ts';
 
-// Pairs reserved per shape before a step finds its pairs: a box in a stack or a pile touches
-// about three others (large_pyramid: 14,950 contacts for 5,050 boxes). More still fit: the set
-// then grows by doubling.
+// Pairs reserved per shape before a step finds its pairs, and contacts foreseen per shape of a
+// body that can move (foreseenContacts): a box in a stack or a pile touches about three others
+// (large_pyramid: 14,950 contacts for 5,050 boxes). More still fit: the rooms then grow by
+// doubling.
 const PAIRS_PER_SHAPE = 3;
+
+/**
+ * The contacts a world foresees for a step, from its `movingShapes` shapes on bodies that are not
+ * static (two static shapes never make a contact): the rule the solver memory is reserved by as
+ * bodies join (Solver.reserveForeseen), so that a world's first step, which makes every contact
+ * of its resting piles at once, finds the room made.
+ */
+export function foreseenContacts(movingShapes: number): number {
+  return PAIRS_PER_SHAPE * movingShapes;
+}
 
 /**
  * Owns the contacts: creates one when the broad phase reports a new pair of overlapping fat boxes,
@@ -151,6 +162,7 @@ export class ContactManager {
    */
   reservePairs(shapeIds: number): void {
     this.pairs.reserve(PAIRS_PER_SHAPE * shapeIds);
+    this.edges.reserve(PAIRS_PER_SHAPE * shapeIds);
     const pending = 2 * PAIRS_PER_SHAPE * shapeIds;
     if (pending > this.pendingIds.length) this.pendingIds = grownInt32(this.pendingIds, pending);
   }

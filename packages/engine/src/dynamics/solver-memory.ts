@@ -333,29 +333,17 @@ export class SolverMemory implements ShapeMemory {
    * (states, body table, constraints) are rebuilt by the step before they are read, so they are
    * not copied, and nor are the rooms past the live bodies and slots: every byte copied lands on
    * a fresh page of the new block, and a fresh page costs a fault (~18 us each on the project's
-   * machines; large_pyramid's first step copied 8,192 bodies' room for 5,050 bodies).
+   * machines; large_pyramid's first step copied 8,192 bodies' room for 5,050 bodies). A world
+   * whose bodies and shapes joined through {@link reserveForeseen} does not move here in its
+   * first step unless it makes more contacts than foreseen.
    */
   reserveStep(stateDoubles: number, bodies: number, contacts: number, liveContacts: number): void {
     const have = this.capacities;
     const toWasm = this.wantsKernel(contacts);
     // Nothing to do in a step like the last one: checked before anything is allocated.
-    if (
-      stateDoubles <= have[STATES]! &&
-      bodies * this.tableStride <= have[BODY_TABLE]! &&
-      bodies <= have[AWAKE_BODIES]! &&
-      bodies <= have[BATCH_BODIES]! &&
-      bodies <= have[FAST_BODIES]! &&
-      contacts * this.contactStride <= have[CONTACT_DATA]! &&
-      contacts <= have[CONSTRAINT_ORDER]! &&
-      toWasm === (this.wasm !== null)
-    ) {
-      return;
-    }
+    if (this.holdsStep(stateDoubles, bodies, contacts) && toWasm === (this.wasm !== null)) return;
     const wanted = have.slice();
-    wanted[STATES] = grown(have[STATES]!, stateDoubles);
-    this.sizeBodies(wanted, bodies);
-    this.sizeContacts(wanted, contacts);
-    this.sizeConstraints(wanted, contacts);
+    this.sizeStep(wanted, stateDoubles, bodies, contacts);
     const keep = new Array<number>(REGIONS).fill(0);
     keep[CONTACT_DATA] = liveContacts * this.contactStride;
     keep[CONTACT_BODIES] = 2 * liveContacts;
@@ -367,23 +355,81 @@ export class SolverMemory implements ShapeMemory {
     this.layout(wanted, toWasm, keep);
   }
 
+  /**
+   * Makes room, while bodies and shapes join a world, for the step the world can foresee: `bodies`
+   * bodies (`stateDoubles` state numbers), `shapes` shapes' rows, and `contacts` contacts and as
+   * many constraints (the contact manager's rule, `foreseenContacts`: a few per shape), in one
+   * move of the block, and touches every page of the new block that such a step writes. Then the
+   * first step neither moves the block (reserveStep finds the room made) nor takes a page fault
+   * on each fresh page it writes (large_pyramid's first step took ~6,300 faults: ~2,000 moving
+   * the block, ~1,900 making its 15,000 contact slots, ~1,900 preparing their constraints).
+   * The world calls it each time its shapes double (WorldMembership), so the block moves O(log n)
+   * times while a world is built and every region grows in the same move.
+   */
+  reserveForeseen(stateDoubles: number, bodies: number, shapes: number, contacts: number): void {
+    const have = this.capacities;
+    if (
+      this.holdsStep(stateDoubles, bodies, contacts) &&
+      bodies * BODY_STRIDE <= have[BODIES]! &&
+      shapes * SHAPE_STRIDE <= have[SHAPE_BOXES]!
+    ) {
+      return;
+    }
+    // Exactly the room asked for (the caller doubles it as the world grows), not rounded up to
+    // a power of two on top: every byte of it is touched.
+    const wanted = have.slice();
+    this.sizeStep(wanted, stateDoubles, bodies, contacts, atLeast);
+    wanted[BODIES] = atLeast(wanted[BODIES]!, bodies * BODY_STRIDE);
+    for (const [region, stride] of SHAPE_REGIONS)
+      wanted[region] = atLeast(wanted[region]!, shapes * stride);
+    this.layout(wanted, this.wasm !== null, undefined, true);
+  }
+
+  /** Whether the block holds a step of `bodies` bodies and `contacts` contacts as it is. */
+  private holdsStep(stateDoubles: number, bodies: number, contacts: number): boolean {
+    const have = this.capacities;
+    return (
+      stateDoubles <= have[STATES]! &&
+      bodies * this.tableStride <= have[BODY_TABLE]! &&
+      bodies <= have[AWAKE_BODIES]! &&
+      bodies <= have[BATCH_BODIES]! &&
+      bodies <= have[FAST_BODIES]! &&
+      contacts * this.contactStride <= have[CONTACT_DATA]! &&
+      contacts <= have[CONSTRAINT_ORDER]!
+    );
+  }
+
+  /** Grows `wanted`'s regions for a step of `bodies` bodies and `contacts` contacts. */
+  private sizeStep(
+    wanted: number[],
+    stateDoubles: number,
+    bodies: number,
+    contacts: number,
+    size: Sizing = grown,
+  ): void {
+    wanted[STATES] = size(wanted[STATES]!, stateDoubles);
+    this.sizeBodies(wanted, bodies, size);
+    this.sizeContacts(wanted, contacts, size);
+    this.sizeConstraints(wanted, contacts, size);
+  }
+
   /** Whether a step of `count` contacts runs on the WebAssembly kernel (once moved, it stays). */
   private wantsKernel(count: number): boolean {
     return this.wasm !== null || (!this.wasmRefused && count >= kernelSettings.minConstraints);
   }
 
   /** Grows `wanted`'s body table and awake lists to hold `count` bodies (no smaller than they are). */
-  private sizeBodies(wanted: number[], count: number): void {
-    wanted[BODY_TABLE] = grown(wanted[BODY_TABLE]!, count * this.tableStride);
-    wanted[AWAKE_BODIES] = grown(wanted[AWAKE_BODIES]!, count);
-    wanted[BATCH_BODIES] = grown(wanted[BATCH_BODIES]!, count);
-    wanted[FAST_BODIES] = grown(wanted[FAST_BODIES]!, count);
+  private sizeBodies(wanted: number[], count: number, size: Sizing = grown): void {
+    wanted[BODY_TABLE] = size(wanted[BODY_TABLE]!, count * this.tableStride);
+    wanted[AWAKE_BODIES] = size(wanted[AWAKE_BODIES]!, count);
+    wanted[BATCH_BODIES] = size(wanted[BATCH_BODIES]!, count);
+    wanted[FAST_BODIES] = size(wanted[FAST_BODIES]!, count);
     this.sizeShockScratch(wanted);
   }
 
   /** Grows `wanted`'s contact regions to hold `count` slots (no smaller than they are). */
-  private sizeContacts(wanted: number[], count: number): void {
-    const slots = grown(wanted[CONTACT_DATA]! / this.contactStride, count);
+  private sizeContacts(wanted: number[], count: number, size: Sizing = grown): void {
+    const slots = size(wanted[CONTACT_DATA]! / this.contactStride, count);
     wanted[CONTACT_DATA] = slots * this.contactStride;
     wanted[CONTACT_BODIES] = 2 * slots;
     wanted[CONTACT_SHAPES] = 2 * slots;
@@ -391,8 +437,8 @@ export class SolverMemory implements ShapeMemory {
   }
 
   /** Grows `wanted`'s constraint regions to hold `count` constraints (no smaller than they are). */
-  private sizeConstraints(wanted: number[], count: number): void {
-    const n = grown(wanted[CONSTRAINT_ORDER]!, count);
+  private sizeConstraints(wanted: number[], count: number, size: Sizing = grown): void {
+    const n = size(wanted[CONSTRAINT_ORDER]!, count);
     wanted[CONSTRAINT_DATA] = n * this.constraintStride;
     wanted[CONSTRAINT_BODIES] = 2 * n;
     wanted[CONSTRAINT_ORDER] = n;
@@ -422,7 +468,12 @@ export class SolverMemory implements ShapeMemory {
    * Lays the regions out at `capacities` (elements each), carrying the first `keep[r]` elements of
    * each region over (default: all that fits).
    */
-  private layout(capacities: number[], toWasm: boolean, keep?: readonly number[]): void {
+  private layout(
+    capacities: number[],
+    toWasm: boolean,
+    keep?: readonly number[],
+    touch = false,
+  ): void {
     const to: number[] = [];
     let total = 0;
     for (let r = 0; r < REGIONS; r++) {
@@ -459,6 +510,16 @@ export class SolverMemory implements ShapeMemory {
       for (let r = 0; r < REGIONS; r++) {
         bytes.set(new Uint8Array(oldBuffer, from[r]!, sizes[r]!), to[r]!);
       }
+      // A fresh block is zeros that the system maps page by page at the first write: a zero
+      // written on each page past what was copied maps them now, the contents unchanged. The
+      // heavy-on-light sweep's regions are left to the steps that use them.
+      if (touch) {
+        for (let r = 0; r < REGIONS; r++) {
+          if (r === SHOCK_SWEEP || r === SHOCK_SCRATCH) continue;
+          const end = to[r]! + capacities[r]! * ELEMENT_BYTES[r]!;
+          for (let p = to[r]! + sizes[r]!; p < end; p = (p | (PAGE_BYTES - 1)) + 1) bytes[p] = 0;
+        }
+      }
     }
     for (let r = 0; r < REGIONS; r++) {
       this.offsets[r] = to[r]!;
@@ -494,6 +555,17 @@ export class SolverMemory implements ShapeMemory {
     this.shapeNext = i32(SHAPE_NEXT);
     this.escapedShapes = f64(ESCAPED_SHAPES);
   }
+}
+
+/** The pages the system maps memory by (4 KiB on the platforms the engine runs on). */
+const PAGE_BYTES = 4096;
+
+/** A region's new capacity from its capacity and the elements needed. */
+type Sizing = (capacity: number, needed: number) => number;
+
+/** No smaller than `capacity`, nor than `needed`. */
+function atLeast(capacity: number, needed: number): number {
+  return Math.max(capacity, needed);
 }
 
 function grown(capacity: number, needed: number): number {

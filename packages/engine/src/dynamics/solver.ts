@@ -166,6 +166,16 @@ export class Solver {
   }
 
   /**
+   * Makes room, as bodies and shapes join, for `bodies` bodies, `shapes` shapes and a step of
+   * `contacts` contacts (the contact manager's foreseenContacts), its pages touched, so that the
+   * world's first step neither moves the solver memory nor faults its pages in
+   * (SolverMemory.reserveForeseen).
+   */
+  reserveForeseen(bodies: number, shapes: number, contacts: number): void {
+    this.memory.reserveForeseen(stateDoubles(bodies), bodies, shapes, contacts);
+  }
+
+  /**
    * Makes room for a step of `bodies` bodies and `contacts` contacts (`liveContacts` of them
    * already in their slots, the rest about to be made) in one move of the solver memory, before
    * the new contacts are made and the narrow phase reads the slots.

@@ -3,7 +3,7 @@ import type { BroadPhase, ProxyType } from '../collision/broad-phase.ts';
 import type { Body } from '../dynamics/body.ts';
 import { B_SHAPE_HEAD } from '../dynamics/body-memory.ts';
 import type { BodyBounds } from '../dynamics/body-bounds.ts';
-import type { ContactManager } from '../dynamics/contact-manager.ts';
+import { foreseenContacts, type ContactManager } from '../dynamics/contact-manager.ts';
 import type { Islands } from '../dynamics/island.ts';
 import type { Joint } from '../dynamics/joints/joint.ts';
 import type { Sensors } from '../dynamics/sensor.ts';
@@ -19,6 +19,15 @@ import type { WorldEvents } from './world.ts';
 // file does it.
 
 const PROXY_TYPE: Record<Body['type'], ProxyType> = { static: 0, kinematic: 1, dynamic: 2 };
+/** The shapes (and bodies) a world's first room is made for: the solver memory's first sizes. */
+const FIRST_FORESEEN_SHAPES = 64;
+/**
+ * How the foreseen room grows once outgrown: by half, not doubling, since every byte of it is
+ * touched (a 5,050-box pyramid would hold room for 8,192 boxes' contacts, 30 MB, at doubling;
+ * 5,538 at this rate). The pages touched while a world is built are then about three times its
+ * last room's, against twice at doubling.
+ */
+const ROOM_GROWTH = 1.5;
 
 /** @internal The parts of a world that joining and leaving change. */
 export interface MembershipParts {
@@ -45,6 +54,14 @@ export class WorldMembership {
   /** Set by each step: the step's lists point at bodies and shapes until released. */
   holdsReferences = false;
   private mostBodies = 0;
+  /**
+   * Shapes in the world whose body was not static when they joined (less those that left so):
+   * what the contacts foreseen for a step are counted from (foreseenContacts). A body's type
+   * changed later only skews this estimate of room, never a result.
+   */
+  private movingShapes = 0;
+  /** The shapes (and bodies) the room last made by {@link foresee} holds. */
+  private foreseenShapes = 0;
   /** A joining shape's fat box, read from the broad phase on its way into the shape table. */
   private readonly fatScratch = new AABB();
   private readonly bodyList: Body[];
@@ -82,6 +99,12 @@ export class WorldMembership {
     body.id = this.nextBodyId++;
     body.worldIndex = this.bodyList.length;
     // The body's numbers join the world's body memory (body-memory.ts): their one copy from now on.
+    const joining = body.shapeList.length;
+    this.foresee(
+      body.worldIndex + 1,
+      this.shapesById.length + joining,
+      this.movingShapes + (body.type === 'static' ? 0 : joining),
+    );
     const memory = this.solver.memory;
     memory.reserveBodies(body.worldIndex + 1);
     body.moveTo(memory.bodyStore, body.worldIndex);
@@ -198,6 +221,11 @@ export class WorldMembership {
 
   /** A shape joins: an id (a freed one first), its row in the shape table, a proxy. */
   createProxy(shape: Shape): void {
+    this.foresee(
+      this.bodyList.length,
+      this.shapesById.length + 1,
+      this.movingShapes + (shape.body.type === 'static' ? 0 : 1),
+    );
     const id = this.freeShapeIds.length > 0 ? this.freeShapeIds.pop()! : this.shapesById.length;
     shape.id = id;
     this.shapesById[id] = shape;
@@ -206,6 +234,28 @@ export class WorldMembership {
     shape.proxyKey = this.broadPhase.createProxy(box, PROXY_TYPE[shape.body.type], id, false);
     shape.setFatBox(this.broadPhase.getFatAABB(shape.proxyKey, this.fatScratch));
     if (shape.sensor) this.sensors.add(shape);
+    if (shape.body.type !== 'static') this.movingShapes++;
+  }
+
+  /**
+   * Makes room, before `shapes` shapes (`moving` of them on bodies that are not static) and
+   * `bodies` bodies are in the world, for the step it can foresee: the pair set, and the solver
+   * memory's bodies, shapes, contacts and constraints (contact-manager.ts's foreseenContacts) in
+   * one move with its pages touched, so the world's first step finds it made. Only when the
+   * shapes (or bodies) outgrow the last room made, which then grows by half: a world built body
+   * by body moves its memory O(log n) times, all regions in the same move, and holds room for at
+   * most 1.5 times its shapes (and as many bodies). The one place the room is reserved while a
+   * world is built.
+   */
+  private foresee(bodies: number, shapes: number, moving: number): void {
+    if (shapes <= this.foreseenShapes && bodies <= this.foreseenShapes) return;
+    let room = Math.max(this.foreseenShapes, FIRST_FORESEEN_SHAPES);
+    while (room < shapes || room < bodies) room = Math.ceil(ROOM_GROWTH * room);
+    this.foreseenShapes = room;
+    this.contactManager.reservePairs(room);
+    // The contacts of as many moving shapes, in the proportion the world has now.
+    const movingRoom = Math.ceil((moving * room) / Math.max(shapes, 1));
+    this.solver.reserveForeseen(room, room, foreseenContacts(movingRoom));
   }
 
   /**
@@ -232,6 +282,7 @@ export class WorldMembership {
   /** A shape leaves: its id is freed and its numbers move to a table of its own. */
   destroyProxy(shape: Shape): void {
     this.sensors.remove(shape);
+    if (shape.body.type !== 'static' && this.movingShapes > 0) this.movingShapes--;
     this.broadPhase.destroyProxy(shape.proxyKey);
     this.shapesById[shape.id] = null;
     this.freeShapeIds.push(shape.id);
