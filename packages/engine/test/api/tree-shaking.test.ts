@@ -2,6 +2,7 @@ import { build, type Metafile } from 'esbuild';
 import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { CONTACT_KERNEL_HEX } from '../../src/dynamics/contact-kernel-binary.ts';
+import { JOINT_KERNEL_HEX } from '../../src/dynamics/joints/joint-kernel-binary.ts';
 
 // An app pays only for what it imports: bundled as an app bundler would (esbuild, minified,
 // tree-shaken), an entry without joints or snapshots carries no snapshot code and no joint kind.
@@ -21,6 +22,9 @@ const JOINT_FILES = [
   'dynamics/joints/weld-joint.ts',
   'dynamics/joints/mouse-joint.ts',
   'dynamics/joints/joint-factories.ts',
+  // The joints' passes, a WebAssembly module of their own, and its loader.
+  'dynamics/joints/joint-kernel-binary.ts',
+  'dynamics/joints/joint-kernel-loader.ts',
 ];
 
 /** Strings only those files hold, as they appear in minified output. */
@@ -118,11 +122,19 @@ describe('tree-shaking: an app without joints or snapshots', () => {
     }
   });
 
+  it("carries no joint passes: their WebAssembly module is the joints' own", () => {
+    expect(library.code, 'the library holds the joints module').toContain(JOINT_KERNEL_HEX);
+    expect(app.code, 'the app holds the joints module').not.toContain(JOINT_KERNEL_HEX);
+    // Nor any part of it: its first bytes past the WebAssembly header (type section) are its own.
+    expect(app.code).not.toContain(JOINT_KERNEL_HEX.slice(16, 80));
+  });
+
   it('is smaller than the library, beside the kernel both ship', () => {
-    // The WebAssembly kernel (hex in the bundle) holds every pass of the step, the joints' among
-    // them, and every world needs it: the JavaScript around it is what tree-shaking can drop.
+    // The WebAssembly contact kernel (hex in the bundle) holds every pass of the step but the
+    // joints', and every world needs it: the JavaScript around it is what tree-shaking can drop.
     const kernel = CONTACT_KERNEL_HEX.length;
     expect(app.code).toContain(CONTACT_KERNEL_HEX);
-    expect(app.code.length - kernel).toBeLessThan((library.code.length - kernel) * 0.8);
+    const rest = library.code.length - kernel - JOINT_KERNEL_HEX.length;
+    expect(app.code.length - kernel).toBeLessThan(rest * 0.8);
   });
 });
