@@ -166,13 +166,20 @@ export function kernelLayout(): string {
   return lines.join('\n') + '\n';
 }
 
+/** AssemblyScript's optimiser settings (Binaryen's -O3: speed first). */
+export const OPTIMIZE: readonly string[] = ['--optimizeLevel', '3', '--shrinkLevel', '0'];
+
 /**
  * Compiles the kernel with the given layout; returns the optimised module's bytes. With `lanes`,
  * wasm/contact-lanes.ts is replaced by LANES true: pairs of independent constraints are solved in
  * f64x2 lanes (SIMD, WebAssembly only); without, the module has no SIMD, for wasm2js.
  */
-async function compile(layout: string, lanes: boolean): Promise<Uint8Array> {
-  return optimised('contact-kernel.ts', kernelSources(layout, lanes), lanes);
+export async function compile(
+  layout: string,
+  lanes: boolean,
+  optimize: readonly string[] = OPTIMIZE,
+): Promise<Uint8Array> {
+  return optimised('contact-kernel.ts', kernelSources(layout, lanes), lanes, optimize);
 }
 
 /** The joints' module (wasm/joint-passes.ts): no SIMD, so one binary serves both builds. */
@@ -217,6 +224,7 @@ async function optimised(
   entry: string,
   sources: Record<string, string>,
   simd: boolean,
+  optimize: readonly string[] = OPTIMIZE,
 ): Promise<Uint8Array> {
   const outputs: Record<string, Uint8Array | string> = {};
   const result = await asc.main(
@@ -224,10 +232,7 @@ async function optimised(
       entry,
       '--outFile',
       'kernel.wasm',
-      '--optimizeLevel',
-      '3',
-      '--shrinkLevel',
-      '0',
+      ...optimize,
       '--runtime',
       'stub',
       '--importMemory',
