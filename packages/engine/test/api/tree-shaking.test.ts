@@ -48,8 +48,9 @@ interface Bundle {
   readonly files: string[];
 }
 
-async function bundle(entry: string): Promise<Bundle> {
+async function bundle(entry: string, production = false): Promise<Bundle> {
   const result = await build({
+    ...(production ? { define: { 'process.env.NODE_ENV': '"production"' } } : {}),
     stdin: { contents: entry, resolveDir: source, sourcefile: 'app.ts', loader: 'ts' },
     bundle: true,
     minify: true,
@@ -73,14 +74,8 @@ async function bundle(entry: string): Promise<Bundle> {
   return { code: result.outputFiles[0]!.text, files };
 }
 
-let library: Bundle;
-let app: Bundle;
-
-beforeAll(async () => {
-  // Every export kept, as a library bundle.
-  library = await bundle(`export * from './index.ts';`);
-  // An app: bodies, walls, forces; no joints, no snapshots.
-  app = await bundle(`
+/** An app: bodies, walls, forces; no joints, no snapshots. */
+const APP = `
     import { Force, World, box, particle, polygon, wall } from './index.ts';
     const world = new World({ gravity: { x: 0, y: 9.81 } });
     world.add(wall({ from: { x: -10, y: 0 }, to: { x: 10, y: 0 } }));
@@ -90,7 +85,19 @@ beforeAll(async () => {
     crate.applyForce({ x: 5, y: 0 }, { duration: 0.5 });
     world.step();
     console.log(crate.position, Force);
-  `);
+`;
+
+let library: Bundle;
+let app: Bundle;
+/** The app as a production build bundles it (process.env.NODE_ENV defined as "production"). */
+let productionApp: Bundle;
+
+beforeAll(async () => {
+  // Every export kept, as a library bundle.
+  library = await bundle(`export * from './index.ts';`);
+  // An app: bodies, walls, forces; no joints, no snapshots.
+  app = await bundle(APP);
+  productionApp = await bundle(APP, true);
 });
 
 describe('tree-shaking: an app without joints or snapshots', () => {
@@ -120,6 +127,15 @@ describe('tree-shaking: an app without joints or snapshots', () => {
       expect(library.code, `the library holds '${marker}'`).toContain(marker);
       expect(app.code, `the app holds '${marker}'`).not.toContain(marker);
     }
+  });
+
+  it('carries the size warning in development builds only', () => {
+    // Its message, as the development app (NODE_ENV not defined) holds it.
+    const marker = 'in development builds only';
+    expect(app.code).toContain(marker);
+    expect(app.files).toContain('world/size-warning.ts');
+    expect(productionApp.code).not.toContain(marker);
+    expect(productionApp.files).not.toContain('world/size-warning.ts');
   });
 
   it("carries no joint passes: their WebAssembly module is the joints' own", () => {
