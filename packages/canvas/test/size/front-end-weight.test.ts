@@ -39,9 +39,10 @@ import {
 // transform (56.6 KB) and the joints' passes (five kinds: every app now ships their WebAssembly,
 // jointed or not; engine 60.5 KB with all three), and finalize's broad-phase boxes (the kernel's
 // shapeBounds and the escape list's handling; engine 61.4 KB). The joints' passes then became a
-// WebAssembly module of their own that only the joint classes bring (engine 57.6 KB). Lower a
-// ceiling whenever a change makes room.
-const ENGINE_CEILING_BYTES = 57.7 * 1024;
+// WebAssembly module of their own that only the joint classes bring (engine 57.6 KB), and a
+// production bundle dropped the size warning (57.3 KB). Lower a ceiling whenever a change makes
+// room.
+const ENGINE_CEILING_BYTES = 57.4 * 1024;
 const CANVAS_CEILING_BYTES = 9.5 * 1024;
 const WORKER_PAGE_CEILING_BYTES = 30 * 1024;
 
