@@ -14,8 +14,13 @@
 //    keeps every f64 operation as the same IEEE double operation in the same order, so both
 //    builds give bit-identical worlds (test/unit/dynamics/contact-kernel.test.ts checks every
 //    sample).
+// 4. src/dynamics/joints/joint-kernel-binary.ts and joint-kernel-javascript.ts: the joints' passes
+//    (wasm/joint-passes.ts) as a second module of their own over the same imported memory and the
+//    same layout, in both builds. Only the joints' code references them, so an app that imports
+//    no joint class ships neither (issue #30, target 5); a world instantiates it when it first
+//    solves a joint (joints/joint-kernel-loader.ts).
 //
-// `npm run build:kernel -w @physical/engine` writes all three; the test
+// `npm run build:kernel -w @physical/engine` writes all five; the test
 // `contact-kernel-artefacts-are-current` builds them again and fails if a committed file differs.
 import asc from 'assemblyscript/asc';
 import binaryen from 'binaryen';
@@ -83,6 +88,10 @@ export const KERNEL_JOINT_PASSES = file('wasm/joint-passes.ts');
 export const KERNEL_SHAPE_BOUNDS = file('wasm/shape-bounds.ts');
 export const KERNEL_BINARY_MODULE = file('src/dynamics/contact-kernel-binary.ts');
 export const KERNEL_JAVASCRIPT_MODULE = file('src/dynamics/contact-kernel-javascript.ts');
+export const JOINT_KERNEL_BINARY_MODULE = file('src/dynamics/joints/joint-kernel-binary.ts');
+export const JOINT_KERNEL_JAVASCRIPT_MODULE = file(
+  'src/dynamics/joints/joint-kernel-javascript.ts',
+);
 
 /** Constants the kernel computes with as doubles; every other one is an i32 offset or count. */
 const DOUBLES = new Set([
@@ -157,13 +166,35 @@ export function kernelLayout(): string {
   return lines.join('\n') + '\n';
 }
 
+/** AssemblyScript's optimiser settings (Binaryen's -O3: speed first). */
+export const OPTIMIZE: readonly string[] = ['--optimizeLevel', '3', '--shrinkLevel', '0'];
+
 /**
  * Compiles the kernel with the given layout; returns the optimised module's bytes. With `lanes`,
  * wasm/contact-lanes.ts is replaced by LANES true: pairs of independent constraints are solved in
  * f64x2 lanes (SIMD, WebAssembly only); without, the module has no SIMD, for wasm2js.
  */
-async function compile(layout: string, lanes: boolean): Promise<Uint8Array> {
+export async function compile(
+  layout: string,
+  lanes: boolean,
+  optimize: readonly string[] = OPTIMIZE,
+): Promise<Uint8Array> {
+  return optimised('contact-kernel.ts', kernelSources(layout, lanes), lanes, optimize);
+}
+
+/** The joints' module (wasm/joint-passes.ts): no SIMD, so one binary serves both builds. */
+async function compileJoints(layout: string): Promise<Uint8Array> {
   const sources: Record<string, string> = {
+    'joint-passes.ts': readFileSync(KERNEL_JOINT_PASSES, 'utf8'),
+    'load-store.ts': readFileSync(KERNEL_LOAD_STORE, 'utf8'),
+    'contact-layout.ts': layout,
+  };
+  return optimised('joint-passes.ts', sources, false);
+}
+
+/** The main module's sources, by the names its imports use. */
+function kernelSources(layout: string, lanes: boolean): Record<string, string> {
+  return {
     'contact-kernel.ts': readFileSync(KERNEL_SOURCE, 'utf8'),
     'body-passes.ts': readFileSync(KERNEL_BODY_PASSES, 'utf8'),
     'load-store.ts': readFileSync(KERNEL_LOAD_STORE, 'utf8'),
@@ -178,28 +209,36 @@ async function compile(layout: string, lanes: boolean): Promise<Uint8Array> {
     'shape-bounds.ts': readFileSync(KERNEL_SHAPE_BOUNDS, 'utf8'),
     '../src/math/trigonometry.ts': readFileSync(ENGINE_TRIGONOMETRY, 'utf8'),
     '../src/math/hypot.ts': readFileSync(ENGINE_HYPOT, 'utf8'),
-    'joint-passes.ts': readFileSync(KERNEL_JOINT_PASSES, 'utf8'),
     'contact-layout.ts': layout,
     'contact-lanes.ts': lanes
       ? 'export const LANES: bool = true;\n'
       : readFileSync(KERNEL_LANES, 'utf8'),
   };
+}
+
+/**
+ * Compiles `entry` among `sources` (AssemblyScript over the imported memory, no runtime);
+ * returns the optimised module's bytes; `simd` enables the f64x2 lanes.
+ */
+async function optimised(
+  entry: string,
+  sources: Record<string, string>,
+  simd: boolean,
+  optimize: readonly string[] = OPTIMIZE,
+): Promise<Uint8Array> {
   const outputs: Record<string, Uint8Array | string> = {};
   const result = await asc.main(
     [
-      'contact-kernel.ts',
+      entry,
       '--outFile',
       'kernel.wasm',
-      '--optimizeLevel',
-      '3',
-      '--shrinkLevel',
-      '0',
+      ...optimize,
       '--runtime',
       'stub',
       '--importMemory',
       '--noExportMemory',
       '--noAssert',
-      ...(lanes ? ['--enable', 'simd'] : []),
+      ...(simd ? ['--enable', 'simd'] : []),
     ],
     {
       readFile: (name: string) => sources[name] ?? null,
@@ -211,7 +250,7 @@ async function compile(layout: string, lanes: boolean): Promise<Uint8Array> {
   );
   const binary = outputs['kernel.wasm'];
   if (result.error || !(binary instanceof Uint8Array)) {
-    throw new Error(`contact kernel does not compile:\n${result.stderr.toString()}`);
+    throw new Error(`${entry} does not compile:\n${result.stderr.toString()}`);
   }
   return binary;
 }
@@ -268,15 +307,53 @@ async function kernelJavaScriptModule(factory: string): Promise<string> {
   return prettier.format(text, { ...options, filepath: KERNEL_JAVASCRIPT_MODULE });
 }
 
+/** The joints' module as hex, as kernelBinaryModule writes the main one. */
+export function jointKernelBinaryModule(hex: string): string {
+  return [
+    '// Generated by `npm run build:kernel -w @physical/engine` from wasm/joint-passes.ts',
+    "// (AssemblyScript): the joints' passes as a WebAssembly module of their own over the",
+    "// contact kernel's memory, hex-encoded; only the joints' code imports it. Do not edit;",
+    '// change the source and run the script.',
+    'export const JOINT_KERNEL_HEX =',
+    `  '${hex}';`,
+    '',
+  ].join('\n');
+}
+
+/** The joints' module as JavaScript (wasm2js), formatted as the repository's Prettier writes it. */
+async function jointKernelJavaScriptModule(factory: string): Promise<string> {
+  const text = [
+    '// Generated by `npm run build:kernel -w @physical/engine` from wasm/joint-passes.ts: the',
+    "// joints' WebAssembly module turned into JavaScript by Binaryen's wasm2js, for hosts where",
+    '// WebAssembly cannot compile and worlds created with `kernel: "javascript"`. Do not edit;',
+    '// change the source and run the script.',
+    '/* eslint-disable */',
+    '// @ts-nocheck',
+    "import type { KernelImports } from '../contact-kernel.ts';",
+    "import type { JointPasses } from './joint-kernel.ts';",
+    '',
+    factory,
+    '',
+    "/** The joints' passes over `imports.env.memory.buffer`, as JavaScript. */",
+    'export const createJavaScriptJointKernel: (imports: KernelImports) => JointPasses = asmFunc;',
+    '',
+  ].join('\n');
+  const options = await prettier.resolveConfig(JOINT_KERNEL_JAVASCRIPT_MODULE);
+  return prettier.format(text, { ...options, filepath: JOINT_KERNEL_JAVASCRIPT_MODULE });
+}
+
 /** Every generated file, path to text, built afresh from the sources. */
 export async function buildContactKernel(): Promise<Record<string, string>> {
   const layout = kernelLayout();
   const binary = await compile(layout, true);
   const scalar = await compile(layout, false);
+  const joints = await compileJoints(layout);
   return {
     [KERNEL_LAYOUT]: layout,
     [KERNEL_BINARY_MODULE]: kernelBinaryModule(Buffer.from(binary).toString('hex')),
     [KERNEL_JAVASCRIPT_MODULE]: await kernelJavaScriptModule(toJavaScript(scalar)),
+    [JOINT_KERNEL_BINARY_MODULE]: jointKernelBinaryModule(Buffer.from(joints).toString('hex')),
+    [JOINT_KERNEL_JAVASCRIPT_MODULE]: await jointKernelJavaScriptModule(toJavaScript(joints)),
   };
 }
 

@@ -141,19 +141,8 @@ export { collidePair } from './update-manifold';
 // The broad-phase boxes of finalize: shape-bounds.ts.
 export { shapeBounds } from './shape-bounds';
 
-// The joints' passes (warm start and solve per kind): joint-passes.ts.
-export {
-  solveDistance,
-  solveMouse,
-  solvePrismatic,
-  solveRevolute,
-  solveWeld,
-  warmStartDistance,
-  warmStartMouse,
-  warmStartPrismatic,
-  warmStartRevolute,
-  warmStartWeld,
-} from './joint-passes';
+// The joints' passes (joint-passes.ts) are a module of their own over the same memory, built by
+// the same script: apps without joints do not ship them.
 
 // The constraints are stored in pairs, their numbers interleaved: number k of constraint i is at
 // double (i >> 1) * 2 * STRIDE + 2 * k + (i & 1) of the constraint region, so constraints 2m and

@@ -1,7 +1,9 @@
 // The joints' passes of a sub-step: warm start and solve (with or without the position bias) per
-// joint kind, over the step's active joints of the kind. Like the contact and body passes
-// (contact-kernel.ts exports these too), this is their one source, built to WebAssembly and by
-// wasm2js to JavaScript (scripts/contact-kernel-build.ts), in AssemblyScript's portable subset:
+// joint kind, over the step's active joints of the kind. Like the contact and body passes, this
+// is their one source, built to WebAssembly and by wasm2js to JavaScript
+// (scripts/contact-kernel-build.ts) as a module of its own over the same imported memory, which
+// only the joints' code loads (src/dynamics/joints/joint-kernel-loader.ts), in AssemblyScript's
+// portable subset:
 // f64 and i32 arithmetic over the solver memory at the byte offsets the solver passes in
 // (src/dynamics/solver-memory.ts), no allocation.
 //

@@ -29,7 +29,7 @@ interface WasmApi {
 }
 
 /** The kernel's exports; pointers are byte offsets into its memory. */
-export interface ContactKernel extends BodyPasses, NarrowPhase, JointPasses {
+export interface ContactKernel extends BodyPasses, NarrowPhase {
   /** prepareContacts; returns the number of constraints. */
   prepare(
     contactData: number,
@@ -311,99 +311,6 @@ export interface NarrowPhase {
   ): void;
 }
 
-/**
- * The joints' passes (wasm/joint-passes.ts), built into the same module: per kind, over active
- * joints `from` to `to` of the JOINT_ACTIVE list at `active` (record offset, state A, state B),
- * their records in JOINT_RECORDS at `records`, the states at `states`. A solve's step numbers:
- * the sub-step and its inverse, the joint softness (bias rate, mass and impulse scale), the
- * largest bias speed, and `useBias` 1 (solve) or 0 (relax).
- */
-export interface JointPasses {
-  warmStartRevolute(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-  ): void;
-  solveRevolute(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-    h: number,
-    inverseH: number,
-    biasRate: number,
-    massScale: number,
-    impulseScale: number,
-    maxBiasSpeed: number,
-    useBias: number,
-  ): void;
-  warmStartPrismatic(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-  ): void;
-  solvePrismatic(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-    h: number,
-    inverseH: number,
-    biasRate: number,
-    massScale: number,
-    impulseScale: number,
-    useBias: number,
-  ): void;
-  warmStartDistance(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-  ): void;
-  solveDistance(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-    h: number,
-    inverseH: number,
-    biasRate: number,
-    massScale: number,
-    impulseScale: number,
-    useBias: number,
-  ): void;
-  warmStartMouse(records: number, active: number, states: number, from: number, to: number): void;
-  solveMouse(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-    h: number,
-    useBias: number,
-  ): void;
-  warmStartWeld(records: number, active: number, states: number, from: number, to: number): void;
-  solveWeld(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-    biasRate: number,
-    massScale: number,
-    impulseScale: number,
-    useBias: number,
-  ): void;
-}
-
 /** Creates the JavaScript build of the kernel over `imports.env.memory` (wasm2js's factory). */
 export type JavaScriptKernelFactory = (imports: KernelImports) => ContactKernel;
 
@@ -416,7 +323,7 @@ export function registerJavaScriptContactKernel(factory: JavaScriptKernelFactory
 }
 
 /** The fix every missing-build message names. */
-const IMPORT_IT =
+export const IMPORT_IT =
   "import '@physical/engine/javascript-kernel' once, before creating the world (the JavaScript build of the contact passes)";
 
 const wasm = (globalThis as { WebAssembly?: WasmApi }).WebAssembly;
@@ -428,10 +335,15 @@ function nibble(code: number): number {
   return code < 58 ? code - 48 : code - 87;
 }
 
-function compile(): object | null {
+/**
+ * A WebAssembly module compiled from `hex` (its bytes, lower-case hex), or null where WebAssembly
+ * cannot compile it (no WebAssembly, a Content-Security-Policy without 'wasm-unsafe-eval', or no
+ * SIMD for the contact kernel's lanes). The joints' module (joints/joint-kernel-loader.ts)
+ * compiles with it too.
+ */
+export function compileHex(hex: string): object | null {
   if (wasm === undefined) return null;
   try {
-    const hex = CONTACT_KERNEL_HEX;
     const bytes = new Uint8Array(hex.length / 2);
     // Character codes, not parseInt(substr): this loop runs once, cold, and parseInt over 17,000
     // two-letter strings took 17-26 ms of a 5,000-box pyramid's first step (CPU time, shared
@@ -449,6 +361,12 @@ function compile(): object | null {
   }
 }
 
+/** An instance of a compiled module over `memory` (a WebAssembly memory): its exports. */
+export function instantiate(module: object, memory: WasmMemory): object {
+  // Only called with a module compileHex made, so the API is there.
+  return new (wasm as WasmApi).Instance(module, { env: { memory } }).exports;
+}
+
 const PAGE = 65536;
 
 /**
@@ -463,12 +381,15 @@ export function createContactKernel(
   webAssembly: boolean,
 ): { memory: WasmMemory; kernel: ContactKernel; webAssembly: boolean } {
   if (webAssembly) {
-    if (compiled === undefined) compiled = compile();
+    if (compiled === undefined) compiled = compileHex(CONTACT_KERNEL_HEX);
     if (compiled !== null && wasm !== undefined) {
       try {
         const memory = new wasm.Memory({ initial: Math.ceil(bytes / PAGE) });
-        const instance = new wasm.Instance(compiled, { env: { memory } });
-        return { memory, kernel: instance.exports as ContactKernel, webAssembly: true };
+        return {
+          memory,
+          kernel: instantiate(compiled, memory) as ContactKernel,
+          webAssembly: true,
+        };
       } catch {
         // Out of address space for another memory: the JavaScript build, if registered.
       }

@@ -12,6 +12,7 @@ import {
 } from './shape-table.ts';
 import { SWEEP_STRIDE } from './shock-sweep-layout.ts';
 import { ESCAPE_STRIDE } from './shape-escapes.ts';
+import type { JointPasses } from './joints/joint-kernel.ts';
 import { JOINT_RECORD_STRIDE } from './joints/joint-record.ts';
 import { JointStore } from './joints/joint-store.ts';
 
@@ -154,6 +155,13 @@ export class SolverMemory implements ShapeMemory {
   readonly offsets: number[] = new Array<number>(REGIONS).fill(0);
   /** The contact passes over this memory: WebAssembly once it has moved there, else JavaScript. */
   kernel!: ContactKernel;
+  /**
+   * The joints' passes over this memory (a module of their own, joints/joint-kernel.ts), in the
+   * kernel's build; set by {@link loadJoints} before the first joint is solved.
+   */
+  joints!: JointPasses;
+  /** What loads the joints' passes over a memory, once a joint was solved here (else null). */
+  private jointLoader: ((memory: WasmMemory, webAssembly: boolean) => JointPasses) | null = null;
   private wasm: WasmMemory | null = null;
   /** Set when WebAssembly could not be had or is not wanted: stay on the ArrayBuffer, do not ask. */
   private wasmRefused = false;
@@ -246,6 +254,17 @@ export class SolverMemory implements ShapeMemory {
     if (total >= this.buffer.byteLength / 2) return; // not worth a move
     this.wasm = null;
     this.layout(wanted, this.wantsKernel(contacts));
+  }
+
+  /**
+   * Loads the joints' passes over this memory with `loader` (joints/joint-kernel-loader.ts, which
+   * only the joints' batches import, so apps without joints do not ship the module), and over
+   * every memory after it. Called when a world first solves a joint; nothing once loaded.
+   */
+  loadJoints(loader: (memory: WasmMemory, webAssembly: boolean) => JointPasses): void {
+    if (this.jointLoader !== null) return;
+    this.jointLoader = loader;
+    this.joints = loader(this.wasm ?? { buffer: this.buffer }, this.wasm !== null);
   }
 
   /** Whether the passes run as WebAssembly now (else the kernel's JavaScript build). */
@@ -492,6 +511,9 @@ export class SolverMemory implements ShapeMemory {
       if (toWasm && !created.webAssembly) this.wasmRefused = true;
       this.wasm = created.webAssembly ? created.memory : null;
       this.kernel = created.kernel;
+      if (this.jointLoader !== null) {
+        this.joints = this.jointLoader(created.memory, created.webAssembly);
+      }
       buffer = created.memory.buffer;
     }
     const bytes = new Uint8Array(buffer);

@@ -2,6 +2,7 @@ import { build, type Metafile } from 'esbuild';
 import { fileURLToPath } from 'node:url';
 import { beforeAll, describe, expect, it } from 'vitest';
 import { CONTACT_KERNEL_HEX } from '../../src/dynamics/contact-kernel-binary.ts';
+import { JOINT_KERNEL_HEX } from '../../src/dynamics/joints/joint-kernel-binary.ts';
 
 // An app pays only for what it imports: bundled as an app bundler would (esbuild, minified,
 // tree-shaken), an entry without joints or snapshots carries no snapshot code and no joint kind.
@@ -21,6 +22,9 @@ const JOINT_FILES = [
   'dynamics/joints/weld-joint.ts',
   'dynamics/joints/mouse-joint.ts',
   'dynamics/joints/joint-factories.ts',
+  // The joints' passes, a WebAssembly module of their own, and its loader.
+  'dynamics/joints/joint-kernel-binary.ts',
+  'dynamics/joints/joint-kernel-loader.ts',
 ];
 
 /** Strings only those files hold, as they appear in minified output. */
@@ -44,8 +48,9 @@ interface Bundle {
   readonly files: string[];
 }
 
-async function bundle(entry: string): Promise<Bundle> {
+async function bundle(entry: string, production = false): Promise<Bundle> {
   const result = await build({
+    ...(production ? { define: { 'process.env.NODE_ENV': '"production"' } } : {}),
     stdin: { contents: entry, resolveDir: source, sourcefile: 'app.ts', loader: 'ts' },
     bundle: true,
     minify: true,
@@ -69,14 +74,8 @@ async function bundle(entry: string): Promise<Bundle> {
   return { code: result.outputFiles[0]!.text, files };
 }
 
-let library: Bundle;
-let app: Bundle;
-
-beforeAll(async () => {
-  // Every export kept, as a library bundle.
-  library = await bundle(`export * from './index.ts';`);
-  // An app: bodies, walls, forces; no joints, no snapshots.
-  app = await bundle(`
+/** An app: bodies, walls, forces; no joints, no snapshots. */
+const APP = `
     import { Force, World, box, particle, polygon, wall } from './index.ts';
     const world = new World({ gravity: { x: 0, y: 9.81 } });
     world.add(wall({ from: { x: -10, y: 0 }, to: { x: 10, y: 0 } }));
@@ -86,7 +85,19 @@ beforeAll(async () => {
     crate.applyForce({ x: 5, y: 0 }, { duration: 0.5 });
     world.step();
     console.log(crate.position, Force);
-  `);
+`;
+
+let library: Bundle;
+let app: Bundle;
+/** The app as a production build bundles it (process.env.NODE_ENV defined as "production"). */
+let productionApp: Bundle;
+
+beforeAll(async () => {
+  // Every export kept, as a library bundle.
+  library = await bundle(`export * from './index.ts';`);
+  // An app: bodies, walls, forces; no joints, no snapshots.
+  app = await bundle(APP);
+  productionApp = await bundle(APP, true);
 });
 
 describe('tree-shaking: an app without joints or snapshots', () => {
@@ -118,11 +129,28 @@ describe('tree-shaking: an app without joints or snapshots', () => {
     }
   });
 
+  it('carries the size warning in development builds only', () => {
+    // Its message, as the development app (NODE_ENV not defined) holds it.
+    const marker = 'in development builds only';
+    expect(app.code).toContain(marker);
+    expect(app.files).toContain('world/size-warning.ts');
+    expect(productionApp.code).not.toContain(marker);
+    expect(productionApp.files).not.toContain('world/size-warning.ts');
+  });
+
+  it("carries no joint passes: their WebAssembly module is the joints' own", () => {
+    expect(library.code, 'the library holds the joints module').toContain(JOINT_KERNEL_HEX);
+    expect(app.code, 'the app holds the joints module').not.toContain(JOINT_KERNEL_HEX);
+    // Nor any part of it: its first bytes past the WebAssembly header (type section) are its own.
+    expect(app.code).not.toContain(JOINT_KERNEL_HEX.slice(16, 80));
+  });
+
   it('is smaller than the library, beside the kernel both ship', () => {
-    // The WebAssembly kernel (hex in the bundle) holds every pass of the step, the joints' among
-    // them, and every world needs it: the JavaScript around it is what tree-shaking can drop.
+    // The WebAssembly contact kernel (hex in the bundle) holds every pass of the step but the
+    // joints', and every world needs it: the JavaScript around it is what tree-shaking can drop.
     const kernel = CONTACT_KERNEL_HEX.length;
     expect(app.code).toContain(CONTACT_KERNEL_HEX);
-    expect(app.code.length - kernel).toBeLessThan((library.code.length - kernel) * 0.8);
+    const rest = library.code.length - kernel - JOINT_KERNEL_HEX.length;
+    expect(app.code.length - kernel).toBeLessThan(rest * 0.8);
   });
 });

@@ -270,7 +270,7 @@ export class DistanceJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
 export class DistanceBatch extends JointBatch {
   warmStart(memory: SolverMemory): void {
     const o = memory.offsets;
-    memory.kernel.warmStartDistance(
+    memory.joints.warmStartDistance(
       o[JOINT_RECORDS]!,
       o[JOINT_ACTIVE]!,
       o[STATES]!,
@@ -282,7 +282,7 @@ export class DistanceBatch extends JointBatch {
   solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
     const o = memory.offsets;
     const soft = step.softness;
-    memory.kernel.solveDistance(
+    memory.joints.solveDistance(
       o[JOINT_RECORDS]!,
       o[JOINT_ACTIVE]!,
       o[STATES]!,

@@ -1,4 +1,5 @@
 import type { SolverMemory } from '../solver-memory.ts';
+import { createJointKernel } from './joint-kernel-loader.ts';
 import type { JointStep } from './joint.ts';
 import {
   REACTION_ANGULAR,
@@ -22,6 +23,15 @@ export abstract class JointBatch {
   start = 0;
   /** Active joints of the kind this step. */
   active = 0;
+
+  /**
+   * Loads the joints' passes (a module of their own, joint-kernel-loader.ts) over `memory`, when
+   * the world makes its first batch: only the joints' code references the module, so apps without
+   * joints do not ship it.
+   */
+  load(memory: SolverMemory): void {
+    memory.loadJoints(createJointKernel);
+  }
 
   /** Every active joint of the kind (the kernel's pass, wasm/joint-passes.ts): the warm start with last step's impulses. */
   abstract warmStart(memory: SolverMemory): void;

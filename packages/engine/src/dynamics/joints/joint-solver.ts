@@ -81,6 +81,7 @@ export class JointSolver {
       let batch = this.batchOf[joint.type];
       if (batch === undefined) {
         batch = joint.createBatch();
+        batch.load(memory);
         this.batchOf[joint.type] = batch;
         batches.push(batch);
       }

@@ -233,7 +233,7 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
 export class MouseBatch extends JointBatch {
   warmStart(memory: SolverMemory): void {
     const o = memory.offsets;
-    memory.kernel.warmStartMouse(
+    memory.joints.warmStartMouse(
       o[JOINT_RECORDS]!,
       o[JOINT_ACTIVE]!,
       o[STATES]!,
@@ -244,7 +244,7 @@ export class MouseBatch extends JointBatch {
 
   solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
     const o = memory.offsets;
-    memory.kernel.solveMouse(
+    memory.joints.solveMouse(
       o[JOINT_RECORDS]!,
       o[JOINT_ACTIVE]!,
       o[STATES]!,

@@ -24,7 +24,7 @@ export const STRIDE: number = SPRING_MOTOR_LIMIT_END + 6;
 export class PrismaticBatch extends JointBatch {
   warmStart(memory: SolverMemory): void {
     const o = memory.offsets;
-    memory.kernel.warmStartPrismatic(
+    memory.joints.warmStartPrismatic(
       o[JOINT_RECORDS]!,
       o[JOINT_ACTIVE]!,
       o[STATES]!,
@@ -36,7 +36,7 @@ export class PrismaticBatch extends JointBatch {
   solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
     const o = memory.offsets;
     const soft = step.softness;
-    memory.kernel.solvePrismatic(
+    memory.joints.solvePrismatic(
       o[JOINT_RECORDS]!,
       o[JOINT_ACTIVE]!,
       o[STATES]!,

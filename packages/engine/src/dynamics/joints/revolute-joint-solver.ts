@@ -22,7 +22,7 @@ export const STRIDE: number = SPRING_MOTOR_LIMIT_END + 4;
 export class RevoluteBatch extends JointBatch {
   warmStart(memory: SolverMemory): void {
     const o = memory.offsets;
-    memory.kernel.warmStartRevolute(
+    memory.joints.warmStartRevolute(
       o[JOINT_RECORDS]!,
       o[JOINT_ACTIVE]!,
       o[STATES]!,
@@ -34,7 +34,7 @@ export class RevoluteBatch extends JointBatch {
   solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
     const o = memory.offsets;
     const soft = step.softness;
-    memory.kernel.solveRevolute(
+    memory.joints.solveRevolute(
       o[JOINT_RECORDS]!,
       o[JOINT_ACTIVE]!,
       o[STATES]!,

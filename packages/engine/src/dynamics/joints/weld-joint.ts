@@ -168,7 +168,7 @@ export class WeldJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
 export class WeldBatch extends JointBatch {
   warmStart(memory: SolverMemory): void {
     const o = memory.offsets;
-    memory.kernel.warmStartWeld(
+    memory.joints.warmStartWeld(
       o[JOINT_RECORDS]!,
       o[JOINT_ACTIVE]!,
       o[STATES]!,
@@ -180,7 +180,7 @@ export class WeldBatch extends JointBatch {
   solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
     const o = memory.offsets;
     const soft = step.softness;
-    memory.kernel.solveWeld(
+    memory.joints.solveWeld(
       o[JOINT_RECORDS]!,
       o[JOINT_ACTIVE]!,
       o[STATES]!,

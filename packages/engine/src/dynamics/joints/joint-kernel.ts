@@ -1,0 +1,117 @@
+import type { KernelImports } from '../contact-kernel.ts';
+
+// The joints' passes are a second module beside the contact kernel (issue #30, target 5): an app
+// that imports no joint class ships neither of its builds. This file is what both builds and the
+// `@physical/engine/javascript-kernel` entry share: the passes' signatures and the slot the
+// entry registers the JavaScript build in. The WebAssembly build is loaded by
+// joint-kernel-loader.ts, which only the joints' batches import.
+
+/**
+ * The joints' passes (wasm/joint-passes.ts), a module of their own over the contact kernel's
+ * memory (joint-kernel-binary.ts, and joint-kernel-javascript.ts by wasm2js): per kind, over active
+ * joints `from` to `to` of the JOINT_ACTIVE list at `active` (record offset, state A, state B),
+ * their records in JOINT_RECORDS at `records`, the states at `states`. A solve's step numbers:
+ * the sub-step and its inverse, the joint softness (bias rate, mass and impulse scale), the
+ * largest bias speed, and `useBias` 1 (solve) or 0 (relax).
+ */
+export interface JointPasses {
+  warmStartRevolute(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+  ): void;
+  solveRevolute(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    h: number,
+    inverseH: number,
+    biasRate: number,
+    massScale: number,
+    impulseScale: number,
+    maxBiasSpeed: number,
+    useBias: number,
+  ): void;
+  warmStartPrismatic(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+  ): void;
+  solvePrismatic(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    h: number,
+    inverseH: number,
+    biasRate: number,
+    massScale: number,
+    impulseScale: number,
+    useBias: number,
+  ): void;
+  warmStartDistance(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+  ): void;
+  solveDistance(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    h: number,
+    inverseH: number,
+    biasRate: number,
+    massScale: number,
+    impulseScale: number,
+    useBias: number,
+  ): void;
+  warmStartMouse(records: number, active: number, states: number, from: number, to: number): void;
+  solveMouse(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    h: number,
+    useBias: number,
+  ): void;
+  warmStartWeld(records: number, active: number, states: number, from: number, to: number): void;
+  solveWeld(
+    records: number,
+    active: number,
+    states: number,
+    from: number,
+    to: number,
+    biasRate: number,
+    massScale: number,
+    impulseScale: number,
+    useBias: number,
+  ): void;
+}
+
+/** Creates the JavaScript build of the joints' passes over `imports.env.memory` (wasm2js). */
+export type JavaScriptJointKernelFactory = (imports: KernelImports) => JointPasses;
+
+/** The JavaScript build, once `@physical/engine/javascript-kernel` registered it. */
+let javaScriptJointKernel: JavaScriptJointKernelFactory | null = null;
+
+/** Makes the joints' JavaScript build available to every world (the javascript-kernel entry). */
+export function registerJavaScriptJointKernel(factory: JavaScriptJointKernelFactory): void {
+  javaScriptJointKernel = factory;
+}
+
+/** The registered JavaScript build, or null. */
+export function registeredJavaScriptJointKernel(): JavaScriptJointKernelFactory | null {
+  return javaScriptJointKernel;
+}
