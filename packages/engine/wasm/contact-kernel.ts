@@ -139,7 +139,7 @@ export { cosSin, hypot } from './kernel-math';
 export { collideContacts } from './contact-gates';
 export { collidePair } from './update-manifold';
 // The broad-phase boxes of finalize: shape-bounds.ts.
-export { shapeBounds } from './shape-bounds';
+export { bodyBounds, shapeBounds } from './shape-bounds';
 
 // The joints' passes (warm start and solve per kind): joint-passes.ts.
 export {

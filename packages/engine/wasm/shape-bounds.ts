@@ -1,13 +1,15 @@
-// The broad-phase boxes of a step's finalize: per awake body that is not due a sweep, each shape's
-// tight box at the body's new pose (from its geometry row, shape-geometry.ts), written into the
-// shape's row of SHAPE_BOXES, then grown by the speculative distance and the body's motion in the
-// next step (Box2D v3 computes the same box while finalizing bodies, "b2FinalizeBodiesTask"). The
-// shapes whose grown box left their fat box (SHAPE_BOXES' fat box, which the broad phase's tree
-// holds too) are listed with that box (ESCAPED_SHAPES, solver-memory.ts) for the TypeScript, which
-// moves their proxies in the JavaScript trees. One source, built to WebAssembly and by wasm2js to
-// JavaScript (scripts/contact-kernel-build.ts). The operations are those of the geometry files'
-// compute*AABB and of BodyBounds (src/dynamics/body-bounds.ts), in the same order, so the boxes
-// are bit-identical to theirs: `Math.min`/`max` are f64.min/max, which order -0 as JavaScript does.
+// The broad-phase boxes, the one source of the speculative box: per awake body of a step's finalize
+// that is not due a sweep (shapeBounds), and per body outside it (bodyBounds: a teleport, a swept
+// body's new pose, a shape joining), each shape's tight box at the body's pose (from its geometry
+// row, shape-geometry.ts), written into the shape's row of SHAPE_BOXES, then grown by the
+// speculative distance and the body's motion in the next step (Box2D v3 computes the same box
+// while finalizing bodies, "b2FinalizeBodiesTask"). The shapes whose grown box left their fat box
+// (SHAPE_BOXES' fat box, which the broad phase's tree holds too) are listed with that box
+// (ESCAPED_SHAPES, solver-memory.ts) for the TypeScript (src/dynamics/body-bounds.ts), which moves
+// their proxies in the JavaScript trees. Built to WebAssembly and by wasm2js to JavaScript
+// (scripts/contact-kernel-build.ts). The tight boxes are the geometry files' compute*AABB (the
+// queries' and sensors' boxes) operation for operation, so bit-identical: `Math.min`/`max` are
+// f64.min/max, which order -0 as JavaScript does.
 import {
   AABB_MARGIN,
   BODY_STRIDE,
@@ -34,39 +36,31 @@ import {
 } from './contact-layout';
 import { ld, st } from './load-store';
 
-/**
- * Boxes of the `count` awake bodies (world indices at `awake`, body numbers at `bodies`), skipping
- * the `fastCount` awake indices listed at `fast` (ascending: the sweeps move those bodies' boxes),
- * for a next step of `dt` seconds. Shapes are found through each body's chain (`B_SHAPE_HEAD`, and
- * the next shape id plus one per shape at `next`). Writes each tight box at `boxes` (SHAPE_BOXES),
- * reads shape geometry at `geometry`, and appends each escaped shape's id and grown box at
- * `escaped`; returns how many escaped.
- */
-export function shapeBounds(
-  bodies: usize,
-  awake: usize,
-  count: i32,
-  fast: usize,
-  fastCount: i32,
-  boxes: usize,
-  geometry: usize,
-  next: usize,
-  dt: f64,
-  escaped: usize,
-): i32 {
-  let escapes = 0;
-  let listed = 0;
-  let nextFast = fastCount > 0 ? load<i32>(fast) : -1;
-  for (let i = 0; i < count; i++) {
-    if (i == nextFast) {
-      listed++;
-      nextFast = listed < fastCount ? load<i32>(fast + ((<usize>listed) << 2)) : -1;
-      continue;
-    }
-    const b = bodies + ((<usize>load<i32>(awake + ((<usize>i) << 2)) * BODY_STRIDE) << 3);
-    // The motion (BodyBounds.measureMotion): the speculative distance, the spin swept over the
-    // body's extent when it passes the fat margin, and the velocity when the body moves farther
-    // than the margin in a step.
+// A class only so that AssemblyScript's `@inline` decorates a member, where TypeScript's grammar
+// (and so Prettier) allows a decorator (as contact-kernel.ts's Preparation).
+// eslint-disable-next-line @typescript-eslint/no-extraneous-class
+class BodyBoxes {
+  /**
+   * The shapes of the body whose numbers are at `b` (its chain, or shape `only` alone), listed from
+   * entry `escapes` of `escaped` when their grown box left the fat box (or always, with `every` 1);
+   * returns the new number of entries. The one source of the speculative box.
+   */
+  @inline
+  static ofBody(
+    b: usize,
+    only: i32,
+    boxes: usize,
+    geometry: usize,
+    next: usize,
+    dt: f64,
+    escaped: usize,
+    escapes: i32,
+    every: i32,
+  ): i32 {
+    // The motion: the speculative distance, the spin swept over the body's extent when it passes
+    // the fat margin, and the velocity when the body moves farther than the margin in a step (so
+    // the pair exists, and its speculative contact can stop the motion, before it reaches what it
+    // will hit; stretching slower bodies would only make idle pairs).
     const spin = Math.abs(ld(b, B_W)) * ld(b, B_MAX_EXTENT) * dt;
     let grow = SPECULATIVE_DISTANCE;
     if (spin > AABB_MARGIN) grow += spin;
@@ -84,7 +78,7 @@ export function shapeBounds(
     const y = ld(b, B_Y);
     const c = ld(b, B_C);
     const s = ld(b, B_S);
-    let shape = <i32>ld(b, B_SHAPE_HEAD) - 1;
+    let shape = only >= 0 ? only : <i32>ld(b, B_SHAPE_HEAD) - 1;
     while (shape >= 0) {
       const g = geometry + ((<usize>shape * GEOMETRY_STRIDE) << 3);
       const kind = <i32>ld(g, G_KIND);
@@ -153,12 +147,15 @@ export function shapeBounds(
       const placedMinY = minY - grow + backY;
       const placedMaxX = maxX + grow + aheadX;
       const placedMaxY = maxY + grow + aheadY;
-      if (!(
-        ld(box, 4) <= placedMinX &&
-        ld(box, 5) <= placedMinY &&
-        placedMaxX <= ld(box, 6) &&
-        placedMaxY <= ld(box, 7)
-      )) {
+      if (
+        every != 0 ||
+        !(
+          ld(box, 4) <= placedMinX &&
+          ld(box, 5) <= placedMinY &&
+          placedMaxX <= ld(box, 6) &&
+          placedMaxY <= ld(box, 7)
+        )
+      ) {
         const e = escaped + ((<usize>escapes * ESCAPE_STRIDE) << 3);
         st(e, 0, <f64>shape);
         st(e, 1, placedMinX);
@@ -167,8 +164,75 @@ export function shapeBounds(
         st(e, 4, placedMaxY);
         escapes++;
       }
-      shape = load<i32>(next + ((<usize>shape) << 2)) - 1;
+      shape = only >= 0 ? -1 : load<i32>(next + ((<usize>shape) << 2)) - 1;
     }
+    return escapes;
+  }
+}
+
+/**
+ * Boxes of the `count` awake bodies (world indices at `awake`, body numbers at `bodies`), skipping
+ * the `fastCount` awake indices listed at `fast` (ascending: the sweeps move those bodies' boxes),
+ * for a next step of `dt` seconds. Shapes are found through each body's chain (`B_SHAPE_HEAD`, and
+ * the next shape id plus one per shape at `next`). Writes each tight box at `boxes` (SHAPE_BOXES),
+ * reads shape geometry at `geometry`, and appends each escaped shape's id and grown box at
+ * `escaped`; returns how many escaped.
+ */
+export function shapeBounds(
+  bodies: usize,
+  awake: usize,
+  count: i32,
+  fast: usize,
+  fastCount: i32,
+  boxes: usize,
+  geometry: usize,
+  next: usize,
+  dt: f64,
+  escaped: usize,
+): i32 {
+  let escapes = 0;
+  let listed = 0;
+  let nextFast = fastCount > 0 ? load<i32>(fast) : -1;
+  for (let i = 0; i < count; i++) {
+    if (i == nextFast) {
+      listed++;
+      nextFast = listed < fastCount ? load<i32>(fast + ((<usize>listed) << 2)) : -1;
+      continue;
+    }
+    const b = bodies + ((<usize>load<i32>(awake + ((<usize>i) << 2)) * BODY_STRIDE) << 3);
+    escapes = BodyBoxes.ofBody(b, -1, boxes, geometry, next, dt, escaped, escapes, 0);
   }
   return escapes;
+}
+
+/**
+ * The same boxes for one body outside a step's finalize (World: a teleport, a type change, a swept
+ * body's new pose; WorldMembership: a shape joining): the body whose numbers are at double `base`
+ * of `bodies`, its whole chain, or only shape `only` when it is not -1 (a shape joining before
+ * the chain holds it). With `every` 1 every shape visited is listed, escaped or not (a static
+ * body's forced pair search moves or marks each; a joining shape has no fat box yet). Returns how
+ * many were listed at `escaped`.
+ */
+export function bodyBounds(
+  bodies: usize,
+  base: i32,
+  only: i32,
+  boxes: usize,
+  geometry: usize,
+  next: usize,
+  dt: f64,
+  escaped: usize,
+  every: i32,
+): i32 {
+  return BodyBoxes.ofBody(
+    bodies + ((<usize>base) << 3),
+    only,
+    boxes,
+    geometry,
+    next,
+    dt,
+    escaped,
+    0,
+    every,
+  );
 }
