@@ -141,19 +141,8 @@ export { collidePair } from './update-manifold';
 // The broad-phase boxes of finalize: shape-bounds.ts.
 export { bodyBounds, shapeBounds } from './shape-bounds';
 
-// The joints' passes (warm start and solve per kind): joint-passes.ts.
-export {
-  solveDistance,
-  solveMouse,
-  solvePrismatic,
-  solveRevolute,
-  solveWeld,
-  warmStartDistance,
-  warmStartMouse,
-  warmStartPrismatic,
-  warmStartRevolute,
-  warmStartWeld,
-} from './joint-passes';
+// The joints' passes (warm start and solve of every kind, one entry): joint-passes.ts.
+export { jointPass } from './joint-passes';
 
 // The constraints are stored in pairs, their numbers interleaved: number k of constraint i is at
 // double (i >> 1) * 2 * STRIDE + 2 * k + (i & 1) of the constraint region, so constraints 2m and
