@@ -133,6 +133,36 @@ function turnedY(k: usize, r: usize, v: i32): f64 {
 }
 
 /**
+ * The accumulated impulse of a one-sided limit row (C >= 0: the revolute's angle, the prismatic's
+ * translation, the distance joint's length, each against its lower and upper bound) after one
+ * more solve: `c` the row's position, `cdot` its speed, `old` its impulse so far, `mass` its
+ * effective mass. Speculative like contacts: an open gap may close within the sub-step (bias
+ * c / h); a violated limit is pushed back with the joint softness in the biased pass only.
+ */
+function limitRow(
+  mass: f64,
+  c: f64,
+  cdot: f64,
+  old: f64,
+  inverseH: f64,
+  useBias: i32,
+  biasRate: f64,
+  softMassScale: f64,
+  softImpulseScale: f64,
+): f64 {
+  let bias: f64 = 0;
+  let massScale: f64 = 1;
+  let impulseScale: f64 = 0;
+  if (c > 0) bias = c * inverseH;
+  else if (useBias != 0) {
+    bias = biasRate * c;
+    massScale = softMassScale;
+    impulseScale = softImpulseScale;
+  }
+  return Math.max(old + (-mass * massScale * (cdot + bias) - impulseScale * old), 0);
+}
+
+/**
  * The pass `pass` (J_PASS_WARM_START, J_PASS_SOLVE with the position bias, J_PASS_RELAX without)
  * of the joints of kind `kind` (J_KIND_...) at entries `from` to `to` of the active list. `h` to
  * `maxBiasSpeed` are the step's (JointStep: the sub-step, its inverse, the joint softness and the
@@ -289,20 +319,20 @@ export function jointPass(
         // the sign turned. Speculative like contacts: a gap may close within the sub-step.
         for (let side = 1; side >= -1; side -= 2) {
           const c = side == 1 ? jointAngle - ld(r, J_LOWER) : ld(r, J_UPPER) - jointAngle;
-          let bias: f64 = 0;
-          let rowMassScale: f64 = 1;
-          let rowImpulseScale: f64 = 0;
-          if (c > 0) bias = c * inverseH;
-          else if (useBias != 0) {
-            bias = biasRate * c;
-            rowMassScale = softMassScale;
-            rowImpulseScale = softImpulseScale;
-          }
           const at = side == 1 ? J_LOWER_IMPULSE : J_UPPER_IMPULSE;
           const cdot = side == 1 ? wB - wA : wA - wB;
           const old = ld(r, at);
-          const impulse = -axialMass * rowMassScale * (cdot + bias) - rowImpulseScale * old;
-          const accumulated = Math.max(old + impulse, 0);
+          const accumulated = limitRow(
+            axialMass,
+            c,
+            cdot,
+            old,
+            inverseH,
+            useBias,
+            biasRate,
+            softMassScale,
+            softImpulseScale,
+          );
           const applied = accumulated - old;
           st(r, at, accumulated);
           if (side == 1) {
@@ -380,22 +410,22 @@ export function jointPass(
           // the sign turned. Speculative like contacts: a gap may close within the sub-step.
           const lower = k == 2;
           const c = lower ? translation - ld(r, J_LOWER) : ld(r, J_UPPER) - translation;
-          let bias: f64 = 0;
-          let massScale: f64 = 1;
-          let impulseScale: f64 = 0;
-          if (c > 0) bias = c * inverseH;
-          else if (useBias != 0) {
-            bias = biasRate * c;
-            massScale = softMassScale;
-            impulseScale = softImpulseScale;
-          }
           const cdot = lower
             ? ax * (vBx - vAx) + ay * (vBy - vAy) + a2 * wB - a1 * wA
             : ax * (vAx - vBx) + ay * (vAy - vBy) + a1 * wA - a2 * wB;
           const at = lower ? J_LOWER_IMPULSE : J_UPPER_IMPULSE;
           const old = ld(r, at);
-          const impulse = -axialMass * massScale * (cdot + bias) - impulseScale * old;
-          const accumulated = Math.max(old + impulse, 0);
+          const accumulated = limitRow(
+            axialMass,
+            c,
+            cdot,
+            old,
+            inverseH,
+            useBias,
+            biasRate,
+            softMassScale,
+            softImpulseScale,
+          );
           st(r, at, accumulated);
           push = lower ? accumulated - old : -(accumulated - old);
         }
@@ -540,20 +570,20 @@ export function jointPass(
             const c = lower
               ? length - ld(r, J_DISTANCE_MIN_LENGTH)
               : ld(r, J_DISTANCE_MAX_LENGTH) - length;
-            let bias: f64 = 0;
-            let massScale: f64 = 1;
-            let impulseScale: f64 = 0;
-            if (c > 0) bias = c * inverseH;
-            else if (useBias != 0) {
-              bias = biasRate * c;
-              massScale = softMassScale;
-              impulseScale = softImpulseScale;
-            }
             const at = lower ? J_DISTANCE_LOWER_IMPULSE : J_DISTANCE_UPPER_IMPULSE;
             const old = ld(r, at);
-            const impulse =
-              -massScale * axialMass * ((lower ? cdot : -cdot) + bias) - impulseScale * old;
-            const accumulated = Math.max(old + impulse, 0);
+            // (-massScale * axialMass here before: the same product, IEEE products commute.)
+            const accumulated = limitRow(
+              axialMass,
+              c,
+              lower ? cdot : -cdot,
+              old,
+              inverseH,
+              useBias,
+              biasRate,
+              softMassScale,
+              softImpulseScale,
+            );
             st(r, at, accumulated);
             push = lower ? accumulated - old : -(accumulated - old);
           }

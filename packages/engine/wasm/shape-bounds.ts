@@ -36,138 +36,133 @@ import {
 } from './contact-layout';
 import { ld, st } from './load-store';
 
-// A class only so that AssemblyScript's `@inline` decorates a member, where TypeScript's grammar
-// (and so Prettier) allows a decorator (as contact-kernel.ts's Preparation).
-// eslint-disable-next-line @typescript-eslint/no-extraneous-class
-class BodyBoxes {
-  /**
-   * The shapes of the body whose numbers are at `b` (its chain, or shape `only` alone), listed from
-   * entry `escapes` of `escaped` when their grown box left the fat box (or always, with `every` 1);
-   * returns the new number of entries. The one source of the speculative box.
-   */
-  @inline
-  static ofBody(
-    b: usize,
-    only: i32,
-    boxes: usize,
-    geometry: usize,
-    next: usize,
-    dt: f64,
-    escaped: usize,
-    escapes: i32,
-    every: i32,
-  ): i32 {
-    // The motion: the speculative distance, the spin swept over the body's extent when it passes
-    // the fat margin, and the velocity when the body moves farther than the margin in a step (so
-    // the pair exists, and its speculative contact can stop the motion, before it reaches what it
-    // will hit; stretching slower bodies would only make idle pairs).
-    const spin = Math.abs(ld(b, B_W)) * ld(b, B_MAX_EXTENT) * dt;
-    let grow = SPECULATIVE_DISTANCE;
-    if (spin > AABB_MARGIN) grow += spin;
-    let dx = ld(b, B_VX) * dt;
-    let dy = ld(b, B_VY) * dt;
-    if (dx * dx + dy * dy <= AABB_MARGIN * AABB_MARGIN) {
-      dx = 0;
-      dy = 0;
-    }
-    const backX = Math.min(dx, 0);
-    const backY = Math.min(dy, 0);
-    const aheadX = Math.max(dx, 0);
-    const aheadY = Math.max(dy, 0);
-    const x = ld(b, B_X);
-    const y = ld(b, B_Y);
-    const c = ld(b, B_C);
-    const s = ld(b, B_S);
-    let shape = only >= 0 ? only : <i32>ld(b, B_SHAPE_HEAD) - 1;
-    while (shape >= 0) {
-      const g = geometry + ((<usize>shape * GEOMETRY_STRIDE) << 3);
-      const kind = <i32>ld(g, G_KIND);
-      const r = ld(g, G_RADIUS);
-      let minX: f64, minY: f64, maxX: f64, maxY: f64;
-      if (kind == GEOMETRY_CIRCLE) {
-        // computeCircleAABB
-        const lx = ld(g, G_VERTICES);
-        const ly = ld(g, G_VERTICES + 1);
+/**
+ * The shapes of the body whose numbers are at `b` (its chain, or shape `only` alone), listed from
+ * entry `escapes` of `escaped` when their grown box left the fat box (or always, with `every` 1);
+ * returns the new number of entries. The one source of the speculative box; a function of its own
+ * (not inlined), so the module holds it once for both entries.
+ */
+function bodyBoxes(
+  b: usize,
+  only: i32,
+  boxes: usize,
+  geometry: usize,
+  next: usize,
+  dt: f64,
+  escaped: usize,
+  escapes: i32,
+  every: i32,
+): i32 {
+  // The motion: the speculative distance, the spin swept over the body's extent when it passes
+  // the fat margin, and the velocity when the body moves farther than the margin in a step (so
+  // the pair exists, and its speculative contact can stop the motion, before it reaches what it
+  // will hit; stretching slower bodies would only make idle pairs).
+  const spin = Math.abs(ld(b, B_W)) * ld(b, B_MAX_EXTENT) * dt;
+  let grow = SPECULATIVE_DISTANCE;
+  if (spin > AABB_MARGIN) grow += spin;
+  let dx = ld(b, B_VX) * dt;
+  let dy = ld(b, B_VY) * dt;
+  if (dx * dx + dy * dy <= AABB_MARGIN * AABB_MARGIN) {
+    dx = 0;
+    dy = 0;
+  }
+  const backX = Math.min(dx, 0);
+  const backY = Math.min(dy, 0);
+  const aheadX = Math.max(dx, 0);
+  const aheadY = Math.max(dy, 0);
+  const x = ld(b, B_X);
+  const y = ld(b, B_Y);
+  const c = ld(b, B_C);
+  const s = ld(b, B_S);
+  let shape = only >= 0 ? only : <i32>ld(b, B_SHAPE_HEAD) - 1;
+  while (shape >= 0) {
+    const g = geometry + ((<usize>shape * GEOMETRY_STRIDE) << 3);
+    const kind = <i32>ld(g, G_KIND);
+    const r = ld(g, G_RADIUS);
+    let minX: f64, minY: f64, maxX: f64, maxY: f64;
+    if (kind == GEOMETRY_CIRCLE) {
+      // computeCircleAABB
+      const lx = ld(g, G_VERTICES);
+      const ly = ld(g, G_VERTICES + 1);
+      const px = c * lx - s * ly + x;
+      const py = s * lx + c * ly + y;
+      minX = px - r;
+      minY = py - r;
+      maxX = px + r;
+      maxY = py + r;
+    } else if (kind == GEOMETRY_POLYGON) {
+      // computePolygonAABB
+      minX = Infinity;
+      minY = Infinity;
+      maxX = -Infinity;
+      maxY = -Infinity;
+      const n = <i32>ld(g, G_COUNT);
+      for (let k = 0; k < n; k++) {
+        const lx = ld(g, G_VERTICES + 2 * k);
+        const ly = ld(g, G_VERTICES + 2 * k + 1);
         const px = c * lx - s * ly + x;
         const py = s * lx + c * ly + y;
-        minX = px - r;
-        minY = py - r;
-        maxX = px + r;
-        maxY = py + r;
-      } else if (kind == GEOMETRY_POLYGON) {
-        // computePolygonAABB
-        minX = Infinity;
-        minY = Infinity;
-        maxX = -Infinity;
-        maxY = -Infinity;
-        const n = <i32>ld(g, G_COUNT);
-        for (let k = 0; k < n; k++) {
-          const lx = ld(g, G_VERTICES + 2 * k);
-          const ly = ld(g, G_VERTICES + 2 * k + 1);
-          const px = c * lx - s * ly + x;
-          const py = s * lx + c * ly + y;
-          if (px < minX) minX = px;
-          if (py < minY) minY = py;
-          if (px > maxX) maxX = px;
-          if (py > maxY) maxY = py;
-        }
+        if (px < minX) minX = px;
+        if (py < minY) minY = py;
+        if (px > maxX) maxX = px;
+        if (py > maxY) maxY = py;
+      }
+      minX = minX - r;
+      minY = minY - r;
+      maxX = maxX + r;
+      maxY = maxY + r;
+    } else {
+      // computeCapsuleAABB; computeSegmentAABB without the radius (adding a 0 would turn a
+      // -0 into +0)
+      const x1 = ld(g, G_VERTICES);
+      const y1 = ld(g, G_VERTICES + 1);
+      const x2 = ld(g, G_VERTICES + 2);
+      const y2 = ld(g, G_VERTICES + 3);
+      const ax = c * x1 - s * y1 + x;
+      const ay = s * x1 + c * y1 + y;
+      const bx = c * x2 - s * y2 + x;
+      const by = s * x2 + c * y2 + y;
+      minX = Math.min(ax, bx);
+      minY = Math.min(ay, by);
+      maxX = Math.max(ax, bx);
+      maxY = Math.max(ay, by);
+      if (kind == GEOMETRY_CAPSULE) {
         minX = minX - r;
         minY = minY - r;
         maxX = maxX + r;
         maxY = maxY + r;
-      } else {
-        // computeCapsuleAABB; computeSegmentAABB without the radius (adding a 0 would turn a
-        // -0 into +0)
-        const x1 = ld(g, G_VERTICES);
-        const y1 = ld(g, G_VERTICES + 1);
-        const x2 = ld(g, G_VERTICES + 2);
-        const y2 = ld(g, G_VERTICES + 3);
-        const ax = c * x1 - s * y1 + x;
-        const ay = s * x1 + c * y1 + y;
-        const bx = c * x2 - s * y2 + x;
-        const by = s * x2 + c * y2 + y;
-        minX = Math.min(ax, bx);
-        minY = Math.min(ay, by);
-        maxX = Math.max(ax, bx);
-        maxY = Math.max(ay, by);
-        if (kind == GEOMETRY_CAPSULE) {
-          minX = minX - r;
-          minY = minY - r;
-          maxX = maxX + r;
-          maxY = maxY + r;
-        }
       }
-      const box = boxes + ((<usize>shape * SHAPE_STRIDE) << 3);
-      st(box, 0, minX);
-      st(box, 1, minY);
-      st(box, 2, maxX);
-      st(box, 3, maxY);
-      // BodyBounds.place, then BroadPhase.moveProxy's test against the fat box.
-      const placedMinX = minX - grow + backX;
-      const placedMinY = minY - grow + backY;
-      const placedMaxX = maxX + grow + aheadX;
-      const placedMaxY = maxY + grow + aheadY;
-      if (
-        every != 0 ||
-        !(
-          ld(box, 4) <= placedMinX &&
-          ld(box, 5) <= placedMinY &&
-          placedMaxX <= ld(box, 6) &&
-          placedMaxY <= ld(box, 7)
-        )
-      ) {
-        const e = escaped + ((<usize>escapes * ESCAPE_STRIDE) << 3);
-        st(e, 0, <f64>shape);
-        st(e, 1, placedMinX);
-        st(e, 2, placedMinY);
-        st(e, 3, placedMaxX);
-        st(e, 4, placedMaxY);
-        escapes++;
-      }
-      shape = only >= 0 ? -1 : load<i32>(next + ((<usize>shape) << 2)) - 1;
     }
-    return escapes;
+    const box = boxes + ((<usize>shape * SHAPE_STRIDE) << 3);
+    st(box, 0, minX);
+    st(box, 1, minY);
+    st(box, 2, maxX);
+    st(box, 3, maxY);
+    // BodyBounds.place, then BroadPhase.moveProxy's test against the fat box.
+    const placedMinX = minX - grow + backX;
+    const placedMinY = minY - grow + backY;
+    const placedMaxX = maxX + grow + aheadX;
+    const placedMaxY = maxY + grow + aheadY;
+    if (
+      every != 0 ||
+      !(
+        ld(box, 4) <= placedMinX &&
+        ld(box, 5) <= placedMinY &&
+        placedMaxX <= ld(box, 6) &&
+        placedMaxY <= ld(box, 7)
+      )
+    ) {
+      const e = escaped + ((<usize>escapes * ESCAPE_STRIDE) << 3);
+      st(e, 0, <f64>shape);
+      st(e, 1, placedMinX);
+      st(e, 2, placedMinY);
+      st(e, 3, placedMaxX);
+      st(e, 4, placedMaxY);
+      escapes++;
+    }
+    shape = only >= 0 ? -1 : load<i32>(next + ((<usize>shape) << 2)) - 1;
   }
+  return escapes;
 }
 
 /**
@@ -200,7 +195,7 @@ export function shapeBounds(
       continue;
     }
     const b = bodies + ((<usize>load<i32>(awake + ((<usize>i) << 2)) * BODY_STRIDE) << 3);
-    escapes = BodyBoxes.ofBody(b, -1, boxes, geometry, next, dt, escaped, escapes, 0);
+    escapes = bodyBoxes(b, -1, boxes, geometry, next, dt, escaped, escapes, 0);
   }
   return escapes;
 }
@@ -224,7 +219,7 @@ export function bodyBounds(
   escaped: usize,
   every: i32,
 ): i32 {
-  return BodyBoxes.ofBody(
+  return bodyBoxes(
     bodies + ((<usize>base) << 3),
     only,
     boxes,
