@@ -45,6 +45,7 @@ import {
   SPECULATIVE_DISTANCE,
 } from '../src/core/constants.ts';
 import * as jointRecord from '../src/dynamics/joints/joint-record.ts';
+import * as jointPassCodes from '../src/dynamics/joints/joint-pass-codes.ts';
 import * as springMotorLimit from '../src/dynamics/joints/spring-motor-limit.ts';
 import * as distanceLayout from '../src/dynamics/joints/distance-joint-layout.ts';
 import * as mouseLayout from '../src/dynamics/joints/mouse-joint-layout.ts';
@@ -145,6 +146,7 @@ export function kernelLayout(): string {
     // limit block prefixed J_, each kind's own numbers J_<KIND>_.
     ...prefixed('J_', jointRecord),
     ...prefixed('J_', springMotorLimit),
+    ...prefixed('J_', jointPassCodes),
     ...prefixed('J_REVOLUTE_', revoluteLayout),
     ...prefixed('J_PRISMATIC_', prismaticLayout),
     ...prefixed('J_WELD_', weldLayout),

@@ -139,7 +139,7 @@ export { cosSin, hypot } from './kernel-math';
 export { collideContacts } from './contact-gates';
 export { collidePair } from './update-manifold';
 // The broad-phase boxes of finalize: shape-bounds.ts.
-export { shapeBounds } from './shape-bounds';
+export { bodyBounds, shapeBounds } from './shape-bounds';
 
 // The joints' passes (joint-passes.ts) are a module of their own over the same memory, built by
 // the same script: apps without joints do not ship them.

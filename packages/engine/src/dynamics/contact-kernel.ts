@@ -261,6 +261,23 @@ export interface BodyPasses {
     escaped: number,
   ): number;
   /**
+   * The same boxes for one body outside a step (wasm/shape-bounds.ts's bodyBounds): the body whose
+   * numbers are at double `base` of `bodies` (BODIES), its whole shape chain or only shape `only`
+   * (not -1); with `every` 1 each shape is listed at `escaped`, escaped or not. Returns how many
+   * were listed.
+   */
+  bodyBounds(
+    bodies: number,
+    base: number,
+    only: number,
+    boxes: number,
+    geometry: number,
+    next: number,
+    dt: number,
+    escaped: number,
+    every: number,
+  ): number;
+  /**
    * The engine's cosSin (math/trigonometry.ts, compiled into the kernel) of `angle`: cos at byte
    * `out`, sin 8 bytes on. For the tests that compare the kernel's math with TypeScript's.
    */

@@ -57,8 +57,8 @@ export class World {
   private readonly bodyList: Body[] = [];
   private readonly shapesById: (Shape | null)[] = [];
   private readonly broadPhase = new BroadPhase();
-  private readonly bounds = new BodyBounds(this.broadPhase, this.shapesById);
   private readonly solver = new Solver();
+  private readonly bounds = new BodyBounds(this.broadPhase, this.shapesById, this.solver.memory);
   private readonly contactEdges = new ContactEdges(this.solver.memory);
   private readonly islands = new Islands(this.contactEdges, this.bodyList);
   /** The shapes' numbers: views of the solver memory's shape regions. */

@@ -4,7 +4,7 @@ import type { Vec2Like } from '../../math/vec2.ts';
 import { hypot } from '../../math/hypot.ts';
 import { Softness } from '../softness.ts';
 import { JointBatch } from './joint-batch.ts';
-import { JOINT_ACTIVE, JOINT_RECORDS, STATES, type SolverMemory } from '../solver-memory.ts';
+import { KIND_DISTANCE } from './joint-pass-codes.ts';
 import {
   DAMPING_RATIO,
   EXPLICIT_SPRING,
@@ -258,43 +258,8 @@ export class DistanceJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
   }
 
   /** @internal */
-  override createBatch(): DistanceBatch {
-    return new DistanceBatch();
-  }
-}
-
-/**
- * @internal The distance joints of a world: the step's active ones, solved by the kernel's passes
- * (wasm/joint-passes.ts: warmStartDistance, solveDistance), one call per pass.
- */
-export class DistanceBatch extends JointBatch {
-  warmStart(memory: SolverMemory): void {
-    const o = memory.offsets;
-    memory.joints.warmStartDistance(
-      o[JOINT_RECORDS]!,
-      o[JOINT_ACTIVE]!,
-      o[STATES]!,
-      this.start,
-      this.start + this.active,
-    );
-  }
-
-  solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
-    const o = memory.offsets;
-    const soft = step.softness;
-    memory.joints.solveDistance(
-      o[JOINT_RECORDS]!,
-      o[JOINT_ACTIVE]!,
-      o[STATES]!,
-      this.start,
-      this.start + this.active,
-      step.h,
-      step.inverseH,
-      soft.biasRate,
-      soft.massScale,
-      soft.impulseScale,
-      useBias ? 1 : 0,
-    );
+  override createBatch(): JointBatch {
+    return new JointBatch(KIND_DISTANCE);
   }
 }
 

@@ -1,4 +1,4 @@
-import type { SolverMemory } from '../solver-memory.ts';
+import { JOINT_ACTIVE, JOINT_RECORDS, STATES, type SolverMemory } from '../solver-memory.ts';
 import { createJointKernel } from './joint-kernel-loader.ts';
 import type { JointStep } from './joint.ts';
 import {
@@ -18,11 +18,14 @@ import {
  * grouped by kind (record offset, state A offset, state B offset each), this kind's from `start`,
  * `active` of them, in the world's joint order (the order they are solved in).
  */
-export abstract class JointBatch {
+export class JointBatch {
   /** Where this kind's active joints start in JOINT_ACTIVE (in joints, not int32s). */
   start = 0;
   /** Active joints of the kind this step. */
   active = 0;
+
+  /** `kind`: the kind's code (KIND_...). */
+  constructor(private readonly kind: number) {}
 
   /**
    * Loads the joints' passes (a module of their own, joint-kernel-loader.ts) over `memory`, when
@@ -33,10 +36,29 @@ export abstract class JointBatch {
     memory.loadJoints(createJointKernel);
   }
 
-  /** Every active joint of the kind (the kernel's pass, wasm/joint-passes.ts): the warm start with last step's impulses. */
-  abstract warmStart(memory: SolverMemory): void;
-  /** Every active joint of the kind: a solve (`useBias`) or relax pass. */
-  abstract solve(memory: SolverMemory, step: JointStep, useBias: boolean): void;
+  /**
+   * Every active joint of the kind through the kernel's pass `pass` (PASS_...: the warm start, a
+   * solve with the position bias, or a relax pass), with the step's numbers.
+   */
+  run(memory: SolverMemory, step: JointStep, pass: number): void {
+    const o = memory.offsets;
+    const soft = step.softness;
+    memory.joints.jointPass(
+      this.kind,
+      pass,
+      o[JOINT_RECORDS]!,
+      o[JOINT_ACTIVE]!,
+      o[STATES]!,
+      this.start,
+      this.start + this.active,
+      step.h,
+      step.inverseH,
+      soft.biasRate,
+      soft.massScale,
+      soft.impulseScale,
+      step.maxBiasSpeed,
+    );
+  }
 
   /** Turns the step's summed impulses into each active joint's reaction (N, N m). */
   finish(memory: SolverMemory, dt: number): void {

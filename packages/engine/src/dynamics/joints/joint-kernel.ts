@@ -8,21 +8,20 @@ import type { KernelImports } from '../contact-kernel.ts';
 
 /**
  * The joints' passes (wasm/joint-passes.ts), a module of their own over the contact kernel's
- * memory (joint-kernel-binary.ts, and joint-kernel-javascript.ts by wasm2js): per kind, over active
- * joints `from` to `to` of the JOINT_ACTIVE list at `active` (record offset, state A, state B),
- * their records in JOINT_RECORDS at `records`, the states at `states`. A solve's step numbers:
- * the sub-step and its inverse, the joint softness (bias rate, mass and impulse scale), the
- * largest bias speed, and `useBias` 1 (solve) or 0 (relax).
+ * memory (joint-kernel-binary.ts, and joint-kernel-javascript.ts by wasm2js): one entry for every
+ * kind and pass.
  */
 export interface JointPasses {
-  warmStartRevolute(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-  ): void;
-  solveRevolute(
+  /**
+   * Pass `pass` (joint-pass-codes.ts: the warm start, a solve or a relax pass) of the joints of
+   * kind `kind` (KIND_...): active joints `from` to `to` of the JOINT_ACTIVE list at `active`
+   * (record offset, state A, state B), their records in JOINT_RECORDS at `records`, the states at
+   * `states`. The step's numbers (a warm start reads none): the sub-step and its inverse, the
+   * joint softness (bias rate, mass and impulse scale) and the largest bias speed.
+   */
+  jointPass(
+    kind: number,
+    pass: number,
     records: number,
     active: number,
     states: number,
@@ -34,69 +33,6 @@ export interface JointPasses {
     massScale: number,
     impulseScale: number,
     maxBiasSpeed: number,
-    useBias: number,
-  ): void;
-  warmStartPrismatic(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-  ): void;
-  solvePrismatic(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-    h: number,
-    inverseH: number,
-    biasRate: number,
-    massScale: number,
-    impulseScale: number,
-    useBias: number,
-  ): void;
-  warmStartDistance(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-  ): void;
-  solveDistance(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-    h: number,
-    inverseH: number,
-    biasRate: number,
-    massScale: number,
-    impulseScale: number,
-    useBias: number,
-  ): void;
-  warmStartMouse(records: number, active: number, states: number, from: number, to: number): void;
-  solveMouse(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-    h: number,
-    useBias: number,
-  ): void;
-  warmStartWeld(records: number, active: number, states: number, from: number, to: number): void;
-  solveWeld(
-    records: number,
-    active: number,
-    states: number,
-    from: number,
-    to: number,
-    biasRate: number,
-    massScale: number,
-    impulseScale: number,
-    useBias: number,
   ): void;
 }
 

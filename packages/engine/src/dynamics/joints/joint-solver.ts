@@ -3,6 +3,7 @@ import { Softness } from '../softness.ts';
 import type { SolverMemory } from '../solver-memory.ts';
 import type { Joint, JointStep, JointType } from './joint.ts';
 import type { JointBatch } from './joint-batch.ts';
+import { PASS_RELAX, PASS_SOLVE, PASS_WARM_START } from './joint-pass-codes.ts';
 import { STATE_A, STATE_B } from './joint-record.ts';
 import type { PinChains } from './pin-chains.ts';
 
@@ -130,13 +131,15 @@ export class JointSolver {
   /** Kind after kind, in the order the kinds first came. */
   warmStart(): void {
     const batches = this.batches;
-    for (let i = 0; i < batches.length; i++) batches[i]!.warmStart(this.memory);
+    for (let i = 0; i < batches.length; i++)
+      batches[i]!.run(this.memory, this.step, PASS_WARM_START);
   }
 
   solve(useBias: boolean): void {
     const step = this.step;
     const batches = this.batches;
-    for (let i = 0; i < batches.length; i++) batches[i]!.solve(this.memory, step, useBias);
+    const pass = useBias ? PASS_SOLVE : PASS_RELAX;
+    for (let i = 0; i < batches.length; i++) batches[i]!.run(this.memory, step, pass);
   }
 
   /**

@@ -4,7 +4,7 @@ import type { Vec2, Vec2Like } from '../../math/vec2.ts';
 import type { Body } from '../body.ts';
 import { Softness } from '../softness.ts';
 import { JointBatch } from './joint-batch.ts';
-import { JOINT_ACTIVE, JOINT_RECORDS, STATES, type SolverMemory } from '../solver-memory.ts';
+import { KIND_MOUSE } from './joint-pass-codes.ts';
 import {
   ANGULAR_BIAS_RATE,
   ANGULAR_IMPULSE,
@@ -221,38 +221,8 @@ export class MouseJoint<UserData = unknown> extends Joint<UserData> {
   }
 
   /** @internal */
-  override createBatch(): MouseBatch {
-    return new MouseBatch();
-  }
-}
-
-/**
- * @internal The mouse joints of a world: the step's active ones, solved by the kernel's passes
- * (wasm/joint-passes.ts: warmStartMouse, solveMouse), one call per pass.
- */
-export class MouseBatch extends JointBatch {
-  warmStart(memory: SolverMemory): void {
-    const o = memory.offsets;
-    memory.joints.warmStartMouse(
-      o[JOINT_RECORDS]!,
-      o[JOINT_ACTIVE]!,
-      o[STATES]!,
-      this.start,
-      this.start + this.active,
-    );
-  }
-
-  solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
-    const o = memory.offsets;
-    memory.joints.solveMouse(
-      o[JOINT_RECORDS]!,
-      o[JOINT_ACTIVE]!,
-      o[STATES]!,
-      this.start,
-      this.start + this.active,
-      step.h,
-      useBias ? 1 : 0,
-    );
+  override createBatch(): JointBatch {
+    return new JointBatch(KIND_MOUSE);
   }
 }
 

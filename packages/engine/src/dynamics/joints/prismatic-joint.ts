@@ -1,4 +1,6 @@
 import { PhysicalError, readOnly } from '../../core/errors.ts';
+import { JointBatch } from './joint-batch.ts';
+import { KIND_PRISMATIC } from './joint-pass-codes.ts';
 import type { Vec2Like } from '../../math/vec2.ts';
 import { hypot } from '../../math/hypot.ts';
 import {
@@ -8,7 +10,6 @@ import {
   LOCAL_AXIS_X,
   LOCAL_AXIS_Y,
   PERPENDICULAR_IMPULSE,
-  PrismaticBatch,
   STRIDE,
 } from './prismatic-joint-solver.ts';
 import {
@@ -268,7 +269,7 @@ export class PrismaticJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
   }
 
   /** @internal */
-  override createBatch(): PrismaticBatch {
-    return new PrismaticBatch();
+  override createBatch(): JointBatch {
+    return new JointBatch(KIND_PRISMATIC);
   }
 }

@@ -1,6 +1,3 @@
-import { JointBatch } from './joint-batch.ts';
-import type { JointStep } from './joint.ts';
-import { JOINT_ACTIVE, JOINT_RECORDS, STATES, type SolverMemory } from '../solver-memory.ts';
 import { SPRING_MOTOR_LIMIT_END } from './spring-motor-limit.ts';
 
 // A revolute joint's record: the head (joint-record.ts), the spring, motor and limit on its angle
@@ -14,39 +11,3 @@ export const AXIAL_MASS: number = SPRING_MOTOR_LIMIT_END + 2;
 /** This step's JointStep.maxBiasSpeed. */
 export const MAX_BIAS_SPEED: number = SPRING_MOTOR_LIMIT_END + 3;
 export const STRIDE: number = SPRING_MOTOR_LIMIT_END + 4;
-
-/**
- * @internal The revolute joints of a world: the step's active ones, solved by the kernel's
- * passes (wasm/joint-passes.ts: warmStartRevolute, solveRevolute), one call per pass.
- */
-export class RevoluteBatch extends JointBatch {
-  warmStart(memory: SolverMemory): void {
-    const o = memory.offsets;
-    memory.joints.warmStartRevolute(
-      o[JOINT_RECORDS]!,
-      o[JOINT_ACTIVE]!,
-      o[STATES]!,
-      this.start,
-      this.start + this.active,
-    );
-  }
-
-  solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
-    const o = memory.offsets;
-    const soft = step.softness;
-    memory.joints.solveRevolute(
-      o[JOINT_RECORDS]!,
-      o[JOINT_ACTIVE]!,
-      o[STATES]!,
-      this.start,
-      this.start + this.active,
-      step.h,
-      step.inverseH,
-      soft.biasRate,
-      soft.massScale,
-      soft.impulseScale,
-      step.maxBiasSpeed,
-      useBias ? 1 : 0,
-    );
-  }
-}

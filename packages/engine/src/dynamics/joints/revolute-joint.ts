@@ -1,4 +1,6 @@
 import { readOnly } from '../../core/errors.ts';
+import { JointBatch } from './joint-batch.ts';
+import { KIND_REVOLUTE } from './joint-pass-codes.ts';
 import type { Vec2Like } from '../../math/vec2.ts';
 import { DP_X, DP_Y, V_X, V_Y, W } from '../body-state.ts';
 import { PinChains, type PinJoint } from './pin-chains.ts';
@@ -7,7 +9,6 @@ import {
   LINEAR_IMPULSE_X,
   LINEAR_IMPULSE_Y,
   MAX_BIAS_SPEED,
-  RevoluteBatch,
   STRIDE,
 } from './revolute-joint-solver.ts';
 import {
@@ -260,8 +261,8 @@ export class RevoluteJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
   }
 
   /** @internal */
-  override createBatch(): RevoluteBatch {
-    return new RevoluteBatch();
+  override createBatch(): JointBatch {
+    return new JointBatch(KIND_REVOLUTE);
   }
 
   /** @internal */

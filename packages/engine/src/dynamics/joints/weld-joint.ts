@@ -2,7 +2,7 @@ import { readOnly } from '../../core/errors.ts';
 import type { Vec2Like } from '../../math/vec2.ts';
 import { Softness } from '../softness.ts';
 import { JointBatch } from './joint-batch.ts';
-import { JOINT_ACTIVE, JOINT_RECORDS, STATES, type SolverMemory } from '../solver-memory.ts';
+import { KIND_WELD } from './joint-pass-codes.ts';
 import {
   ANGULAR_HERTZ,
   ANGULAR_IMPULSE,
@@ -156,40 +156,7 @@ export class WeldJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
   }
 
   /** @internal */
-  override createBatch(): WeldBatch {
-    return new WeldBatch();
-  }
-}
-
-/**
- * @internal The weld joints of a world: the step's active ones, solved by the kernel's passes
- * (wasm/joint-passes.ts: warmStartWeld, solveWeld), one call per pass.
- */
-export class WeldBatch extends JointBatch {
-  warmStart(memory: SolverMemory): void {
-    const o = memory.offsets;
-    memory.joints.warmStartWeld(
-      o[JOINT_RECORDS]!,
-      o[JOINT_ACTIVE]!,
-      o[STATES]!,
-      this.start,
-      this.start + this.active,
-    );
-  }
-
-  solve(memory: SolverMemory, step: JointStep, useBias: boolean): void {
-    const o = memory.offsets;
-    const soft = step.softness;
-    memory.joints.solveWeld(
-      o[JOINT_RECORDS]!,
-      o[JOINT_ACTIVE]!,
-      o[STATES]!,
-      this.start,
-      this.start + this.active,
-      soft.biasRate,
-      soft.massScale,
-      soft.impulseScale,
-      useBias ? 1 : 0,
-    );
+  override createBatch(): JointBatch {
+    return new JointBatch(KIND_WELD);
   }
 }
