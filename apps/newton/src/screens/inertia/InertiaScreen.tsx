@@ -130,16 +130,6 @@ export function InertiaScreen({ active }: { active: boolean }) {
   const [scene, setScene] = useState<InertiaScene | null>(null);
   const sceneRef = useRef<InertiaScene | null>(null);
   sceneRef.current = scene;
-  // The app is ready (data-ready) once the canvas has drawn the world: its frame loop draws in
-  // the animation frame after the world arrives, so two frames on it has.
-  const [worldDrawn, setWorldDrawn] = useState(false);
-  useEffect(() => {
-    if (scene === null || worldDrawn) return;
-    let frame = requestAnimationFrame(() => {
-      frame = requestAnimationFrame(() => setWorldDrawn(true));
-    });
-    return () => cancelAnimationFrame(frame);
-  }, [scene, worldDrawn]);
   /** Apply force was tapped before the world was built: it acts from the world's first step. */
   const pendingForceRef = useRef(false);
   // A preset link (#inertia?F=2&angle=90&e=0.5&surface=wood) chooses the first setup.
@@ -633,7 +623,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
     <ScreenLayout
       id="inertia"
       active={active}
-      loading={!worldDrawn}
+      loading={scene === null}
       law={t('inertia.law')}
       stage={
         <>
