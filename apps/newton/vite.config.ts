@@ -92,17 +92,11 @@ function firstScreenPreload(): Plugin {
           (item): item is OutputChunk => item.type === 'chunk',
         );
         const byName = new Map(chunks.map((chunk) => [chunk.fileName, chunk]));
-        // Per screen, two lists: the screen's chunk and what it imports statically (its
-        // controls), then its engine part (`src/screens/<id>/<id>-engine.ts`, which the screen
-        // imports once its controls are on the page) with its chunks, at low priority. Slow 4G
-        // shares its 1.6 Mbit/s among the files in flight: fetched beside the entry, the engine's
-        // 80 KB held the entry (React, the shell) back until about when the engine came, and
-        // the controls with it; at low priority they wait for one of the six connections
-        // (HTTP/1.1) to come free, after the entry's and the controls' requests.
-        const files: Record<string, [string[], string[]]> = {};
+        const files: Record<string, string[]> = {};
         for (const chunk of chunks) {
           const match = /\/src\/screens\/(\w+)\/\w+Screen\.tsx$/.exec(chunk.facadeModuleId ?? '');
           if (match === null || !chunk.isDynamicEntry) continue;
+          // The chunk and every chunk it imports statically, depth first.
           const list: string[] = [];
           const visit = (name: string): void => {
             if (list.includes(name)) return;
@@ -110,20 +104,13 @@ function firstScreenPreload(): Plugin {
             for (const next of byName.get(name)?.imports ?? []) visit(next);
           };
           visit(chunk.fileName);
-          const first = list.length;
-          for (const name of chunk.dynamicImports) {
-            const facade = byName.get(name)?.facadeModuleId ?? '';
-            if (/\/src\/screens\/\w+\/[\w-]+-engine\.ts$/.test(facade)) visit(name);
-          }
-          const paths = list.map((name) => `./${name}`);
-          files[match[1]!] = [paths.slice(0, first), paths.slice(first)];
+          files[match[1]!] = list.map((name) => `./${name}`);
         }
         const script =
           `(function(){var f=${JSON.stringify(files)};` +
-          `var id=location.hash.replace(/^#/,'').split('?')[0];var w=f[id]||f.inertia;if(!w)return;` +
-          `function add(h,low){var l=document.createElement('link');l.rel='modulepreload';` +
-          `l.crossOrigin='';l.href=h;if(low)l.fetchPriority='low';document.head.appendChild(l);}` +
-          `w[0].forEach(function(h){add(h);});w[1].forEach(function(h){add(h,1);});})();`;
+          `var id=location.hash.replace(/^#/,'').split('?')[0];` +
+          `(f[id]||f.inertia||[]).forEach(function(h){var l=document.createElement('link');` +
+          `l.rel='modulepreload';l.crossOrigin='';l.href=h;document.head.appendChild(l);});})();`;
         // Before the stylesheet and the entry: an inline script after a stylesheet waits for
         // it to arrive (scripts may read styles), and on Slow 4G that held the screen's chunks
         // back by most of a second (requested at 1.8 s, with the entry at 0.95 s).
@@ -155,16 +142,6 @@ export default defineConfig({
     target: 'es2022',
     // The shell and the first screen load first; each screen is its own chunk, loaded on demand.
     chunkSizeWarningLimit: 800,
-    rolldownOptions: {
-      output: {
-        // The engine (with its WebAssembly kernel) in a chunk of its own: left to itself the
-        // bundler put it in the chunk of the lab's code that Inertia imports statically, and the
-        // screen's controls waited for the engine's bytes (inertia-engine.ts).
-        codeSplitting: {
-          groups: [{ name: 'engine', test: /[\\/]packages[\\/]engine[\\/]src[\\/]/ }],
-        },
-      },
-    },
   },
   preview: { host: '127.0.0.1', port: 4173 },
 });

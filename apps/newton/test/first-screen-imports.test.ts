@@ -43,21 +43,11 @@ describe('the first screen', () => {
   it('loads no MUI and no Emotion: the shell and Inertia are plain elements and a static stylesheet', () => {
     const packages = packagesOf(['main.tsx', 'screens/inertia/InertiaScreen.tsx']);
     expect(packages.has('react')).toBe(true);
+    expect(packages.has('@physical/react')).toBe(true);
     const styled = [...packages]
       .filter(([name]) => name.startsWith('@mui/') || name.startsWith('@emotion/'))
       .map(([name, file]) => `${name} (from ${file.slice(SRC.length)})`);
     expect(styled).toEqual([]);
-  });
-
-  it('draws its controls without the engine: the engine, the canvas and their React binding come with inertia-engine.ts, imported once the controls are on the page', () => {
-    const physical = [...packagesOf(['main.tsx', 'screens/inertia/InertiaScreen.tsx'])]
-      .filter(([name]) => name.startsWith('@physical/'))
-      .map(([name, file]) => `${name} (from ${file.slice(SRC.length)})`);
-    expect(physical).toEqual([]);
-    const later = packagesOf(['screens/inertia/inertia-engine.ts']);
-    expect(
-      ['@physical/engine', '@physical/canvas', '@physical/react'].filter((name) => later.has(name)),
-    ).toEqual(['@physical/engine', '@physical/canvas', '@physical/react']);
   });
 
   it('is what the check follows: Forces, which draws with MUI, is found to load it', () => {

@@ -4,13 +4,13 @@ import {
   POLYGON_MASS,
   adoptWorld,
   applyConstantForce,
+  createInertiaScene,
   forceVector,
   labMotion,
   sceneSizeFor,
   updateFloorFriction,
   screenAngle,
 } from '../src/screens/inertia/inertia-scene.ts';
-import { createInertiaScene } from '../src/screens/inertia/inertia-engine.ts';
 
 /** A deterministic stand-in for Math.random. */
 function sequence(...values: number[]): () => number {

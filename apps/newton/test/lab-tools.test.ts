@@ -1,7 +1,6 @@
 import { describe, expect, it } from 'vitest';
 import { World, particle, takeSnapshot } from '@physical/engine';
 import { MeasurementLog, csvCell, formatNumber } from '../src/lab/measurement-log.ts';
-import { ENGINE_SNAPSHOTS } from '../src/lab/engine-snapshots.ts';
 import { SnapshotHistory } from '../src/lab/snapshot-history.ts';
 import { observeSteps } from '../src/lab/step-hook.ts';
 import { TimeSeries } from '../src/graphs/time-series.ts';
@@ -34,7 +33,7 @@ describe('observeSteps', () => {
 describe('SnapshotHistory', () => {
   it('restores a world that steps on bit for bit as the original did', () => {
     const world = fallingWorld();
-    const history = new SnapshotHistory<string>({ snapshots: ENGINE_SNAPSHOTS, capacity: 10 });
+    const history = new SnapshotHistory<string>({ capacity: 10 });
     for (let i = 0; i < 5; i++) {
       world.step(1 / 60);
       history.record(world, world.steps / 60, `step ${world.steps}`);
@@ -48,7 +47,7 @@ describe('SnapshotHistory', () => {
 
   it('keeps the newest `capacity` entries and forgets the future after a rewind', () => {
     const world = fallingWorld();
-    const history = new SnapshotHistory<number>({ snapshots: ENGINE_SNAPSHOTS, capacity: 3 });
+    const history = new SnapshotHistory<number>({ capacity: 3 });
     for (let i = 0; i < 5; i++) {
       world.step(1 / 60);
       history.record(world, i, i);
@@ -59,22 +58,14 @@ describe('SnapshotHistory', () => {
     expect(history.length).toBe(1);
     expect(history.last!.data).toBe(2);
     expect(() => history.restore(5)).toThrow(/no entry 5/);
-    expect(() => new SnapshotHistory({ snapshots: ENGINE_SNAPSHOTS, capacity: 1 })).toThrow(
-      /capacity/,
-    );
-    expect(
-      () => new SnapshotHistory({ snapshots: ENGINE_SNAPSHOTS, capacity: 4, interval: 5 }),
-    ).toThrow(/interval/);
+    expect(() => new SnapshotHistory({ capacity: 1 })).toThrow(/capacity/);
+    expect(() => new SnapshotHistory({ capacity: 4, interval: 5 })).toThrow(/interval/);
   });
 
   it('with a snapshot every few steps, replays the steps between: the same world at every step', () => {
     const world = fallingWorld();
-    const sparse = new SnapshotHistory<number>({
-      snapshots: ENGINE_SNAPSHOTS,
-      capacity: 20,
-      interval: 4,
-    });
-    const every = new SnapshotHistory<number>({ snapshots: ENGINE_SNAPSHOTS, capacity: 20 });
+    const sparse = new SnapshotHistory<number>({ capacity: 20, interval: 4 });
+    const every = new SnapshotHistory<number>({ capacity: 20 });
     for (let i = 0; i < 12; i++) {
       world.step(1 / 60);
       sparse.record(world, world.steps / 60, world.steps);
@@ -89,11 +80,7 @@ describe('SnapshotHistory', () => {
       expect(takeSnapshot(replayed)).toEqual(takeSnapshot(every.restore(index).world));
     }
     // Full: the oldest kept entry still has a snapshot to replay from.
-    const small = new SnapshotHistory<number>({
-      snapshots: ENGINE_SNAPSHOTS,
-      capacity: 5,
-      interval: 4,
-    });
+    const small = new SnapshotHistory<number>({ capacity: 5, interval: 4 });
     for (let i = 0; i < 9; i++) {
       world.step(1 / 60);
       small.record(world, i, i);
@@ -109,11 +96,7 @@ describe('SnapshotHistory, changes between steps and worlds side by side', () =>
     const run = (mark: boolean) => {
       const world = fallingWorld();
       const ball = world.bodies[0]!;
-      const history = new SnapshotHistory<number>({
-        snapshots: ENGINE_SNAPSHOTS,
-        capacity: 20,
-        interval: 10,
-      });
+      const history = new SnapshotHistory<number>({ capacity: 20, interval: 10 });
       history.record(world, 0, 0);
       // A push switched on between two steps, as a learner does.
       ball.applyForce({ x: 3, y: 0 }, { duration: 'constant' });
@@ -135,7 +118,7 @@ describe('SnapshotHistory, changes between steps and worlds side by side', () =>
 
   it('finds the newest entry at or before a time (a world a step behind another)', () => {
     const world = fallingWorld();
-    const history = new SnapshotHistory<number>({ snapshots: ENGINE_SNAPSHOTS, capacity: 10 });
+    const history = new SnapshotHistory<number>({ capacity: 10 });
     for (let i = 0; i < 4; i++) {
       history.record(world, i / 60, i);
       world.step(1 / 60);

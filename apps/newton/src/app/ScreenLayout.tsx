@@ -22,11 +22,6 @@ export interface ScreenLayoutProps {
    */
   readonly actions?: ReactNode;
   readonly controls: SimControlsProps;
-  /**
-   * The simulation is still on its way (Inertia's controls are drawn before the engine's code
-   * has arrived): the app is marked ready only once it is not.
-   */
-  readonly loading?: boolean;
 }
 
 /**
@@ -43,13 +38,12 @@ export function ScreenLayout({
   panel,
   actions,
   controls,
-  loading = false,
 }: ScreenLayoutProps) {
   const sideBySide = useMediaQuery(SIDE_BY_SIDE);
   // The first screen is on the page (its code loaded on demand): the app is ready.
   useEffect(() => {
-    if (active && !loading) document.documentElement.dataset['ready'] = 'true';
-  }, [active, loading]);
+    if (active) document.documentElement.dataset['ready'] = 'true';
+  }, [active]);
   const simControls = (
     <div className="screen__controls">
       <SimControls {...controls} />

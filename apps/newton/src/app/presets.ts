@@ -3,13 +3,13 @@ import {
   MIN_FORCE as FORCES_MIN_FORCE,
   MAX_MASS,
   MIN_MASS,
-} from '../screens/forces/forces-limits.ts';
+} from '../screens/forces/forces-scene.ts';
 import { MAX_FORCE, MIN_FORCE } from '../screens/inertia/inertia-scene.ts';
 import {
   MAX_MASS as LAB_MAX_MASS,
   MAX_SPEED as LAB_MAX_SPEED,
   MIN_MASS as LAB_MIN_MASS,
-} from '../screens/reactions/reactions-limits.ts';
+} from '../screens/reactions/reactions-scene.ts';
 import { SCREENS, type ScreenId } from './screens.ts';
 
 /**

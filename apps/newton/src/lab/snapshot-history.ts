@@ -1,4 +1,4 @@
-import type { World, WorldSnapshot } from '@physical/engine';
+import { type World, type WorldSnapshot, restoreSnapshot, takeSnapshot } from '@physical/engine';
 
 /** One saved step: its time, what the app keeps beside the world, and maybe a snapshot. */
 export interface HistoryEntry<Data> {
@@ -9,20 +9,8 @@ export interface HistoryEntry<Data> {
   readonly snapshot: WorldSnapshot | null;
 }
 
-/**
- * The engine's snapshot functions (`takeSnapshot`, `restoreSnapshot`; `ENGINE_SNAPSHOTS` in
- * engine-snapshots.ts), handed in rather than imported: the lab's code then loads without the
- * engine's, and a screen's controls can be on the page before the engine's chunk has arrived.
- */
-export interface WorldSnapshots {
-  readonly take: (world: World) => WorldSnapshot;
-  readonly restore: (snapshot: WorldSnapshot) => World;
-}
-
 /** Options of a {@link SnapshotHistory}. */
 export interface SnapshotHistoryOptions {
-  /** How worlds are saved and restored. */
-  readonly snapshots: WorldSnapshots;
   /** The most steps kept (the oldest go first), at least 2. */
   readonly capacity: number;
   /**
@@ -47,7 +35,6 @@ export class SnapshotHistory<Data> {
   readonly capacity: number;
   readonly interval: number;
   readonly step: number;
-  private readonly snapshots: WorldSnapshots;
   private entries: HistoryEntry<Data>[] = [];
   /** Steps since the last snapshot. */
   private sinceSnapshot = 0;
@@ -55,7 +42,7 @@ export class SnapshotHistory<Data> {
   private changed = false;
 
   constructor(options: SnapshotHistoryOptions) {
-    const { capacity, interval = 1, step = 1 / 60, snapshots } = options;
+    const { capacity, interval = 1, step = 1 / 60 } = options;
     if (!Number.isInteger(capacity) || capacity < 2) {
       throw new RangeError(`capacity must be a whole number of 2 or more, got ${capacity}`);
     }
@@ -66,7 +53,6 @@ export class SnapshotHistory<Data> {
     this.capacity = capacity;
     this.interval = interval;
     this.step = step;
-    this.snapshots = snapshots;
   }
 
   /** Number of steps saved. */
@@ -103,7 +89,7 @@ export class SnapshotHistory<Data> {
     const snap =
       this.entries.length === 0 || this.changed || this.sinceSnapshot + 1 >= this.interval;
     this.changed = false;
-    this.entries.push({ time, data, snapshot: snap ? this.snapshots.take(world) : null });
+    this.entries.push({ time, data, snapshot: snap ? takeSnapshot(world) : null });
     this.sinceSnapshot = snap ? 0 : this.sinceSnapshot + 1;
     if (this.entries.length > this.capacity) {
       let start = this.entries.length - this.capacity;
@@ -134,7 +120,7 @@ export class SnapshotHistory<Data> {
     }
     let base = index;
     while (this.entries[base]!.snapshot === null) base--;
-    const world = this.snapshots.restore(this.entries[base]!.snapshot!);
+    const world = restoreSnapshot(this.entries[base]!.snapshot!);
     for (let i = base; i < index; i++) world.step(this.step);
     return { world, entry };
   }

@@ -2,7 +2,7 @@ import type { World } from '@physical/engine';
 import { useCallback, useEffect, useMemo, useRef, useState } from 'react';
 import { STEP, simulatedTime } from '../app/use-simulation.ts';
 import { MeasurementLog, type Quantity } from './measurement-log.ts';
-import { SnapshotHistory, type WorldSnapshots } from './snapshot-history.ts';
+import { SnapshotHistory } from './snapshot-history.ts';
 import { observeSteps } from './step-hook.ts';
 
 /** One measured value of a moment: a CSV cell. */
@@ -15,11 +15,6 @@ export interface RewindOptions<Data> {
    * track); null before the first is built. Keep the array's identity while the worlds stay.
    */
   readonly worlds: readonly World[] | null;
-  /**
-   * How the worlds are saved and restored (`ENGINE_SNAPSHOTS`); may be null while `worlds` is
-   * (a screen whose engine code is still on its way).
-   */
-  readonly snapshots: WorldSnapshots | null;
   /** What the screen must restore beside world `index` at the moment just stepped to. */
   readonly data: (index: number) => Data;
   /** Called just before each step of world `index` (e.g. to keep the velocity for Δv / Δt). */
@@ -94,13 +89,7 @@ export function useRewind<Data>(options: RewindOptions<Data>): Rewind {
 
   const history = useCallback(
     (index: number): SnapshotHistory<Data> =>
-      (histories.current[index] ??= new SnapshotHistory<Data>({
-        capacity,
-        interval,
-        step: STEP,
-        // Histories are made for worlds only, and worlds come with their snapshots.
-        snapshots: optionsRef.current.snapshots!,
-      })),
+      (histories.current[index] ??= new SnapshotHistory<Data>({ capacity, interval, step: STEP })),
     [capacity, interval],
   );
 

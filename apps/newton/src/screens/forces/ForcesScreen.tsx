@@ -14,7 +14,6 @@ import { TimeSeriesGraph } from '../../graphs/TimeSeriesGraph.tsx';
 import { useI18n } from '../../i18n/i18n.tsx';
 import { DataTools } from '../../lab/DataTools.tsx';
 import { Ruler } from '../../lab/Ruler.tsx';
-import { ENGINE_SNAPSHOTS } from '../../lab/engine-snapshots.ts';
 import { useRewind, type Measured } from '../../lab/use-rewind.ts';
 import {
   adoptTrack,
@@ -144,7 +143,6 @@ export function ForcesScreen({ active }: { active: boolean }) {
   const worlds = useMemo(() => tracks.map((track) => track.world), [tracks]);
   const rewind = useRewind<TrackState>({
     worlds,
-    snapshots: ENGINE_SNAPSHOTS,
     data: (index) => trackState(tracksRef.current[index]!),
     measure: (index) => measureTrack(tracksRef.current[index]!, index, hiddenRef.current),
     adopt: (restored: readonly World[], states: readonly TrackState[]) => {

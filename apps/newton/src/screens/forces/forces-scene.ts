@@ -1,5 +1,4 @@
 import { type Body, type Force, World, box, wall } from '@physical/engine';
-import { MAX_MASS, MIN_MASS } from './forces-limits.ts';
 
 /** Track length (m): the ruler runs from 0 at the square's start. */
 export const TRACK_LENGTH = 12;
@@ -8,8 +7,10 @@ export const TRACK_HEIGHT = 2;
 export const SQUARE_SIZE = 1;
 /** Where the square's centre starts (m from the track's left end). */
 export const START_X = 0.7;
-export { MAX_FORCE, MIN_FORCE } from './forces-limits.ts';
-export { MAX_MASS, MIN_MASS };
+export const MIN_MASS = 0.5;
+export const MAX_MASS = 5;
+export const MIN_FORCE = 0;
+export const MAX_FORCE = 10;
 
 /**
  * What the learner sets for one square: its mass and the force on it, the cause; the

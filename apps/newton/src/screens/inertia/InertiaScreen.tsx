@@ -1,9 +1,23 @@
 import { listenToCanvasDrags } from '../../app/canvas-drag.ts';
 import { CANVAS_PIXEL_RATIO } from '../../app/theme.ts';
-import type { OverlayDrawer, PhysicalCanvasElement } from '@physical/canvas';
+import {
+  ARROW_COLORS,
+  drawArrow,
+  type OverlayDrawer,
+  type PhysicalCanvasElement,
+} from '@physical/canvas';
 import type { Force, World } from '@physical/engine';
-import type * as InertiaEngineModule from './inertia-engine.ts';
-import { Suspense, lazy, useCallback, useEffect, useMemo, useRef, useState } from 'react';
+import { PhysicalCanvas } from '@physical/react';
+import {
+  Suspense,
+  lazy,
+  useCallback,
+  useEffect,
+  useLayoutEffect,
+  useMemo,
+  useRef,
+  useState,
+} from 'react';
 import { useAnnouncer } from '../../app/Announcer.tsx';
 import { presetFor, presetNumber } from '../../app/presets.ts';
 import { useOrientationRebuild } from '../../app/use-orientation-rebuild.ts';
@@ -30,6 +44,7 @@ import {
   WALL_NAMES,
   adoptWorld,
   applyConstantForce,
+  createInertiaScene,
   forceVector,
   forcesOn,
   labMotion,
@@ -41,18 +56,6 @@ import {
   type InertiaScene,
   type Surface,
 } from './inertia-scene.ts';
-
-/** The engine's part of the screen: the world, the canvas element, the snapshots. */
-type InertiaEngine = typeof InertiaEngineModule;
-let engineLoad: Promise<InertiaEngine> | null = null;
-/**
- * Fetches the engine's part once (the page's preload has usually brought it already): the
- * screen's controls are drawn without it and answer a tap while it arrives, and the world is
- * built as soon as it has (a force asked for in the meantime acts from the world's first step).
- */
-function loadEngine(): Promise<InertiaEngine> {
-  return (engineLoad ??= import('./inertia-engine.ts'));
-}
 
 // The force dialog is MUI's: it loads (with MUI) the first time it opens.
 const ForceDialog = lazy(() =>
@@ -115,23 +118,9 @@ export function InertiaScreen({ active }: { active: boolean }) {
   const sim = useSimulation();
   const canvasRef = useRef<PhysicalCanvasElement | null>(null);
   const hostRef = useRef<HTMLDivElement | null>(null);
-  const [engine, setEngine] = useState<InertiaEngine | null>(null);
-  const engineRef = useRef(engine);
-  engineRef.current = engine;
-  useEffect(() => {
-    let live = true;
-    void loadEngine().then((module) => {
-      if (live) setEngine(module);
-    });
-    return () => {
-      live = false;
-    };
-  }, []);
   const [scene, setScene] = useState<InertiaScene | null>(null);
   const sceneRef = useRef<InertiaScene | null>(null);
   sceneRef.current = scene;
-  /** Apply force was tapped before the world was built: it acts from the world's first step. */
-  const pendingForceRef = useRef(false);
   // A preset link (#inertia?F=2&angle=90&e=0.5&surface=wood) chooses the first setup.
   const [preset] = useState(() => presetFor('inertia'));
   const [angle, setAngle] = useState(() => presetNumber(preset, 'angle', 0));
@@ -168,7 +157,6 @@ export function InertiaScreen({ active }: { active: boolean }) {
   const worlds = useMemo(() => (scene === null ? null : [scene.world]), [scene]);
   const rewind = useRewind<MomentData>({
     worlds,
-    snapshots: engine?.ENGINE_SNAPSHOTS ?? null,
     data: () => {
       const forces = sceneRef.current!.body.forces;
       return {
@@ -241,22 +229,16 @@ export function InertiaScreen({ active }: { active: boolean }) {
   });
 
   const build = useCallback(() => {
-    if (engine === null) return;
     const host = hostRef.current;
     const size = sceneSizeFor(host?.clientWidth ?? 0, host?.clientHeight ?? 0);
-    const next = engine.createInertiaScene(size.width, size.height, settingsRef.current);
-    const { angle: pendingAngle, magnitude: pendingMagnitude } = forceSettingRef.current;
-    forceRef.current = pendingForceRef.current
-      ? applyConstantForce(next, pendingAngle, pendingMagnitude)
-      : null;
-    setApplied(pendingForceRef.current);
-    pendingForceRef.current = false;
+    forceRef.current = null;
     pushRef.current = null;
+    setApplied(false);
     setPushState(null);
     speed.clear();
     clearRewind();
-    setScene(next);
-  }, [engine, speed, clearRewind]);
+    setScene(createInertiaScene(size.width, size.height, settingsRef.current));
+  }, [speed, clearRewind]);
 
   const resetAll = useCallback(() => {
     setAngle(0);
@@ -268,11 +250,9 @@ export function InertiaScreen({ active }: { active: boolean }) {
     build();
   }, [build]);
 
-  // The world is built in a task of its own after the canvas has come (a passive effect): a tap
-  // on the controls meanwhile is answered between the two, not after both.
-  useEffect(() => {
-    if (active && scene === null && engine !== null) build();
-  }, [active, scene, engine, build]);
+  useLayoutEffect(() => {
+    if (active && scene === null) build();
+  }, [active, scene, build]);
   useOrientationRebuild(hostRef, active ? scene : null, build);
 
   // Described state: what just happened, at a human pace.
@@ -295,9 +275,7 @@ export function InertiaScreen({ active }: { active: boolean }) {
   const drawOverlay = useCallback<OverlayDrawer>(
     (context, canvas) => {
       const current = sceneRef.current;
-      const parts = engineRef.current;
-      if (current === null || parts === null) return;
-      const { ARROW_COLORS, drawArrow } = parts;
+      if (current === null) return;
       const time = simulatedTime(current.world);
       const velocity = current.body.linearVelocity;
       if (speed.times.length === 0 || time > speed.lastTime) {
@@ -418,23 +396,8 @@ export function InertiaScreen({ active }: { active: boolean }) {
     [speed],
   );
 
-  const announceForce = (): void =>
-    announce(
-      t('inertia.forceStarted', {
-        force: unit(magnitude, 'N', 1),
-        angle: number(angle, 0),
-        name: t(directionName(angle)),
-      }),
-    );
   const toggleForce = (): void => {
-    if (scene === null) {
-      // Tapped while the engine's code is still arriving: the force acts once the world is built.
-      pendingForceRef.current = !pendingForceRef.current;
-      setApplied(pendingForceRef.current);
-      if (pendingForceRef.current) announceForce();
-      else announce(t('inertia.forceStopped'));
-      return;
-    }
+    if (scene === null) return;
     if (forceRef.current !== null) {
       forceRef.current.remove();
       forceRef.current = null;
@@ -445,7 +408,13 @@ export function InertiaScreen({ active }: { active: boolean }) {
       forceRef.current = applyConstantForce(scene, angle, magnitude);
       worldChanged();
       setApplied(true);
-      announceForce();
+      announce(
+        t('inertia.forceStarted', {
+          force: unit(magnitude, 'N', 1),
+          angle: number(angle, 0),
+          name: t(directionName(angle)),
+        }),
+      );
     }
     canvasRef.current?.invalidate();
   };
@@ -617,37 +586,29 @@ export function InertiaScreen({ active }: { active: boolean }) {
           height: scene.height + 2 * MARGIN,
         };
 
-  const Canvas = engine?.PhysicalCanvas ?? null;
-
   return (
     <ScreenLayout
       id="inertia"
       active={active}
-      loading={scene === null}
       law={t('inertia.law')}
       stage={
         <>
           {/* The finger pushes the body: the browser must not take the drag for a pan. */}
           <div ref={hostRef} className="inertia-host">
-            {Canvas === null ? (
-              // The canvas's room, kept while the engine's code arrives.
-              <div className="inertia-host__waiting" aria-label={description} role="img" />
-            ) : (
-              <Canvas
-                drag={false}
-                maxPixelRatio={CANVAS_PIXEL_RATIO}
-                ref={canvasRef}
-                paused={sim.paused}
-                world={scene?.world ?? null}
-                fit="contain"
-                viewBox={viewBox}
-                timeScale={sim.timeScale}
-                drawOverlay={drawOverlay}
-                onPauseChange={({ paused }) => sim.setPaused(paused)}
-                aria-label={description}
-                style={{ flex: 1, height: 'auto', minHeight: 0 }}
-              />
-            )}
+            <PhysicalCanvas
+              drag={false}
+              maxPixelRatio={CANVAS_PIXEL_RATIO}
+              ref={canvasRef}
+              paused={sim.paused}
+              world={scene?.world ?? null}
+              fit="contain"
+              viewBox={viewBox}
+              timeScale={sim.timeScale}
+              drawOverlay={drawOverlay}
+              onPauseChange={({ paused }) => sim.setPaused(paused)}
+              aria-label={description}
+              style={{ flex: 1, height: 'auto', minHeight: 0 }}
+            />
           </div>
           {show.ruler && <Ruler canvas={rulerCanvas} version={scene} />}
         </>

@@ -46,7 +46,6 @@ import { clipToWalls } from '../../app/clip-to-walls.ts';
 import { ElasticitySlider } from '../../app/ElasticitySlider.tsx';
 import { useI18n, type MessageKey } from '../../i18n/i18n.tsx';
 import { DataTools } from '../../lab/DataTools.tsx';
-import { ENGINE_SNAPSHOTS } from '../../lab/engine-snapshots.ts';
 import { useRewind } from '../../lab/use-rewind.ts';
 import {
   requestTiltPermission,
@@ -372,7 +371,6 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   const worlds = useMemo(() => (scene === null ? null : [scene.world]), [scene]);
   const rewind = useRewind<MomentData>({
     worlds,
-    snapshots: ENGINE_SNAPSHOTS,
     capacity: HISTORY_STEPS,
     interval: SNAPSHOT_INTERVAL,
     data: () => momentData(sceneRef.current!),

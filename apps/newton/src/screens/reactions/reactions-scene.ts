@@ -226,7 +226,11 @@ export function clearParticles(scene: ReactionsScene): void {
   scene.added = 0;
 }
 
-export { MAX_MASS, MAX_SPEED, MIN_MASS } from './reactions-limits.ts';
+/** Lightest and heaviest particle the lab takes (kg). */
+export const MIN_MASS = 0.05;
+export const MAX_MASS = 10;
+/** Fastest velocity component the lab takes (m/s). */
+export const MAX_SPEED = 10;
 
 /**
  * The radius (m) that shows a mass (kg): grows with the mass (as the square root, like a disc of
