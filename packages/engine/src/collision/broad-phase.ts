@@ -216,59 +216,21 @@ export class BroadPhase {
       }
       const type = proxyKey & 3;
       const tree = trees[type]!;
-      const o = 4 * (proxyKey >> 2);
+      // The query box is read where it lives (the moved proxy's row of its tree's boxes): four
+      // doubles passed as arguments were boxed on the heap at each call (~16 KB a tumbler step).
       const boxes = tree.boxes;
-      const minX = boxes[o]!;
-      const minY = boxes[o + 1]!;
-      const maxX = boxes[o + 2]!;
-      const maxY = boxes[o + 3]!;
+      const at = 4 * (proxyKey >> 2);
       const shapeId = tree.getUserData(proxyKey >> 2);
       if (type === DYNAMIC) {
-        this.reportPairs(
-          onPair,
-          known,
-          filters,
-          trees[0],
-          0,
-          proxyKey,
-          shapeId,
-          minX,
-          minY,
-          maxX,
-          maxY,
-        );
-        this.reportPairs(
-          onPair,
-          known,
-          filters,
-          trees[1],
-          1,
-          proxyKey,
-          shapeId,
-          minX,
-          minY,
-          maxX,
-          maxY,
-        );
+        this.reportPairs(onPair, known, filters, trees[0], 0, proxyKey, shapeId, boxes, at);
+        this.reportPairs(onPair, known, filters, trees[1], 1, proxyKey, shapeId, boxes, at);
       }
-      this.reportPairs(
-        onPair,
-        known,
-        filters,
-        trees[2],
-        DYNAMIC,
-        proxyKey,
-        shapeId,
-        minX,
-        minY,
-        maxX,
-        maxY,
-      );
+      this.reportPairs(onPair, known, filters, trees[2], DYNAMIC, proxyKey, shapeId, boxes, at);
     }
   }
 
   /**
-   * Reports the pairs of moved proxy `queryKey` (shape `queryShapeId`, fat box given) with the
+   * Reports the pairs of moved proxy `queryKey` (shape `queryShapeId`, fat box at `at` in `boxes`) with the
    * proxies of `tree` (type `type`) its box overlaps, in the tree's query order: the list
    * DynamicTree.overlapping makes, read here with no callback per leaf.
    */
@@ -280,12 +242,10 @@ export class BroadPhase {
     type: number,
     queryKey: number,
     queryShapeId: number,
-    minX: number,
-    minY: number,
-    maxX: number,
-    maxY: number,
+    boxes: Float64Array,
+    at: number,
   ): void {
-    const count = tree.overlapping(minX, minY, maxX, maxY);
+    const count = tree.overlapping(boxes, at);
     if (count === 0) return;
     const hits = tree.hits;
     const userData = tree.userData;

@@ -69,7 +69,10 @@ function expectQueriesMatchBruteForce(
     });
     const expected = [...live].filter(([, box]) => aabbOverlaps(box, query)).map(([id]) => id);
     // overlapping (the broad phase's pair search) lists the same proxies in the query's order.
-    const count = tree.overlapping(query.minX, query.minY, query.maxX, query.maxY);
+    const count = tree.overlapping(
+      Float64Array.of(query.minX, query.minY, query.maxX, query.maxY),
+      0,
+    );
     expect([...tree.hits.subarray(0, count)]).toEqual(found);
     expect(found.sort((a, b) => a - b)).toEqual(expected.sort((a, b) => a - b));
     // overlapsAny (continuous collision's early out) agrees with the full query.
