@@ -61,6 +61,7 @@ import {
   IMPACT,
   IMPACT_CLOSE,
   IMPACT_CONTINUE,
+  IMPACT_COUNT,
   IMPACT_OPEN,
   IMPACT_ROUND,
   IMPULSE_SCALE,
@@ -1305,7 +1306,8 @@ export function solve(
  * overlapping point: `pushSpeed`, the most a push-out moves it) gets -(1 + e)
  * times its approach, with its bodies' masses. `IMPACT_CONTINUE`
  * moves the open impacts on towards their targets (between joint passes); `IMPACT_OPEN` opens the
- * bounces of the relax pass for that; `IMPACT_CLOSE` closes all.
+ * bounces of the relax pass for that; `IMPACT_CLOSE` closes all; `IMPACT_COUNT` returns the
+ * relax pass's bounces and changes nothing.
  */
 export function impacts(
   cPtr: usize,
@@ -1324,6 +1326,12 @@ export function impacts(
     const i = load<i32>(orderPtr + ((<usize>n) << 2));
     const cb = constraintAt(cPtr, i);
     const pointCount = <i32>lc(cb, POINT_COUNT);
+    if (mode == IMPACT_COUNT) {
+      for (let j = 0; j < pointCount; j++) {
+        if (lc(pointAt(cb, j), IMPACT) == 2) started++;
+      }
+      continue;
+    }
     if (mode == IMPACT_OPEN || mode == IMPACT_CLOSE || mode == IMPACT_ROUND) {
       const from2: f64 = mode == IMPACT_OPEN ? 2 : 5;
       const to2: f64 = mode == IMPACT_OPEN ? 5 : 6;

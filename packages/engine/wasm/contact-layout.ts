@@ -15,6 +15,7 @@ export const FRICTION: i32 = 2;
 export const IMPACT: i32 = 15;
 export const IMPACT_CLOSE: i32 = 3;
 export const IMPACT_CONTINUE: i32 = 1;
+export const IMPACT_COUNT: i32 = 4;
 export const IMPACT_OPEN: i32 = 2;
 export const IMPACT_ROUND: i32 = 0;
 export const IMPULSE_SCALE: i32 = 10;

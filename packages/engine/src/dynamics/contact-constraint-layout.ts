@@ -91,10 +91,12 @@ export function constraintBase(i: number): number {
 export const PRESSED_AFTER_BOUNCING_STEPS = 3;
 // The impact rounds' modes (the kernel's impacts, run by Solver.impactRounds): start a round
 // (closing the last one's impacts), move the open impacts on towards their targets between joint
-// passes, open the relax pass's bounces for that, close all and clear the marks.
+// passes, open the relax pass's bounces for that, close all and clear the marks; count the relax
+// pass's bounces and change nothing (whether a lone bounce is solved with the joints).
 export const IMPACT_ROUND = 0;
 export const IMPACT_CONTINUE = 1;
 export const IMPACT_OPEN = 2;
 export const IMPACT_CLOSE = 3;
+export const IMPACT_COUNT = 4;
 /** Largest condition number (max K_jj^2 / det K) of a two-point block solved as a block. */
 export const MAX_CONDITION_NUMBER = 1000;
