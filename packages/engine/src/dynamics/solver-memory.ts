@@ -382,8 +382,9 @@ export class SolverMemory implements ShapeMemory {
    * first step neither moves the block (reserveStep finds the room made) nor takes a page fault
    * on each fresh page it writes (large_pyramid's first step took ~6,300 faults: ~2,000 moving
    * the block, ~1,900 making its 15,000 contact slots, ~1,900 preparing their constraints).
-   * The world calls it each time its shapes double (WorldMembership), so the block moves O(log n)
-   * times while a world is built and every region grows in the same move.
+   * The world calls it each time its shapes outgrow the last room, grown by half
+   * (WorldMembership.foresee), so the block moves O(log n) times while a world is built and
+   * every region grows in the same move.
    */
   reserveForeseen(stateDoubles: number, bodies: number, shapes: number, contacts: number): void {
     const have = this.capacities;
