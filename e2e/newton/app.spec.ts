@@ -161,14 +161,15 @@ test('newton: keyboard only, and a navigation rail on a wide screen', async ({ b
   }
 });
 
-test('newton: the first screen is requested with the entry (its preload script comes before the stylesheet)', async ({
+test('newton: the first screen is requested as the entry arrives (its preload script comes before the stylesheet)', async ({
   browser,
 }) => {
   const app = await openApp(browser, '#inertia');
   try {
     const { page } = app;
-    // The page as served, and the requests it made: the script that preloads the first screen's
-    // chunks runs before the parser meets a stylesheet (a script after one waits for it).
+    // The page as served, and the requests it made: the script that preloads the entry and then
+    // the first screen's chunks runs before the parser meets a stylesheet (a script after one
+    // waits for it).
     const html = await (await page.request.get(`${app.server.url}/index.html`)).text();
     const preload = html.indexOf('modulepreload');
     const stylesheet = html.indexOf('rel="stylesheet"');
@@ -179,14 +180,33 @@ test('newton: the first screen is requested with the entry (its preload script c
       preload < stylesheet && preload < entry,
       `the preload script (at ${preload}) comes before the stylesheet (${stylesheet}) and the entry (${entry})`,
     );
-    const preloaded = await page.evaluate(() =>
-      [...document.querySelectorAll<HTMLLinkElement>('link[rel="modulepreload"]')].map((link) =>
-        link.href.split('/').pop(),
+    const { preloaded, requests } = await page.evaluate(() => ({
+      preloaded: [...document.querySelectorAll<HTMLLinkElement>('link[rel="modulepreload"]')].map(
+        (link) => link.href.split('/').pop() ?? '',
       ),
-    );
+      requests: performance
+        .getEntriesByType('resource')
+        .map((item) => item as PerformanceResourceTiming)
+        .map((item) => ({
+          name: item.name.split('/').pop() ?? '',
+          start: item.startTime,
+          end: item.responseEnd,
+        })),
+    }));
     assert.ok(
-      preloaded.some((name) => /^InertiaScreen-/.test(name ?? '')),
+      preloaded.some((name) => /^InertiaScreen-/.test(name)),
       `Inertia's chunk is preloaded (${preloaded.join(', ')})`,
+    );
+    // The entry is fetched once (the module script takes the preload's response), and the
+    // screen's chunks are asked for once it has arrived, not beside it: on Slow 4G they would
+    // share its bandwidth and the phone's CPU would wait idle for all of them.
+    const entries = requests.filter((item) => /^index-.*\.js$/.test(item.name));
+    assert.equal(entries.length, 1, `the entry is requested once (${JSON.stringify(entries)})`);
+    const screen = requests.find((item) => /^InertiaScreen-/.test(item.name));
+    assert.ok(screen !== undefined, 'the screen chunk was requested');
+    assert.ok(
+      screen.start >= entries[0]!.end,
+      `the screen's chunk is requested (at ${screen.start} ms) once the entry has arrived (${entries[0]!.end} ms)`,
     );
   } finally {
     await closeApp(app);

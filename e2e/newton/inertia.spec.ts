@@ -131,10 +131,28 @@ for (const [orientation, options] of [
       );
 
       // Wood slows it down; back on ice it glides at its new speed.
+      // Waited for by the readout, not by the clock: on a loaded machine 600 ms of wall time
+      // held too few frames for the speed to fall by 0.1 m/s.
       await page.locator('[data-surface="wood"]').click();
-      await sleep(600);
+      const slowedBy = await page
+        .waitForFunction(
+          (bound) => {
+            const text = document.querySelector('#inertia [data-readout="speed"]')?.textContent;
+            const speed = Number(/-?\d+(?:\.\d+)?/.exec(text ?? '')?.[0]);
+            return speed < bound;
+          },
+          later - 0.1,
+          { timeout: 10_000 },
+        )
+        .then(
+          () => true,
+          () => false,
+        );
       const slowed = numberIn(await readout(page, 'speed', '#inertia'));
-      assert.ok(slowed < later - 0.1, `wood's friction slows it: ${later} -> ${slowed}`);
+      assert.ok(
+        slowedBy && slowed < later - 0.1,
+        `wood's friction slows it: ${later} -> ${slowed}`,
+      );
 
       // Bounciness 0, force up: it ends pressed on the top wall and reads as at rest.
       await page.locator('#inertia [data-action="reset"]').click();

@@ -1,4 +1,5 @@
 import { useEffect, useRef } from 'react';
+import { CANVAS_PIXEL_RATIO } from '../app/theme.ts';
 import { useI18n } from '../i18n/i18n.tsx';
 import { niceStep, type TimeSeries } from './time-series.ts';
 
@@ -59,7 +60,9 @@ export function TimeSeriesGraph({
       const { lines, window, minSpan, number, unit } = latest.current;
       const width = canvas.clientWidth;
       const heightPx = canvas.clientHeight;
-      const ratio = globalThis.devicePixelRatio || 1;
+      // No sharper than the simulation's canvas (theme.ts): a 3x phone's graph would fill 2.25
+      // times the pixels of a 2x one, on a CPU that may raster the canvas itself.
+      const ratio = Math.min(globalThis.devicePixelRatio || 1, CANVAS_PIXEL_RATIO);
       const key = `${lines.map((line) => line.series.version).join(',')}|${width}x${heightPx}@${ratio}|${unit}|${number(1.5)}`;
       if (key === drawn || width === 0 || heightPx === 0) return;
       drawn = key;
