@@ -5,6 +5,7 @@ import react from '@vitejs/plugin-react';
 import { defineConfig, type Plugin } from 'vite';
 import type { OutputBundle, OutputChunk } from 'rolldown';
 import { tokenCss } from './src/app/theme-tokens.ts';
+import { brotliAssets } from './scripts/brotli-assets.ts';
 import { teacherPagesPlugin } from './scripts/teacher-pages.ts';
 
 const source = (path: string): string => fileURLToPath(new URL(path, import.meta.url));
@@ -144,7 +145,14 @@ function firstScreenPreload(): Plugin {
 export default defineConfig({
   base: './',
   root: source('.'),
-  plugins: [react(), themeTokens(), teacherPagesPlugin(), precacheManifest(), firstScreenPreload()],
+  plugins: [
+    react(),
+    themeTokens(),
+    teacherPagesPlugin(),
+    precacheManifest(),
+    firstScreenPreload(),
+    brotliAssets(source('dist')),
+  ],
   resolve: {
     alias: {
       '@physical/engine': source('../../packages/engine/src/index.ts'),

@@ -161,6 +161,40 @@ test('newton: keyboard only, and a navigation rail on a wide screen', async ({ b
   }
 });
 
+test('newton: npm start sends the app in Brotli, which the page decodes', async ({ browser }) => {
+  const app = await openApp(browser, '#inertia', PHONE, 'preview');
+  const { page } = app;
+  try {
+    // What the browser received for its entry: the build's .br of that very file.
+    const entry = await page.evaluate(() => {
+      const item = performance
+        .getEntriesByType('resource')
+        .map((resource) => resource as PerformanceResourceTiming)
+        .find((resource) => /\/assets\/index-[\w-]+\.js$/.test(resource.name))!;
+      return {
+        path: new URL(item.name).pathname,
+        encoded: item.encodedBodySize,
+        decoded: item.decodedBodySize,
+      };
+    });
+    const { statSync } = await import('node:fs');
+    const { DIST } = await import('./app-server.ts');
+    const built = statSync(`${DIST}${entry.path.slice(1)}`).size;
+    const brotli = statSync(`${DIST}${entry.path.slice(1)}.br`).size;
+    assert.equal(entry.decoded, built, 'the page decoded the whole entry');
+    assert.equal(entry.encoded, brotli, `the entry came as its .br (${entry.encoded} bytes)`);
+    const response = await page.request.get(`${app.server.url}${entry.path}`, {
+      headers: { 'accept-encoding': 'gzip, br' },
+    });
+    assert.equal(response.headers()['content-encoding'], 'br');
+    // The app runs from it: the first screen is on the page (waited for by openApp).
+    assert.match((await page.locator('#inertia-law').textContent())!, /^First law/);
+    assertQuiet(app);
+  } finally {
+    await closeApp(app);
+  }
+});
+
 test('newton: the first screen is requested as the entry arrives (its preload script comes before the stylesheet)', async ({
   browser,
 }) => {
