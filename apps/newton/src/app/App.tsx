@@ -5,6 +5,7 @@ import { ToggleButtons } from '../ui/ToggleButtons.tsx';
 import { HintIcon, SoundOffIcon, SoundOnIcon } from './icons.tsx';
 import { onSoundChange, setSoundEnabled, soundEnabled } from './sound.ts';
 import { BottomNav, NavRail } from './Navigation.tsx';
+import { SCREEN_MODULES, type FirstScreen } from './screen-modules.ts';
 import { SCREENS, screenFromHash, type ScreenId } from './screens.ts';
 import { useMediaQuery } from './use-media-query.ts';
 import '../ui/ui.css';
@@ -14,28 +15,17 @@ const LOCALE_KEY = 'newton.locale';
 /** The other screens' code is fetched this long after the start if nothing was tapped (ms). */
 const PREFETCH_AFTER_MS = 8000;
 
-// Each screen is its own chunk, fetched the first time it is shown: the first screen paints
-// without the code of the other two.
-const InertiaScreen = lazy(() =>
-  import('../screens/inertia/InertiaScreen.tsx').then((module) => ({
-    default: module.InertiaScreen,
-  })),
-);
-const ForcesScreen = lazy(() =>
-  import('../screens/forces/ForcesScreen.tsx').then((module) => ({
-    default: module.ForcesScreen,
-  })),
-);
+// Each screen is its own chunk, fetched the first time it is shown (the first one by main.tsx,
+// before the first render).
+const LAZY_SCREENS = {
+  inertia: lazy(() => SCREEN_MODULES.inertia().then((Component) => ({ default: Component }))),
+  forces: lazy(() => SCREEN_MODULES.forces().then((Component) => ({ default: Component }))),
+  reactions: lazy(() => SCREEN_MODULES.reactions().then((Component) => ({ default: Component }))),
+};
 // The hint's dialog is MUI's: it loads with MUI the first time it is asked for.
 const HintDialog = lazy(() =>
   import('./HintDialog.tsx').then((module) => ({ default: module.HintDialog })),
 );
-const ReactionsScreen = lazy(() =>
-  import('../screens/reactions/ReactionsScreen.tsx').then((module) => ({
-    default: module.ReactionsScreen,
-  })),
-);
-
 function initialLocale(): Locale {
   try {
     const saved = localStorage.getItem(LOCALE_KEY);
@@ -46,8 +36,11 @@ function initialLocale(): Locale {
   return preferredLocale(navigator.languages ?? [navigator.language]);
 }
 
-/** The app: a top bar with the screen's name, the screens, and the navigation. */
-export function App() {
+/**
+ * The app: a top bar with the screen's name, the screens, and the navigation. `first` is the
+ * screen it opens with, its code already loaded (main.tsx): shown at once, with no fallback.
+ */
+export function App({ first }: { first?: FirstScreen | undefined }) {
   const [locale, setLocale] = useState<Locale>(initialLocale);
   useEffect(() => {
     document.documentElement.lang = locale;
@@ -59,13 +52,28 @@ export function App() {
   }, [locale]);
   return (
     <I18nProvider locale={locale}>
-      <Shell locale={locale} onLocale={setLocale} />
+      <Shell locale={locale} onLocale={setLocale} first={first} />
     </I18nProvider>
   );
 }
 
-function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale) => void }) {
+function Shell({
+  locale,
+  onLocale,
+  first,
+}: {
+  locale: Locale;
+  onLocale: (locale: Locale) => void;
+  first: FirstScreen | undefined;
+}) {
   const { t } = useI18n();
+  // The first screen's component as loaded, the others lazily: a lazy component suspends on its
+  // first render even when its code is here, and React holds a reveal back until 300 ms after
+  // the fallback it replaces was shown.
+  const [screens] = useState(() =>
+    first === undefined ? LAZY_SCREENS : { ...LAZY_SCREENS, [first.id]: first.Component },
+  );
+  const { inertia: InertiaScreen, forces: ForcesScreen, reactions: ReactionsScreen } = screens;
   // The rail on the side when there is room beside the screen: a tablet, or a phone turned
   // sideways (a bar below would take a fifth of its height).
   const wide = useMediaQuery('(min-width: 600px), (orientation: landscape)');
@@ -87,9 +95,7 @@ function Shell({ locale, onLocale }: { locale: Locale; onLocale: (locale: Locale
     const prefetch = (): void => {
       stop();
       const load = (): void => {
-        void import('../screens/inertia/InertiaScreen.tsx');
-        void import('../screens/forces/ForcesScreen.tsx');
-        void import('../screens/reactions/ReactionsScreen.tsx');
+        for (const module of Object.values(SCREEN_MODULES)) void module();
         void import('./HintDialog.tsx');
         void import('../screens/inertia/ForceDialog.tsx');
       };
