@@ -87,7 +87,7 @@ export class BodyBounds {
   private measure(body: Body, only: number, dt: number, every: boolean): Float64Array {
     const memory = this.memory;
     const o = memory.offsets;
-    // Through the memory: V8 boxes a double passed to WebAssembly, and this runs per swept body
+    // Through the memory: V8 can box a double passed to WebAssembly, and this runs per swept body
     // (~16 KB of garbage a step in tumbler as an argument; kernel-arguments.ts).
     memory.kernelArguments[A_BOUNDS_DT] = dt;
     this.listed = memory.kernel.bodyBounds(

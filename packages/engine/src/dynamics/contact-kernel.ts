@@ -173,7 +173,7 @@ export interface ContactKernel extends BodyPasses, NarrowPhase {
  * i + 1); with `useList` 1 the passes visit the awake indices of the int32 list at `list`
  * (BATCH_BODIES) from `from` to `to`, else the awake indices from `from` to `to`. `args` is the
  * KERNEL_ARGUMENTS region, where the caller stores the passes' fractional numbers
- * (kernel-arguments.ts: V8 boxes each double passed to WebAssembly).
+ * (kernel-arguments.ts: V8 can box each double passed to WebAssembly).
  */
 export interface BodyPasses {
   integrateVelocities(

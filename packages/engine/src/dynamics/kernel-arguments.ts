@@ -5,10 +5,12 @@
 // the layout; the kernel build writes its mirror into wasm/contact-layout.ts.
 //
 // Why not arguments: V8 (Node 20) calls a WebAssembly export through a wrapper that takes tagged
-// values, so each double passed from optimised JavaScript is boxed into a new heap number, 16
-// bytes per argument per call. The bodies' boxes after a sweep (bodyBounds, once per fast body)
-// made ~16 KB of garbage a step in tumbler that way, and the sub-steps' passes ~2 KB more. A
-// store into a Float64Array boxes nothing.
+// values, so a double passed to it is boxed into a new heap number (16 bytes) unless the optimising
+// compiler inlined that call into optimised code, which a caller not yet optimised (code run once
+// a step stays in V8's baseline tiers for thousands of steps) and some optimised callers do not
+// get. The bodies' boxes after a sweep (bodyBounds, once per fast body) made ~16 KB of garbage a
+// step in tumbler that way, and the sub-steps' passes, the joints' passes and prepareListed ~2 KB
+// more. A store into a Float64Array boxes nothing.
 
 /** The step (s): finalizeBodies, prepareListed. */
 export const A_DT = 0;

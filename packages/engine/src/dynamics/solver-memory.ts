@@ -133,7 +133,7 @@ export class SolverMemory implements ShapeMemory {
   escapedShapes: Float64Array = new Float64Array(0);
   /**
    * The kernel's fractional arguments (KERNEL_ARGUMENTS, kernel-arguments.ts), stored here before
-   * a call: V8 boxes each double passed to WebAssembly.
+   * a call: V8 can box each double passed to WebAssembly.
    */
   kernelArguments: Float64Array = new Float64Array(0);
   /** The heavy-on-light sweep's list (SHOCK_SWEEP). */

@@ -297,9 +297,9 @@ export class Solver {
     // Joints first (they do not depend on the contacts): whether the step may run in batches of
     // islands decides how the contacts are prepared. They may grow the memory: the kernel after.
     const joints = this.joints;
-    joints.prepare(dt, subSteps, contactHertz, this.awakeCount, settings.maxLinearSpeed);
+    joints.prepare(dt, subSteps, this.contactSoftness, this.awakeCount, settings);
     // The kernel's fractional arguments for the whole step, stored once the memory has stopped
-    // moving (the joints' prepare may grow it): V8 boxes each double passed to WebAssembly
+    // moving (the joints' prepare may grow it): V8 can box each double passed to WebAssembly
     // (kernel-arguments.ts), 16 bytes per argument per call.
     this.storeArguments(settings, dt, h);
     const kernel = memory.kernel;
@@ -623,7 +623,7 @@ export class Solver {
     const fastBodies = this.fastBodies;
     const fastBullets = this.fastBullets;
     const memory = this.memory;
-    // Through the memory, not as arguments: V8 boxes each double passed to WebAssembly.
+    // Through the memory, not as arguments: V8 can box each double passed to WebAssembly.
     const args = memory.kernelArguments;
     args[A_DT] = dt;
     args[A_BOUNDS_DT] = bounds.dt;

@@ -57,7 +57,7 @@ export class JointBatch {
   run(memory: SolverMemory, step: JointStep, pass: number): void {
     const o = memory.offsets;
     const soft = step.softness;
-    // Through the memory: V8 boxes each double passed to WebAssembly (kernel-arguments.ts).
+    // Through the memory: V8 can box each double passed to WebAssembly (kernel-arguments.ts).
     const args = memory.kernelArguments;
     args[A_JOINT_H] = step.h;
     args[A_JOINT_INVERSE_H] = step.inverseH;
