@@ -10,6 +10,12 @@
 // (AWAKE_BODIES: the world index of awake body i, whose state is slot i + 1) instead of a per-step
 // copy of those numbers, and write the states (STATES, body-state.ts).
 import {
+  A_DT,
+  A_GRAVITY_X,
+  A_GRAVITY_Y,
+  A_H,
+  A_MAX_ANGULAR_SPEED,
+  A_MAX_SPEED,
   BODY_STRIDE,
   B_ANGLE,
   B_ANGLE0,
@@ -86,7 +92,8 @@ function stateOf(states: usize, i: i32): usize {
  * Semi-implicit Euler, velocity half: v += h (F / m + g), with damping and the thesis's drag
  * applied implicitly (v / (1 + h c)) so that no damping value can reverse a velocity; for the
  * awake bodies visited from `from` to `to` (see awakeAt). Each body's velocity change goes after
- * its impact mark (`marks`, body-state.ts), for a bounce later in the sub-step.
+ * its impact mark (`marks`, body-state.ts), for a bounce later in the sub-step. Gravity, the
+ * sub-step h and the speed limits are the arguments at `args` (kernel-arguments.ts).
  */
 export function integrateVelocities(
   bodies: usize,
@@ -97,12 +104,13 @@ export function integrateVelocities(
   to: i32,
   states: usize,
   marks: usize,
-  gx: f64,
-  gy: f64,
-  h: f64,
-  maxSpeed: f64,
-  maxAngularSpeed: f64,
+  args: usize,
 ): void {
+  const gx = ld(args, A_GRAVITY_X);
+  const gy = ld(args, A_GRAVITY_Y);
+  const h = ld(args, A_H);
+  const maxSpeed = ld(args, A_MAX_SPEED);
+  const maxAngularSpeed = ld(args, A_MAX_ANGULAR_SPEED);
   for (let n = from; n < to; n++) {
     const i = awakeAt(list, useList, n);
     const b = bodyOf(bodies, awake, i);
@@ -183,7 +191,7 @@ function limitSpeed(k: usize, maxSpeed: f64, maxAngularSpeed: f64): void {
 
 /**
  * Holds every awake dynamic body's velocity to the limits (see limitSpeed): after the relax pass,
- * which can ask more of a light body than the limits allow.
+ * which can ask more of a light body than the limits allow. The limits are the arguments at `args`.
  */
 export function limitSpeeds(
   bodies: usize,
@@ -193,9 +201,10 @@ export function limitSpeeds(
   from: i32,
   to: i32,
   states: usize,
-  maxSpeed: f64,
-  maxAngularSpeed: f64,
+  args: usize,
 ): void {
+  const maxSpeed = ld(args, A_MAX_SPEED);
+  const maxAngularSpeed = ld(args, A_MAX_ANGULAR_SPEED);
   for (let n = from; n < to; n++) {
     const i = awakeAt(list, useList, n);
     if (ld(bodyOf(bodies, awake, i), B_INV_MASS) != 0) {
@@ -213,7 +222,7 @@ export function limitSpeeds(
  * 2 N m on a 0.01 kg box on a prismatic joint) let each sub-step's impulses grow the last's, until
  * the velocities overflowed and the whole world went NaN. Bounded, every pose moves at most
  * maxLinearSpeed h and a quarter turn per sub-step, so no error a constraint sees can grow without
- * bound.
+ * bound. The sub-step h and the limits are the arguments at `args`.
  */
 export function integratePositions(
   bodies: usize,
@@ -223,10 +232,11 @@ export function integratePositions(
   from: i32,
   to: i32,
   states: usize,
-  h: f64,
-  maxSpeed: f64,
-  maxAngularSpeed: f64,
+  args: usize,
 ): void {
+  const h = ld(args, A_H);
+  const maxSpeed = ld(args, A_MAX_SPEED);
+  const maxAngularSpeed = ld(args, A_MAX_ANGULAR_SPEED);
   for (let n = from; n < to; n++) {
     const i = awakeAt(list, useList, n);
     const k = stateOf(states, i);
@@ -269,17 +279,18 @@ export function integratePositions(
  * Sleep: the body must be slow, and not being moved by position correction either (Box2D v3's
  * rule, with its 0.5 weight on correction). A body with a force still to act (B_FORCES_LEFT, a
  * 'constant' or timed force) must not sleep: a small force on a heavy body is slow at first, and
- * sleeping would zero its velocity and stop it.
+ * sleeping would zero its velocity and stop it. The step dt is A_DT of the arguments at `args`.
  */
 export function finalizeBodies(
   bodies: usize,
   awake: usize,
   count: i32,
   states: usize,
-  dt: f64,
+  args: usize,
   fast: usize,
   continuous: i32,
 ): i32 {
+  const dt = ld(args, A_DT);
   let fastCount = 0;
   for (let i = 0; i < count; i++) {
     const b = bodyOf(bodies, awake, i);

@@ -26,6 +26,21 @@
 // friction: friction of a straight landing is zero at both points, and measured spin stays 0 with
 // friction 0.6, so no symmetric friction pass was needed.
 import {
+  A_CONTACT_BIAS_RATE,
+  A_CONTACT_HERTZ,
+  A_CONTACT_IMPULSE_SCALE,
+  A_CONTACT_MASS_SCALE,
+  A_CONTACT_ZETA,
+  A_DT,
+  A_H,
+  A_IMPACT_SPEED,
+  A_INVERSE_H,
+  A_LOAD_SPEED,
+  A_MAX_PUSH_SPEED,
+  A_RESTITUTION_THRESHOLD,
+  A_STATIC_BIAS_RATE,
+  A_STATIC_IMPULSE_SCALE,
+  A_STATIC_MASS_SCALE,
   BASE_SEPARATION,
   BIAS_RATE,
   BLOCK,
@@ -739,7 +754,9 @@ export function warmStart(
  * impacts). A bounce marks its bodies (`marksPtr`, see body-state.ts); a bouncy resting point on
  * a marked body that approaches faster than `impactSpeed` is left for the impact rounds, not
  * stopped here as a resting contact would be (that would absorb the impact); a loaded one only
- * when faster than `loadSpeed` (see solver.ts, MIN_LOADED_IMPACT_SPEED).
+ * when faster than `loadSpeed` (see solver.ts, MIN_LOADED_IMPACT_SPEED). The inverse sub-step, the
+ * push-out limit, the threshold and the two speeds are the arguments at `args`
+ * (kernel-arguments.ts).
  */
 export function solve(
   cPtr: usize,
@@ -747,14 +764,15 @@ export function solve(
   orderPtr: usize,
   sPtr: usize,
   count: i32,
-  inverseH: f64,
-  maxPushSpeed: f64,
-  restitutionThreshold: f64,
-  impactSpeed: f64,
-  loadSpeed: f64,
+  args: usize,
   marksPtr: usize,
   useBias: bool,
 ): i32 {
+  const inverseH = ld(args, A_INVERSE_H);
+  const maxPushSpeed = ld(args, A_MAX_PUSH_SPEED);
+  const restitutionThreshold = ld(args, A_RESTITUTION_THRESHOLD);
+  const impactSpeed = ld(args, A_IMPACT_SPEED);
+  const loadSpeed = ld(args, A_LOAD_SPEED);
   let bounces: i32 = 0;
   for (let n = 0; n < count; n++) {
     const i = load<i32>(orderPtr + ((<usize>n) << 2));
@@ -1307,7 +1325,8 @@ export function solve(
  * times its approach, with its bodies' masses. `IMPACT_CONTINUE`
  * moves the open impacts on towards their targets (between joint passes); `IMPACT_OPEN` opens the
  * bounces of the relax pass for that; `IMPACT_CLOSE` closes all; `IMPACT_COUNT` returns the
- * relax pass's bounces and changes nothing.
+ * relax pass's bounces and changes nothing. The three speeds are the arguments at `args`
+ * (A_IMPACT_SPEED, A_LOAD_SPEED, A_MAX_PUSH_SPEED: kernel-arguments.ts).
  */
 export function impacts(
   cPtr: usize,
@@ -1315,12 +1334,13 @@ export function impacts(
   orderPtr: usize,
   sPtr: usize,
   count: i32,
-  impactSpeed: f64,
-  loadSpeed: f64,
-  pushSpeed: f64,
+  args: usize,
   marksPtr: usize,
   mode: i32,
 ): i32 {
+  const impactSpeed = ld(args, A_IMPACT_SPEED);
+  const loadSpeed = ld(args, A_LOAD_SPEED);
+  const pushSpeed = ld(args, A_MAX_PUSH_SPEED);
   let started: i32 = 0;
   for (let n = 0; n < count; n++) {
     const i = load<i32>(orderPtr + ((<usize>n) << 2));
@@ -1887,7 +1907,10 @@ export function classify(
   return i;
 }
 
-/** The second half of {@link prepare} for the `count` constraints listed from `orderPtr`. */
+/**
+ * The second half of {@link prepare} for the `count` constraints listed from `orderPtr`; the
+ * softness, h and dt are the arguments at `args` (kernel-arguments.ts).
+ */
 export function prepareListed(
   dataPtr: usize,
   contactBodiesPtr: usize,
@@ -1898,17 +1921,18 @@ export function prepareListed(
   slotsPtr: usize,
   orderPtr: usize,
   count: i32,
-  contactBiasRate: f64,
-  contactMassScale: f64,
-  contactImpulseScale: f64,
-  staticBiasRate: f64,
-  staticMassScale: f64,
-  staticImpulseScale: f64,
-  contactHertz: f64,
-  zeta: f64,
-  h: f64,
-  dt: f64,
+  args: usize,
 ): void {
+  const contactBiasRate = ld(args, A_CONTACT_BIAS_RATE);
+  const contactMassScale = ld(args, A_CONTACT_MASS_SCALE);
+  const contactImpulseScale = ld(args, A_CONTACT_IMPULSE_SCALE);
+  const staticBiasRate = ld(args, A_STATIC_BIAS_RATE);
+  const staticMassScale = ld(args, A_STATIC_MASS_SCALE);
+  const staticImpulseScale = ld(args, A_STATIC_IMPULSE_SCALE);
+  const contactHertz = ld(args, A_CONTACT_HERTZ);
+  const zeta = ld(args, A_CONTACT_ZETA);
+  const h = ld(args, A_H);
+  const dt = ld(args, A_DT);
   for (let n: i32 = 0; n < count; n++) {
     const i = load<i32>(orderPtr + ((<usize>n) << 2));
     Preparation.fill(

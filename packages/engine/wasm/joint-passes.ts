@@ -27,6 +27,12 @@
 // revolute and weld joints' rows are Box2D v3's (b2SolveRevoluteJoint, b2SolveWeldJoint,
 // b2SolvePrismaticJoint, ...).
 import {
+  A_JOINT_BIAS_RATE,
+  A_JOINT_H,
+  A_JOINT_IMPULSE_SCALE,
+  A_JOINT_INVERSE_H,
+  A_JOINT_MASS_SCALE,
+  A_JOINT_MAX_BIAS_SPEED,
   DELTA_ANGLE,
   DP_X,
   DP_Y,
@@ -166,9 +172,10 @@ function limitRow(
 
 /**
  * The pass `pass` (J_PASS_WARM_START, J_PASS_SOLVE with the position bias, J_PASS_RELAX without)
- * of the joints of kind `kind` (J_KIND_...) at entries `from` to `to` of the active list. `h` to
- * `maxBiasSpeed` are the step's (JointStep: the sub-step, its inverse, the joint softness and the
- * bias bound); the warm start reads none of them. A mouse joint has one body, B.
+ * of the joints of kind `kind` (J_KIND_...) at entries `from` to `to` of the active list. The
+ * step's numbers (JointStep: the sub-step, its inverse, the joint softness and the bias bound) are
+ * the arguments at `args` (A_JOINT_..., kernel-arguments.ts); the warm start reads none of them.
+ * A mouse joint has one body, B.
  */
 export function jointPass(
   kind: i32,
@@ -178,13 +185,14 @@ export function jointPass(
   states: usize,
   from: i32,
   to: i32,
-  h: f64,
-  inverseH: f64,
-  biasRate: f64,
-  softMassScale: f64,
-  softImpulseScale: f64,
-  maxBiasSpeed: f64,
+  args: usize,
 ): void {
+  const h = ld(args, A_JOINT_H);
+  const inverseH = ld(args, A_JOINT_INVERSE_H);
+  const biasRate = ld(args, A_JOINT_BIAS_RATE);
+  const softMassScale = ld(args, A_JOINT_MASS_SCALE);
+  const softImpulseScale = ld(args, A_JOINT_IMPULSE_SCALE);
+  const maxBiasSpeed = ld(args, A_JOINT_MAX_BIAS_SPEED);
   const useBias = pass == J_PASS_SOLVE ? 1 : 0;
   const twoBodies = kind != J_KIND_MOUSE;
   // The kinds whose rows act along the line between the anchors read their separation.

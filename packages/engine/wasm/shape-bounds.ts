@@ -12,6 +12,7 @@
 // f64.min/max, which order -0 as JavaScript does.
 import {
   AABB_MARGIN,
+  A_BOUNDS_DT,
   BODY_STRIDE,
   B_C,
   B_MAX_EXTENT,
@@ -168,7 +169,8 @@ function bodyBoxes(
 /**
  * Boxes of the `count` awake bodies (world indices at `awake`, body numbers at `bodies`), skipping
  * the `fastCount` awake indices listed at `fast` (ascending: the sweeps move those bodies' boxes),
- * for a next step of `dt` seconds. Shapes are found through each body's chain (`B_SHAPE_HEAD`, and
+ * for a next step of `dt` seconds (A_BOUNDS_DT of the arguments at `args`, kernel-arguments.ts).
+ * Shapes are found through each body's chain (`B_SHAPE_HEAD`, and
  * the next shape id plus one per shape at `next`). Writes each tight box at `boxes` (SHAPE_BOXES),
  * reads shape geometry at `geometry`, and appends each escaped shape's id and grown box at
  * `escaped`; returns how many escaped.
@@ -182,9 +184,10 @@ export function shapeBounds(
   boxes: usize,
   geometry: usize,
   next: usize,
-  dt: f64,
+  args: usize,
   escaped: usize,
 ): i32 {
+  const dt = ld(args, A_BOUNDS_DT);
   let escapes = 0;
   let listed = 0;
   let nextFast = fastCount > 0 ? load<i32>(fast) : -1;
@@ -206,7 +209,7 @@ export function shapeBounds(
  * of `bodies`, its whole chain, or only shape `only` when it is not -1 (a shape joining before
  * the chain holds it). With `every` 1 every shape visited is listed, escaped or not (a static
  * body's forced pair search moves or marks each; a joining shape has no fat box yet). Returns how
- * many were listed at `escaped`.
+ * many were listed at `escaped`. The look-ahead `dt` is A_BOUNDS_DT of the arguments at `args`.
  */
 export function bodyBounds(
   bodies: usize,
@@ -215,7 +218,7 @@ export function bodyBounds(
   boxes: usize,
   geometry: usize,
   next: usize,
-  dt: f64,
+  args: usize,
   escaped: usize,
   every: i32,
 ): i32 {
@@ -225,7 +228,7 @@ export function bodyBounds(
     boxes,
     geometry,
     next,
-    dt,
+    ld(args, A_BOUNDS_DT),
     escaped,
     0,
     every,

@@ -4,6 +4,14 @@
 // one source, built into the kernel with the contact passes (contact-kernel.ts). Why:
 // src/dynamics/contact-solver.ts (ShockPropagation, which calls both).
 import {
+  A_GRAVITY_X,
+  A_GRAVITY_Y,
+  A_INVERSE_H,
+  A_MAX_PUSH_SPEED,
+  A_RESTITUTION_THRESHOLD,
+  A_SHOCK_BIAS_RATE,
+  A_SHOCK_MAX_APPROACH,
+  A_SHOCK_REST_SPEED,
   BASE_SEPARATION,
   BIAS_RATE,
   IMPULSE_SCALE,
@@ -71,7 +79,9 @@ function si(p: usize, k: i32, v: i32): void {
  * visiting order (`order`, ground up) and returns their number. The swept contacts push out
  * overlap at `biasRate`, as contacts with the ground do. A light body moving along the contact's
  * normal at `restSpeed` or faster is not resting under the heavy one (see below). `scratch`:
- * 2 (bodyCount + 1) + 5 count int32 (SHOCK_SCRATCH).
+ * 2 (bodyCount + 1) + 5 count int32 (SHOCK_SCRATCH). `biasRate`, gravity and `restSpeed` are the
+ * arguments at `args` (A_SHOCK_BIAS_RATE, A_GRAVITY_X, A_GRAVITY_Y, A_SHOCK_REST_SPEED:
+ * kernel-arguments.ts).
  *
  * Once a step the bodies are ordered by how many resting contacts separate them from the ground
  * (static, sleeping or kinematic bodies); a contact where a heavy body rests on one more than
@@ -87,11 +97,12 @@ export function prepareShockSweep(
   sweep: usize,
   scratch: usize,
   bodyCount: i32,
-  biasRate: f64,
-  gravityX: f64,
-  gravityY: f64,
-  restSpeed: f64,
+  args: usize,
 ): i32 {
+  const biasRate = ld(args, A_SHOCK_BIAS_RATE);
+  const gravityX = ld(args, A_GRAVITY_X);
+  const gravityY = ld(args, A_GRAVITY_Y);
+  const restSpeed = ld(args, A_SHOCK_REST_SPEED);
   const gravity = hypot(gravityX, gravityY);
   if (gravity == 0) return 0;
   // Scratch: a level and a flag (supports a swept contact) per solver slot; per constraint a
@@ -218,6 +229,8 @@ export function prepareShockSweep(
  * `restitutionThreshold` bounces at its first touch, reversing its approach at that moment (with
  * the sub-step velocity changes at `marks`), an approach bounded by `maxApproach` (two bodies at
  * the world's maxLinearSpeed). `bodies`: the constraints' state offsets (CONSTRAINT_BODIES).
+ * The inverse sub-step and the numbers named here are the arguments at `args` (A_INVERSE_H,
+ * A_SHOCK_BIAS_RATE, A_MAX_PUSH_SPEED, A_RESTITUTION_THRESHOLD, A_SHOCK_MAX_APPROACH).
  */
 export function shockSweep(
   constraints: usize,
@@ -226,13 +239,14 @@ export function shockSweep(
   count: i32,
   states: usize,
   marks: usize,
-  inverseH: f64,
-  biasRate: f64,
-  maxPushSpeed: f64,
-  restitutionThreshold: f64,
-  maxApproach: f64,
+  args: usize,
   useBias: i32,
 ): void {
+  const inverseH = ld(args, A_INVERSE_H);
+  const biasRate = ld(args, A_SHOCK_BIAS_RATE);
+  const maxPushSpeed = ld(args, A_MAX_PUSH_SPEED);
+  const restitutionThreshold = ld(args, A_RESTITUTION_THRESHOLD);
+  const maxApproach = ld(args, A_SHOCK_MAX_APPROACH);
   for (let n = count - 1; n >= 0; n--) {
     const e = sweep + ((<usize>(n * SWEEP_STRIDE)) << 3);
     const restitution = ld(e, SWEEP_RESTITUTION);

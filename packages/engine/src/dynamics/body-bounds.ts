@@ -10,9 +10,11 @@ import {
   ESCAPE_MIN_Y,
   ESCAPE_STRIDE,
 } from './shape-escapes.ts';
+import { A_BOUNDS_DT } from './kernel-arguments.ts';
 import {
   BODIES,
   ESCAPED_SHAPES,
+  KERNEL_ARGUMENTS,
   SHAPE_BOXES,
   SHAPE_GEOMETRY,
   SHAPE_NEXT,
@@ -85,6 +87,9 @@ export class BodyBounds {
   private measure(body: Body, only: number, dt: number, every: boolean): Float64Array {
     const memory = this.memory;
     const o = memory.offsets;
+    // Through the memory: V8 can box a double passed to WebAssembly, and this runs per swept body
+    // (~16 KB of garbage a step in tumbler as an argument; kernel-arguments.ts).
+    memory.kernelArguments[A_BOUNDS_DT] = dt;
     this.listed = memory.kernel.bodyBounds(
       o[BODIES]!,
       body.base,
@@ -92,7 +97,7 @@ export class BodyBounds {
       o[SHAPE_BOXES]!,
       o[SHAPE_GEOMETRY]!,
       o[SHAPE_NEXT]!,
-      dt,
+      o[KERNEL_ARGUMENTS]!,
       o[ESCAPED_SHAPES]!,
       every ? 1 : 0,
     );

@@ -65,7 +65,10 @@ export interface ContactKernel extends BodyPasses, NarrowPhase {
     circlePairs: number,
     contactCount: number,
   ): number;
-  /** prepare's second half, for the `count` classified constraints listed from `order`. */
+  /**
+   * prepare's second half, for the `count` classified constraints listed from `order`; the
+   * softness, h and dt at `args` (KERNEL_ARGUMENTS, kernel-arguments.ts).
+   */
   prepareListed(
     contactData: number,
     contactBodies: number,
@@ -76,16 +79,7 @@ export interface ContactKernel extends BodyPasses, NarrowPhase {
     slots: number,
     order: number,
     count: number,
-    contactBiasRate: number,
-    contactMassScale: number,
-    contactImpulseScale: number,
-    staticBiasRate: number,
-    staticMassScale: number,
-    staticImpulseScale: number,
-    contactHertz: number,
-    zeta: number,
-    h: number,
-    dt: number,
+    args: number,
   ): void;
   /** The last prepare's or classify's counts. */
   readonly circlePairCount: { readonly value: number };
@@ -105,18 +99,17 @@ export interface ContactKernel extends BodyPasses, NarrowPhase {
     states: number,
     count: number,
   ): void;
-  /** A solve (useBias 1) or relax (0) pass; returns its bounces. `marks`: the impact marks. */
+  /**
+   * A solve (useBias 1) or relax (0) pass; returns its bounces. `marks`: the impact marks; the
+   * sub-step's numbers at `args` (kernel-arguments.ts).
+   */
   solve(
     constraints: number,
     bodies: number,
     order: number,
     states: number,
     count: number,
-    inverseH: number,
-    maxPushSpeed: number,
-    restitutionThreshold: number,
-    impactSpeed: number,
-    loadSpeed: number,
+    args: number,
     marks: number,
     useBias: number,
   ): number;
@@ -145,10 +138,7 @@ export interface ContactKernel extends BodyPasses, NarrowPhase {
     sweep: number,
     scratch: number,
     bodyCount: number,
-    biasRate: number,
-    gravityX: number,
-    gravityY: number,
-    restSpeed: number,
+    args: number,
   ): number;
   /**
    * The heavy-on-light sweep over the `count` entries at `sweep` (SHOCK_SWEEP), ground up, after
@@ -161,11 +151,7 @@ export interface ContactKernel extends BodyPasses, NarrowPhase {
     count: number,
     states: number,
     marks: number,
-    inverseH: number,
-    biasRate: number,
-    maxPushSpeed: number,
-    restitutionThreshold: number,
-    maxApproach: number,
+    args: number,
     useBias: number,
   ): void;
   /** One pass of the impact rounds in `mode` (IMPACT_ROUND, ...); returns the impacts started. */
@@ -175,9 +161,7 @@ export interface ContactKernel extends BodyPasses, NarrowPhase {
     order: number,
     states: number,
     count: number,
-    impactSpeed: number,
-    loadSpeed: number,
-    pushSpeed: number,
+    args: number,
     marks: number,
     mode: number,
   ): number;
@@ -187,7 +171,9 @@ export interface ContactKernel extends BodyPasses, NarrowPhase {
  * The body passes (wasm/body-passes.ts), built into the same module. `bodies` is the BODIES region,
  * `awake` the step's awake list (AWAKE_BODIES: world index of awake body i, whose state is slot
  * i + 1); with `useList` 1 the passes visit the awake indices of the int32 list at `list`
- * (BATCH_BODIES) from `from` to `to`, else the awake indices from `from` to `to`.
+ * (BATCH_BODIES) from `from` to `to`, else the awake indices from `from` to `to`. `args` is the
+ * KERNEL_ARGUMENTS region, where the caller stores the passes' fractional numbers
+ * (kernel-arguments.ts: V8 can box each double passed to WebAssembly).
  */
 export interface BodyPasses {
   integrateVelocities(
@@ -199,11 +185,7 @@ export interface BodyPasses {
     to: number,
     states: number,
     marks: number,
-    gravityX: number,
-    gravityY: number,
-    h: number,
-    maxSpeed: number,
-    maxAngularSpeed: number,
+    args: number,
   ): void;
   integratePositions(
     bodies: number,
@@ -213,9 +195,7 @@ export interface BodyPasses {
     from: number,
     to: number,
     states: number,
-    h: number,
-    maxSpeed: number,
-    maxAngularSpeed: number,
+    args: number,
   ): void;
   limitSpeeds(
     bodies: number,
@@ -225,8 +205,7 @@ export interface BodyPasses {
     from: number,
     to: number,
     states: number,
-    maxSpeed: number,
-    maxAngularSpeed: number,
+    args: number,
   ): void;
   /**
    * Velocities, centre, angle, transform and sleep clock of the `count` awake bodies into the body
@@ -238,7 +217,7 @@ export interface BodyPasses {
     awake: number,
     count: number,
     states: number,
-    dt: number,
+    args: number,
     fast: number,
     continuous: number,
   ): number;
@@ -257,7 +236,7 @@ export interface BodyPasses {
     boxes: number,
     geometry: number,
     next: number,
-    dt: number,
+    args: number,
     escaped: number,
   ): number;
   /**
@@ -273,7 +252,7 @@ export interface BodyPasses {
     boxes: number,
     geometry: number,
     next: number,
-    dt: number,
+    args: number,
     escaped: number,
     every: number,
   ): number;

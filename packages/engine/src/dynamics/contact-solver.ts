@@ -3,6 +3,7 @@ import {
   CONSTRAINT_BODIES,
   CONSTRAINT_DATA,
   CONSTRAINT_ORDER,
+  KERNEL_ARGUMENTS,
   SHOCK_SCRATCH,
   SHOCK_SWEEP,
   STATES,
@@ -84,28 +85,19 @@ export class ContactConstraints {
 export class ShockPropagation {
   /** Contacts to sweep (the first `count` entries of SHOCK_SWEEP), from the top down. */
   count = 0;
-  /** The fastest approach a bounce reverses: two bodies each at maxLinearSpeed (set by prepare). */
-  private maxApproach = Infinity;
 
   /**
    * Finds the contacts to sweep for this step's constraints, with the states at the step's
    * start, and moves them to the end of the visiting order; `bodyCount` is the number of awake
    * bodies (solver slots 1..bodyCount; slot 0 is every immovable body). The swept contacts push
-   * out overlap at `biasRate`, as contacts with the ground do. A light body moving along the
-   * contact's normal at `restSpeed` or faster is not resting under the heavy one. The solver
+   * out overlap at a bias rate, as contacts with the ground do. A light body moving along the
+   * contact's normal at a rest speed or faster is not resting under the heavy one. The bias rate,
+   * gravity and rest speed are in the kernel's arguments (A_SHOCK_BIAS_RATE, A_GRAVITY_X,
+   * A_GRAVITY_Y, A_SHOCK_REST_SPEED: kernel-arguments.ts, stored by Solver.solve). The solver
    * memory's SHOCK_SCRATCH must hold 2 (bodyCount + 1) + 5 count int32 (Solver.solve reserves it).
    */
-  prepare(
-    constraints: ContactConstraints,
-    bodyCount: number,
-    biasRate: number,
-    gravityX: number,
-    gravityY: number,
-    restSpeed: number,
-    maxLinearSpeed: number,
-  ): void {
+  prepare(constraints: ContactConstraints, bodyCount: number): void {
     this.count = 0;
-    this.maxApproach = 2 * maxLinearSpeed;
     if (constraints.heavyOnLightCount === 0) return;
     const memory = constraints.memory;
     const o = memory.offsets;
@@ -118,29 +110,20 @@ export class ShockPropagation {
       o[SHOCK_SWEEP]!,
       o[SHOCK_SCRATCH]!,
       bodyCount,
-      biasRate,
-      gravityX,
-      gravityY,
-      restSpeed,
+      o[KERNEL_ARGUMENTS]!,
     );
   }
 
   /**
    * Sweeps the prepared contacts once, ground up: each upper body stops approaching the body
    * below it, as if that body could not move. With `useBias` 1 (after the solve pass), overlap is
-   * pushed out at `biasRate` (at most `maxPushSpeed`), as against the ground; with 0 (after the
-   * relax pass), only the approach is removed. A new contact faster than `restitutionThreshold`
-   * bounces at its first touch (with the sub-step velocity changes at byte `marks`).
+   * pushed out at the sweep's bias rate (at most the push-out limit), as against the ground; with 0
+   * (after the relax pass), only the approach is removed. A new contact faster than the
+   * restitution threshold bounces at its first touch (with the sub-step velocity changes at byte
+   * `marks`), an approach bounded by two bodies at maxLinearSpeed. Those numbers and the inverse
+   * sub-step are in the kernel's arguments (kernel-arguments.ts, stored by Solver.solve).
    */
-  solve(
-    constraints: ContactConstraints,
-    marks: number,
-    inverseH: number,
-    biasRate: number,
-    maxPushSpeed: number,
-    restitutionThreshold: number,
-    useBias: number,
-  ): void {
+  solve(constraints: ContactConstraints, marks: number, useBias: number): void {
     const memory = constraints.memory;
     const o = memory.offsets;
     memory.kernel.shockSweep(
@@ -150,11 +133,7 @@ export class ShockPropagation {
       this.count,
       o[STATES]!,
       marks,
-      inverseH,
-      biasRate,
-      maxPushSpeed,
-      restitutionThreshold,
-      this.maxApproach,
+      o[KERNEL_ARGUMENTS]!,
       useBias,
     );
   }

@@ -29,6 +29,10 @@ export const SHAPE_STRIDE = 8;
 /** Int32s per filter row (category, mask, group, sensor): the pair filter's row (pair-filter.ts). */
 export const FILTER_STRIDE: number = FILTER_ROW;
 export const MATERIAL_STRIDE = 4;
+/** A material row's density, friction and restitution. */
+export const MATERIAL_DENSITY = 0;
+export const MATERIAL_FRICTION = 1;
+export const MATERIAL_RESTITUTION = 2;
 
 /** Every shape's boxes, filter, material and geometry, by row (in a world, the shape id). */
 /**

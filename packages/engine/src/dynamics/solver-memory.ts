@@ -1,5 +1,6 @@
 import { BODY_STRIDE, BodyStore } from './body-memory.ts';
 import { createContactKernel, type ContactKernel, type WasmMemory } from './contact-kernel.ts';
+import { KERNEL_ARGUMENT_DOUBLES } from './kernel-arguments.ts';
 import { NARROW_PHASE_SCRATCH_DOUBLES } from './narrow-phase-scratch.ts';
 import type { Geometry } from './shape.ts';
 import { GEOMETRY_STRIDE, writeGeometryRow } from './shape-geometry.ts';
@@ -81,10 +82,12 @@ export const JOINT_ACTIVE = 23;
 export const SHAPE_NEXT = 24;
 /** The shapes whose box left its fat box in finalize (shape-escapes.ts): doubles, one row a shape. */
 export const ESCAPED_SHAPES = 25;
-const REGIONS = 26;
+/** The kernel's fractional arguments (kernel-arguments.ts), fixed size: doubles. */
+export const KERNEL_ARGUMENTS = 26;
+const REGIONS = 27;
 /** Bytes per element of each region. */
 const ELEMENT_BYTES = [
-  8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8, 4, 4, 4, 8, 4, 8, 4, 4, 8,
+  8, 8, 4, 4, 4, 4, 8, 4, 8, 8, 4, 4, 8, 4, 8, 8, 8, 4, 4, 4, 8, 4, 8, 4, 4, 8, 8,
 ];
 /** The shape regions of that many rows. */
 const SHAPE_REGIONS: readonly (readonly [number, number])[] = [
@@ -128,6 +131,11 @@ export class SolverMemory implements ShapeMemory {
   shapeNext: Int32Array = new Int32Array(0);
   /** The shapes finalize found out of their fat boxes (ESCAPED_SHAPES). */
   escapedShapes: Float64Array = new Float64Array(0);
+  /**
+   * The kernel's fractional arguments (KERNEL_ARGUMENTS, kernel-arguments.ts), stored here before
+   * a call: V8 can box each double passed to WebAssembly.
+   */
+  kernelArguments: Float64Array = new Float64Array(0);
   /** The heavy-on-light sweep's list (SHOCK_SWEEP). */
   shockSweep: Float64Array = new Float64Array(0);
   /**
@@ -209,6 +217,7 @@ export class SolverMemory implements ShapeMemory {
       48,
       64, // SHAPE_NEXT
       64 * ESCAPE_STRIDE, // ESCAPED_SHAPES
+      KERNEL_ARGUMENT_DOUBLES,
     ]);
     this.sizeShockScratch(capacities);
     return capacities;
@@ -577,6 +586,7 @@ export class SolverMemory implements ShapeMemory {
     this.jointActive = i32(JOINT_ACTIVE);
     this.shapeNext = i32(SHAPE_NEXT);
     this.escapedShapes = f64(ESCAPED_SHAPES);
+    this.kernelArguments = f64(KERNEL_ARGUMENTS);
   }
 }
 

@@ -65,10 +65,36 @@ import {
   FAST_BODIES,
   SHAPE_BOXES,
   SHAPE_GEOMETRY,
+  KERNEL_ARGUMENTS,
   SHAPE_NEXT,
   SolverMemory,
   STATES,
 } from './solver-memory.ts';
+import {
+  A_BOUNDS_DT,
+  A_CONTACT_BIAS_RATE,
+  A_CONTACT_HERTZ,
+  A_CONTACT_IMPULSE_SCALE,
+  A_CONTACT_MASS_SCALE,
+  A_CONTACT_ZETA,
+  A_DT,
+  A_GRAVITY_X,
+  A_GRAVITY_Y,
+  A_H,
+  A_IMPACT_SPEED,
+  A_INVERSE_H,
+  A_LOAD_SPEED,
+  A_MAX_ANGULAR_SPEED,
+  A_MAX_PUSH_SPEED,
+  A_MAX_SPEED,
+  A_RESTITUTION_THRESHOLD,
+  A_SHOCK_BIAS_RATE,
+  A_SHOCK_MAX_APPROACH,
+  A_SHOCK_REST_SPEED,
+  A_STATIC_BIAS_RATE,
+  A_STATIC_IMPULSE_SCALE,
+  A_STATIC_MASS_SCALE,
+} from './kernel-arguments.ts';
 import { Softness } from './softness.ts';
 import { SolverBatches } from './solver-batches.ts';
 import { ContactPairing } from './contact-pairing.ts';
@@ -131,10 +157,6 @@ export class Solver {
   private readonly batches = new SolverBatches();
   /** Pairs for the kernel's lanes and the constraints' numbering (contact-pairing.ts). */
   private readonly pairing = new ContactPairing();
-  /** The slowest approach of a loaded contact the impact rounds count as an impact (m/s). */
-  private loadSpeed = -0;
-  /** The most a push-out moves a contact (m/s): a pressed point approaching faster is an impact. */
-  private pushSpeed = -0;
   private readonly contactSoftness = new Softness();
   private readonly staticSoftness = new Softness();
 
@@ -275,7 +297,11 @@ export class Solver {
     // Joints first (they do not depend on the contacts): whether the step may run in batches of
     // islands decides how the contacts are prepared. They may grow the memory: the kernel after.
     const joints = this.joints;
-    joints.prepare(dt, subSteps, contactHertz, this.awakeCount, settings.maxLinearSpeed);
+    joints.prepare(dt, subSteps, this.contactSoftness, this.awakeCount, settings);
+    // The kernel's fractional arguments for the whole step, stored once the memory has stopped
+    // moving (the joints' prepare may grow it): V8 can box each double passed to WebAssembly
+    // (kernel-arguments.ts), 16 bytes per argument per call.
+    this.storeArguments(settings, dt, h);
     const kernel = memory.kernel;
     const batches = this.batches;
     const batchable = joints.activeCount === 0 && batches.wants(contactCount);
@@ -303,18 +329,11 @@ export class Solver {
     const shock = this.shock;
     // The heavy-on-light sweep reads the prepared constraints.
     if (!filled && constraints.heavyOnLightCount > 0) {
-      this.fill(0, constraints.count, dt);
+      this.fill(0, constraints.count);
       filled = true;
     }
-    shock.prepare(
-      constraints,
-      this.awakeCount,
-      this.staticSoftness.biasRate,
-      settings.gravityX,
-      settings.gravityY,
-      Math.max(settings.restitutionThreshold, MIN_IMPACT_SPEED, MIN_LOADED_IMPACT_SPEED),
-      settings.maxLinearSpeed,
-    );
+    // Its bias rate, gravity and rest speed are in the kernel's arguments (storeArguments).
+    shock.prepare(constraints, this.awakeCount);
 
     // Many islands whose constraints outgrow the cache run batch by batch (solver-batches.ts);
     // joints, heavy-on-light sweeps and particle pairs span the whole step's lists, so a step
@@ -335,10 +354,9 @@ export class Solver {
       const from = batches.bodies;
       for (let i = 0; i < this.awakeCount; i++) batchBodies[i] = from[i]!;
       for (let k = 0; k < batches.count; k++) {
-        if (!filled) this.fill(orderStart[k]!, orderStart[k + 1]!, dt);
+        if (!filled) this.fill(orderStart[k]!, orderStart[k + 1]!);
         this.subSteps(
           settings,
-          h,
           orderStart[k]!,
           orderStart[k + 1]!,
           true,
@@ -347,10 +365,49 @@ export class Solver {
         );
       }
     } else {
-      if (!filled) this.fill(0, constraints.count, dt);
-      this.subSteps(settings, h, 0, constraints.count, false, 0, this.awakeCount);
+      if (!filled) this.fill(0, constraints.count);
+      this.subSteps(settings, 0, constraints.count, false, 0, this.awakeCount);
     }
     joints.finish();
+  }
+
+  /**
+   * Stores the step's fractional numbers where the kernel's passes read them (KERNEL_ARGUMENTS,
+   * kernel-arguments.ts): the step `dt`, the sub-step `h`, gravity, the speed limits, the contacts'
+   * softness and the impact rounds' speeds, the heavy-on-light sweep's bias rate and rest speed.
+   */
+  private storeArguments(settings: SolverSettings, dt: number, h: number): void {
+    const args = this.memory.kernelArguments;
+    const soft = this.contactSoftness;
+    const hard = this.staticSoftness;
+    const threshold = settings.restitutionThreshold;
+    const impactSpeed = Math.max(threshold, MIN_IMPACT_SPEED);
+    args[A_DT] = dt;
+    args[A_H] = h;
+    args[A_INVERSE_H] = 1 / h;
+    args[A_GRAVITY_X] = settings.gravityX;
+    args[A_GRAVITY_Y] = settings.gravityY;
+    // maxLinearSpeed, and at most a quarter turn per sub-step (Box2D v3's B2_MAX_ROTATION).
+    args[A_MAX_SPEED] = settings.maxLinearSpeed;
+    args[A_MAX_ANGULAR_SPEED] = (0.25 * Math.PI) / h;
+    // The most a push-out moves a contact: a pressed point approaching faster is an impact.
+    args[A_MAX_PUSH_SPEED] = settings.maxContactPushSpeed;
+    args[A_RESTITUTION_THRESHOLD] = threshold;
+    args[A_IMPACT_SPEED] = impactSpeed;
+    // The slowest approach of a loaded contact the impact rounds count as an impact.
+    args[A_LOAD_SPEED] = Math.max(impactSpeed, MIN_LOADED_IMPACT_SPEED);
+    args[A_CONTACT_BIAS_RATE] = soft.biasRate;
+    args[A_CONTACT_MASS_SCALE] = soft.massScale;
+    args[A_CONTACT_IMPULSE_SCALE] = soft.impulseScale;
+    args[A_STATIC_BIAS_RATE] = hard.biasRate;
+    args[A_STATIC_MASS_SCALE] = hard.massScale;
+    args[A_STATIC_IMPULSE_SCALE] = hard.impulseScale;
+    args[A_CONTACT_HERTZ] = soft.hertz;
+    args[A_CONTACT_ZETA] = soft.zeta;
+    args[A_SHOCK_BIAS_RATE] = hard.biasRate;
+    args[A_SHOCK_REST_SPEED] = Math.max(threshold, MIN_IMPACT_SPEED, MIN_LOADED_IMPACT_SPEED);
+    // The fastest approach a swept bounce reverses: two bodies each at maxLinearSpeed.
+    args[A_SHOCK_MAX_APPROACH] = 2 * settings.maxLinearSpeed;
   }
 
   /** Renumbers the classified, unfilled constraints in their visiting order (contact-pairing.ts). */
@@ -370,10 +427,8 @@ export class Solver {
    * Fills the classified constraints at positions `from` to `to` of the visiting order (the
    * WebAssembly kernel's prepare, second half); each depends only on its own contact.
    */
-  private fill(from: number, to: number, dt: number): void {
+  private fill(from: number, to: number): void {
     const o = this.memory.offsets;
-    const soft = this.contactSoftness;
-    const hard = this.staticSoftness;
     this.memory.kernel.prepareListed(
       o[CONTACT_DATA]!,
       o[CONTACT_BODIES]!,
@@ -384,16 +439,7 @@ export class Solver {
       o[CONSTRAINT_SLOTS]!,
       o[CONSTRAINT_ORDER]! + 4 * from,
       to - from,
-      soft.biasRate,
-      soft.massScale,
-      soft.impulseScale,
-      hard.biasRate,
-      hard.massScale,
-      hard.impulseScale,
-      soft.hertz,
-      soft.zeta,
-      soft.h,
-      dt,
+      o[KERNEL_ARGUMENTS]!,
     );
   }
 
@@ -405,7 +451,6 @@ export class Solver {
    */
   private subSteps(
     settings: SolverSettings,
-    h: number,
     from: number,
     to: number,
     batch: boolean,
@@ -418,26 +463,18 @@ export class Solver {
     const s = this.states.data;
     const joints = this.joints;
     const shock = this.shock;
-    const shockBiasRate = this.staticSoftness.biasRate;
     const circlePairCount = constraints.circlePairCount;
-    const inverseH = 1 / h;
-    const threshold = settings.restitutionThreshold;
-    const maxPushSpeed = settings.maxContactPushSpeed;
     const count = to - from;
-    const impactSpeed = Math.max(threshold, MIN_IMPACT_SPEED);
-    this.loadSpeed = Math.max(impactSpeed, MIN_LOADED_IMPACT_SPEED);
-    this.pushSpeed = maxPushSpeed;
     // The bodies' impact marks (body-state.ts), as a kernel pointer.
     const marksPointer = memory.offsets[STATES]! + 8 * this.states.marks;
-    // The body passes' pointers (wasm/body-passes.ts) and limits: maxLinearSpeed, and at most a
-    // quarter turn per sub-step (Box2D v3's B2_MAX_ROTATION).
+    // The body passes' pointers (wasm/body-passes.ts); the sub-step, gravity, the limits and the
+    // contacts' speeds are in the kernel's arguments (storeArguments).
     const bodies = memory.offsets[BODIES]!;
     const awake = memory.offsets[AWAKE_BODIES]!;
     const list = memory.offsets[BATCH_BODIES]!;
     const useList = batch ? 1 : 0;
     const states = memory.offsets[STATES]!;
-    const maxSpeed = settings.maxLinearSpeed;
-    const maxAngularSpeed = (0.25 * Math.PI) / h;
+    const args = memory.offsets[KERNEL_ARGUMENTS]!;
     for (let step = 0; step < settings.subSteps; step++) {
       kernel.integrateVelocities(
         bodies,
@@ -448,11 +485,7 @@ export class Solver {
         bodyTo,
         states,
         marksPointer,
-        settings.gravityX,
-        settings.gravityY,
-        h,
-        maxSpeed,
-        maxAngularSpeed,
+        args,
       );
       if (circlePairCount > 0) this.refreshCirclePairs();
       joints.warmStart();
@@ -472,30 +505,13 @@ export class Solver {
         order,
         memory.offsets[STATES]!,
         count,
-        inverseH,
-        maxPushSpeed,
-        threshold,
-        impactSpeed,
-        this.loadSpeed,
+        args,
         marksPointer,
         1,
       );
-      if (shock.count > 0) {
-        shock.solve(constraints, marksPointer, inverseH, shockBiasRate, maxPushSpeed, threshold, 1);
-      }
+      if (shock.count > 0) shock.solve(constraints, marksPointer, 1);
       joints.solveChains(s, true);
-      kernel.integratePositions(
-        bodies,
-        awake,
-        list,
-        useList,
-        bodyFrom,
-        bodyTo,
-        states,
-        h,
-        maxSpeed,
-        maxAngularSpeed,
-      );
+      kernel.integratePositions(bodies, awake, list, useList, bodyFrom, bodyTo, states, args);
       joints.solveChains(s, false, true);
       if (circlePairCount > 0) this.refreshCirclePairs();
       joints.solve(false);
@@ -505,35 +521,19 @@ export class Solver {
         order,
         memory.offsets[STATES]!,
         count,
-        inverseH,
-        maxPushSpeed,
-        threshold,
-        impactSpeed,
-        this.loadSpeed,
+        args,
         marksPointer,
         0,
       );
-      if (shock.count > 0) {
-        shock.solve(constraints, marksPointer, inverseH, shockBiasRate, maxPushSpeed, threshold, 0);
-      }
+      if (shock.count > 0) shock.solve(constraints, marksPointer, 0);
       // Something bounced: the impact travels through the contacts and joints it presses
       // (the kernel's impacts, wasm/contact-kernel.ts).
-      if (bounces > 0) this.impactRounds(from, to, impactSpeed);
+      if (bounces > 0) this.impactRounds(from, to);
       joints.solveChains(s, false);
       // The relax pass can ask more of a light body than the limits allow (a torqued hinge chain
       // of 1,000:1 against the floor grew 1e2 -> 1e226 m/s in one pass): held to them here, as
       // the position half does, so no step ends with a velocity no later step could move.
-      kernel.limitSpeeds(
-        bodies,
-        awake,
-        list,
-        useList,
-        bodyFrom,
-        bodyTo,
-        states,
-        maxSpeed,
-        maxAngularSpeed,
-      );
+      kernel.limitSpeeds(bodies, awake, list, useList, bodyFrom, bodyTo, states, args);
     }
     // Each constraint's impulses go to its own contact slot: a batch stores its own while they
     // are still in cache (the order of the stores changes nothing).
@@ -561,10 +561,10 @@ export class Solver {
   /**
    * The impact rounds after a relax pass that bounced (the kernel's impacts), for the constraints
    * at positions `from` to `to` of the visiting order: round after round until no touching contact
-   * approaches faster than `impactSpeed` (at most MAX_IMPACT_ROUNDS); a lone bounce of the relax
+   * approaches faster than the impact speed (A_IMPACT_SPEED, at most MAX_IMPACT_ROUNDS); a lone bounce of the relax
    * pass first solved again together with the joints, when there are any.
    */
-  private impactRounds(from: number, to: number, impactSpeed: number): void {
+  private impactRounds(from: number, to: number): void {
     // The relax pass's bounce was computed with free bodies: with joints, it is solved again
     // together with them. Only a lone bounce: two impacts of one chain solved together towards
     // fixed targets would make energy (a cradle's balls would all fly apart).
@@ -573,34 +573,32 @@ export class Solver {
     // joint, and a particle under a pile, bouncing with others, went through the floor.
     if (
       this.joints.activeCount > 0 &&
-      this.impacts(from, to, impactSpeed, IMPACT_COUNT) === 1 &&
-      this.impacts(from, to, impactSpeed, IMPACT_OPEN) === 1
+      this.impacts(from, to, IMPACT_COUNT) === 1 &&
+      this.impacts(from, to, IMPACT_OPEN) === 1
     ) {
-      this.impactsWithJoints(this.joints, from, to, impactSpeed);
+      this.impactsWithJoints(this.joints, from, to);
     }
     let rounds = 0;
-    while (this.impacts(from, to, impactSpeed, IMPACT_ROUND) > 0) {
+    while (this.impacts(from, to, IMPACT_ROUND) > 0) {
       if (++rounds === MAX_IMPACT_ROUNDS) break;
     }
     // Closes the last round and clears the marks: the next sub-step starts without impacts.
-    this.impacts(from, to, impactSpeed, IMPACT_CLOSE);
+    this.impacts(from, to, IMPACT_CLOSE);
   }
 
   /** Gauss-Seidel iterations of the open impacts and the joints (relax: no position bias). */
-  private impactsWithJoints(
-    joints: JointSolver,
-    from: number,
-    to: number,
-    impactSpeed: number,
-  ): void {
+  private impactsWithJoints(joints: JointSolver, from: number, to: number): void {
     for (let k = 0; k < JOINT_IMPACT_ITERATIONS; k++) {
       joints.solve(false);
-      this.impacts(from, to, impactSpeed, IMPACT_CONTINUE);
+      this.impacts(from, to, IMPACT_CONTINUE);
     }
   }
 
-  /** One pass of the kernel's impact rounds (impacts, wasm/contact-kernel.ts) in `mode`. */
-  private impacts(from: number, to: number, impactSpeed: number, mode: number): number {
+  /**
+   * One pass of the kernel's impact rounds (impacts, wasm/contact-kernel.ts) in `mode`; its speeds
+   * are in the kernel's arguments (storeArguments).
+   */
+  private impacts(from: number, to: number, mode: number): number {
     const memory = this.memory;
     return memory.kernel.impacts(
       memory.offsets[CONSTRAINT_DATA]!,
@@ -608,9 +606,7 @@ export class Solver {
       memory.offsets[CONSTRAINT_ORDER]! + 4 * from,
       memory.offsets[STATES]!,
       to - from,
-      impactSpeed,
-      this.loadSpeed,
-      this.pushSpeed,
+      memory.offsets[KERNEL_ARGUMENTS]!,
       memory.offsets[STATES]! + 8 * this.states.marks,
       mode,
     );
@@ -618,16 +614,19 @@ export class Solver {
 
   /**
    * Writes velocities and poses back to the bodies, updates their sleep timers and moves their
-   * shapes' broad-phase boxes (`bounds`, predicting a next step of `boundsDt`). With `continuous`,
+   * shapes' broad-phase boxes (`bounds`, predicting a next step of its `dt`). With `continuous`,
    * dynamic bodies that moved far enough to need a sweep test are listed in `fastBodies` and
    * `fastBullets` instead, their boxes left to the sweep.
    */
-  finalizeBodies(dt: number, bounds: BodyBounds, boundsDt: number, continuous: boolean): void {
+  finalizeBodies(dt: number, bounds: BodyBounds, continuous: boolean): void {
     const awake = this.awake;
     const fastBodies = this.fastBodies;
     const fastBullets = this.fastBullets;
-    bounds.dt = boundsDt;
     const memory = this.memory;
+    // Through the memory, not as arguments: V8 can box each double passed to WebAssembly.
+    const args = memory.kernelArguments;
+    args[A_DT] = dt;
+    args[A_BOUNDS_DT] = bounds.dt;
     // Velocities, centres, angles, transforms and sleep clocks, in the body memory, and the fast
     // bodies' awake indices (the kernel's finalizeBodies, wasm/body-passes.ts).
     const fast = memory.kernel.finalizeBodies(
@@ -635,7 +634,7 @@ export class Solver {
       memory.offsets[AWAKE_BODIES]!,
       this.awakeCount,
       memory.offsets[STATES]!,
-      dt,
+      memory.offsets[KERNEL_ARGUMENTS]!,
       memory.offsets[FAST_BODIES]!,
       continuous ? 1 : 0,
     );
@@ -650,7 +649,7 @@ export class Solver {
       memory.offsets[SHAPE_BOXES]!,
       memory.offsets[SHAPE_GEOMETRY]!,
       memory.offsets[SHAPE_NEXT]!,
-      boundsDt,
+      memory.offsets[KERNEL_ARGUMENTS]!,
       memory.offsets[ESCAPED_SHAPES]!,
     );
     bounds.moveEscaped(memory.escapedShapes, escaped);

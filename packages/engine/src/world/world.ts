@@ -407,7 +407,9 @@ export class World {
       // The step moves its bodies' proxies together: their trees only grow until the rebuild
       // below (BroadPhase.deferring), which queries may precede, since grown trees stay exact.
       this.broadPhase.deferring = true;
-      this.solver.finalizeBodies(dt, this.bounds, this.lastStep, this.settings.enableContinuous);
+      // The boxes look one step ahead, as long as the last (a field: V8 boxes a double argument).
+      this.bounds.dt = this.lastStep;
+      this.solver.finalizeBodies(dt, this.bounds, this.settings.enableContinuous);
       this.solveContinuous();
       this.solveBullets();
       if (this.sensors.shapes.length > 0) this.sensors.update(this.broadPhase, this.shapesById);

@@ -1,4 +1,18 @@
-import { JOINT_ACTIVE, JOINT_RECORDS, STATES, type SolverMemory } from '../solver-memory.ts';
+import {
+  A_JOINT_BIAS_RATE,
+  A_JOINT_H,
+  A_JOINT_IMPULSE_SCALE,
+  A_JOINT_INVERSE_H,
+  A_JOINT_MASS_SCALE,
+  A_JOINT_MAX_BIAS_SPEED,
+} from '../kernel-arguments.ts';
+import {
+  JOINT_ACTIVE,
+  JOINT_RECORDS,
+  KERNEL_ARGUMENTS,
+  STATES,
+  type SolverMemory,
+} from '../solver-memory.ts';
 import { createJointKernel } from './joint-kernel-loader.ts';
 import type { JointStep } from './joint.ts';
 import {
@@ -43,6 +57,14 @@ export class JointBatch {
   run(memory: SolverMemory, step: JointStep, pass: number): void {
     const o = memory.offsets;
     const soft = step.softness;
+    // Through the memory: V8 can box each double passed to WebAssembly (kernel-arguments.ts).
+    const args = memory.kernelArguments;
+    args[A_JOINT_H] = step.h;
+    args[A_JOINT_INVERSE_H] = step.inverseH;
+    args[A_JOINT_BIAS_RATE] = soft.biasRate;
+    args[A_JOINT_MASS_SCALE] = soft.massScale;
+    args[A_JOINT_IMPULSE_SCALE] = soft.impulseScale;
+    args[A_JOINT_MAX_BIAS_SPEED] = step.maxBiasSpeed;
     memory.joints.jointPass(
       this.kind,
       pass,
@@ -51,12 +73,7 @@ export class JointBatch {
       o[STATES]!,
       this.start,
       this.start + this.active,
-      step.h,
-      step.inverseH,
-      soft.biasRate,
-      soft.massScale,
-      soft.impulseScale,
-      step.maxBiasSpeed,
+      o[KERNEL_ARGUMENTS]!,
     );
   }
 

@@ -17,7 +17,9 @@ export interface JointPasses {
    * kind `kind` (KIND_...): active joints `from` to `to` of the JOINT_ACTIVE list at `active`
    * (record offset, state A, state B), their records in JOINT_RECORDS at `records`, the states at
    * `states`. The step's numbers (a warm start reads none): the sub-step and its inverse, the
-   * joint softness (bias rate, mass and impulse scale) and the largest bias speed.
+   * joint softness (bias rate, mass and impulse scale) and the largest bias speed, stored at
+   * `args` (KERNEL_ARGUMENTS: A_JOINT_..., kernel-arguments.ts; V8 boxes each double passed to
+   * WebAssembly).
    */
   jointPass(
     kind: number,
@@ -27,12 +29,7 @@ export interface JointPasses {
     states: number,
     from: number,
     to: number,
-    h: number,
-    inverseH: number,
-    biasRate: number,
-    massScale: number,
-    impulseScale: number,
-    maxBiasSpeed: number,
+    args: number,
   ): void;
 }
 

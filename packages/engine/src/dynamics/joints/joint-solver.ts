@@ -47,22 +47,24 @@ export class JointSolver {
   private readonly batches: JointBatch[] = [];
 
   /**
-   * Picks the joints to solve and prepares them; `contactHertz` as the contacts use it,
-   * `bodyCount` the step's awake bodies, `maxLinearSpeed` the world's speed limit.
+   * Picks the joints to solve and prepares them; `contact` the contacts' softness this step (its
+   * hertz as the contacts use it), `bodyCount` the step's awake bodies, `limits` the world's
+   * speed limit. Objects, not their numbers: V8 boxes a fractional argument of a call it does not
+   * inline.
    */
   prepare(
     dt: number,
     subSteps: number,
-    contactHertz: number,
+    contact: Softness,
     bodyCount: number,
-    maxLinearSpeed: number,
+    limits: { readonly maxLinearSpeed: number },
   ): void {
     const step = this.step;
     step.dt = dt;
     step.h = dt / subSteps;
     step.inverseH = subSteps / dt;
-    step.maxBiasSpeed = maxLinearSpeed;
-    step.softness.set(2 * contactHertz, JOINT_DAMPING_RATIO, step.h);
+    step.maxBiasSpeed = limits.maxLinearSpeed;
+    step.softness.set(2 * contact.hertz, JOINT_DAMPING_RATIO, step.h);
     const list = this.list;
     const active = this.active;
     const batches = this.batches;
@@ -96,7 +98,7 @@ export class JointSolver {
       this.chains ??= joint.createChains();
     }
     this.count = count;
-    this.chains?.prepare(active, count, bodyCount, step.h, maxLinearSpeed);
+    this.chains?.prepare(active, count, bodyCount, step);
     // The active list, kind after kind in the order the kinds first came, each kind's joints in
     // the world's order; after the chains: they add their pins' geometric stiffness to the
     // joints' inertia, which the state offsets do not depend on but the passes read.
@@ -147,7 +149,7 @@ export class JointSolver {
    * (`useBias`), after the relax pass, or (`project`) after the positions moved.
    */
   solveChains(s: Float64Array, useBias: boolean, project = false): void {
-    this.chains?.run(s, useBias ? this.step.softness.biasRate : 0, useBias, project);
+    this.chains?.run(s, useBias, project);
   }
 
   /** Turns the step's impulses into reaction forces. */

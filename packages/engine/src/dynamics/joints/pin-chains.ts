@@ -1,5 +1,6 @@
 import { releaseFrom } from '../../core/release.ts';
 import { DELTA_ANGLE, DP_X, DP_Y, Q_C, Q_S, STATE_STRIDE, V_X, V_Y, W } from '../body-state.ts';
+import type { JointStep } from './joint.ts';
 
 /** What the chain solve needs of a hinge (RevoluteJoint). */
 export interface PinJoint {
@@ -64,6 +65,12 @@ export class PinChains {
   private used: Uint8Array = new Uint8Array(16);
   /** Farthest a body moves in one projection (m): maxLinearSpeed h, set by prepare. */
   private maxMove = -0;
+  /**
+   * The step's joint softness bias rate (set by prepare): a field, not run's argument, since V8
+   * boxes a fractional argument of a call it does not inline, and run is called three times a
+   * sub-step.
+   */
+  private biasRate = -0;
 
   /** Forgets the last step's joints (see Solver.releaseReferences). */
   release(): void {
@@ -73,18 +80,19 @@ export class PinChains {
   }
 
   /**
-   * Finds the chains among `joints` (prepared this step); `bodyCount`: awake bodies;
-   * `maxLinearSpeed`: the world's speed limit, which also bounds the projection (see run).
+   * Finds the chains among `joints` (prepared this step); `bodyCount`: awake bodies; `step`: the
+   * step's numbers (its sub-step, its bias rate, and its maxBiasSpeed, the world's speed limit,
+   * which also bounds the projection: see run).
    */
   prepare(
     joints: readonly { pinJoint(): PinJoint | null }[],
     count: number,
     bodyCount: number,
-    h: number,
-    maxLinearSpeed: number,
+    step: JointStep,
   ): void {
     this.chainCount = 0;
-    this.maxMove = maxLinearSpeed * h;
+    this.maxMove = step.maxBiasSpeed * step.h;
+    this.biasRate = step.softness.biasRate;
     const pins = this.pins;
     let pinCount = 0;
     let unlike = false;
@@ -170,7 +178,7 @@ export class PinChains {
       }
       begin = end;
     }
-    this.stiffen(h);
+    this.stiffen(step.h);
   }
 
   /**
@@ -213,8 +221,8 @@ export class PinChains {
   }
 
   /**
-   * The exact pin solve of every chain (see the note above), with `biasRate` times the pins'
-   * position error in the target; or, with `positions`, moves the chains' bodies so every pin
+   * The exact pin solve of every chain (see the note above), with the step's bias rate (with
+   * `useBias`; else none) times the pins' position error in the target; or, with `positions`, moves the chains' bodies so every pin
    * closes exactly (post-stabilisation, Cline and Pai 2003): a taut chain of light links whips
    * sideways at no first-order cost to its pins, and the second-order drift would otherwise be
    * pushed back by velocity, which makes energy.
@@ -226,7 +234,8 @@ export class PinChains {
    * contacts with levers of that length, whose impulses grow step after step until they
    * overflow (a 30:1 chain restored with one link 4e10 m off went non-finite in 3 steps).
    */
-  run(s: Float64Array, biasRate: number, useBias: boolean, positions: boolean): void {
+  run(s: Float64Array, useBias: boolean, positions: boolean): void {
+    const biasRate = useBias ? this.biasRate : 0;
     const t = this.scratch;
     LIMITS[0] = this.maxMove;
     let begin = 0;

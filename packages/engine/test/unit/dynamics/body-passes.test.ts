@@ -186,8 +186,8 @@ describe('the body passes, built into the kernel', () => {
       const finalize = solver.finalizeBodies.bind(solver);
       const result: Record = { wrongTransforms: 0, fast: [], expected: [] };
       const transform = new Transform();
-      solver.finalizeBodies = (dt, bounds, boundsDt, continuous) => {
-        finalize(dt, bounds, boundsDt, continuous);
+      solver.finalizeBodies = (dt, bounds, continuous) => {
+        finalize(dt, bounds, continuous);
         const fast: number[] = [];
         const bullets: number[] = [];
         for (let i = 0; i < solver.awakeCount; i++) {
