@@ -847,3 +847,164 @@ describe('every option of every factory and constructor gets every bad value', (
     }
   });
 });
+
+/** A world in which, within 120 steps, every event kind a step delivers fires. */
+interface EventScene {
+  readonly world: World;
+  readonly ground: Body;
+  readonly ball: Body;
+  readonly zone: Body;
+  readonly spare: Body;
+  readonly hinge: Joint;
+}
+
+function eventScene(): EventScene {
+  const world = new World({ gravity: { x: 0, y: 10 } });
+  const ground = world.add(box({ type: 'static', position: { x: 0, y: 5 }, width: 20, height: 1 }));
+  // A bouncing ball (contactBegin, collision, contactEnd) through a sensor (sensorBegin, sensorEnd).
+  const ball = world.add(particle({ position: { x: 0, y: 0 }, radius: 0.25, restitution: 1 }));
+  const zone = world.add(
+    particle({ type: 'static', position: { x: 0, y: 2 }, radius: 0.5, sensor: true }),
+  );
+  // A sleeping crate that a dropped particle wakes (wake), and a pendulum (jointRemoved).
+  const spare = world.add(box({ position: { x: 3, y: 4 }, width: 1, height: 1, asleep: true }));
+  const bob = world.add(particle({ position: { x: -3, y: 2 }, radius: 0.2 }));
+  const hinge = world.addJoint(
+    revoluteJoint({ bodyA: ground, bodyB: bob, anchor: { x: -3, y: 1 } }),
+  );
+  return { world, ground, ball, zone, spare, hinge };
+}
+
+/** What a listener does, once, when its event first fires; `false` when it cannot apply. */
+const LISTENER_ACTIONS: readonly [string, (s: EventScene) => unknown][] = [
+  ['adds a body', (s) => s.world.add(particle({ position: { x: -5, y: 0 }, radius: 0.3 }))],
+  ['removes the ball', (s) => s.world.remove(s.ball)],
+  ['removes the ball twice', (s) => (s.world.remove(s.ball), s.world.remove(s.ball))],
+  ['removes then adds the ball', (s) => (s.world.remove(s.ball), s.world.add(s.ball))],
+  ['removes the ground', (s) => s.world.remove(s.ground)],
+  ['clears the world', (s) => s.world.clear()],
+  ['steps the world', (s) => s.world.step()],
+  ['takes a snapshot', (s) => takeSnapshot(s.world)],
+  ['restores a snapshot', () => restoreSnapshot(SAVED).step()],
+  [
+    'adds a joint',
+    (s) =>
+      s.world.addJoint(
+        distanceJoint({
+          bodyA: s.ground,
+          bodyB: s.ball,
+          anchorA: { x: 0, y: 4.5 },
+          anchorB: s.ball.position,
+        }),
+      ),
+  ],
+  ['removes a joint', (s) => s.world.removeJoint(s.hinge)],
+  [
+    'adds a shape',
+    (s) => s.ball.addShape({ type: 'circle', radius: 0.1, offset: { x: 0.2, y: 0 } }),
+  ],
+  ['removes a shape', (s) => s.spare.removeShape(s.spare.shapes[0]!)],
+  ['moves the ball', (s) => (s.ball.position = { x: 1, y: 0 })],
+  ['sets a NaN velocity', (s) => (s.ball.linearVelocity = { x: NaN, y: 0 })],
+  ['applies a force', (s) => s.ball.applyForce({ x: 1, y: 0 }, { duration: 'instant' })],
+  ['sleeps the ball', (s) => s.ball.sleep()],
+  [
+    'throws',
+    () => {
+      throw new Error('from a listener');
+    },
+  ],
+];
+
+/** A snapshot of another world, restored from inside listeners. */
+const SAVED = takeSnapshot(eventScene().world);
+
+const EVENT_KINDS = [
+  'move',
+  'collision',
+  'contactBegin',
+  'contactEnd',
+  'sensorBegin',
+  'sensorEnd',
+  'wake',
+  'bodyAdded',
+  'bodyRemoved',
+  'jointRemoved',
+] as const;
+
+describe('changes made inside every listener: a PhysicalError or the documented model, and the world steps on', () => {
+  const cases = EVENT_KINDS.flatMap((kind) =>
+    LISTENER_ACTIONS.map(
+      ([label, action]) => [`${kind} listener ${label}`, kind, label, action] as const,
+    ),
+  );
+  it.each(cases)('%s', (_title, kind, label, action) => {
+    const s = eventScene();
+    let fired = 0;
+    let outcome: unknown = 'not yet';
+    s.world.on(kind, () => {
+      if (fired++ > 0) return;
+      try {
+        action(s);
+        outcome = 'accepted';
+      } catch (error) {
+        outcome = error;
+        throw error;
+      }
+    });
+    const before = [...s.world.bodies];
+    // The events the scene only delivers when asked: a body added, a body and a joint removed,
+    // and the sleeping crate woken.
+    const triggers = (step: number): void => {
+      if (step === 1 && kind === 'bodyAdded')
+        s.world.add(particle({ position: { x: 6, y: 0 }, radius: 0.2 }));
+      if (step === 1 && kind === 'bodyRemoved') s.world.remove(s.world.bodies.at(-1)!);
+      if (step === 1 && kind === 'jointRemoved') s.world.removeJoint(s.hinge);
+      // A particle dropped on the sleeping crate wakes it.
+      if (step === 1 && kind === 'wake') {
+        s.world.add(particle({ position: { x: 3, y: 2.5 }, radius: 0.2 }));
+      }
+    };
+    for (let step = 0; step < 120; step++) {
+      try {
+        triggers(step);
+        s.world.step();
+      } catch (error) {
+        // What a listener throws reaches the caller of step() (or of the call whose events it
+        // was): a PhysicalError naming a field, or the listener's own error.
+        expect(error).toBe(outcome);
+        if (label !== 'throws') {
+          expect(error).toBeInstanceOf(PhysicalError);
+          expect(
+            (error as PhysicalError).message.startsWith(`${(error as PhysicalError).field}: `),
+          ).toBe(true);
+        }
+      }
+    }
+    expect(fired).toBeGreaterThan(0);
+    expect(outcome).not.toBe('not yet');
+    if (label === 'throws') expect(outcome).toBeInstanceOf(Error);
+    // Nothing was lost beyond what the action removed, and the world steps on, finite.
+    // A listener that throws after queuing a change still has it applied (the README's model).
+    const removedByAction =
+      label.startsWith('removes the ball') && label !== 'removes then adds the ball'
+        ? [s.ball]
+        : label === 'removes the ground'
+          ? [s.ground]
+          : label === 'clears the world'
+            ? before
+            : [];
+    for (const body of before) {
+      const applied = outcome === 'accepted' || label === 'removes the ball twice';
+      if (!applied || !removedByAction.includes(body)) {
+        if (kind !== 'bodyRemoved' || body !== before.at(-1)) expect(s.world.has(body)).toBe(true);
+      } else {
+        expect(s.world.has(body)).toBe(false);
+      }
+    }
+    for (const body of s.world.bodies) expect(body.world).toBe(s.world);
+    expect(nonFinite(s.world)).toEqual([]);
+    for (let i = 0; i < 60; i++) s.world.step();
+    expect(nonFinite(s.world)).toEqual([]);
+  });
+});
