@@ -32,6 +32,7 @@ import {
   type PrismaticJoint,
   type RevoluteJoint,
   type WeldJoint,
+  type WorldSnapshot,
 } from '@physical/engine';
 
 // The audit of every public entry of @physical/engine (src/index.ts) against bad input, as a
@@ -1006,5 +1007,94 @@ describe('changes made inside every listener: a PhysicalError or the documented 
     expect(nonFinite(s.world)).toEqual([]);
     for (let i = 0; i < 60; i++) s.world.step();
     expect(nonFinite(s.world)).toEqual([]);
+  });
+});
+
+/** Every place in a JSON value: the path and a setter of a copy at that place. */
+function places(value: unknown, path: (string | number)[] = []): (string | number)[][] {
+  if (value === null || typeof value !== 'object') return [path];
+  const keys = Array.isArray(value) ? value.map((_, i) => i) : Object.keys(value);
+  return [
+    path,
+    ...keys.flatMap((k) => places((value as Record<string, unknown>)[k], [...path, k])),
+  ];
+}
+
+/** A deep copy of `snapshot` (JSON) with `change` made at `path`. */
+function damaged(
+  snapshot: unknown,
+  path: (string | number)[],
+  change: (old: unknown) => unknown,
+): unknown {
+  const copy = JSON.parse(JSON.stringify(snapshot)) as unknown;
+  if (path.length === 0) return change(copy);
+  let parent = copy as Record<string | number, unknown>;
+  for (const key of path.slice(0, -1)) parent = parent[key] as Record<string | number, unknown>;
+  const last = path.at(-1)!;
+  const next = change(parent[last]);
+  if (next === DELETE) {
+    if (Array.isArray(parent)) parent.splice(last as number, 1);
+    else Reflect.deleteProperty(parent, last);
+  } else parent[last] = next;
+  return copy;
+}
+
+const DELETE = Symbol('delete');
+
+/** What each place is changed to: the value kinds, and arrays cut, emptied and doubled. */
+const DAMAGE: readonly [string, (old: unknown) => unknown][] = [
+  ['NaN', () => NaN],
+  ['null', () => null],
+  ['removed', () => DELETE],
+  ["'a'", () => 'a'],
+  ['-1', () => -1],
+  ['1e300', () => 1e300],
+  ['{}', () => ({})],
+  ['a count off by one', (old) => (typeof old === 'number' ? old + 1 : old)],
+  ['cut short', (old) => (Array.isArray(old) ? old.slice(0, -1) : old)],
+  ['emptied', (old) => (Array.isArray(old) ? [] : old)],
+  [
+    'its first entry twice',
+    (old) => (Array.isArray(old) && old.length > 0 ? [old[0], ...old] : old),
+  ],
+];
+
+describe('restoreSnapshot: every place of a saved world damaged every way', () => {
+  const f = fixture();
+  const saved = JSON.parse(JSON.stringify(takeSnapshot(f.world))) as WorldSnapshot;
+  const all = places(saved);
+  // Each place gets one of the damages, in turn, so that every damage meets every kind of place;
+  // one test per section of the snapshot, at most 150 places each (evenly spread: the broad
+  // phase's trees alone have some 900).
+  const sections = Object.keys(saved).map((key) => {
+    const inside = all.map((path, i) => [path, i] as const).filter(([path]) => path[0] === key);
+    const stride = Math.ceil(inside.length / 150);
+    return [key, inside.filter((_, n) => n % stride === 0)] as const;
+  });
+  it.each(sections)('%s', (_section, paths) => {
+    for (const [path, i] of paths) {
+      const [label, change] = DAMAGE[i % DAMAGE.length]!;
+      const input = damaged(saved, path, change);
+      let world: World;
+      try {
+        world = restoreSnapshot(input as WorldSnapshot);
+      } catch (error) {
+        if (!(error instanceof PhysicalError)) {
+          throw new Error(`${path.join('.')} ${label}: threw ${String(error)}`, { cause: error });
+        }
+        expect(error.message.startsWith(`${error.field}: `)).toBe(true);
+        continue;
+      }
+      // Accepted: a world the API could have made, which steps on, finite.
+      try {
+        expect(nonFinite(world)).toEqual([]);
+        for (let s = 0; s < 60; s++) world.step();
+        expect(nonFinite(world)).toEqual([]);
+      } catch (error) {
+        throw new Error(`${path.join('.')} ${label}: accepted, then ${String(error)}`, {
+          cause: error,
+        });
+      }
+    }
   });
 });
