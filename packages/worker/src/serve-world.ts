@@ -1,6 +1,7 @@
 import {
   PhysicalError,
   World,
+  checkWorldSetting,
   mouseJoint,
   type Body,
   type CollisionEvent,
@@ -16,8 +17,33 @@ import { OffscreenRenderer } from './offscreen-renderer.ts';
 import type { WorkerEvent } from './events.ts';
 import type { BodyId } from './ids.ts';
 import { POSE_STRIDE, SharedPoses } from './pose-stream.ts';
+import { BODY_PROPERTIES } from './protocol.ts';
 import type { BodyOperation, FromWorker, Query, StreamedEvent, ToWorker } from './protocol.ts';
 import { worldStateHash } from './state-hash.ts';
+
+/**
+ * Most steps one `step` message may ask for: the page asks at most a frame's worth (4); a
+ * malformed message asking for a billion would hang the worker.
+ */
+const MAX_STEPS_PER_MESSAGE = 1000;
+
+/** The events a page can listen to. */
+const STREAMED: readonly string[] = [
+  'collision',
+  'contactBegin',
+  'contactEnd',
+  'sensorBegin',
+  'sensorEnd',
+  'move',
+];
+
+/** A new id from the page: a non-negative integer not in use in `used`. */
+function requireNewId(id: unknown, used: Map<number, unknown>): number {
+  if (!Number.isInteger(id) || (id as number) < 0 || used.has(id as number)) {
+    throw new PhysicalError('id', `must be a new non-negative integer id, got ${String(id)}.`);
+  }
+  return id as number;
+}
 
 /** Fastest throw (m/s), as `<physical-canvas>`'s own dragging. */
 const MAX_THROW_SPEED = 50;
@@ -111,6 +137,9 @@ class WorldServer {
   }
 
   private handle(message: ToWorker): void {
+    if (message === null || typeof message !== 'object') {
+      throw new PhysicalError('message', `must be an object with a type, got ${String(message)}.`);
+    }
     switch (message.type) {
       case 'init':
         if (this.initialized) throw new Error('a worker serves one WorkerWorld (init twice).');
@@ -122,6 +151,7 @@ class WorldServer {
         this.onInit(this.world);
         return;
       case 'add': {
+        requireNewId(message.id, this.bodies);
         const body = buildBody(message.definition);
         this.world.add(body);
         this.bodies.set(message.id, body);
@@ -136,6 +166,7 @@ class WorldServer {
         return;
       }
       case 'addJoint':
+        requireNewId(message.id, this.joints);
         this.joints.set(
           message.id,
           this.world.addJoint(buildJoint(message.definition, (id) => this.body(id))),
@@ -151,9 +182,24 @@ class WorldServer {
         this.operate(this.body(message.id), message.operation);
         return;
       case 'setting':
-        (this.world as unknown as Record<string, unknown>)[message.name] = message.value;
+        // Only the four settings, checked as the page checks them: a name such as `__proto__`
+        // or `step` would otherwise replace the world's own members.
+        (this.world as unknown as Record<string, unknown>)[message.name] = checkWorldSetting(
+          message.name,
+          message.value,
+        );
         return;
       case 'step':
+        if (
+          !Number.isInteger(message.count) ||
+          message.count < 1 ||
+          message.count > MAX_STEPS_PER_MESSAGE
+        ) {
+          throw new PhysicalError(
+            'count',
+            `must be an integer from 1 to ${MAX_STEPS_PER_MESSAGE}, got ${String(message.count)}.`,
+          );
+        }
         this.stepsLeft = message.count;
         for (let i = 0; i < message.count; i++) {
           this.step(message.dt);
@@ -183,6 +229,11 @@ class WorldServer {
       case 'close':
         (self as unknown as { close?: () => void }).close?.();
         return;
+      default:
+        throw new PhysicalError(
+          'type',
+          `is not a message type of this version, got ${String((message as { type: unknown }).type)}.`,
+        );
     }
   }
 
@@ -214,6 +265,13 @@ class WorldServer {
         body.applyAngularImpulse(operation.impulse);
         return;
       case 'set':
+        // Only the settable properties: another name (`__proto__`, `type`) would corrupt the body.
+        if (!(BODY_PROPERTIES as readonly unknown[]).includes(operation.property)) {
+          throw new PhysicalError(
+            'property',
+            `must be one of ${BODY_PROPERTIES.join(', ')}, got ${String(operation.property)}.`,
+          );
+        }
         (body as unknown as Record<string, unknown>)[operation.property] = operation.value;
         return;
       case 'wake':
@@ -276,6 +334,9 @@ class WorldServer {
   }
 
   private listen(events: readonly StreamedEvent[]): void {
+    if (!Array.isArray(events) || !events.every((type) => STREAMED.includes(type))) {
+      throw new PhysicalError('events', `must be an array of ${STREAMED.join(', ')}.`);
+    }
     for (const [type, off] of this.offs) {
       if (!events.includes(type)) {
         off();
@@ -286,7 +347,7 @@ class WorldServer {
     for (const type of events) {
       if (this.offs.has(type)) continue;
       const world = this.world;
-      let off: () => void;
+      let off: () => void = () => undefined;
       switch (type) {
         case 'collision':
           off = world.on('collision', (event: CollisionEvent) => {
@@ -372,6 +433,8 @@ class WorldServer {
           isAwake: body.isAwake,
         };
       }
+      default:
+        throw new PhysicalError('query', 'must be a query of this version.');
     }
   }
 

@@ -392,7 +392,7 @@ export class WorkerWorld implements DrawingSource {
     ) {
       throw new PhysicalError(
         'property',
-        `must be one of ${BODY_PROPERTIES.join(', ')}, got ${describe(property)}.`,
+        `must be one of ${BODY_PROPERTIES.join(', ')}, got ${String(property)}.`,
       );
     }
     // Vectors are read once into plain { x, y }: the page checks what the worker receives.
@@ -579,7 +579,7 @@ export class WorkerWorld implements DrawingSource {
   /** The full state of a body, read from the worker. */
   getBody(id: BodyId): Promise<WorkerBodyState | null> {
     if (!Number.isInteger(id)) {
-      throw new PhysicalError('id', `must be a body id, got ${describe(id)}.`);
+      throw new PhysicalError('id', `must be a body id, got ${String(id)}.`);
     }
     return this.ask({ kind: 'body', id }) as Promise<WorkerBodyState | null>;
   }
@@ -937,14 +937,6 @@ export class WorkerWorld implements DrawingSource {
     this.pending.clear();
     if (report) this.emit('error', error);
   }
-}
-
-function describe(value: unknown): string {
-  return typeof value === 'string'
-    ? `'${value}'`
-    : typeof value === 'symbol'
-      ? 'a symbol'
-      : String(value);
 }
 
 /** Marks a frame whose poses are in shared memory. */

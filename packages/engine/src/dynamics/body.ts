@@ -6,6 +6,7 @@ import {
   optionalObject,
   requireAngle,
   requireBoolean,
+  requireObject,
   requireOneOf,
   requireVector,
 } from '../core/validate.ts';
@@ -218,6 +219,7 @@ export class Body<UserData = unknown> extends BodyNumbers {
   /** Converts a body-local point to world coordinates (m). */
   getWorldPoint(local: Vec2Like, out: Vec2 = { x: 0, y: 0 }): Vec2 {
     requireVector('local', local);
+    requireObject('out', out, 'an object');
     const { c, s, x, y } = this.transform;
     const lx = local.x;
     const ly = local.y;
@@ -229,6 +231,7 @@ export class Body<UserData = unknown> extends BodyNumbers {
   /** Converts a world point to body-local coordinates (m). */
   getLocalPoint(world: Vec2Like, out: Vec2 = { x: 0, y: 0 }): Vec2 {
     requireVector('world', world);
+    requireObject('out', out, 'an object');
     const { c, s, x, y } = this.transform;
     const dx = world.x - x;
     const dy = world.y - y;
@@ -240,6 +243,7 @@ export class Body<UserData = unknown> extends BodyNumbers {
   /** Velocity of the body's material at a world point (m/s): v + w x r. */
   getVelocityAt(world: Vec2Like, out: Vec2 = { x: 0, y: 0 }): Vec2 {
     requireVector('world', world);
+    requireObject('out', out, 'an object');
     const w = this.angularVelocityValue;
     out.x = this.velocityX - w * (world.y - this.centerY);
     out.y = this.velocityY + w * (world.x - this.centerX);

@@ -167,7 +167,11 @@ export class Shape {
   /** @internal Broad-phase proxy key, -1 outside a world. */
   proxyKey = -1;
 
-  /** `geometry` is built from `options` unless given (a part of a split polygon). */
+  /**
+   * `geometry` is built from `options` unless given (a part of a split polygon). Shapes are made
+   * by {@link Body.addShape} and the body factories; one made here is on no body's list.
+   * `field`, a string, names the shape in error messages (`shapes[0]`).
+   */
   constructor(body: Body, options: ShapeOptions, field: string, geometry?: Geometry) {
     this.bodyValue = body;
     requireObject(field, options, 'a shape description object');
@@ -267,6 +271,7 @@ export class Shape {
 
   /** Whether this shape and `other` pass each other's filters (sensors aside). */
   collidesWith(other: Shape): boolean {
+    requireObject('other', other, 'a shape');
     return filtersCollide(this, other);
   }
 
@@ -287,6 +292,7 @@ export class Shape {
       maxY: 0,
     },
   ): { minX: number; minY: number; maxX: number; maxY: number } {
+    requireObject('out', out, 'an object');
     const box = this.computeAABB(this.body.transform);
     out.minX = box.minX;
     out.minY = box.minY;

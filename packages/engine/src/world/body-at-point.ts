@@ -1,4 +1,5 @@
-import { requireVector } from '../core/validate.ts';
+import { PhysicalError } from '../core/errors.ts';
+import { requireObject, requireVector } from '../core/validate.ts';
 import { capsuleContainsPoint } from '../geometry/capsule.ts';
 import { circleContainsPoint } from '../geometry/circle.ts';
 import { polygonContainsPoint } from '../geometry/polygon-queries.ts';
@@ -21,12 +22,17 @@ export function shapeContainsPoint(shape: Shape, x: number, y: number): boolean 
  * The body of `bodies` with a shape under a world point (m), or null; the last in the list when
  * several are (it is drawn on top). `World.bodyAt` answers the same from its broad phase; this
  * tests every body, for a page that keeps copies of bodies without a `World` (a worker world's
- * page side). Throws a PhysicalError naming `point` when it is not a finite vector.
+ * page side). Throws a PhysicalError naming `point` when it is not a finite vector, `bodies` when it
+ * is not an array and `bodies[i]` when an entry is not a body.
  */
 export function bodyAtPoint(bodies: readonly Body[], point: Vec2Like): Body | null {
+  if (!Array.isArray(bodies)) {
+    throw new PhysicalError('bodies', 'must be an array of Body.');
+  }
   requireVector('point', point);
   for (let i = bodies.length - 1; i >= 0; i--) {
     const body = bodies[i]!;
+    requireObject(`bodies[${i}]`, body, 'a Body');
     for (const shape of body.shapes) if (shapeContainsPoint(shape, point.x, point.y)) return body;
   }
   return null;

@@ -38,7 +38,7 @@ export interface WorldSettingValues {
  * Checks world options as `new World(options)` does (the same {@link PhysicalError}, naming the
  * option), without building a world; returns the settings such a world starts with.
  */
-export function checkWorldOptions(options: WorldOptions): WorldSettingValues {
+export function checkWorldOptions(options: WorldOptions = {}): WorldSettingValues {
   const resolved = resolveWorldOptions(options);
   resolveKernel(options);
   return {

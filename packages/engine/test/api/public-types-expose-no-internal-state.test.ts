@@ -3,47 +3,13 @@ import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import ts from 'typescript';
 import { beforeAll, describe, expect, it } from 'vitest';
+import { PUBLIC_MEMBERS } from './public-members.ts';
 
 // Finding 15: the published declarations (tsconfig.build.json, as `npm run build` emits them, with
 // stripInternal) expose no internal state. The build uses isolatedDeclarations, so each file's
 // declarations are emitted on their own here (ts.transpileDeclaration: the same output, no type
 // check, fast). Each exported class's public members are exactly these;
 // a new internal field without its own `@internal` shows up here (e.g. Body.invMass, Joint.invMassB).
-
-const PUBLIC_MEMBERS: Record<string, string> = {
-  Body:
-    'type userData constructor world position angle centerOfMass linearVelocity angularVelocity ' +
-    'kineticEnergy getWorldPoint getLocalPoint getVelocityAt mass inertia resetMass ' +
-    'localCenterOfMass gravityScale linearDamping angularDamping drag fixedRotation bullet ' +
-    'allowSleep isAwake wake sleep shapes addShape removeShape joints forces applyForce ' +
-    'applyTorque removeForce clearForces applyImpulse applyAngularImpulse on off',
-  Shape:
-    'body geometry density sensor constructor friction restitution filter collidesWith getBounds',
-  Force: 'duration constructor x y torque remaining setVector setTorque remove isExpired',
-  World:
-    'constructor gravity subSteps restitutionThreshold enableSleep bodies steps isStepping add ' +
-    'remove has clear joints addJoint removeJoint step bodyAt bodiesInAABB rayCast rayCastAll ' +
-    'shapeCast overlapShape awakeBodyCount forEachContact on off',
-  Joint:
-    'type bodyA bodyB collideConnected userData constructor world reactionForce reactionTorque ' +
-    'anchorA anchorB',
-  DistanceJoint:
-    'type constructor currentLength length minLength maxLength setLengthRange enableSpring hertz ' +
-    'dampingRatio',
-  MouseJoint: 'type constructor body target maxForce hertz dampingRatio',
-  PrismaticJoint:
-    'type constructor translation enableLimit lower upper setLimits enableMotor motorSpeed ' +
-    'maxMotorForce motorForce enableSpring hertz dampingRatio',
-  RevoluteJoint:
-    'type constructor angle angularSpeed enableLimit lowerAngle upperAngle setLimits enableMotor ' +
-    'motorSpeed maxMotorTorque motorTorque enableSpring hertz dampingRatio',
-  WeldJoint: 'type constructor linearHertz angularHertz dampingRatio',
-  PhysicalError: 'field constructor',
-  // Body's base: the accessors of its numbers in the body memory, every one internal.
-  BodyNumbers: '',
-  // The base of the two-body joints (two-body-joint.ts): setters and the frame, every one internal.
-  TwoBodyJoint: '',
-};
 
 /** Public (not private, not protected) member names of every class the declarations hold. */
 const classes = new Map<string, string[]>();
