@@ -42,8 +42,11 @@ import {
 // WebAssembly module of their own that only the joint classes bring (engine 57.6 KB), and a
 // production bundle dropped the size warning (57.3 KB); the pair search's filter rows and the
 // room a world foresees for its first step (WorldMembership.foresee) came with World (57.9 KB).
+// The kernel's fractional arguments through memory (no boxed doubles in steady steps: the
+// KERNEL_ARGUMENTS region) and PhysicalErrors for bad out arguments and strangers (the audit of
+// every public entry) came to 58.0 KB.
 // Lower a ceiling whenever a change makes room.
-const ENGINE_CEILING_BYTES = 58.0 * 1024;
+const ENGINE_CEILING_BYTES = 58.1 * 1024;
 const CANVAS_CEILING_BYTES = 9.5 * 1024;
 const WORKER_PAGE_CEILING_BYTES = 30 * 1024;
 

@@ -26,9 +26,6 @@ import { filtersCollide, resolveFilter, type Filter, type FilterOptions } from '
 import {
   createLocalShapeTable,
   FILTER_STRIDE,
-  MATERIAL_DENSITY,
-  MATERIAL_FRICTION,
-  MATERIAL_RESTITUTION,
   MATERIAL_STRIDE,
   SHAPE_STRIDE,
   type ShapeTable,
@@ -200,7 +197,8 @@ export class Shape {
 
   /** Mass per area (kg/m^2). Read-only: a shape keeps the density it was built with. */
   get density(): number {
-    return this.table.materials[this.row * MATERIAL_STRIDE + MATERIAL_DENSITY]!;
+    // The material row's columns: shape-table.ts's MATERIAL_DENSITY, _FRICTION, _RESTITUTION.
+    return this.table.materials[this.row * MATERIAL_STRIDE]!;
   }
   /** @internal Read-only: a write (from plain JavaScript) throws a PhysicalError. */
   set density(_value: never) {
@@ -218,26 +216,20 @@ export class Shape {
 
   /** Coulomb friction coefficient, 0 to 100. Two shapes mix as sqrt(fA * fB). */
   get friction(): number {
-    return this.table.materials[this.row * MATERIAL_STRIDE + MATERIAL_FRICTION]!;
+    return this.table.materials[this.row * MATERIAL_STRIDE + 1]!;
   }
 
   set friction(value: number) {
-    this.table.materials[this.row * MATERIAL_STRIDE + MATERIAL_FRICTION] = requireFriction(
-      'friction',
-      value,
-    );
+    this.table.materials[this.row * MATERIAL_STRIDE + 1] = requireFriction('friction', value);
   }
 
   /** Coefficient of restitution (bounciness), 0 to 10, usually 0..1. Two shapes mix as max. */
   get restitution(): number {
-    return this.table.materials[this.row * MATERIAL_STRIDE + MATERIAL_RESTITUTION]!;
+    return this.table.materials[this.row * MATERIAL_STRIDE + 2]!;
   }
 
   set restitution(value: number) {
-    this.table.materials[this.row * MATERIAL_STRIDE + MATERIAL_RESTITUTION] = requireRestitution(
-      'restitution',
-      value,
-    );
+    this.table.materials[this.row * MATERIAL_STRIDE + 2] = requireRestitution('restitution', value);
   }
 
   /** @internal Category bits (unsigned; see {@link filter}). */

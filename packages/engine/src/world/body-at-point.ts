@@ -27,7 +27,7 @@ export function shapeContainsPoint(shape: Shape, x: number, y: number): boolean 
  */
 export function bodyAtPoint(bodies: readonly Body[], point: Vec2Like): Body | null {
   if (!Array.isArray(bodies)) {
-    throw new PhysicalError('bodies', 'must be an array of Body.');
+    throw new PhysicalError('bodies', 'must be an array.');
   }
   requireVector('point', point);
   for (let i = bodies.length - 1; i >= 0; i--) {
