@@ -1,11 +1,11 @@
-import { Suspense, lazy, useEffect, useState } from 'react';
+import { Suspense, lazy, useEffect, useState, type LazyExoticComponent } from 'react';
 import { I18nProvider, LOCALES, preferredLocale, useI18n, type Locale } from '../i18n/i18n.tsx';
 import { IconButton } from '../ui/IconButton.tsx';
 import { ToggleButtons } from '../ui/ToggleButtons.tsx';
 import { HintIcon, SoundOffIcon, SoundOnIcon } from './icons.tsx';
 import { onSoundChange, setSoundEnabled, soundEnabled } from './sound.ts';
 import { BottomNav, NavRail } from './Navigation.tsx';
-import { SCREEN_MODULES, type FirstScreen } from './screen-modules.ts';
+import { SCREEN_MODULES, type FirstScreen, type ScreenComponent } from './screen-modules.ts';
 import { SCREENS, screenFromHash, type ScreenId } from './screens.ts';
 import { useMediaQuery } from './use-media-query.ts';
 import '../ui/ui.css';
@@ -17,11 +17,12 @@ const PREFETCH_AFTER_MS = 8000;
 
 // Each screen is its own chunk, fetched the first time it is shown (the first one by main.tsx,
 // before the first render).
-const LAZY_SCREENS = {
-  inertia: lazy(() => SCREEN_MODULES.inertia().then((Component) => ({ default: Component }))),
-  forces: lazy(() => SCREEN_MODULES.forces().then((Component) => ({ default: Component }))),
-  reactions: lazy(() => SCREEN_MODULES.reactions().then((Component) => ({ default: Component }))),
-};
+const LAZY_SCREENS = Object.fromEntries(
+  SCREENS.map(({ id }) => [
+    id,
+    lazy(() => SCREEN_MODULES[id]().then((Component) => ({ default: Component }))),
+  ]),
+) as Record<ScreenId, ScreenComponent | LazyExoticComponent<ScreenComponent>>;
 // The hint's dialog is MUI's: it loads with MUI the first time it is asked for.
 const HintDialog = lazy(() =>
   import('./HintDialog.tsx').then((module) => ({ default: module.HintDialog })),
