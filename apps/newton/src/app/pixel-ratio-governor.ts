@@ -3,11 +3,12 @@ import { CANVAS_PIXEL_RATIO } from './theme.ts';
 /** Below this many frames a second a canvas is too slow for its pixels. */
 export const SLOW_FRAME_RATE = 45;
 /** Milliseconds between two looks at a canvas's frame count. */
-export const SAMPLE_MS = 500;
+export const SAMPLE_MS = 250;
 /**
- * Slow looks in a row before the canvas draws fewer pixels: 1.5 s (a single slow half second may
- * be a hiccup). Two slow seconds, as before, left a slow phone stuttering at the sharper ratio
- * for the first 2 to 3 s of every run.
+ * Slow looks in a row before the canvas draws fewer pixels: 0.75 s. A hiccup (a collection, a
+ * layout) costs one look, or two; three in a row are a canvas too slow for its pixels. 1.5 s,
+ * as before, left a slow phone stuttering at the sharper ratio through the first second and a
+ * half of every run (Reactions with 50 particles at 4x CPU slowdown: 32-35 frames/s, then 50).
  */
 export const SLOW_SAMPLES = 3;
 /** The fewest device pixels per CSS px: one, the page's own resolution. */

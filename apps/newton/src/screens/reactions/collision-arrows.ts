@@ -38,6 +38,13 @@ export const ARROW_HOLD = 0.5;
 export const ARROW_LIFETIME = 1;
 /** Impulses below this (N s) are resting contact noise, not drawn. */
 const MIN_IMPULSE = 1e-4;
+/**
+ * Most arrow pairs shown at once: the strongest (impulse times opacity). A pile of 50 particles
+ * crossing a tilted tray collides in some 130 pairs at a time; all their arrows cover the
+ * particles, so that no one collision can be read, and filling them took a slow phone's CPU
+ * raster more than half of each frame. Two particles, or a few, show every collision.
+ */
+export const MAX_SHOWN_PAIRS = 24;
 
 /**
  * The thesis's onCollision drawing: every collision leaves two arrows at the contact, the force
@@ -90,8 +97,9 @@ export class CollisionArrows {
   }
 
   /**
-   * The arrow pairs still visible at `time`, with their opacity (1 new, 0 gone). The list and
-   * its entries are reused by the next call (drawn every frame, they make no garbage).
+   * The arrow pairs still visible at `time`, with their opacity (1 new, 0 gone): at most
+   * {@link MAX_SHOWN_PAIRS}, the strongest first when there are more. The list and its entries
+   * are reused by the next call (drawn every frame, they make no garbage).
    */
   visible(time: number): readonly VisibleArrow[] {
     const result = this.shown;
@@ -103,10 +111,24 @@ export class CollisionArrows {
         continue;
       }
       const fade = (age - ARROW_HOLD) / (ARROW_LIFETIME - ARROW_HOLD);
-      const entry = (this.pool[result.length] ??= { arrow, opacity: 1 });
+      const opacity = fade <= 0 ? 1 : 1 - fade;
+      const strength = arrow.impulse * opacity;
+      // Kept sorted strongest first once full: an insertion into a list of MAX_SHOWN_PAIRS.
+      let at = result.length;
+      if (at === MAX_SHOWN_PAIRS) {
+        if (strength <= strengthOf(result[at - 1]!)) continue;
+        at--;
+      } else {
+        result.push((this.pool[at] ??= { arrow, opacity }));
+      }
+      const entry = result[at]!;
+      while (at > 0 && strength > strengthOf(result[at - 1]!)) {
+        result[at] = result[at - 1]!;
+        at--;
+      }
+      result[at] = entry;
       entry.arrow = arrow;
-      entry.opacity = fade <= 0 ? 1 : 1 - fade;
-      result.push(entry);
+      entry.opacity = opacity;
     }
     return result;
   }
@@ -114,6 +136,10 @@ export class CollisionArrows {
   clear(): void {
     this.pairs.clear();
   }
+}
+
+function strengthOf(entry: VisibleArrow): number {
+  return entry.arrow.impulse * entry.opacity;
 }
 
 /** One arrow pair of {@link CollisionArrows.visible}, with its opacity (1 new, 0 gone). */
