@@ -43,3 +43,40 @@ test('newton: reactions, a button focused from the keyboard runs no endless anim
     await closeApp(app);
   }
 });
+
+// A pile of 50 particles crossing a tilted tray collides in some 130 pairs at a time: all their
+// arrows covered the particles, and filling them took most of a slow phone's frame. The tray
+// shows the strongest pairs (collision-arrows.ts, MAX_SHOWN_PAIRS = 24), and still shows some.
+test('newton: reactions, a crowd crossing the tray shows its 24 strongest collisions, not all', async ({
+  browser,
+}) => {
+  const app = await openApp(browser, '#reactions');
+  try {
+    const { page } = app;
+    const add = page.locator('#reactions [data-action="add"]');
+    await add.focus();
+    for (let i = 0; i < 50; i++) await page.keyboard.press('Enter');
+    assert.equal(await page.locator('[data-readout="count"]').textContent(), '50');
+    const counts: number[] = [];
+    // Each press leans the tray a quarter further (TILT_STEP): right, then as far left, and back.
+    for (const [direction, presses] of [
+      ['tilt-right', 3],
+      ['tilt-left', 6],
+      ['tilt-right', 6],
+    ] as const) {
+      const button = page.locator(`#reactions [data-action="${direction}"]`);
+      for (let i = 0; i < presses; i++) await button.click();
+      for (let i = 0; i < 6; i++) {
+        await page.waitForTimeout(250);
+        counts.push(
+          Number(await page.locator('#reactions [data-arrows]').getAttribute('data-arrows')),
+        );
+      }
+    }
+    const most = Math.max(...counts);
+    assert.ok(most >= 8, `the crowd's collisions show arrows (at most ${most} at a time)`);
+    assert.ok(most <= 48, `at most 24 pairs of arrows at a time, not ${most} arrows`);
+  } finally {
+    await closeApp(app);
+  }
+});
