@@ -1,6 +1,15 @@
 import assert from 'node:assert/strict';
+import type { Locator, Page } from 'playwright-core';
 import { test } from '../harness.ts';
 import { closeApp, openApp } from './phone.ts';
+
+/** Adds `count` particles as a keyboard user does (Enter on Add); returns the Add button. */
+async function addFromKeyboard(page: Page, count: number): Promise<Locator> {
+  const add = page.locator('#reactions [data-action="add"]');
+  await add.focus();
+  for (let i = 0; i < count; i++) await page.keyboard.press('Enter');
+  return add;
+}
 
 // A frame of the tray should cost the physics and the canvas only: an animation that never ends
 // (MUI's focus ripple, pulsing on a button focused from the keyboard) restyled the whole page in
@@ -11,9 +20,7 @@ test('newton: reactions, a button focused from the keyboard runs no endless anim
   const app = await openApp(browser, '#reactions');
   try {
     const { page } = app;
-    const add = page.locator('#reactions [data-action="add"]');
-    await add.focus();
-    for (let i = 0; i < 5; i++) await page.keyboard.press('Enter');
+    const add = await addFromKeyboard(page, 5);
     await page.locator('#reactions [data-action="tilt-right"]').focus();
     await page.keyboard.press('Enter');
     await add.focus();
@@ -53,9 +60,7 @@ test('newton: reactions, a crowd crossing the tray shows its 24 strongest collis
   const app = await openApp(browser, '#reactions');
   try {
     const { page } = app;
-    const add = page.locator('#reactions [data-action="add"]');
-    await add.focus();
-    for (let i = 0; i < 50; i++) await page.keyboard.press('Enter');
+    await addFromKeyboard(page, 50);
     assert.equal(await page.locator('[data-readout="count"]').textContent(), '50');
     const counts: number[] = [];
     // Each press leans the tray a quarter further (TILT_STEP): right, then as far left, and back.
