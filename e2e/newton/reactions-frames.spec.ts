@@ -1,5 +1,6 @@
 import assert from 'node:assert/strict';
 import type { Locator, Page } from 'playwright-core';
+import { DYNAMIC_PALETTE } from '@physical/canvas';
 import { test } from '../harness.ts';
 import { closeApp, openApp } from './phone.ts';
 
@@ -81,6 +82,86 @@ test('newton: reactions, a crowd crossing the tray shows its 24 strongest collis
     const most = Math.max(...counts);
     assert.ok(most >= 8, `the crowd's collisions show arrows (at most ${most} at a time)`);
     assert.ok(most <= 48, `at most 24 pairs of arrows at a time, not ${most} arrows`);
+  } finally {
+    await closeApp(app);
+  }
+});
+
+// The particles are drawn by Reactions' overlay as bitmaps copied at whole device pixels
+// (disc-sprites.ts: a third of the raster time of filling them on a phone without GPU raster).
+// Each must still be where its body is, as large as it is, in its own palette colour: A the
+// first colour, B the second, and so on.
+test('newton: reactions, every particle is drawn at its body, its size, in its colour', async ({
+  browser,
+}) => {
+  const app = await openApp(browser, '#reactions');
+  try {
+    const { page } = app;
+    await addFromKeyboard(page, 10);
+    await page.locator('#reactions [data-action="play"]').click();
+    // Two frames after the pause: the last one drawn shows the bodies as they stay.
+    await page.evaluate(
+      () =>
+        new Promise<void>((resolve) =>
+          requestAnimationFrame(() => requestAnimationFrame(() => resolve())),
+        ),
+    );
+    const seen = await page.evaluate((palette) => {
+      type Canvas = HTMLElement & {
+        world: {
+          bodies: {
+            type: string;
+            position: { x: number; y: number };
+            shapes: { geometry: { radius: number } }[];
+          }[];
+        };
+        viewport: { scale: number; originX: number; originY: number; devicePixelRatio: number };
+        paused: boolean;
+      };
+      const element = document.querySelector('#reactions physical-canvas') as Canvas;
+      const canvas = (element.shadowRoot?.querySelector('canvas') ??
+        element.querySelector('canvas')) as HTMLCanvasElement;
+      const context = canvas.getContext('2d')!;
+      const { scale, originX, originY, devicePixelRatio } = element.viewport;
+      const k = scale * devicePixelRatio;
+      const hex = (x: number, y: number): string => {
+        const [r, g, b] = context.getImageData(Math.round(x), Math.round(y), 1, 1).data;
+        return `#${[r, g, b].map((c) => c!.toString(16).padStart(2, '0')).join('')}`;
+      };
+      return {
+        paused: element.paused,
+        particles: element.world.bodies
+          .filter((body) => body.type === 'dynamic')
+          .map((body, index) => {
+            const x = (body.position.x - originX) * k;
+            const y = (body.position.y - originY) * k;
+            const r = body.shapes[0]!.geometry.radius * k;
+            return {
+              index,
+              want: palette[index % palette.length],
+              // Just inside the rim on four sides (the centre holds the particle's name), and
+              // just outside it: the tray's background, or a neighbour.
+              inside: [hex(x + r - 2, y), hex(x - r + 2, y), hex(x, y + r - 2), hex(x, y - r + 2)],
+              outside: hex(x + r + 3, y),
+            };
+          }),
+      };
+    }, DYNAMIC_PALETTE);
+    assert.ok(seen.paused, 'the tray is paused');
+    assert.equal(seen.particles.length, 10);
+    for (const particle of seen.particles) {
+      assert.deepEqual(
+        particle.inside,
+        [particle.want, particle.want, particle.want, particle.want],
+        `particle ${particle.index}: its colour out to its rim`,
+      );
+    }
+    // Outside the rim is not the particle (a neighbour of another colour, or the background).
+    const backgrounds = seen.particles.filter((particle) => particle.outside === '#121212');
+    assert.ok(
+      backgrounds.length >= 5,
+      `background outside most rims: ${JSON.stringify(seen.particles.map((p) => p.outside))}`,
+    );
   } finally {
     await closeApp(app);
   }

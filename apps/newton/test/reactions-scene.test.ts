@@ -1,5 +1,13 @@
 import { describe, expect, it } from 'vitest';
-import { type Body, type CollisionEvent, World, particle } from '@physical/engine';
+import {
+  type Body,
+  type CollisionEvent,
+  World,
+  particle,
+  restoreSnapshot,
+  takeSnapshot,
+} from '@physical/engine';
+import { DYNAMIC_PALETTE } from '@physical/canvas';
 import {
   CollisionArrows,
   ARROW_LIFETIME,
@@ -17,6 +25,7 @@ import {
   adoptWorld,
   clearParticles,
   labelsByIndex,
+  particleColor,
   particleLabel,
   radiusForMass,
   setParticleMass,
@@ -230,6 +239,29 @@ describe('Reactions collision lab', () => {
     expect(radiusForMass(1)).toBeLessThan(radiusForMass(2));
     expect(particleLabel(0)).toBe('A');
     expect(particleLabel(27)).toBe('B2');
+  });
+
+  it('gives each next particle the next palette colour, the same again for its name after a rewind', () => {
+    const colors = Array.from({ length: 60 }, (_, index) => particleColor(particleLabel(index)));
+    expect(colors).toEqual(
+      Array.from({ length: 60 }, (_, index) => index % DYNAMIC_PALETTE.length),
+    );
+    const scene = createReactionsScene(6, 9, 1);
+    const [a, b] = setUpLab(scene, [
+      { mass: 1, vx: 1 },
+      { mass: 2, vx: 0 },
+    ]);
+    expect([scene.particles.get(a!)!.color, scene.particles.get(b!)!.color]).toEqual([0, 1]);
+    const again = adoptWorld(
+      scene,
+      restoreSnapshot(takeSnapshot(scene.world)),
+      labelsByIndex(scene),
+      2,
+    );
+    expect([...again.particles.values()].map((info) => [info.label, info.color])).toEqual([
+      ['A', 0],
+      ['B', 1],
+    ]);
   });
 
   it('names the particles of a restored world again by their index', () => {

@@ -1,4 +1,5 @@
 import { useCallback, useEffect, useMemo, useRef, useState, type ReactElement } from 'react';
+import { AnnouncementQueue, type Announcement } from './announcement-queue.ts';
 import { playEventTone } from './sound.ts';
 
 /** Shortest time between two announcements (ms): a screen reader finishes a short sentence. */
@@ -11,14 +12,13 @@ export const ANNOUNCE_GAP_MS = 1500;
  * own action, such as "the box is full") goes before the others and is not pushed out by them.
  */
 export function useAnnouncer(name: string): {
-  announce: (message: string, urgent?: boolean) => void;
+  announce: (message: Announcement, urgent?: boolean) => void;
   region: ReactElement;
 } {
   const state = useRef({
     /** The region's setter, while it is on the page. */
     show: null as ((text: string) => void) | null,
-    urgent: [] as string[],
-    queue: [] as string[],
+    waiting: new AnnouncementQueue(),
     lastAt: -Infinity,
     timer: null as ReturnType<typeof setTimeout> | null,
     /** The text last set, and whether it has reached the page yet. */
@@ -30,7 +30,7 @@ export function useAnnouncer(name: string): {
   const pump = useCallback((): void => {
     const current = state.current;
     current.timer = null;
-    if (current.urgent.length === 0 && current.queue.length === 0) return;
+    if (current.waiting.empty) return;
     // The last message has not reached the page yet (a busy frame delays the commit): its gap
     // has not started.
     if (current.pending) {
@@ -42,23 +42,22 @@ export function useAnnouncer(name: string): {
       current.timer = setTimeout(pump, wait);
       return;
     }
-    const next = current.urgent.shift() ?? current.queue.shift()!;
+    const next = current.waiting.next()!;
     current.lastAt = performance.now();
     // The same text again changes nothing on the page: nothing to wait for.
     current.pending = next !== current.shown && current.show !== null;
     current.shown = next;
     current.show?.(next);
-    if (current.urgent.length > 0 || current.queue.length > 0) {
+    if (!current.waiting.empty) {
       current.timer = setTimeout(pump, ANNOUNCE_GAP_MS);
     }
   }, []);
 
   const announce = useCallback(
-    (message: string, urgent = false): void => {
+    (message: Announcement, urgent = false): void => {
       playEventTone();
       const current = state.current;
-      const list = urgent ? 'urgent' : 'queue';
-      current[list] = [...current[list].filter((item) => item !== message), message].slice(-2);
+      current.waiting.push(message, urgent);
       if (current.timer === null) current.timer = setTimeout(pump, 0);
     },
     [pump],

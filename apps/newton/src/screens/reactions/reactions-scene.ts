@@ -1,4 +1,5 @@
 import { type Body, World, particle, wall } from '@physical/engine';
+import { DYNAMIC_PALETTE } from '@physical/canvas';
 import type { Tilt } from '../../sensors/device-tilt.ts';
 
 /**
@@ -17,6 +18,11 @@ export const DEFAULT_ELASTICITY = 0.8;
 export interface ParticleInfo {
   /** Its name in tables and the CSV: A, B, C, ... in the order they were added. */
   readonly label: string;
+  /**
+   * Its colour, an index into the canvas's `DYNAMIC_PALETTE`: from its label, so the particle
+   * keeps it when a rewind brings it back.
+   */
+  readonly color: number;
   /** Normal impulse (N s) of the particle's last collision, or null before the first. */
   lastImpulse: number | null;
 }
@@ -102,6 +108,14 @@ export function particleLabel(index: number): string {
   return round === 0 ? letter : `${letter}${round + 1}`;
 }
 
+/** The colour (palette index) of the particle named `label`: the next colour for each next name. */
+export function particleColor(label: string): number {
+  const letter = label.charCodeAt(0) - 65;
+  const round = label.length > 1 ? Number(label.slice(1)) - 1 : 0;
+  const index = letter + 26 * round;
+  return Number.isInteger(index) && index >= 0 ? index % DYNAMIC_PALETTE.length : 0;
+}
+
 /** Sets the bounciness (0..1) of every particle and wall. */
 export function setElasticity(scene: ReactionsScene, elasticity: number): void {
   scene.elasticity = elasticity;
@@ -142,7 +156,8 @@ export function spawnParticle(
       friction: 0.3,
     }),
   );
-  scene.particles.set(body, { label: particleLabel(scene.added++), lastImpulse: null });
+  const label = particleLabel(scene.added++);
+  scene.particles.set(body, { label, color: particleColor(label), lastImpulse: null });
   return body;
 }
 
@@ -301,7 +316,9 @@ export function adoptWorld(
   const particles = new Map<Body, ParticleInfo>();
   world.bodies.forEach((body, index) => {
     const label = labels[index];
-    if (label !== null && label !== undefined) particles.set(body, { label, lastImpulse: null });
+    if (label !== null && label !== undefined) {
+      particles.set(body, { label, color: particleColor(label), lastImpulse: null });
+    }
   });
   return { ...scene, world, particles, added };
 }
