@@ -1,7 +1,8 @@
 // Newton on a school phone: with Lighthouse's Slow 4G (150 ms round trip, 1.6 Mbit/s down,
 // 750 kbit/s up) and 4x CPU slowdown, the time from navigation until the first screen answers a
 // tap (Apply force pressed and shown as pressed), from a cold cache; and the frame rate of
-// Reactions with 50 particles at 4x CPU slowdown. Targets: a tap answered within 3 s, 50 frames/s
+// Reactions with 50 particles at 4x CPU slowdown, tilted by a phone in the hand (readings 60
+// times a second, never quite still). Targets: a tap answered within 3 s, 50 frames/s
 // or more. Figures, not a test (speed lives in measurements; the machine may be shared).
 // Beside the wall time, each load's main-thread CPU time until the tap is answered (the thread
 // time of the page's top-level tasks in a trace): on a shared machine the wall time follows the
@@ -134,17 +135,29 @@ try {
   for (let i = 0; i < 50; i++) await page.keyboard.press('Enter');
   const cdp = await context.newCDPSession(page);
   await cdp.send('Emulation.setCPUThrottlingRate', { rate: CPU_SLOWDOWN });
-  const rates: number[] = [];
-  for (let i = 0; i < 4; i++) {
-    // Keep them moving: the tilt turns every second.
-    await page.evaluate((k) => {
+  // A phone in the hand: its sensor reports 60 times a second, each reading a little off the
+  // last (a hand is never still: +-0.5 degrees here), so the tray's gravity changes in almost
+  // every step. Turned to a new lean for each window below.
+  await page.evaluate(() => {
+    const lean = { beta: 0, gamma: 0 };
+    (window as unknown as { __lean: typeof lean }).__lean = lean;
+    setInterval(() => {
       window.dispatchEvent(
         new DeviceOrientationEvent('deviceorientation', {
           alpha: 0,
-          beta: [40, 0, -40, 0][k % 4],
-          gamma: [0, 40, 0, -40][k % 4],
+          beta: lean.beta + Math.random() - 0.5,
+          gamma: lean.gamma + Math.random() - 0.5,
         }),
       );
+    }, 1000 / 60);
+  });
+  const rates: number[] = [];
+  for (let i = 0; i < 4; i++) {
+    // Keep them moving: the lean turns for each window.
+    await page.evaluate((k) => {
+      const lean = (window as unknown as { __lean: { beta: number; gamma: number } }).__lean;
+      lean.beta = [40, 0, -40, 0][k % 4]!;
+      lean.gamma = [0, 40, 0, -40][k % 4]!;
     }, i);
     const before = await page.evaluate(() => (window as unknown as { __frames: number }).__frames);
     const started = Date.now();

@@ -76,3 +76,48 @@ test('newton: reactions rewind (375x667), changes made between steps (a particle
     await closeApp(app);
   }
 });
+
+// A phone in the hand sends a new lean with almost every frame. The tray takes it at the next
+// step and the step's saved moment keeps it (no world snapshot for each, which cost a slow phone
+// 3 ms a frame): stepping back replays each step with the lean it had.
+test('newton: reactions rewind (375x667), a lean that changes before every step (a phone in the hand) is replayed: the step from a moment stepped back to gives the very row recorded while running', async ({
+  browser,
+}) => {
+  const app = await openApp(browser, LAB, phoneOptions(375, 667, false));
+  const { page } = app;
+  try {
+    const lean = (i: number) =>
+      page.evaluate(
+        ([beta, gamma]) =>
+          window.dispatchEvent(
+            new DeviceOrientationEvent('deviceorientation', { alpha: 0, beta, gamma }),
+          ),
+        [8 + 3 * Math.sin(i), 20 + 4 * Math.cos(1.7 * i)],
+      );
+    for (let i = 1; i <= 14; i++) {
+      await lean(i);
+      await step(page, 1, i);
+    }
+    await openTab(page, 'data');
+    const ran = await downloadCsv(page, 'reactions');
+    assert.equal(ran.rows.length, 15, 'rows of t = 0 and 14 steps');
+    // The leans pushed: B (at rest at first, 2 kg) moved down the tray.
+    const column = (csv: Csv, name: string): number[] =>
+      csv.rows.map((row) => row[csv.columns.indexOf(name)]!);
+    const vy = column(ran, 'B vy (m/s)');
+    assert.ok(vy[14]! > vy[1]! + 0.1, `B sped up along the lean: ${vy.join(', ')}`);
+    // Back to step 6 (its world replayed from the snapshot at t = 0 with leans 1 to 6), then
+    // step 7 again with the lean it had: exactly the row recorded while running.
+    await scrubTo(page, 'reactions', 6);
+    assert.equal(await readout(page, 'time', '#reactions'), `t = ${(6 / 60).toFixed(2)} s`);
+    await lean(7);
+    await step(page, 1, 7);
+    const again = await downloadCsv(page, 'reactions');
+    const lines = (csv: Csv): string[] => csv.text.trim().split('\r\n');
+    assert.equal(again.rows.length, 8, 'rows up to step 7, the old future gone');
+    assert.deepEqual(lines(again), lines(ran).slice(0, 9));
+    assertQuiet(app);
+  } finally {
+    await closeApp(app);
+  }
+});

@@ -116,6 +116,30 @@ describe('SnapshotHistory, changes between steps and worlds side by side', () =>
     );
   });
 
+  it('replays what the app sets before each step and keeps in its data: a new gravity every step needs no snapshot', () => {
+    // A phone in the hand: the tray's lean (gravity) a little different before every step.
+    const lean = (i: number) => ({ x: Math.sin(i * 0.7) * 0.3, y: 9.81 + Math.cos(i * 1.3) * 0.2 });
+    const world = fallingWorld();
+    const history = new SnapshotHistory<{ x: number; y: number }>({ capacity: 40, interval: 30 });
+    history.record(world, 0, { ...world.gravity });
+    const saved = [takeSnapshot(world)];
+    for (let i = 1; i <= 25; i++) {
+      const gravity = lean(i);
+      world.gravity = gravity;
+      world.step(1 / 60);
+      history.record(world, i / 60, gravity);
+      saved.push(takeSnapshot(world));
+    }
+    const replay = (restored: World, gravity: { x: number; y: number }): void => {
+      restored.gravity = gravity;
+    };
+    for (const index of [1, 7, 25]) {
+      expect(takeSnapshot(history.restore(index, replay).world)).toEqual(saved[index]);
+    }
+    // Without it the steps run with the gravity of the snapshot: another world.
+    expect(takeSnapshot(history.restore(25).world)).not.toEqual(saved[25]);
+  });
+
   it('finds the newest entry at or before a time (a world a step behind another)', () => {
     const world = fallingWorld();
     const history = new SnapshotHistory<number>({ capacity: 10 });

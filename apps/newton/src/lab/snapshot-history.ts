@@ -112,8 +112,14 @@ export class SnapshotHistory<Data> {
    * A new world in the state of the entry at `index`, with the entry: the snapshot at or before
    * it, restored, and the steps between replayed. The entries after it stay until
    * {@link truncateAfter} (so a learner can scrub back and forth before going on).
+   * `replay`, before each replayed step, puts back what the app set on the world before that
+   * step and keeps in the step's data (Reactions: the tray's lean, which a phone in the hand
+   * changes in almost every step, too often for a snapshot each time).
    */
-  restore(index: number): { world: World; entry: HistoryEntry<Data> } {
+  restore(
+    index: number,
+    replay?: (world: World, data: Data) => void,
+  ): { world: World; entry: HistoryEntry<Data> } {
     const entry = this.entries[index];
     if (entry === undefined) {
       throw new RangeError(`no entry ${index}: the history holds ${this.entries.length}`);
@@ -121,7 +127,10 @@ export class SnapshotHistory<Data> {
     let base = index;
     while (this.entries[base]!.snapshot === null) base--;
     const world = restoreSnapshot(this.entries[base]!.snapshot!);
-    for (let i = base; i < index; i++) world.step(this.step);
+    for (let i = base; i < index; i++) {
+      replay?.(world, this.entries[i + 1]!.data);
+      world.step(this.step);
+    }
     return { world, entry };
   }
 

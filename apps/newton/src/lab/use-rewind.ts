@@ -31,6 +31,12 @@ export interface RewindOptions<Data> {
    * app objects), with the data saved beside each; `time` (s) is the moment shown.
    */
   readonly adopt: (worlds: readonly World[], data: readonly Data[], time: number) => void;
+  /**
+   * Puts back on world `index`, before a replayed step, what the screen sets before each step
+   * and keeps in that step's data (e.g. Reactions' tilt): such changes need no snapshot of
+   * their own, unlike those reported with `changed`.
+   */
+  readonly replay?: (world: World, data: Data, index: number) => void;
   /** Pauses the simulation (a seek stops at the moment sought). */
   readonly pause: () => void;
   /** Steps kept per world. Default 600: the last 10 s at 60 steps a second. */
@@ -156,11 +162,14 @@ export function useRewind<Data>(options: RewindOptions<Data>): Rewind {
     if (main === undefined || main.length === 0 || worlds === null) return;
     const index = Math.min(main.length - 1, Math.max(0, target));
     const time = main.entry(index)!.time;
-    const { adopt, pause } = optionsRef.current;
+    const { adopt, pause, replay } = optionsRef.current;
     pause();
     const restored = worlds.map((_world, i) => {
       const item = history(i);
-      return item.restore(Math.max(0, item.indexAt(time)));
+      return item.restore(
+        Math.max(0, item.indexAt(time)),
+        replay === undefined ? undefined : (world, data) => replay(world, data, i),
+      );
     });
     const next = { index, time };
     rewoundRef.current = next;

@@ -74,6 +74,7 @@ import { LabSetup, type LabField, type LabRow } from './LabSetup.tsx';
 import {
   DEFAULT_ELASTICITY,
   adoptWorld,
+  applyTilt,
   clearParticles,
   createReactionsScene,
   freeSpot,
@@ -206,6 +207,9 @@ interface MomentData {
   readonly added: number;
   readonly chosen: readonly string[];
   readonly record: CollisionRecord | null;
+  /** The tray's lean in this step, and whether it pushed (replayed, not snapshotted). */
+  readonly tilt: Tilt;
+  readonly tiltOn: boolean;
 }
 
 /** A key per record object: the results table renders when the record is another one. */
@@ -412,6 +416,8 @@ export function ReactionsScreen({ active }: { active: boolean }) {
         added: current.added,
         chosen: last.chosen,
         record: recorder.record,
+        tilt: current.tilt,
+        tiltOn: current.tiltOn,
       };
     },
     [recorder],
@@ -424,7 +430,14 @@ export function ReactionsScreen({ active }: { active: boolean }) {
     capacity: HISTORY_STEPS,
     interval: SNAPSHOT_INTERVAL,
     data: () => momentData(sceneRef.current!),
-    before: () => recorder.beforeStep(),
+    before: () => {
+      // The lean of the tray as it is now, once a step (a phone in the hand sends a new one with
+      // almost every frame): the step's data keeps it, and a replay puts it back.
+      const current = sceneRef.current;
+      if (current !== null) setTilt(current, current.tilt);
+      recorder.beforeStep();
+    },
+    replay: (world, data) => applyTilt(world, data.tilt, data.tiltOn),
     // The lab's record of this step first: the saved moment keeps it.
     after: () => {
       const current = sceneRef.current;
@@ -559,26 +572,22 @@ export function ReactionsScreen({ active }: { active: boolean }) {
   }, [sim.paused, describe, chosen, version]);
 
   /**
-   * Leans the tray. `render`: false for the sensor's readings, which come with every frame on a
-   * phone in the hand: a render of the screen for each (MUI's tree, a few milliseconds on a slow
-   * phone) came on top of the frame's work; the tray's acceleration readout reads the scene's
-   * tilt on its own (LiveText). A key or a tap re-renders at once.
+   * Leans the tray: the next step takes the new lean (the rewind's `before`), and its saved
+   * moment keeps it. On a phone in the hand the sensor's readings come with almost every frame,
+   * each a little off the last: a snapshot of the world for each (to step back exactly) cost
+   * 3 ms of a slow phone's frame, and gravity set at once woke the particles at every reading.
+   * `render`: false for the sensor's readings (a render of the screen for each, MUI's tree, cost
+   * a few milliseconds); the tray's acceleration readout reads the scene's tilt on its own
+   * (LiveText). A key or a tap re-renders at once.
    */
-  const changeTilt = useCallback(
-    (next: Tilt, render = true) => {
-      const current = sceneRef.current;
-      if (render) rerender();
-      if (current !== null) {
-        const { x, y } = current.world.gravity;
-        setTilt(current, next);
-        // Only a new gravity changes the world (a level sensor repeats its reading).
-        const now = current.world.gravity;
-        if (now.x !== x || now.y !== y) worldChanged();
-        canvasRef.current?.invalidate();
-      }
-    },
-    [worldChanged],
-  );
+  const changeTilt = useCallback((next: Tilt, render = true) => {
+    const current = sceneRef.current;
+    if (render) rerender();
+    if (current !== null) {
+      current.tilt = next;
+      canvasRef.current?.invalidate();
+    }
+  }, []);
 
   // Device orientation: listen while visible; where the browser asks first (iOS), readings
   // arrive once the learner allowed them with the button.

@@ -213,7 +213,15 @@ export function freeSpot(
  */
 export function setTilt(scene: ReactionsScene, tilt: Tilt): void {
   scene.tilt = tilt;
-  scene.world.gravity = scene.tiltOn ? trayAcceleration(tilt) : { x: 0, y: 0 };
+  applyTilt(scene.world, tilt, scene.tiltOn);
+}
+
+/**
+ * Makes `world`'s gravity the tray's g sin θ for `tilt` (zero when `on` is false). The world
+ * changes (and its sleeping particles wake) only when the gravity is a new one.
+ */
+export function applyTilt(world: World, tilt: Tilt, on: boolean): void {
+  world.gravity = on ? trayAcceleration(tilt) : { x: 0, y: 0 };
 }
 
 /** Switches the tilt's push on or off (off: no force along the tray, whatever the tilt). */
