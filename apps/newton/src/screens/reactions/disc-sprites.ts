@@ -1,7 +1,10 @@
 import { DYNAMIC_PALETTE, type Viewport } from '@physical/canvas';
 
-/** Most sprites kept: a crowd's sizes in the palette's colours, at one pixel ratio. */
-const MAX_SPRITES = 512;
+/**
+ * Most sprites kept: more than a full tray's particles (about 60), few enough to stay small
+ * (at 3 device px per CSS px the largest disc's bitmap is 150 px square, 90 KB).
+ */
+const MAX_SPRITES = 128;
 
 /** A disc's bitmap and half its side (device px). */
 interface Sprite {
@@ -34,7 +37,7 @@ export class DiscSprites {
   begin(context: CanvasRenderingContext2D, viewport: Viewport): void {
     const ratio = viewport.scale * viewport.devicePixelRatio;
     if (ratio !== this.ratio) {
-      this.sprites.clear();
+      this.forget();
       this.ratio = ratio;
     }
     this.originX = viewport.originX;
@@ -64,6 +67,14 @@ export class DiscSprites {
     this.context = null;
   }
 
+  /** Drops every sprite, and frees the bitmaps' memory now rather than at a collection. */
+  private forget(): void {
+    for (const { image } of this.sprites.values()) {
+      if (typeof ImageBitmap !== 'undefined' && image instanceof ImageBitmap) image.close();
+    }
+    this.sprites.clear();
+  }
+
   /** The bitmap of a disc of `radius` device px in colour `color`, made the first time. */
   private sprite(color: number, radius: number): Sprite | null {
     // Quarter-pixel radii: a crowd of random sizes shares sprites, none visibly off.
@@ -80,7 +91,7 @@ export class DiscSprites {
       context.fill();
     });
     if (image === null) return null;
-    if (this.sprites.size >= MAX_SPRITES) this.sprites.clear();
+    if (this.sprites.size >= MAX_SPRITES) this.forget();
     const sprite = { image, half: size / 2 };
     this.sprites.set(key, sprite);
     return sprite;
