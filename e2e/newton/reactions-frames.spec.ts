@@ -13,6 +13,16 @@ async function addFromKeyboard(page: Page, count: number): Promise<Locator> {
   return add;
 }
 
+/** Waits for the page's next two frames. */
+async function twoFrames(page: Page): Promise<void> {
+  await page.evaluate(
+    () =>
+      new Promise<void>((resolve) =>
+        requestAnimationFrame(() => requestAnimationFrame(() => resolve())),
+      ),
+  );
+}
+
 // A frame of the tray should cost the physics and the canvas only: an animation that never ends
 // (MUI's focus ripple, pulsing on a button focused from the keyboard) restyled the whole page in
 // every frame, a few milliseconds each on a slow phone with 50 particles.
@@ -27,12 +37,7 @@ test('newton: reactions, a button focused from the keyboard runs no endless anim
     await page.keyboard.press('Enter');
     await add.focus();
     // Two frames: any animation the focus started is running by then.
-    await page.evaluate(
-      () =>
-        new Promise<void>((resolve) =>
-          requestAnimationFrame(() => requestAnimationFrame(() => resolve())),
-        ),
-    );
+    await twoFrames(page);
     const endless = await page.evaluate(() =>
       document
         .getAnimations()
@@ -104,12 +109,7 @@ test('newton: reactions, every particle is drawn at its body, its size, in its c
     await addFromKeyboard(page, 10);
     await page.locator('#reactions [data-action="play"]').click();
     // Two frames after the pause: the last one drawn shows the bodies as they stay.
-    await page.evaluate(
-      () =>
-        new Promise<void>((resolve) =>
-          requestAnimationFrame(() => requestAnimationFrame(() => resolve())),
-        ),
-    );
+    await twoFrames(page);
     const seen = await page.evaluate((palette) => {
       type Canvas = HTMLElement & {
         world: {

@@ -79,7 +79,7 @@ test('newton: reactions rewind (375x667), changes made between steps (a particle
 
 // A phone in the hand sends a new lean with almost every frame. The tray takes it at the next
 // step and the step's saved moment keeps it (no world snapshot for each, which cost a slow phone
-// 3 ms a frame): stepping back replays each step with the lean it had.
+// 5 ms a frame at 4x CPU): stepping back replays each step with the lean it had.
 test('newton: reactions rewind (375x667), a lean that changes before every step (a phone in the hand) is replayed: the step from a moment stepped back to gives the very row recorded while running', async ({
   browser,
 }) => {

@@ -575,8 +575,8 @@ export function ReactionsScreen({ active }: { active: boolean }) {
    * Leans the tray: the next step takes the new lean (the rewind's `before`), and its saved
    * moment keeps it. On a phone in the hand the sensor's readings come with almost every frame,
    * each a little off the last: a snapshot of the world for each (to step back exactly) cost
-   * 3 ms of a slow phone's frame, and gravity set at once woke the particles at every reading.
-   * `render`: false for the sensor's readings (a render of the screen for each, MUI's tree, cost
+   * 5 ms a frame at 4x CPU (50 particles), and gravity set at once woke the particles at each
+   * reading. `render`: false for the sensor's readings (a render of the screen for each, MUI's tree, cost
    * a few milliseconds); the tray's acceleration readout reads the scene's tilt on its own
    * (LiveText). A key or a tap re-renders at once.
    */
