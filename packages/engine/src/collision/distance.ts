@@ -125,14 +125,8 @@ function copyVertex(to: number, from: number): void {
   simplexIndices[2 * to + 1] = simplexIndices[2 * from + 1]!;
 }
 
-// The search direction for support, in a typed array rather than as arguments: V8 boxes
-// (allocates) the fractional arguments of a call it does not inline (dynamics/README.md).
-const direction = new Float64Array(2);
-
-/** Index of the vertex of `proxy` furthest along the body-frame direction in `direction`. */
-function support(proxy: DistanceProxy): number {
-  const dx = direction[0]!;
-  const dy = direction[1]!;
+/** Index of the vertex of `proxy` furthest along the body-frame direction (dx, dy). */
+function support(proxy: DistanceProxy, dx: number, dy: number): number {
   const v = proxy.vertices;
   let best = 0;
   let bestValue = v[0]! * dx + v[1]! * dy;
@@ -294,16 +288,15 @@ function solve3(): void {
 
 /**
  * Runs GJK on the cores of two proxies placed by xfA and xfB and writes the witness points,
- * core distance (m; 0 when the cores overlap) and iteration count to `coreResult`. Returns
- * nothing: a double returned from a call V8 does not inline is boxed. Internal to the collision
- * layer (time of impact uses it directly).
+ * core distance (m) and iteration count to `coreResult`. Returns the core distance; 0 when the
+ * cores overlap. Internal to the collision layer (time of impact uses it directly).
  */
 export function gjkCores(
   proxyA: DistanceProxy,
   xfA: Transform,
   proxyB: DistanceProxy,
   xfB: Transform,
-): void {
+): number {
   setVertex(0, proxyA, xfA, 0, proxyB, xfB, 0);
   simplexCount = 1;
   let iteration = 0;
@@ -349,12 +342,8 @@ export function gjkCores(
 
     // Support of B - A along d: furthest vertex of B along d and of A along -d, found in each
     // body's frame by rotating d with the transposed rotation.
-    direction[0] = -(xfA.c * dx + xfA.s * dy);
-    direction[1] = -(-xfA.s * dx + xfA.c * dy);
-    const indexA = support(proxyA);
-    direction[0] = xfB.c * dx + xfB.s * dy;
-    direction[1] = -xfB.s * dx + xfB.c * dy;
-    const indexB = support(proxyB);
+    const indexA = support(proxyA, -(xfA.c * dx + xfA.s * dy), -(-xfA.s * dx + xfA.c * dy));
+    const indexB = support(proxyB, xfB.c * dx + xfB.s * dy, -xfB.s * dx + xfB.c * dy);
     iteration++;
 
     // A repeated support point means no progress: the closest feature has been found.
@@ -404,6 +393,7 @@ export function gjkCores(
   coreResult.pointBY = by;
   coreResult.distance = distance;
   coreResult.iterations = iteration;
+  return distance;
 }
 
 /**
@@ -418,8 +408,7 @@ export function shapeDistance(
   xfB: Transform,
   out: DistanceOutput,
 ): number {
-  gjkCores(proxyA, xfA, proxyB, xfB);
-  const coreDistance = coreResult.distance;
+  const coreDistance = gjkCores(proxyA, xfA, proxyB, xfB);
   let ax = coreResult.pointAX;
   let ay = coreResult.pointAY;
   let bx = coreResult.pointBX;

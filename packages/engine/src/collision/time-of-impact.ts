@@ -1,6 +1,5 @@
 import { LINEAR_SLOP } from '../core/constants.ts';
 import { Transform } from '../math/transform.ts';
-import { cosSin } from '../math/trigonometry.ts';
 import type { DistanceProxy } from './distance.ts';
 import { coreResult, gjkCores } from './distance.ts';
 
@@ -64,49 +63,21 @@ export class TimeOfImpactOutput {
   fraction = -0;
 }
 
-// Doubles handed between the functions below go through this typed array, not as arguments or
-// return values: V8 boxes (allocates) those of a call it does not inline, and the sweeps run
-// per fast body near a static shape (dynamics/README.md, allocation). [0] the fraction t,
-// [1] a largest core radius; `rotation` takes cosSin's cosine and sine.
-const scratch = new Float64Array(2);
-const T = 0;
-const RADIUS = 1;
-const rotation = new Float64Array(2);
-
 /**
  * Writes the body's transform at fraction `t` of the sweep into `out` (world frame, m and rad):
  * the centre and angle interpolated linearly, and origin = centre - R(angle) localCenter.
  * Returns `out`.
  */
 export function getSweepTransform(sweep: Sweep, t: number, out: Transform): Transform {
-  scratch[T] = t;
-  sweepTransform(sweep, out);
-  return out;
-}
-
-/** getSweepTransform at the fraction in scratch[T] (Transform.setFromCenter's arithmetic). */
-function sweepTransform(sweep: Sweep, out: Transform): void {
-  const t = scratch[T]!;
   const s = 1 - t;
   const cx = s * sweep.c1X + t * sweep.c2X;
   const cy = s * sweep.c1Y + t * sweep.c2Y;
   const angle = s * sweep.a1 + t * sweep.a2;
-  cosSin(angle, rotation);
-  const c = rotation[0]!;
-  const sin = rotation[1]!;
-  const localX = sweep.localCenterX;
-  const localY = sweep.localCenterY;
-  out.c = c;
-  out.s = sin;
-  out.x = cx - (c * localX - sin * localY);
-  out.y = cy - (sin * localX + c * localY);
+  return out.setFromCenter(cx, cy, angle, sweep.localCenterX, sweep.localCenterY);
 }
 
-/**
- * Writes to scratch[RADIUS] the largest distance from the sweep's centre of mass to a core
- * vertex of the proxy (m).
- */
-function maxCoreRadius(proxy: DistanceProxy, sweep: Sweep): void {
+/** Largest distance from the sweep's centre of mass to a core vertex of the proxy (m). */
+function maxCoreRadius(proxy: DistanceProxy, sweep: Sweep): number {
   const v = proxy.vertices;
   let maxSquared = 0;
   for (let i = 0; i < proxy.count; i++) {
@@ -117,7 +88,7 @@ function maxCoreRadius(proxy: DistanceProxy, sweep: Sweep): void {
       maxSquared = squared;
     }
   }
-  scratch[RADIUS] = Math.sqrt(maxSquared);
+  return Math.sqrt(maxSquared);
 }
 
 const xfA = new Transform();
@@ -137,22 +108,6 @@ export function timeOfImpact(
   maxFraction: number,
   out: TimeOfImpactOutput,
 ): void {
-  out.fraction = maxFraction;
-  timeOfImpactWithin(proxyA, sweepA, proxyB, sweepB, out);
-}
-
-/**
- * timeOfImpact with maxFraction read from `out.fraction`: the step's sweeps call this, so no
- * double is passed as an argument.
- */
-export function timeOfImpactWithin(
-  proxyA: DistanceProxy,
-  sweepA: Sweep,
-  proxyB: DistanceProxy,
-  sweepB: Sweep,
-  out: TimeOfImpactOutput,
-): void {
-  const maxFraction = out.fraction;
   const totalRadius = proxyA.radius + proxyB.radius;
   const target = Math.max(LINEAR_SLOP, totalRadius - LINEAR_SLOP);
   const tolerance = 0.25 * LINEAR_SLOP;
@@ -161,19 +116,15 @@ export function timeOfImpactWithin(
   // the angular bound |w| r per body (m).
   const vx = sweepB.c2X - sweepB.c1X - (sweepA.c2X - sweepA.c1X);
   const vy = sweepB.c2Y - sweepB.c1Y - (sweepA.c2Y - sweepA.c1Y);
-  maxCoreRadius(proxyA, sweepA);
-  const radiusA = scratch[RADIUS]!;
-  maxCoreRadius(proxyB, sweepB);
   const angularBound =
-    Math.abs(sweepA.a2 - sweepA.a1) * radiusA + Math.abs(sweepB.a2 - sweepB.a1) * scratch[RADIUS]!;
+    Math.abs(sweepA.a2 - sweepA.a1) * maxCoreRadius(proxyA, sweepA) +
+    Math.abs(sweepB.a2 - sweepB.a1) * maxCoreRadius(proxyB, sweepB);
 
   let t = 0;
   for (let iteration = 0; iteration < MAX_ITERATIONS; iteration++) {
-    scratch[T] = t;
-    sweepTransform(sweepA, xfA);
-    sweepTransform(sweepB, xfB);
-    gjkCores(proxyA, xfA, proxyB, xfB);
-    const distance = coreResult.distance;
+    getSweepTransform(sweepA, t, xfA);
+    getSweepTransform(sweepB, t, xfB);
+    const distance = gjkCores(proxyA, xfA, proxyB, xfB);
 
     if (distance <= 0) {
       out.state = 'overlapped';

@@ -4,7 +4,7 @@ import {
   Sweep,
   TimeOfImpactOutput,
   getSweepTransform,
-  timeOfImpactWithin,
+  timeOfImpact,
 } from '../collision/time-of-impact.ts';
 import { LINEAR_SLOP } from '../core/constants.ts';
 import { AABB } from '../geometry/aabb.ts';
@@ -163,15 +163,12 @@ export class ContinuousSolver {
     staticSweep.a1 = staticSweep.a2 = other.body.angleValue;
 
     const output = this.output;
-    // The bound goes in through the output (timeOfImpactWithin): no double passed as an argument.
-    output.fraction = this.fraction;
-    timeOfImpactWithin(this.otherProxy, staticSweep, this.proxy, this.sweep, output);
+    timeOfImpact(this.otherProxy, staticSweep, this.proxy, this.sweep, this.fraction, output);
     if (output.fraction > 0 && output.fraction < this.fraction && output.state === 'hit') {
       this.fraction = output.fraction;
     } else if (output.fraction === 0) {
       setCoreProxy(this.coreProxy, shape);
-      output.fraction = this.fraction;
-      timeOfImpactWithin(this.otherProxy, staticSweep, this.coreProxy, this.sweep, output);
+      timeOfImpact(this.otherProxy, staticSweep, this.coreProxy, this.sweep, this.fraction, output);
       if (output.fraction > 0 && output.fraction < this.fraction && output.state === 'hit') {
         this.fraction = output.fraction;
       }

@@ -102,8 +102,7 @@ export class ShapeQueries {
     setShapeProxy(this.otherProxy, shape);
     // The cores are apart at a hit (the time of impact keeps them LINEAR_SLOP apart or more):
     // the normal joins their closest points, and the point is the hit shape's surface point.
-    gjkCores(this.otherProxy, shape.body.transform, this.castProxy, this.xf);
-    const coreDistance = coreResult.distance;
+    const coreDistance = gjkCores(this.otherProxy, shape.body.transform, this.castProxy, this.xf);
     let nx = 0;
     let ny = 0;
     if (coreDistance > 1e-12) {
