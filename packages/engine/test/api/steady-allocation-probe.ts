@@ -105,8 +105,7 @@ function waking(): { world: World; onStep(step: number): void } {
 
 /**
  * A chain of 30 hinges with a heavy last link, falling from level (the pin chains' exact solve);
- * its first links sweep past their static anchor. Not in the test: the sweeps' time of impact
- * still allocates (dynamics/README.md, allocation).
+ * its first links sweep past their static anchor (the sweeps' time of impact).
  */
 function chain(): { world: World; onStep(step: number): void } {
   const world = new World({ gravity: { x: 0, y: 10 }, enableSleep: false });

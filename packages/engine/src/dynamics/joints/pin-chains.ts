@@ -8,18 +8,23 @@ export interface PinJoint {
   readonly stateB: number;
   readonly invMassA: number;
   readonly invMassB: number;
-  /** Set by the joint's prepare; a chain may stiffen it for the step (see PinChains.stiffen). */
-  invInertiaA: number;
-  invInertiaB: number;
+  /**
+   * Writes the inverse masses as the solver sees them, in the record's order: invMassA,
+   * invInertiaA, invMassB, invInertiaB (the inertias set by the joint's prepare, then maybe
+   * stiffened by the chain for the step: see PinChains.stiffen).
+   */
+  pinMasses(out: Float64Array): void;
+  /** Writes back the inverse inertias at out[1] (A) and out[3] (B) (PinChains.stiffen). */
+  setPinInertias(values: Float64Array): void;
   /** Writes the levers from the centres to the pin, rotated to now: rAx, rAy, rBx, rBy. */
   pinLevers(s: Float64Array, out: Float64Array, offset: number): void;
   /**
    * Writes the pin's position error (B's pin minus A's, m) with `positions`; otherwise its
-   * velocity error plus biasRate times that position error (2 numbers).
+   * velocity error plus biasRate[0] times that position error (2 numbers).
    */
   pinError(
     s: Float64Array,
-    biasRate: number,
+    biasRate: Float64Array,
     positions: boolean,
     out: Float64Array,
     offset: number,
@@ -178,7 +183,7 @@ export class PinChains {
       }
       begin = end;
     }
-    this.stiffen(step.h);
+    this.stiffen(step);
   }
 
   /**
@@ -190,7 +195,8 @@ export class PinChains {
    * for the step (I + h^2 k, with f = P / h from the pins' last impulses), bounds that mode for
    * every joint that moves the body; it damps only the links' whipping, by h^2 k / I.
    */
-  private stiffen(h: number): void {
+  private stiffen(step: JointStep): void {
+    const h = step.h;
     const t = this.scratch;
     let begin = 0;
     for (let c = 0; c < this.chainCount; c++) {
@@ -203,7 +209,8 @@ export class PinChains {
         const onJoint = joint.stateA === x ? 0 : 1;
         const onNext = next.stateA === x ? 0 : 1;
         const extra = h * (t[2 * k + onJoint]! + t[2 * k + 2 + onNext]!);
-        const inverse = onJoint === 0 ? joint.invInertiaA : joint.invInertiaB;
+        joint.pinMasses(MASSES);
+        const inverse = MASSES[2 * onJoint + 1]!;
         // A body that cannot turn stays so: 0 / (1 + 0 * extra) is NaN once a load overflows.
         // At most MAX_STIFFENING times its inertia: the loads are last step's impulses, and a
         // link made stiffer needs larger impulses to turn (a constant torque on it, a joint
@@ -211,10 +218,11 @@ export class PinChains {
         // link grew its impulses a thousandfold per sub-step until they overflowed.
         const stiff =
           inverse > 0 ? inverse / Math.min(1 + inverse * extra, MAX_STIFFENING) : inverse;
-        if (onJoint === 0) joint.invInertiaA = stiff;
-        else joint.invInertiaB = stiff;
-        if (onNext === 0) next.invInertiaA = stiff;
-        else next.invInertiaB = stiff;
+        MASSES[2 * onJoint + 1] = stiff;
+        joint.setPinInertias(MASSES);
+        next.pinMasses(MASSES);
+        MASSES[2 * onNext + 1] = stiff;
+        next.setPinInertias(MASSES);
       }
       begin = end;
     }
@@ -235,7 +243,7 @@ export class PinChains {
    * overflow (a 30:1 chain restored with one link 4e10 m off went non-finite in 3 steps).
    */
   run(s: Float64Array, useBias: boolean, positions: boolean): void {
-    const biasRate = useBias ? this.biasRate : 0;
+    BIAS_RATE[0] = useBias ? this.biasRate : 0;
     const t = this.scratch;
     LIMITS[0] = this.maxMove;
     let begin = 0;
@@ -246,14 +254,15 @@ export class PinChains {
         const joint = this.joints[k]!;
         const o = 16 * k;
         joint.pinLevers(s, t, o);
-        joint.pinError(s, biasRate, positions, t, o + 4);
+        joint.pinError(s, BIAS_RATE, positions, t, o + 4);
+        joint.pinMasses(MASSES);
         // K_k: each moving body's m I + i p(r) p(r)^T, with p(r) = (-r_y, r_x).
         let k11 = 0;
         let k12 = 0;
         let k22 = 0;
         for (let side = 0; side < 2; side++) {
-          const m = side === 0 ? joint.invMassA : joint.invMassB;
-          const i = side === 0 ? joint.invInertiaA : joint.invInertiaB;
+          const m = MASSES[2 * side]!;
+          const i = MASSES[2 * side + 1]!;
           const rx = t[o + 2 * side]!;
           const ry = t[o + 2 * side + 1]!;
           k11 += m + i * ry * ry;
@@ -301,8 +310,8 @@ export class PinChains {
           next.pinLevers(s, t, o + 16 + 0); // the next joint's levers, written early (reused)
           const signK = joint.stateB === x ? 1 : -1;
           const signN = next.stateB === x ? 1 : -1;
-          const m = signK === 1 ? joint.invMassB : joint.invMassA;
-          const i = signK === 1 ? joint.invInertiaB : joint.invInertiaA;
+          const m = signK === 1 ? MASSES[2]! : MASSES[0]!;
+          const i = signK === 1 ? MASSES[3]! : MASSES[1]!;
           const rkx = t[o + (signK === 1 ? 2 : 0)]!;
           const rky = t[o + (signK === 1 ? 3 : 1)]!;
           const rnx = t[o + 16 + (signN === 1 ? 2 : 0)]!;
@@ -342,6 +351,7 @@ export class PinChains {
         const joint = this.joints[k]!;
         const o = 16 * k;
         joint.pinLevers(s, t, o);
+        joint.pinMasses(MASSES);
         // Both sides through one call that takes no fractional argument: V8 boxes (allocates)
         // the numbers it passes to a call it does not inline.
         applyPin(s, joint, 0, t, o, positions);
@@ -369,9 +379,19 @@ const MAX_STIFFENING = 1e3;
 /** The projection's move limit (m), for applyPin: a call with a fractional argument would box it. */
 const LIMITS = new Float64Array(1);
 
+/** The bias rate handed to pinError, for the same reason. */
+const BIAS_RATE = new Float64Array(1);
+
+/**
+ * A joint's inverse masses (PinJoint.pinMasses): read through a typed array, not getters, since
+ * a getter V8 does not inline boxes the double it returns (per hinge per pass).
+ */
+const MASSES = new Float64Array(4);
+
 /**
  * Applies the pin impulse in t (x at o + 15, y at o + 5, on B; the opposite on A) to one side of
- * the joint (levers at o): to its velocity, or (`positions`) to its pose, as a positional impulse.
+ * the joint (levers at o, inverse masses in MASSES): to its velocity, or (`positions`) to its
+ * pose, as a positional impulse.
  */
 function applyPin(
   s: Float64Array,
@@ -382,8 +402,8 @@ function applyPin(
   positions: boolean,
 ): void {
   const k = side === 0 ? joint.stateA : joint.stateB;
-  const m = side === 0 ? joint.invMassA : joint.invMassB;
-  const i = side === 0 ? joint.invInertiaA : joint.invInertiaB;
+  const m = MASSES[2 * side]!;
+  const i = MASSES[2 * side + 1]!;
   if (k === 0 || (m === 0 && i === 0)) return;
   const sign = side === 0 ? -1 : 1;
   const px = sign * t[o + 15]!;

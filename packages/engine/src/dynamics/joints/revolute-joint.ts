@@ -30,6 +30,7 @@ import {
   DELTA_CENTER_Y,
   INV_I_A,
   INV_I_B,
+  INV_MASS_A,
   R_AX,
   R_AY,
   R_BX,
@@ -288,9 +289,25 @@ export class RevoluteJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
   }
 
   /** @internal */
+  pinMasses(out: Float64Array): void {
+    const d = this.store.data;
+    const o = this.base + INV_MASS_A;
+    out[0] = d[o]!;
+    out[1] = d[o + 1]!;
+    out[2] = d[o + 2]!;
+    out[3] = d[o + 3]!;
+  }
+
+  /** @internal */
+  setPinInertias(values: Float64Array): void {
+    this.write(INV_I_A, values[1]!);
+    this.write(INV_I_B, values[3]!);
+  }
+
+  /** @internal */
   pinError(
     s: Float64Array,
-    biasRate: number,
+    rates: Float64Array,
     positions: boolean,
     out: Float64Array,
     offset: number,
@@ -311,6 +328,7 @@ export class RevoluteJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
     }
     const wA = s[a + W]!;
     const wB = s[b + W]!;
+    const biasRate = rates[0]!;
     let biasX = biasRate * gapX;
     let biasY = biasRate * gapY;
     // At most maxBiasSpeed, as in the point constraint (see JointStep.maxBiasSpeed).
