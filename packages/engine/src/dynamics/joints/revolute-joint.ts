@@ -31,6 +31,7 @@ import {
   INV_I_A,
   INV_I_B,
   INV_MASS_A,
+  INV_MASS_B,
   R_AX,
   R_AY,
   R_BX,
@@ -291,11 +292,11 @@ export class RevoluteJoint<UserData = unknown> extends TwoBodyJoint<UserData> {
   /** @internal */
   pinMasses(out: Float64Array): void {
     const d = this.store.data;
-    const o = this.base + INV_MASS_A;
-    out[0] = d[o]!;
-    out[1] = d[o + 1]!;
-    out[2] = d[o + 2]!;
-    out[3] = d[o + 3]!;
+    const o = this.base;
+    out[0] = d[o + INV_MASS_A]!;
+    out[1] = d[o + INV_I_A]!;
+    out[2] = d[o + INV_MASS_B]!;
+    out[3] = d[o + INV_I_B]!;
   }
 
   /** @internal */
