@@ -68,6 +68,7 @@ import { drawReactionArrows } from './draw-reaction-arrows.ts';
 import { LabResults } from './LabResults.tsx';
 import { LabelSprites } from './label-sprites.ts';
 import { DiscSprites } from './disc-sprites.ts';
+import { StepBlend } from './step-blend.ts';
 import { IconButton as UiIconButton } from '../../ui/IconButton.tsx';
 import { ParticleColumns } from './particle-columns.ts';
 import { LabSetup, type LabField, type LabRow } from './LabSetup.tsx';
@@ -122,6 +123,10 @@ const PARTICLE_STYLE = { visible: false } as const;
 const styleFor: StyleResolver = (body) => (body.type === 'dynamic' ? PARTICLE_STYLE : undefined);
 /** The particles' discs, made once per colour and size. */
 const discSprites = new DiscSprites();
+/** The particles' positions before the last step, to draw them between steps (slow motion). */
+const stepBlend = new StepBlend();
+/** Where the overlay draws a particle this frame (scratch). */
+const drawnAt = { x: 0, y: 0 };
 /** The chosen particles' velocity arrows, which a learner drags. */
 const HANDLE_COLOR = '#ffffff';
 const HANDLE_ARROW = { color: HANDLE_COLOR, width: 2 } as const;
@@ -254,32 +259,39 @@ function drawParticles(
   scene: ReactionsScene,
   chosen: readonly Body[],
   selected: Body | null,
+  fraction: number,
 ): void {
   discSprites.begin(context, viewport);
+  let k = 0;
   for (const [body, info] of scene.particles) {
     const geometry = body.shapes[0]?.geometry;
+    stepBlend.at(body, k++, fraction, drawnAt);
     if (geometry?.kind !== 'circle') continue;
-    const position = body.position;
-    discSprites.add(position.x, position.y, geometry.radius, info.color);
+    discSprites.add(drawnAt.x, drawnAt.y, geometry.radius, info.color);
   }
   discSprites.finish();
-  for (const body of chosen) {
-    if (body !== selected) outlineParticle(context, viewport, body, CHOSEN_OUTLINE);
+  k = 0;
+  for (const body of scene.particles.keys()) {
+    const outline =
+      body === selected ? SELECTED_OUTLINE : chosen.includes(body) ? CHOSEN_OUTLINE : null;
+    if (outline !== null) outlineParticle(context, viewport, body, k, fraction, outline);
+    k++;
   }
-  if (selected !== null) outlineParticle(context, viewport, selected, SELECTED_OUTLINE);
 }
 
 function outlineParticle(
   context: CanvasRenderingContext2D,
   viewport: Viewport,
   body: Body,
+  k: number,
+  fraction: number,
   outline: { readonly color: string; readonly width: number },
 ): void {
   const geometry = body.shapes[0]?.geometry;
   if (geometry?.kind !== 'circle') return;
-  const position = body.position;
+  stepBlend.at(body, k, fraction, drawnAt);
   context.beginPath();
-  context.arc(position.x, position.y, geometry.radius, 0, 2 * Math.PI);
+  context.arc(drawnAt.x, drawnAt.y, geometry.radius, 0, 2 * Math.PI);
   context.lineWidth = outline.width / viewport.scale;
   context.strokeStyle = outline.color;
   context.stroke();
@@ -293,6 +305,9 @@ function outlineParticle(
 export function ReactionsScreen({ active }: { active: boolean }) {
   const { t, unit, number } = useI18n();
   const sim = useSimulation();
+  // The overlay reads the time scale and the pause as they are at each frame.
+  const simRef = useRef(sim);
+  simRef.current = sim;
   const canvasRef = useRef<PhysicalCanvasElement | null>(null);
   const hostRef = useRef<HTMLDivElement | null>(null);
   const [scene, setScene] = useState<ReactionsScene | null>(null);
@@ -434,12 +449,16 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       // The lean of the tray as it is now, once a step (a phone in the hand sends a new one with
       // almost every frame): the step's data keeps it, and a replay puts it back.
       const current = sceneRef.current;
-      if (current !== null) setTilt(current, current.tilt);
+      if (current !== null) {
+        setTilt(current, current.tilt);
+        stepBlend.before(current.particles.keys());
+      }
       recorder.beforeStep();
     },
     replay: (world, data) => applyTilt(world, data.tilt, data.tiltOn),
     // The lab's record of this step first: the saved moment keeps it.
     after: () => {
+      stepBlend.after(performance.now());
       const current = sceneRef.current;
       if (current === null) return;
       announceCollisionRef.current();
@@ -739,7 +758,12 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       const { measure, contactTime } = settingsRef.current;
       clipToWalls(context, current.width, current.height);
       const lab = chosenRef.current;
-      drawParticles(context, canvas.viewport, current, lab, selectedRef.current);
+      const fraction = stepBlend.fraction(
+        performance.now(),
+        (1000 * STEP) / simRef.current.timeScale,
+        simRef.current.paused,
+      );
+      drawParticles(context, canvas.viewport, current, lab, selectedRef.current, fraction);
       // Momentum arrows m v of the other particles; the chosen ones' velocity arrows, to drag.
       // One batch (a few fills) for all of them: with 50 particles, 100 strokes and fills a
       // frame cost a slow phone more raster time than the particles themselves.
@@ -782,9 +806,10 @@ export function ReactionsScreen({ active }: { active: boolean }) {
       // Names on the particles (a handful: more would cover the tray), each a cached bitmap.
       if (current.particles.size <= 12) {
         const ratio = canvas.viewport.devicePixelRatio;
+        let k = 0;
         for (const [body, info] of current.particles) {
-          const position = body.position;
-          labelSprites.draw(context, info.label, position.x, position.y, scale, ratio);
+          stepBlend.at(body, k++, fraction, drawnAt);
+          labelSprites.draw(context, info.label, drawnAt.x, drawnAt.y, scale, ratio);
         }
       }
       arrowCount.current = visible.length * 2;
