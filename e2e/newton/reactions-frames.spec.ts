@@ -170,3 +170,47 @@ test('newton: reactions, every particle is drawn at its body, its size, in its c
     await closeApp(app);
   }
 });
+
+// The tray takes a new lean at its next step; with every particle asleep the canvas takes no
+// step at all, so a lean must wake them itself (it once did not, until something else did).
+test('newton: reactions, tilting a tray whose particles have all fallen asleep sets them moving', async ({
+  browser,
+}) => {
+  const app = await openApp(browser, '#reactions');
+  try {
+    const { page } = app;
+    await addFromKeyboard(page, 3);
+    type Canvas = HTMLElement & {
+      world: { awakeBodyCount: number; bodies: { type: string; position: { x: number } }[] };
+    };
+    await page.waitForFunction(
+      () =>
+        (document.querySelector('#reactions physical-canvas') as unknown as Canvas).world
+          .awakeBodyCount === 0,
+      undefined,
+      { timeout: 10000 },
+    );
+    const xs = () =>
+      page.evaluate(() =>
+        (document.querySelector('#reactions physical-canvas') as unknown as Canvas).world.bodies
+          .filter((body) => body.type === 'dynamic')
+          .map((body) => body.position.x),
+      );
+    const before = await xs();
+    await page.evaluate(() =>
+      window.dispatchEvent(
+        new DeviceOrientationEvent('deviceorientation', { alpha: 0, beta: 0, gamma: 45 }),
+      ),
+    );
+    await page.waitForTimeout(500);
+    const after = await xs();
+    for (let i = 0; i < before.length; i++) {
+      assert.ok(
+        after[i]! > before[i]! + 0.02,
+        `particle ${i} moved right: ${before[i]} -> ${after[i]}`,
+      );
+    }
+  } finally {
+    await closeApp(app);
+  }
+});

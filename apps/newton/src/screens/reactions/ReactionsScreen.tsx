@@ -599,14 +599,26 @@ export function ReactionsScreen({ active }: { active: boolean }) {
    * a few milliseconds); the tray's acceleration readout reads the scene's tilt on its own
    * (LiveText). A key or a tap re-renders at once.
    */
-  const changeTilt = useCallback((next: Tilt, render = true) => {
-    const current = sceneRef.current;
-    if (render) rerender();
-    if (current !== null) {
-      current.tilt = next;
-      canvasRef.current?.invalidate();
-    }
-  }, []);
+  const changeTilt = useCallback(
+    (next: Tilt, render = true) => {
+      const current = sceneRef.current;
+      if (render) rerender();
+      if (current !== null) {
+        current.tilt = next;
+        // With every particle asleep the canvas takes no step, so no next step would take the
+        // lean: lean the world now (a new gravity wakes the particles), and give the next
+        // step's moment a snapshot of its own, since the change came between steps.
+        if (current.world.awakeBodyCount === 0) {
+          const { x, y } = current.world.gravity;
+          setTilt(current, next);
+          const now = current.world.gravity;
+          if (now.x !== x || now.y !== y) worldChanged();
+        }
+        canvasRef.current?.invalidate();
+      }
+    },
+    [worldChanged],
+  );
 
   // Device orientation: listen while visible; where the browser asks first (iOS), readings
   // arrive once the learner allowed them with the button.
