@@ -143,10 +143,12 @@ test('newton: reactions, every particle is drawn at its body, its size, in its c
             return {
               index,
               want: palette[index % palette.length],
-              // Just inside the rim on four sides (the centre holds the particle's name), and
+              // Just inside the rim on four sides (the centre holds the particle's name): 3 px,
+              // past the rim's anti-aliased pixel (a disc is placed to the nearest pixel, its
+              // radius to a quarter pixel; 2 px in met the rim's blend in CI), and
               // just outside it: the tray's background, or a neighbour.
-              inside: [hex(x + r - 2, y), hex(x - r + 2, y), hex(x, y + r - 2), hex(x, y - r + 2)],
-              outside: hex(x + r + 3, y),
+              inside: [hex(x + r - 3, y), hex(x - r + 3, y), hex(x, y + r - 3), hex(x, y - r + 3)],
+              outside: hex(x + r + 4, y),
             };
           }),
       };
